@@ -1,0 +1,36 @@
+//! Impulse's physics core: 2D discs in a box, stepped at a fixed time step.
+//!
+//! The core is window-free (it never imports macroquad) so that every property
+//! of the physics can be tested headlessly. One call to [`World::step`] runs the
+//! pipeline, one module per stage:
+//!
+//! 1. [`broad_phase`]: which pairs *might* touch (O(n²) brute force for now);
+//! 2. [`narrow_phase`]: which of them overlap, with normal and depth;
+//! 3. [`resolution`]: elastic/inelastic impulses for approaching pairs, then an
+//!    inverse-mass push-apart that leaves the centre of mass where it was;
+//! 4. [`integration`]: semi-implicit Euler under gravity;
+//! 5. [`boundary`]: walls (reflection without creating energy), open space, or
+//!    a periodic torus.
+//!
+//! [`metrics`] measures the conserved quantities, [`stats`] what a step did and
+//! how long each stage took, and [`scene`] turns TOML scene files into worlds.
+#![warn(missing_docs)]
+
+pub mod boundary;
+pub mod broad_phase;
+pub mod integration;
+pub mod metrics;
+pub mod narrow_phase;
+pub mod particle;
+pub mod resolution;
+pub mod scene;
+pub mod stats;
+pub mod world;
+
+pub use boundary::Boundary;
+pub use glam::DVec2;
+pub use metrics::Metrics;
+pub use particle::{Color, Particle};
+pub use scene::{Scene, SceneError};
+pub use stats::StepStats;
+pub use world::World;

@@ -1,0 +1,74 @@
+//! Narrow phase, the second stage: which candidate pairs really overlap.
+//!
+//! For each overlapping pair it records the unit normal n̂ from the first disc
+//! to the second and the overlap depth. Coincident centres have no direction
+//! of their own; they get the fixed normal +x, so the result is deterministic
+//! and never NaN.
+
+use crate::boundary::Boundary;
+use crate::broad_phase::Pair;
+use crate::particle::Particle;
+use glam::DVec2;
+
+/// Two overlapping discs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    /// Index of the first disc.
+    pub i: u32,
+    /// Index of the second disc (`i < j`).
+    pub j: u32,
+    /// Unit normal pointing from disc `i` to disc `j`.
+    pub normal: DVec2,
+    /// How far the discs overlap: r₁ + r₂ − distance (> 0).
+    pub depth: f64,
+}
+
+/// The normal used when two centres coincide.
+pub const COINCIDENT_NORMAL: DVec2 = DVec2::X;
+
+/// Replaces `out` with the contacts among `pairs`, in the order of `pairs`.
+pub fn find_contacts(
+    particles: &[Particle],
+    pairs: &[Pair],
+    boundary: Boundary,
+    size: DVec2,
+    out: &mut Vec<Contact>,
+) {
+    out.clear();
+    out.extend(pairs.iter().filter_map(|&Pair { i, j }| {
+        let (a, b) = (&particles[i as usize], &particles[j as usize]);
+        contact_between(a, b, boundary, size).map(|(normal, depth)| Contact {
+            i,
+            j,
+            normal,
+            depth,
+        })
+    }));
+}
+
+/// The normal and depth if discs `a` and `b` overlap (touching is not overlap).
+pub fn contact_between(
+    a: &Particle,
+    b: &Particle,
+    boundary: Boundary,
+    size: DVec2,
+) -> Option<(DVec2, f64)> {
+    let delta = boundary.separation(a.pos, b.pos, size);
+    let reach = a.radius + b.radius;
+    let dist_sq = delta.length_squared();
+    if dist_sq >= reach * reach {
+        return None;
+    }
+    let dist = dist_sq.sqrt();
+    let normal = if dist > 0.0 {
+        let n = delta / dist;
+        if n.is_finite() {
+            n
+        } else {
+            COINCIDENT_NORMAL
+        }
+    } else {
+        COINCIDENT_NORMAL
+    };
+    Some((normal, reach - dist))
+}

@@ -1,0 +1,349 @@
+//! Scene files: TOML in, [`World`] out, with every value checked on the way.
+//!
+//! ```toml
+//! name = "Head-on"                      # optional
+//! description = "Two equal discs meet"  # optional, one line
+//!
+//! [world]
+//! size = [16.0, 10.0]          # metres
+//! gravity = [0.0, 0.0]         # m/s², default none
+//! restitution = 1.0            # between discs, default 1
+//! wall_restitution = 1.0       # at the walls, default 1
+//! boundary = "box"             # "box", "open" or "periodic"
+//!
+//! [[particles]]
+//! pos = [4.0, 5.0]
+//! vel = [2.0, 0.0]
+//! mass = 1.0
+//! radius = 0.5
+//! color = "#e69f00"            # optional
+//!
+//! [fill]                       # optional seeded random discs
+//! count = 40
+//! seed = 7
+//! radius = [0.2, 0.4]
+//! density = 1.0                # kg/m²: mass = density·π·r²
+//! speed = [0.5, 2.0]
+//! ```
+
+use crate::boundary::Boundary;
+use crate::particle::{Color, Particle};
+use crate::world::World;
+use glam::DVec2;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// Most discs a scene may ask for, so a typo cannot exhaust memory.
+pub const MAX_PARTICLES: usize = 2_000_000;
+
+/// A scene as written in a file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Short title.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// One-line description shown on screen.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    /// The world's size and laws.
+    pub world: WorldSpec,
+    /// Discs placed one by one.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub particles: Vec<ParticleSpec>,
+    /// Seeded random discs, placed after the listed ones.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fill: Option<FillSpec>,
+}
+
+/// The `[world]` table.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldSpec {
+    /// Width and height (m).
+    pub size: DVec2,
+    /// Gravity (m/s²).
+    #[serde(default)]
+    pub gravity: DVec2,
+    /// Restitution between discs.
+    #[serde(default = "one")]
+    pub restitution: f64,
+    /// Restitution at the walls.
+    #[serde(default = "one")]
+    pub wall_restitution: f64,
+    /// Edge behaviour.
+    #[serde(default)]
+    pub boundary: Boundary,
+}
+
+/// One `[[particles]]` entry.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticleSpec {
+    /// Centre (m).
+    pub pos: DVec2,
+    /// Velocity (m/s).
+    #[serde(default)]
+    pub vel: DVec2,
+    /// Mass (kg).
+    pub mass: f64,
+    /// Radius (m).
+    pub radius: f64,
+    /// Colour; a palette colour when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color: Option<Color>,
+}
+
+/// The `[fill]` table: `count` random discs that overlap nothing.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FillSpec {
+    /// How many discs.
+    pub count: usize,
+    /// Random seed: the same seed gives the same discs.
+    #[serde(default)]
+    pub seed: u64,
+    /// Smallest and largest radius (m).
+    pub radius: [f64; 2],
+    /// Areal density (kg/m²); mass = density·π·r².
+    #[serde(default = "one")]
+    pub density: f64,
+    /// Smallest and largest speed (m/s), in random directions.
+    #[serde(default)]
+    pub speed: [f64; 2],
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// Why a scene could not be read or built. Each names the file it came from.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The file could not be read.
+    #[error("{origin}: cannot read: {source}")]
+    Io {
+        /// File name.
+        origin: String,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// The text is not valid TOML or does not fit the scene format.
+    #[error("{origin}: {message}")]
+    Syntax {
+        /// File name.
+        origin: String,
+        /// The parser's message, with line and column.
+        message: String,
+    },
+    /// A value is out of range.
+    #[error("{origin}: {field}: {reason}")]
+    Invalid {
+        /// File name.
+        origin: String,
+        /// Dotted path of the offending field, e.g. `particles[2].mass`.
+        field: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+}
+
+impl Scene {
+    /// Reads and checks a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let origin = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+            origin: origin.clone(),
+            source,
+        })?;
+        Scene::parse(&text, &origin)
+    }
+
+    /// Parses and checks scene text; `origin` names it in errors.
+    pub fn parse(text: &str, origin: &str) -> Result<Scene, SceneError> {
+        let scene: Scene = toml::from_str(text).map_err(|e| SceneError::Syntax {
+            origin: origin.to_string(),
+            message: e.to_string().trim_end().replace('\n', " | "),
+        })?;
+        scene.validate(origin)?;
+        Ok(scene)
+    }
+
+    /// Checks every value; the error names the first bad field.
+    pub fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: String, reason: &str| SceneError::Invalid {
+            origin: origin.to_string(),
+            field,
+            reason: reason.to_string(),
+        };
+        let w = &self.world;
+        if !(w.size.is_finite() && w.size.min_element() > 0.0) {
+            return Err(bad("world.size".into(), "must be two positive numbers"));
+        }
+        if !w.gravity.is_finite() {
+            return Err(bad("world.gravity".into(), "must be finite"));
+        }
+        for (field, e) in [
+            ("world.restitution", w.restitution),
+            ("world.wall_restitution", w.wall_restitution),
+        ] {
+            if !(0.0..=1.0).contains(&e) {
+                return Err(bad(field.into(), "must be between 0 and 1"));
+            }
+        }
+        for (k, p) in self.particles.iter().enumerate() {
+            let field = |name: &str| format!("particles[{k}].{name}");
+            if !(p.mass > 0.0 && p.mass.is_finite()) {
+                return Err(bad(field("mass"), "must be a positive finite number"));
+            }
+            if !(p.radius > 0.0 && p.radius.is_finite()) {
+                return Err(bad(field("radius"), "must be a positive finite number"));
+            }
+            if !p.vel.is_finite() {
+                return Err(bad(field("vel"), "must be finite"));
+            }
+            if !p.pos.is_finite() {
+                return Err(bad(field("pos"), "must be finite"));
+            }
+            if !fits(w.boundary, w.size, p.pos, p.radius) {
+                return Err(bad(field("pos"), "puts the disc outside the box"));
+            }
+            for (other, q) in self.particles[..k].iter().enumerate() {
+                let gap = w.boundary.separation(q.pos, p.pos, w.size).length();
+                if gap < p.radius + q.radius {
+                    let reason = format!("overlaps particles[{other}]");
+                    return Err(bad(field("pos"), &reason));
+                }
+            }
+        }
+        if self.particles.len() > MAX_PARTICLES {
+            return Err(bad("particles".into(), "too many discs"));
+        }
+        if let Some(f) = &self.fill {
+            if f.count > MAX_PARTICLES {
+                return Err(bad("fill.count".into(), "too many discs"));
+            }
+            let [r0, r1] = f.radius;
+            if !(r0 > 0.0 && r0 <= r1 && r1.is_finite()) {
+                return Err(bad("fill.radius".into(), "must be [min, max] with 0 < min ≤ max"));
+            }
+            if !(f.density > 0.0 && f.density.is_finite()) {
+                return Err(bad("fill.density".into(), "must be a positive finite number"));
+            }
+            let [s0, s1] = f.speed;
+            if !(s0 >= 0.0 && s0 <= s1 && s1.is_finite()) {
+                return Err(bad("fill.speed".into(), "must be [min, max] with 0 ≤ min ≤ max"));
+            }
+            if 2.0 * r1 > w.size.min_element() {
+                return Err(bad("fill.radius".into(), "discs wider than the box"));
+            }
+        }
+        Ok(())
+    }
+
+    /// Builds the world: listed discs first, then the random fill.
+    pub fn build(&self, origin: &str) -> Result<World, SceneError> {
+        self.validate(origin)?;
+        let w = &self.world;
+        let mut world = World::new(w.size);
+        world.gravity = w.gravity;
+        world.restitution = w.restitution;
+        world.wall_restitution = w.wall_restitution;
+        world.boundary = w.boundary;
+        world.particles = self
+            .particles
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                let color = p.color.unwrap_or_else(|| Color::palette(k));
+                Particle::new(p.pos, p.vel, p.mass, p.radius, color)
+            })
+            .collect();
+        if let Some(fill) = &self.fill {
+            add_fill(&mut world, fill).map_err(|reason| SceneError::Invalid {
+                origin: origin.to_string(),
+                field: "fill".into(),
+                reason,
+            })?;
+        }
+        Ok(world)
+    }
+
+    /// The scene that reproduces `world` exactly (listed discs, no fill).
+    pub fn from_world(world: &World, name: Option<String>, description: Option<String>) -> Scene {
+        Scene {
+            name,
+            description,
+            world: WorldSpec {
+                size: world.size,
+                gravity: world.gravity,
+                restitution: world.restitution,
+                wall_restitution: world.wall_restitution,
+                boundary: world.boundary,
+            },
+            particles: world
+                .particles
+                .iter()
+                .map(|p| ParticleSpec {
+                    pos: p.pos,
+                    vel: p.vel,
+                    mass: p.mass,
+                    radius: p.radius,
+                    color: Some(p.color),
+                })
+                .collect(),
+            fill: None,
+        }
+    }
+
+    /// The scene as TOML text.
+    pub fn to_toml(&self) -> String {
+        // Serialising plain data with finite numbers cannot fail.
+        toml::to_string_pretty(self).unwrap_or_default()
+    }
+}
+
+/// Whether a disc at `pos` lies inside the world for this boundary.
+fn fits(boundary: Boundary, size: DVec2, pos: DVec2, radius: f64) -> bool {
+    match boundary {
+        Boundary::Box => {
+            pos.cmpge(DVec2::splat(radius)).all() && pos.cmple(size - DVec2::splat(radius)).all()
+        }
+        Boundary::Periodic => pos.cmpge(DVec2::ZERO).all() && pos.cmplt(size).all(),
+        Boundary::Open => true,
+    }
+}
+
+/// Adds `fill.count` seeded random discs that overlap nothing already there.
+fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
+    let mut rng = ChaCha8Rng::seed_from_u64(fill.seed);
+    let first = world.particles.len();
+    let attempts_per_disc = 2000;
+    for k in 0..fill.count {
+        let radius = rng.random_range(fill.radius[0]..=fill.radius[1]);
+        let speed = rng.random_range(fill.speed[0]..=fill.speed[1]);
+        let heading = rng.random_range(0.0..std::f64::consts::TAU);
+        let spot = (0..attempts_per_disc).find_map(|_| {
+            let pos = DVec2::new(
+                rng.random_range(radius..=world.size.x - radius),
+                rng.random_range(radius..=world.size.y - radius),
+            );
+            world.is_free(pos, radius).then_some(pos)
+        });
+        let Some(pos) = spot else {
+            return Err(format!(
+                "placed only {k} of {} discs without overlap: the box is too full",
+                fill.count
+            ));
+        };
+        let mass = fill.density * std::f64::consts::PI * radius * radius;
+        let vel = speed * DVec2::from_angle(heading);
+        let color = Color::palette(first + k);
+        world
+            .particles
+            .push(Particle::new(pos, vel, mass, radius, color));
+    }
+    Ok(())
+}

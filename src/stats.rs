@@ -1,0 +1,43 @@
+//! Step statistics: what the last step did and how long each stage took.
+
+use serde::Serialize;
+use std::time::Duration;
+
+/// Wall-clock time spent in each stage of one step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct StageTimings {
+    /// Broad phase.
+    pub broad_phase: Duration,
+    /// Narrow phase.
+    pub narrow_phase: Duration,
+    /// Collision resolution and push-apart.
+    pub resolution: Duration,
+    /// Integration.
+    pub integration: Duration,
+    /// Boundaries.
+    pub boundary: Duration,
+}
+
+impl StageTimings {
+    /// Time for the whole step.
+    pub fn total(&self) -> Duration {
+        self.broad_phase + self.narrow_phase + self.resolution + self.integration + self.boundary
+    }
+}
+
+/// Counts and extremes from one step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct StepStats {
+    /// Pairs the broad phase proposed.
+    pub candidate_pairs: usize,
+    /// Pairs that overlapped.
+    pub contacts: usize,
+    /// Approaching pairs whose velocities were resolved.
+    pub pair_collisions: usize,
+    /// Discs that bounced off a wall.
+    pub wall_hits: usize,
+    /// Deepest pair overlap before it was pushed apart (m).
+    pub max_overlap: f64,
+    /// Per-stage wall-clock time.
+    pub timings: StageTimings,
+}

@@ -1,0 +1,47 @@
+//! Small builders shared by the physics tests.
+#![allow(dead_code)]
+
+use impulse::{Boundary, Color, DVec2, Particle, World};
+
+/// A disc with a neutral colour.
+pub fn disc(pos: [f64; 2], vel: [f64; 2], mass: f64, radius: f64) -> Particle {
+    Particle::new(pos.into(), vel.into(), mass, radius, Color::rgb(200, 200, 200))
+}
+
+/// A world of the given size, boundary and discs; no gravity, e = 1.
+pub fn world_with(size: [f64; 2], boundary: Boundary, particles: Vec<Particle>) -> World {
+    let mut w = World::new(DVec2::from(size));
+    w.boundary = boundary;
+    w.particles = particles;
+    w
+}
+
+/// A periodic gas of `n` discs at roughly 30 % area fraction with a drift,
+/// built from the scene format so the test also exercises the fill.
+pub fn periodic_gas(n: usize, seed: u64, restitution: f64) -> World {
+    let text = format!(
+        r#"
+        [world]
+        size = [20.0, 20.0]
+        boundary = "periodic"
+        restitution = {restitution}
+        [fill]
+        count = {n}
+        seed = {seed}
+        radius = [0.3, 0.5]
+        speed = [0.5, 3.0]
+        "#
+    );
+    let scene = impulse::Scene::parse(&text, "gas").expect("valid gas scene");
+    let mut w = scene.build("gas").expect("gas fits");
+    // A common drift so total momentum is far from zero.
+    for p in &mut w.particles {
+        p.vel += DVec2::new(0.7, -0.4);
+    }
+    w
+}
+
+/// |a − b| relative to a scale.
+pub fn rel(a: f64, b: f64, scale: f64) -> f64 {
+    (a - b).abs() / scale
+}
