@@ -1,1 +1,39 @@
-fn main(){}
+//! The `impulse` binary: the sandbox window by default, headless commands as
+//! subcommands. Errors are one line on stderr and a non-zero exit code.
+
+mod app;
+mod headless;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Impulse: a sandbox for 2D disc collisions.
+#[derive(Parser, Debug)]
+#[command(name = "impulse", version, args_conflicts_with_subcommands = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    window: app::WindowOptions,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Simulate a scene without a window and print a summary.
+    Run(headless::RunArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Run(args)) => headless::run(&args),
+        None => app::run(cli.window),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("impulse: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

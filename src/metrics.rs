@@ -49,6 +49,9 @@ impl Metrics {
 
     /// Gravitational potential energy −Σ m·g·x, zero at the origin (J).
     pub fn potential_energy(particles: &[Particle], gravity: DVec2) -> f64 {
-        -particles.iter().map(|p| p.mass * gravity.dot(p.pos)).sum::<f64>()
+        -particles
+            .iter()
+            .map(|p| p.mass * gravity.dot(p.pos))
+            .sum::<f64>()
     }
 }

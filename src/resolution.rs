@@ -15,8 +15,8 @@
 //! Overlap is then removed by moving the discs apart along n̂, each by a share
 //! proportional to its inverse mass, so the centre of mass does not move.
 
-use crate::particle::Particle;
 use crate::narrow_phase::Contact;
+use crate::particle::Particle;
 use glam::DVec2;
 
 /// What resolving one step's contacts did.

@@ -227,14 +227,23 @@ impl Scene {
             }
             let [r0, r1] = f.radius;
             if !(r0 > 0.0 && r0 <= r1 && r1.is_finite()) {
-                return Err(bad("fill.radius".into(), "must be [min, max] with 0 < min ≤ max"));
+                return Err(bad(
+                    "fill.radius".into(),
+                    "must be [min, max] with 0 < min ≤ max",
+                ));
             }
             if !(f.density > 0.0 && f.density.is_finite()) {
-                return Err(bad("fill.density".into(), "must be a positive finite number"));
+                return Err(bad(
+                    "fill.density".into(),
+                    "must be a positive finite number",
+                ));
             }
             let [s0, s1] = f.speed;
             if !(s0 >= 0.0 && s0 <= s1 && s1.is_finite()) {
-                return Err(bad("fill.speed".into(), "must be [min, max] with 0 ≤ min ≤ max"));
+                return Err(bad(
+                    "fill.speed".into(),
+                    "must be [min, max] with 0 ≤ min ≤ max",
+                ));
             }
             if 2.0 * r1 > w.size.min_element() {
                 return Err(bad("fill.radius".into(), "discs wider than the box"));

@@ -92,8 +92,12 @@ impl World {
             elapsed
         };
 
-        self.broad_phase
-            .candidate_pairs(&self.particles, self.boundary, self.size, &mut self.pairs);
+        self.broad_phase.candidate_pairs(
+            &self.particles,
+            self.boundary,
+            self.size,
+            &mut self.pairs,
+        );
         stats.candidate_pairs = self.pairs.len();
         stats.timings.broad_phase = lap();
 

@@ -15,7 +15,11 @@ fn gas_of_200_discs_conserves_momentum_over_10000_steps() {
         w.step(1e-3);
     }
     let drift = (w.metrics().momentum - p0).length() / scale;
-    assert!(w.total_pair_collisions > 1000, "a real gas: {} collisions", w.total_pair_collisions);
+    assert!(
+        w.total_pair_collisions > 1000,
+        "a real gas: {} collisions",
+        w.total_pair_collisions
+    );
     assert!(drift < 1e-12, "relative momentum drift {drift:e}");
 }
 
@@ -39,7 +43,10 @@ fn inelastic_pairs_lose_energy_but_keep_momentum() {
         w.step(1e-3);
     }
     let m1 = w.metrics();
-    assert!(m1.kinetic_energy < m0.kinetic_energy * 0.99, "e = 0.5 dissipates");
+    assert!(
+        m1.kinetic_energy < m0.kinetic_energy * 0.99,
+        "e = 0.5 dissipates"
+    );
     let scale = Metrics::momentum_scale(&w.particles);
     assert!((m1.momentum - m0.momentum).length() < 1e-12 * scale);
 }
@@ -49,7 +56,10 @@ fn elastic_walls_conserve_kinetic_energy() {
     let mut w = world_with(
         [10.0, 6.0],
         Boundary::Box,
-        vec![disc([3.0, 3.0], [7.3, -5.1], 2.0, 0.4), disc([7.0, 1.0], [-3.9, 8.8], 0.5, 0.2)],
+        vec![
+            disc([3.0, 3.0], [7.3, -5.1], 2.0, 0.4),
+            disc([7.0, 1.0], [-3.9, 8.8], 0.5, 0.2),
+        ],
     );
     let ke0 = w.metrics().kinetic_energy;
     for _ in 0..20_000 {
@@ -64,14 +74,22 @@ fn a_bouncing_ball_never_climbs_higher_than_it_fell_from() {
     // With elastic walls under gravity, pushing a disc back out of the floor
     // must not add height: the old seeds let a ball climb.
     let drop_height = 5.0;
-    let mut w = world_with([4.0, 8.0], Boundary::Box, vec![disc([2.0, drop_height], [0.0, 0.0], 1.0, 0.25)]);
+    let mut w = world_with(
+        [4.0, 8.0],
+        Boundary::Box,
+        vec![disc([2.0, drop_height], [0.0, 0.0], 1.0, 0.25)],
+    );
     w.gravity = DVec2::new(0.0, -9.81);
     let e0 = w.total_energy();
     let dt = 1.0 / 240.0;
     for _ in 0..(60.0 / dt) as usize {
         w.step(dt);
         // Symplectic Euler's own bounded wobble is g·v·dt-sized.
-        assert!(w.total_energy() <= e0 + 9.81 * 10.0 * dt, "energy grew to {}", w.total_energy());
+        assert!(
+            w.total_energy() <= e0 + 9.81 * 10.0 * dt,
+            "energy grew to {}",
+            w.total_energy()
+        );
     }
     assert!(w.total_wall_hits >= 10);
     assert!(w.particles[0].pos.y <= drop_height + 9.81 * dt * dt);
@@ -91,13 +109,24 @@ fn no_disc_leaves_a_closed_box() {
         radius = [0.05, 0.25]
         speed = [5.0, 40.0]
     "#;
-    let mut w = impulse::Scene::parse(text, "box").unwrap().build("box").unwrap();
+    let mut w = impulse::Scene::parse(text, "box")
+        .unwrap()
+        .build("box")
+        .unwrap();
     for _ in 0..3000 {
         w.step(1.0 / 240.0);
         for p in &w.particles {
             assert!(p.pos.is_finite() && p.vel.is_finite());
-            assert!(p.pos.x >= p.radius && p.pos.x <= w.size.x - p.radius, "x {}", p.pos.x);
-            assert!(p.pos.y >= p.radius && p.pos.y <= w.size.y - p.radius, "y {}", p.pos.y);
+            assert!(
+                p.pos.x >= p.radius && p.pos.x <= w.size.x - p.radius,
+                "x {}",
+                p.pos.x
+            );
+            assert!(
+                p.pos.y >= p.radius && p.pos.y <= w.size.y - p.radius,
+                "y {}",
+                p.pos.y
+            );
         }
     }
 }
@@ -119,14 +148,20 @@ fn coincident_centres_separate_without_nan() {
     for p in &w.particles {
         assert!(p.pos.is_finite() && p.vel.is_finite(), "{p:?}");
     }
-    assert!(w.particles[0].pos.x < w.particles[1].pos.x, "deterministic normal +x");
+    assert!(
+        w.particles[0].pos.x < w.particles[1].pos.x,
+        "deterministic normal +x"
+    );
     // Only the third disc moves, by 1e-3 · (1, 1) · mass share.
     let expected = com0 + DVec2::new(1.0, 1.0) * 1e-3 * (1.0 / 4.0);
     assert!((w.metrics().center_of_mass - expected).length() < 1e-12);
     for _ in 0..100 {
         w.step(1e-3);
     }
-    assert!(w.particles.iter().all(|p| p.pos.is_finite() && p.vel.is_finite()));
+    assert!(w
+        .particles
+        .iter()
+        .all(|p| p.pos.is_finite() && p.vel.is_finite()));
 }
 
 #[test]

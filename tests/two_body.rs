@@ -13,26 +13,50 @@ fn analytic(m1: f64, m2: f64, v1: f64, v2: f64, e: f64) -> (f64, f64) {
 
 #[test]
 fn head_on_matches_the_formula_for_mass_ratios_and_restitutions() {
-    for (m1, m2) in [(1.0, 1.0), (1.0, 3.0), (5.0, 1.0), (1.0, 1000.0), (0.01, 1.0)] {
+    for (m1, m2) in [
+        (1.0, 1.0),
+        (1.0, 3.0),
+        (5.0, 1.0),
+        (1.0, 1000.0),
+        (0.01, 1.0),
+    ] {
         for e in [1.0, 0.5, 0.0] {
             let (v1, v2) = (2.0, -1.0);
             let mut w = world_with(
                 [100.0, 100.0],
                 Boundary::Open,
-                vec![disc([10.0, 50.0], [v1, 0.0], m1, 0.5), disc([12.0, 50.0], [v2, 0.0], m2, 0.5)],
+                vec![
+                    disc([10.0, 50.0], [v1, 0.0], m1, 0.5),
+                    disc([12.0, 50.0], [v2, 0.0], m2, 0.5),
+                ],
             );
             w.restitution = e;
             let p0 = w.metrics().momentum;
             for _ in 0..2000 {
                 w.step(1e-3);
             }
-            assert_eq!(w.total_pair_collisions, 1, "m1={m1} m2={m2} e={e}: one collision");
+            assert_eq!(
+                w.total_pair_collisions, 1,
+                "m1={m1} m2={m2} e={e}: one collision"
+            );
             let (want1, want2) = analytic(m1, m2, v1, v2, e);
             let (got1, got2) = (w.particles[0].vel, w.particles[1].vel);
             let tol = 1e-12 * (v1.abs() + v2.abs());
-            assert!((got1.x - want1).abs() < tol, "m1={m1} m2={m2} e={e}: v1 {} vs {want1}", got1.x);
-            assert!((got2.x - want2).abs() < tol, "m1={m1} m2={m2} e={e}: v2 {} vs {want2}", got2.x);
-            assert_eq!((got1.y, got2.y), (0.0, 0.0), "no sideways motion from a head-on hit");
+            assert!(
+                (got1.x - want1).abs() < tol,
+                "m1={m1} m2={m2} e={e}: v1 {} vs {want1}",
+                got1.x
+            );
+            assert!(
+                (got2.x - want2).abs() < tol,
+                "m1={m1} m2={m2} e={e}: v2 {} vs {want2}",
+                got2.x
+            );
+            assert_eq!(
+                (got1.y, got2.y),
+                (0.0, 0.0),
+                "no sideways motion from a head-on hit"
+            );
             let p1 = w.metrics().momentum;
             assert!((p1 - p0).length() < 1e-12 * (m1 * v1.abs() + m2 * v2.abs()));
             // Kinetic energy lost: ½·μ·(1 − e²)·v_rel².
@@ -40,7 +64,10 @@ fn head_on_matches_the_formula_for_mass_ratios_and_restitutions() {
             let ke0 = 0.5 * m1 * v1 * v1 + 0.5 * m2 * v2 * v2;
             let lost = ke0 - w.metrics().kinetic_energy;
             let want_lost = 0.5 * mu * (1.0 - e * e) * (v1 - v2).powi(2);
-            assert!((lost - want_lost).abs() < 1e-12 * ke0, "KE lost {lost} vs {want_lost}");
+            assert!(
+                (lost - want_lost).abs() < 1e-12 * ke0,
+                "KE lost {lost} vs {want_lost}"
+            );
         }
     }
 }
@@ -61,9 +88,15 @@ fn equal_masses_glancing_elastic_leave_at_right_angles() {
         }
         assert_eq!(w.total_pair_collisions, 1);
         let (a, b) = (w.particles[0].vel, w.particles[1].vel);
-        assert!(a.length() > 1e-3 && b.length() > 1e-3, "both move after a glancing hit");
+        assert!(
+            a.length() > 1e-3 && b.length() > 1e-3,
+            "both move after a glancing hit"
+        );
         let cos = a.dot(b) / (a.length() * b.length());
-        assert!(cos.abs() < 1e-12, "offset {offset}: cos(angle) = {cos}, want 0 (90°)");
+        assert!(
+            cos.abs() < 1e-12,
+            "offset {offset}: cos(angle) = {cos}, want 0 (90°)"
+        );
         let ke = a.length_squared() + b.length_squared();
         assert!((ke - 9.0).abs() < 1e-12 * 9.0, "kinetic energy conserved");
     }
@@ -75,16 +108,25 @@ fn a_separating_pair_is_never_re_resolved() {
     let mut w = world_with(
         [100.0, 100.0],
         Boundary::Open,
-        vec![disc([10.0, 50.0], [-1.0, 0.5], 1.0, 0.5), disc([10.6, 50.0], [1.0, 0.2], 3.0, 0.5)],
+        vec![
+            disc([10.0, 50.0], [-1.0, 0.5], 1.0, 0.5),
+            disc([10.6, 50.0], [1.0, 0.2], 3.0, 0.5),
+        ],
     );
     let before: Vec<DVec2> = w.particles.iter().map(|p| p.vel).collect();
     let stats = w.step(1e-3);
     assert_eq!(stats.contacts, 1, "the pair overlaps");
-    assert_eq!(stats.pair_collisions, 0, "but it separates, so it is not resolved");
+    assert_eq!(
+        stats.pair_collisions, 0,
+        "but it separates, so it is not resolved"
+    );
     let after: Vec<DVec2> = w.particles.iter().map(|p| p.vel).collect();
     assert_eq!(before, after, "velocities untouched");
     let gap = w.particles[0].pos.distance(w.particles[1].pos);
-    assert!(gap >= 1.0 - 1e-12, "push-apart removed the overlap: gap {gap}");
+    assert!(
+        gap >= 1.0 - 1e-12,
+        "push-apart removed the overlap: gap {gap}"
+    );
 }
 
 #[test]
@@ -95,7 +137,10 @@ fn slow_deep_overlap_does_not_stick() {
     let mut w = world_with(
         [100.0, 100.0],
         Boundary::Open,
-        vec![disc([10.0, 50.0], [0.1, 0.0], 1.0, 0.5), disc([10.3, 50.0], [-0.1, 0.0], 1.0, 0.5)],
+        vec![
+            disc([10.0, 50.0], [0.1, 0.0], 1.0, 0.5),
+            disc([10.3, 50.0], [-0.1, 0.0], 1.0, 0.5),
+        ],
     );
     for _ in 0..200 {
         w.step(1e-2);

@@ -5,7 +5,13 @@ use impulse::{Boundary, Color, DVec2, Particle, World};
 
 /// A disc with a neutral colour.
 pub fn disc(pos: [f64; 2], vel: [f64; 2], mass: f64, radius: f64) -> Particle {
-    Particle::new(pos.into(), vel.into(), mass, radius, Color::rgb(200, 200, 200))
+    Particle::new(
+        pos.into(),
+        vel.into(),
+        mass,
+        radius,
+        Color::rgb(200, 200, 200),
+    )
 }
 
 /// A world of the given size, boundary and discs; no gravity, e = 1.

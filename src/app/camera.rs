@@ -1,0 +1,130 @@
+//! The world↔screen transform: pan, zoom at a point, fit the box.
+//!
+//! World coordinates are metres with y up; screen coordinates are pixels with
+//! y down. Every hit test, arrow and label goes through this one transform,
+//! so they stay right at every zoom (the seeds' grab areas did not).
+
+use glam::DVec2;
+
+/// Smallest and largest zoom, in pixels per metre.
+pub const SCALE_LIMITS: (f64, f64) = (1e-3, 1e6);
+
+/// Maps world points to screen pixels and back.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// World point shown at the centre of the viewport (m).
+    pub center: DVec2,
+    /// Zoom: pixels per metre.
+    pub scale: f64,
+    /// Viewport size (px).
+    pub viewport: DVec2,
+}
+
+impl Camera {
+    /// A camera showing the whole box `size` in `viewport`, leaving `margin`
+    /// pixels free on every side.
+    pub fn fitting(size: DVec2, viewport: DVec2, margin: f64) -> Self {
+        let mut camera = Camera {
+            center: DVec2::ZERO,
+            scale: 1.0,
+            viewport,
+        };
+        camera.fit(size, margin);
+        camera
+    }
+
+    /// Shows the whole box again.
+    pub fn fit(&mut self, size: DVec2, margin: f64) {
+        let room = (self.viewport - DVec2::splat(2.0 * margin)).max(DVec2::ONE);
+        self.scale = (room / size)
+            .min_element()
+            .clamp(SCALE_LIMITS.0, SCALE_LIMITS.1);
+        self.center = 0.5 * size;
+    }
+
+    /// Screen pixel of a world point.
+    pub fn world_to_screen(&self, world: DVec2) -> DVec2 {
+        let d = (world - self.center) * self.scale;
+        0.5 * self.viewport + DVec2::new(d.x, -d.y)
+    }
+
+    /// World point under a screen pixel.
+    pub fn screen_to_world(&self, screen: DVec2) -> DVec2 {
+        let d = screen - 0.5 * self.viewport;
+        self.center + DVec2::new(d.x, -d.y) / self.scale
+    }
+
+    /// A world length in pixels.
+    pub fn to_pixels(&self, metres: f64) -> f64 {
+        metres * self.scale
+    }
+
+    /// A world vector (y up) as a screen vector (y down), in pixels.
+    pub fn vector_to_screen(&self, world: DVec2) -> DVec2 {
+        DVec2::new(world.x, -world.y) * self.scale
+    }
+
+    /// Multiplies the zoom by `factor`, keeping the world point under
+    /// `screen_anchor` where it is on screen.
+    pub fn zoom_at(&mut self, screen_anchor: DVec2, factor: f64) {
+        let anchored = self.screen_to_world(screen_anchor);
+        self.scale = (self.scale * factor).clamp(SCALE_LIMITS.0, SCALE_LIMITS.1);
+        let drifted = self.screen_to_world(screen_anchor);
+        self.center += anchored - drifted;
+    }
+
+    /// Moves the view so that the scene follows a drag of `pixels`.
+    pub fn pan_pixels(&mut self, pixels: DVec2) {
+        self.center -= DVec2::new(pixels.x, -pixels.y) / self.scale;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn camera() -> Camera {
+        Camera::fitting(DVec2::new(16.0, 10.0), DVec2::new(1280.0, 800.0), 40.0)
+    }
+
+    #[test]
+    fn screen_and_world_round_trip_with_y_flipped() {
+        let c = camera();
+        let w = DVec2::new(3.0, 7.5);
+        let s = c.world_to_screen(w);
+        assert!((c.screen_to_world(s) - w).length() < 1e-12);
+        let higher = c.world_to_screen(w + DVec2::Y);
+        assert!(higher.y < s.y, "world up is screen up");
+    }
+
+    #[test]
+    fn fit_shows_the_whole_box_inside_the_margin() {
+        let c = camera();
+        for corner in [DVec2::ZERO, DVec2::new(16.0, 10.0)] {
+            let s = c.world_to_screen(corner);
+            assert!(s.x >= 40.0 - 1e-9 && s.x <= 1240.0 + 1e-9, "{s}");
+            assert!(s.y >= 40.0 - 1e-9 && s.y <= 760.0 + 1e-9, "{s}");
+        }
+    }
+
+    #[test]
+    fn zoom_keeps_the_point_under_the_cursor() {
+        let mut c = camera();
+        let cursor = DVec2::new(900.0, 200.0);
+        let before = c.screen_to_world(cursor);
+        for factor in [1.1, 1.1, 3.0, 0.2, 1e9, 1e-12] {
+            c.zoom_at(cursor, factor);
+            assert!((c.screen_to_world(cursor) - before).length() < 1e-9 * (1.0 + before.length()));
+        }
+        assert_eq!(c.scale, SCALE_LIMITS.0, "zoom is clamped");
+    }
+
+    #[test]
+    fn pan_moves_the_scene_with_the_drag() {
+        let mut c = camera();
+        let w = DVec2::new(5.0, 5.0);
+        let s0 = c.world_to_screen(w);
+        c.pan_pixels(DVec2::new(30.0, -12.0));
+        assert!((c.world_to_screen(w) - (s0 + DVec2::new(30.0, -12.0))).length() < 1e-9);
+    }
+}

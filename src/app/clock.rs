@@ -1,0 +1,138 @@
+//! The fixed-step clock: how many physics steps each frame runs.
+//!
+//! Frames arrive at whatever rate the display manages; the physics always
+//! steps by the same `dt`. An accumulator carries the remainder between
+//! frames, and a cap on catch-up steps keeps a slow frame from triggering an
+//! ever-growing backlog (the simulation slows down instead of freezing).
+
+/// Time-scale presets, slowest first.
+pub const TIME_SCALES: [f64; 9] = [0.01, 0.03, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0];
+
+/// Turns frame durations into whole physics steps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FixedStepClock {
+    /// Physics step (s).
+    pub dt: f64,
+    /// Most steps one frame may run.
+    pub max_steps_per_frame: u32,
+    /// Whether time stands still.
+    pub paused: bool,
+    time_scale_index: usize,
+    accumulator: f64,
+    pending_single_steps: u32,
+}
+
+impl FixedStepClock {
+    /// A running clock at real time.
+    pub fn new(dt: f64, max_steps_per_frame: u32) -> Self {
+        Self {
+            dt,
+            max_steps_per_frame,
+            paused: false,
+            time_scale_index: TIME_SCALES.iter().position(|&s| s == 1.0).unwrap_or(0),
+            accumulator: 0.0,
+            pending_single_steps: 0,
+        }
+    }
+
+    /// Simulated seconds per real second.
+    pub fn time_scale(&self) -> f64 {
+        TIME_SCALES[self.time_scale_index]
+    }
+
+    /// Next slower (`-1`) or faster (`+1`) preset.
+    pub fn change_time_scale(&mut self, direction: i32) {
+        let last = TIME_SCALES.len() - 1;
+        self.time_scale_index = match direction.signum() {
+            -1 => self.time_scale_index.saturating_sub(1),
+            1 => (self.time_scale_index + 1).min(last),
+            _ => self.time_scale_index,
+        };
+    }
+
+    /// Pauses and queues exactly one step for the next frame.
+    pub fn single_step(&mut self) {
+        self.paused = true;
+        self.pending_single_steps += 1;
+    }
+
+    /// Steps to run for a frame that lasted `frame_seconds` of real time.
+    pub fn advance(&mut self, frame_seconds: f64) -> u32 {
+        if self.paused {
+            self.accumulator = 0.0;
+            return std::mem::take(&mut self.pending_single_steps);
+        }
+        // A stalled frame (window dragged, debugger) must not come back as
+        // minutes of simulation.
+        let real = if frame_seconds.is_finite() {
+            frame_seconds.clamp(0.0, 0.25)
+        } else {
+            0.0
+        };
+        self.accumulator += real * self.time_scale();
+        let due = (self.accumulator / self.dt).floor();
+        if due > f64::from(self.max_steps_per_frame) {
+            self.accumulator = 0.0; // drop the backlog: run slower, not later
+            self.max_steps_per_frame
+        } else {
+            self.accumulator -= due * self.dt;
+            due as u32
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn steps_follow_real_time_whatever_the_frame_rate() {
+        for fps in [30.0, 60.0, 144.0, 1000.0] {
+            let mut clock = FixedStepClock::new(1.0 / 240.0, 64);
+            let steps: u32 = (0..(2.0 * fps) as usize)
+                .map(|_| clock.advance(1.0 / fps))
+                .sum();
+            assert!(
+                (steps as i64 - 480).abs() <= 1,
+                "{fps} fps: {steps} steps in 2 s"
+            );
+        }
+    }
+
+    #[test]
+    fn a_slow_frame_is_capped() {
+        let mut clock = FixedStepClock::new(1.0 / 240.0, 8);
+        assert_eq!(clock.advance(0.2), 8);
+        assert_eq!(
+            clock.advance(1.0 / 240.0 + 1e-9),
+            1,
+            "no backlog carried over"
+        );
+        assert_eq!(clock.advance(f64::NAN), 0);
+    }
+
+    #[test]
+    fn pause_stops_time_and_single_step_runs_one() {
+        let mut clock = FixedStepClock::new(0.01, 100);
+        clock.paused = true;
+        assert_eq!(clock.advance(1.0), 0);
+        clock.single_step();
+        clock.single_step();
+        assert_eq!(clock.advance(1.0), 2);
+        assert_eq!(clock.advance(1.0), 0);
+    }
+
+    #[test]
+    fn slow_motion_runs_fewer_steps() {
+        let mut clock = FixedStepClock::new(0.01, 100);
+        clock.change_time_scale(-1);
+        clock.change_time_scale(-1);
+        assert_eq!(clock.time_scale(), 0.25);
+        let steps: u32 = (0..100).map(|_| clock.advance(0.01)).sum();
+        assert_eq!(steps, 25);
+        for _ in 0..20 {
+            clock.change_time_scale(1);
+        }
+        assert_eq!(clock.time_scale(), 8.0);
+    }
+}

@@ -1,0 +1,234 @@
+//! Drawing the world: walls, discs, velocity and momentum arrows, per-disc
+//! readouts and the launch preview. Everything goes through the camera.
+
+use super::camera::Camera;
+use super::interaction::{launch_velocity, NewDisc};
+use glam::DVec2;
+use impulse::{Boundary, World};
+use macroquad::prelude::*;
+
+/// Arrows show where a disc will be this many seconds from now.
+pub const ARROW_SECONDS: f64 = 0.5;
+/// Readouts for "all discs" stop at this many labels.
+const MAX_LABELS: usize = 250;
+
+/// Which discs carry a text readout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReadoutScope {
+    /// None.
+    Off,
+    /// Only the selected disc.
+    Selected,
+    /// Every disc on screen.
+    All,
+}
+
+impl ReadoutScope {
+    /// Off → Selected → All → Off.
+    pub fn next(self) -> Self {
+        match self {
+            ReadoutScope::Off => ReadoutScope::Selected,
+            ReadoutScope::Selected => ReadoutScope::All,
+            ReadoutScope::All => ReadoutScope::Off,
+        }
+    }
+}
+
+/// The overlay toggles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Overlays {
+    /// Velocity arrows.
+    pub velocity: bool,
+    /// Momentum arrows.
+    pub momentum: bool,
+    /// Text readouts.
+    pub readouts: ReadoutScope,
+    /// The totals panel.
+    pub hud: bool,
+    /// The key list.
+    pub help: bool,
+}
+
+impl Default for Overlays {
+    fn default() -> Self {
+        Overlays {
+            velocity: true,
+            momentum: false,
+            readouts: ReadoutScope::Selected,
+            hud: true,
+            help: false,
+        }
+    }
+}
+
+pub const VELOCITY_COLOR: Color = Color::new(1.0, 1.0, 1.0, 0.9);
+pub const MOMENTUM_COLOR: Color = Color::new(1.0, 0.35, 0.75, 0.95);
+const WALL_COLOR: Color = Color::new(0.85, 0.88, 0.95, 1.0);
+const SELECTED_COLOR: Color = Color::new(1.0, 1.0, 1.0, 1.0);
+
+fn px(v: DVec2) -> Vec2 {
+    vec2(v.x as f32, v.y as f32)
+}
+
+fn disc_color(c: impulse::Color) -> Color {
+    Color::from_rgba(c.r, c.g, c.b, 255)
+}
+
+/// The walls (solid for a box, dashed for periodic, faint for open space).
+pub fn draw_boundary(world: &World, camera: &Camera) {
+    let a = px(camera.world_to_screen(DVec2::new(0.0, world.size.y)));
+    let b = px(camera.world_to_screen(DVec2::new(world.size.x, 0.0)));
+    let (w, h) = (b.x - a.x, b.y - a.y);
+    draw_rectangle(a.x, a.y, w, h, Color::new(1.0, 1.0, 1.0, 0.03));
+    match world.boundary {
+        Boundary::Box => draw_rectangle_lines(a.x, a.y, w, h, 3.0, WALL_COLOR),
+        Boundary::Periodic | Boundary::Open => {
+            let color = Color::new(0.85, 0.88, 0.95, 0.35);
+            let corners = [a, vec2(b.x, a.y), b, vec2(a.x, b.y), a];
+            for edge in corners.windows(2) {
+                dashed_line(edge[0], edge[1], 12.0, color);
+            }
+        }
+    }
+}
+
+fn dashed_line(from: Vec2, to: Vec2, dash: f32, color: Color) {
+    let length = from.distance(to);
+    let dashes = ((length / dash) as usize).min(2000);
+    for k in (0..dashes).step_by(2) {
+        let s = from.lerp(to, k as f32 / dashes as f32);
+        let e = from.lerp(to, (k + 1) as f32 / dashes as f32);
+        draw_line(s.x, s.y, e.x, e.y, 2.0, color);
+    }
+}
+
+/// Every disc, with a ring round the selected one.
+pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>) {
+    for (i, p) in world.particles.iter().enumerate() {
+        let c = px(camera.world_to_screen(p.pos));
+        let r = camera.to_pixels(p.radius).max(1.0) as f32;
+        if !on_screen(c, r, camera) {
+            continue;
+        }
+        let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
+        draw_poly(c.x, c.y, sides, r, 0.0, disc_color(p.color));
+        if Some(i) == selected {
+            draw_poly_lines(c.x, c.y, sides, r + 3.0, 0.0, 2.5, SELECTED_COLOR);
+        }
+    }
+}
+
+fn on_screen(c: Vec2, r: f32, camera: &Camera) -> bool {
+    let v = px(camera.viewport);
+    c.x + r >= 0.0 && c.y + r >= 0.0 && c.x - r <= v.x && c.y - r <= v.y
+}
+
+/// An arrow between two screen points; nothing if shorter than a pixel.
+pub fn arrow(from: Vec2, to: Vec2, thickness: f32, color: Color) {
+    let d = to - from;
+    let len = d.length();
+    if len < 1.0 {
+        return;
+    }
+    let dir = d / len;
+    let head = (4.0 * thickness).min(0.5 * len).max(4.0);
+    let base = to - dir * head;
+    let side = vec2(-dir.y, dir.x) * head * 0.5;
+    draw_line(from.x, from.y, base.x, base.y, thickness, color);
+    draw_triangle(to, base + side, base - side, color);
+}
+
+/// Velocity and momentum arrows, as toggled.
+pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
+    if !(overlays.velocity || overlays.momentum) || world.particles.is_empty() {
+        return;
+    }
+    // Momentum arrows share the velocity scale for a disc of average mass.
+    let mean_mass =
+        world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
+    for p in &world.particles {
+        let c = camera.world_to_screen(p.pos);
+        if !on_screen(px(c), 4.0 + camera.to_pixels(p.radius) as f32, camera) {
+            continue;
+        }
+        if overlays.velocity {
+            let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
+            arrow(px(c), px(tip), 2.0, VELOCITY_COLOR);
+        }
+        if overlays.momentum {
+            let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
+            arrow(px(c), px(tip), 3.0, MOMENTUM_COLOR);
+        }
+    }
+}
+
+/// Readout lines for one disc.
+pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
+    let v = p.vel;
+    let m = p.momentum();
+    [
+        format!("v = ({:.2}, {:.2}) m/s  |v| = {:.2}", v.x, v.y, v.length()),
+        format!("p = ({:.2}, {:.2}) kg m/s", m.x, m.y),
+        format!("m = {:.3} kg  KE = {:.3} J", p.mass, p.kinetic_energy()),
+    ]
+}
+
+/// Text readouts beside the selected disc or every disc on screen.
+pub fn draw_readouts(
+    world: &World,
+    camera: &Camera,
+    overlays: &Overlays,
+    selected: Option<usize>,
+    font: f32,
+) {
+    let chosen: Box<dyn Iterator<Item = usize>> = match overlays.readouts {
+        ReadoutScope::Off => return,
+        ReadoutScope::Selected => Box::new(selected.into_iter()),
+        ReadoutScope::All => Box::new(0..world.particles.len()),
+    };
+    let mut shown = 0;
+    for i in chosen {
+        let Some(p) = world.particles.get(i) else {
+            continue;
+        };
+        let c = px(camera.world_to_screen(p.pos));
+        let r = camera.to_pixels(p.radius) as f32;
+        if !on_screen(c, r + 200.0, camera) {
+            continue;
+        }
+        let lines = readout_lines(p);
+        super::hud::text_panel(c.x + r + 6.0, c.y - r, &lines, font, 0.55);
+        shown += 1;
+        if shown >= MAX_LABELS {
+            break;
+        }
+    }
+}
+
+/// The disc about to be launched, its arrow and speed.
+pub fn draw_launch_preview(
+    world: &World,
+    camera: &Camera,
+    start: DVec2,
+    cursor: DVec2,
+    new_disc: NewDisc,
+    font: f32,
+) {
+    let spot = world.free_spot_near(start, new_disc.radius);
+    let at = px(camera.world_to_screen(spot.unwrap_or(start)));
+    let r = camera.to_pixels(new_disc.radius).max(1.0) as f32;
+    let ghost = if spot.is_some() {
+        Color::new(1.0, 1.0, 1.0, 0.35)
+    } else {
+        Color::new(1.0, 0.2, 0.2, 0.5)
+    };
+    draw_poly(at.x, at.y, 40, r, 0.0, ghost);
+    let velocity = launch_velocity(start, cursor);
+    let tip = camera.world_to_screen(start) + camera.vector_to_screen(velocity * ARROW_SECONDS);
+    arrow(at, px(tip), 3.0, Color::new(1.0, 0.9, 0.3, 1.0));
+    let label = match spot {
+        Some(_) => format!("{:.2} m/s", velocity.length()),
+        None => "no room here".to_string(),
+    };
+    draw_text(&label, tip.x as f32 + 8.0, tip.y as f32 - 8.0, font, WHITE);
+}

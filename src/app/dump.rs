@@ -1,0 +1,126 @@
+//! Files the window writes for tests and documentation: a JSON state dump
+//! and PNG screenshots, both written atomically (temporary file, then rename).
+
+use super::camera::Camera;
+use impulse::{Metrics, Particle, World};
+use serde::Serialize;
+use std::path::Path;
+
+/// Everything a test needs to check what the window did.
+#[derive(Serialize)]
+pub struct StateDump<'a> {
+    /// Frames drawn so far.
+    pub frame: u64,
+    /// Simulated time (s).
+    pub time: f64,
+    /// Physics steps so far.
+    pub steps: u64,
+    /// Whether the clock is paused.
+    pub paused: bool,
+    /// Simulated seconds per real second.
+    pub time_scale: f64,
+    /// Physics step (s).
+    pub dt: f64,
+    /// The view.
+    pub camera: CameraDump,
+    /// Selected disc.
+    pub selected: Option<usize>,
+    /// Disc held by the mouse.
+    pub held: Option<usize>,
+    /// Particle restitution.
+    pub restitution: f64,
+    /// Wall restitution.
+    pub wall_restitution: f64,
+    /// World size (m).
+    pub size: [f64; 2],
+    /// Totals.
+    pub metrics: Metrics,
+    /// Every disc.
+    pub particles: &'a [Particle],
+}
+
+/// The camera in a dump.
+#[derive(Serialize)]
+pub struct CameraDump {
+    /// World point at the viewport centre.
+    pub center: [f64; 2],
+    /// Pixels per metre.
+    pub scale: f64,
+    /// Viewport (px).
+    pub viewport: [f64; 2],
+}
+
+impl From<&Camera> for CameraDump {
+    fn from(c: &Camera) -> Self {
+        CameraDump {
+            center: c.center.to_array(),
+            scale: c.scale,
+            viewport: c.viewport.to_array(),
+        }
+    }
+}
+
+impl<'a> StateDump<'a> {
+    /// The dump of `world` seen through `camera`.
+    pub fn of(world: &'a World, camera: &Camera) -> Self {
+        StateDump {
+            frame: 0,
+            time: world.time,
+            steps: world.steps,
+            paused: false,
+            time_scale: 1.0,
+            dt: 0.0,
+            camera: camera.into(),
+            selected: None,
+            held: None,
+            restitution: world.restitution,
+            wall_restitution: world.wall_restitution,
+            size: world.size.to_array(),
+            metrics: world.metrics(),
+            particles: &world.particles,
+        }
+    }
+}
+
+/// Writes `bytes` to `path` through a temporary file and a rename, so a
+/// reader never sees half a file and a failure leaves the old file intact.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".tmp");
+    std::fs::write(&tmp, bytes)?;
+    std::fs::rename(&tmp, path).inspect_err(|_| {
+        let _ = std::fs::remove_file(&tmp);
+    })
+}
+
+/// Writes the dump as JSON.
+pub fn write_state(path: &Path, dump: &StateDump) -> std::io::Result<()> {
+    let json = serde_json::to_vec_pretty(dump).map_err(std::io::Error::other)?;
+    write_atomically(path, &json)
+}
+
+/// Saves an RGBA frame (rows bottom-up, as OpenGL reads them) as a PNG.
+pub fn write_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgba_bottom_up: &[u8],
+) -> std::io::Result<()> {
+    let row = width as usize * 4;
+    let rgb: Vec<u8> = rgba_bottom_up
+        .chunks_exact(row)
+        .rev()
+        .flat_map(|line| line.chunks_exact(4).flat_map(|px| [px[0], px[1], px[2]]))
+        .collect();
+    let mut png = Vec::new();
+    image::write_buffer_with_format(
+        &mut std::io::Cursor::new(&mut png),
+        &rgb,
+        width,
+        height,
+        image::ColorType::Rgb8,
+        image::ImageFormat::Png,
+    )
+    .map_err(std::io::Error::other)?;
+    write_atomically(path, &png)
+}

@@ -1,0 +1,216 @@
+//! Keyboard and mouse: every binding the help overlay lists lives here.
+
+use super::interaction::Released;
+use super::App;
+use glam::DVec2;
+use macroquad::prelude::*;
+
+/// Zoom factor per wheel notch or key press.
+const ZOOM_STEP: f64 = 1.15;
+/// Keyboard pan speed, pixels per frame.
+const PAN_PIXELS: f64 = 12.0;
+/// Gravity G switches on (m/s², downwards).
+const EARTH_GRAVITY: f64 = 9.81;
+
+fn shift() -> bool {
+    is_key_down(KeyCode::LeftShift) || is_key_down(KeyCode::RightShift)
+}
+
+fn ctrl() -> bool {
+    is_key_down(KeyCode::LeftControl) || is_key_down(KeyCode::RightControl)
+}
+
+/// `e` moved by one tenth up or down, kept in [0, 1].
+fn nudge_restitution(e: f64, up: bool) -> f64 {
+    let tenths = (e * 10.0).round() + if up { 1.0 } else { -1.0 };
+    (tenths / 10.0).clamp(0.0, 1.0)
+}
+
+impl App {
+    pub(super) fn handle_keys(&mut self) {
+        if ctrl() && is_key_pressed(KeyCode::Q) {
+            self.quit = true;
+            return;
+        }
+        if is_key_pressed(KeyCode::Space) {
+            self.clock.paused = !self.clock.paused;
+        }
+        if is_key_pressed(KeyCode::N) {
+            self.clock.single_step();
+        }
+        if is_key_pressed(KeyCode::LeftBracket) {
+            self.clock.change_time_scale(-1);
+            self.toast(format!("Time scale x{}", self.clock.time_scale()));
+        }
+        if is_key_pressed(KeyCode::RightBracket) {
+            self.clock.change_time_scale(1);
+            self.toast(format!("Time scale x{}", self.clock.time_scale()));
+        }
+        self.handle_view_keys();
+        self.handle_overlay_keys();
+        self.handle_world_keys();
+    }
+
+    fn handle_view_keys(&mut self) {
+        let centre = 0.5 * self.camera.viewport;
+        if is_key_pressed(KeyCode::Equal) || is_key_pressed(KeyCode::KpAdd) {
+            self.camera.zoom_at(centre, ZOOM_STEP);
+        }
+        if is_key_pressed(KeyCode::Minus) || is_key_pressed(KeyCode::KpSubtract) {
+            self.camera.zoom_at(centre, 1.0 / ZOOM_STEP);
+        }
+        if is_key_pressed(KeyCode::F) {
+            self.camera.fit(self.world.size, 30.0);
+        }
+        let mut pan = DVec2::ZERO;
+        for (key, dir) in [
+            (KeyCode::Left, DVec2::X),
+            (KeyCode::Right, -DVec2::X),
+            (KeyCode::Up, DVec2::Y),
+            (KeyCode::Down, -DVec2::Y),
+        ] {
+            if is_key_down(key) {
+                pan += dir * PAN_PIXELS;
+            }
+        }
+        if pan != DVec2::ZERO {
+            self.camera.pan_pixels(pan);
+        }
+        if is_key_pressed(KeyCode::F11) {
+            self.fullscreen = !self.fullscreen;
+            set_fullscreen(self.fullscreen);
+        }
+    }
+
+    fn handle_overlay_keys(&mut self) {
+        let o = &mut self.overlays;
+        if is_key_pressed(KeyCode::V) {
+            o.velocity = !o.velocity;
+        }
+        if is_key_pressed(KeyCode::M) {
+            o.momentum = !o.momentum;
+        }
+        if is_key_pressed(KeyCode::I) {
+            o.readouts = o.readouts.next();
+        }
+        if is_key_pressed(KeyCode::Tab) {
+            o.hud = !o.hud;
+        }
+        if is_key_pressed(KeyCode::H) || is_key_pressed(KeyCode::F1) {
+            o.help = !o.help;
+        }
+        if is_key_pressed(KeyCode::Escape) {
+            if o.help {
+                o.help = false;
+            } else {
+                self.selected = None;
+                self.gesture = Default::default();
+            }
+        }
+    }
+
+    fn handle_world_keys(&mut self) {
+        if is_key_pressed(KeyCode::E) {
+            self.world.restitution = nudge_restitution(self.world.restitution, !shift());
+            self.toast(format!("Restitution e = {:.1}", self.world.restitution));
+        }
+        if is_key_pressed(KeyCode::W) {
+            self.world.wall_restitution = nudge_restitution(self.world.wall_restitution, !shift());
+            self.toast(format!(
+                "Wall restitution = {:.1}",
+                self.world.wall_restitution
+            ));
+        }
+        if is_key_pressed(KeyCode::G) {
+            self.world.gravity = if self.world.gravity == DVec2::ZERO {
+                DVec2::new(0.0, -EARTH_GRAVITY)
+            } else {
+                DVec2::ZERO
+            };
+            self.toast(format!("Gravity {:.2} m/s^2", self.world.gravity.length()));
+        }
+        if is_key_pressed(KeyCode::PageUp) || is_key_pressed(KeyCode::PageDown) {
+            let factor = if is_key_pressed(KeyCode::PageUp) {
+                1.25
+            } else {
+                0.8
+            };
+            let biggest = 0.45 * self.world.size.min_element();
+            self.new_disc.radius = (self.new_disc.radius * factor).clamp(0.01, biggest);
+            self.toast(format!("New discs: radius {:.2} m", self.new_disc.radius));
+        }
+        if is_key_pressed(KeyCode::Home) || is_key_pressed(KeyCode::End) {
+            let factor = if is_key_pressed(KeyCode::Home) {
+                2.0
+            } else {
+                0.5
+            };
+            self.new_disc.mass = (self.new_disc.mass * factor).clamp(1e-3, 1e6);
+            self.toast(format!("New discs: mass {:.3} kg", self.new_disc.mass));
+        }
+        if is_key_pressed(KeyCode::Delete) || is_key_pressed(KeyCode::Backspace) {
+            if let Some(i) = self.selected.take() {
+                if i < self.world.particles.len() {
+                    self.world.particles.remove(i);
+                    self.gesture.on_removed(i);
+                }
+            }
+        }
+        if is_key_pressed(KeyCode::C) && !ctrl() {
+            self.world.particles.clear();
+            self.selected = None;
+            self.gesture = Default::default();
+            self.toast("Cleared: drag on empty space to launch discs");
+        }
+        if is_key_pressed(KeyCode::R) {
+            self.reset_scene();
+        }
+    }
+
+    pub(super) fn handle_mouse(&mut self) {
+        let (mx, my) = mouse_position();
+        let mouse = DVec2::new(mx as f64, my as f64);
+        let at = self.camera.screen_to_world(mouse);
+        let now = get_time();
+
+        let (_, wheel) = mouse_wheel();
+        if wheel != 0.0 {
+            let notches = f64::from(wheel.clamp(-5.0, 5.0)).signum();
+            self.camera.zoom_at(mouse, ZOOM_STEP.powf(notches));
+        }
+        let panning =
+            is_mouse_button_down(MouseButton::Right) || is_mouse_button_down(MouseButton::Middle);
+        let just_started = is_mouse_button_pressed(MouseButton::Right)
+            || is_mouse_button_pressed(MouseButton::Middle);
+        if panning && !just_started {
+            self.camera.pan_pixels(mouse - self.last_mouse);
+        }
+
+        if is_mouse_button_pressed(MouseButton::Left) {
+            self.selected = self.gesture.press(&self.world, at, now);
+        } else if is_mouse_button_down(MouseButton::Left) {
+            self.gesture.drag(&mut self.world, at, now);
+        }
+        if is_mouse_button_released(MouseButton::Left) {
+            match self.gesture.release(&mut self.world, at, self.new_disc) {
+                Released::Launched(i) => self.selected = Some(i),
+                Released::NoRoom => self.toast("No room for a new disc here"),
+                Released::Flung(..) | Released::Nothing => {}
+            }
+        }
+        self.last_mouse = mouse;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::nudge_restitution;
+
+    #[test]
+    fn restitution_moves_in_tenths_within_bounds() {
+        assert_eq!(nudge_restitution(0.5, true), 0.6);
+        assert_eq!(nudge_restitution(1.0, true), 1.0);
+        assert_eq!(nudge_restitution(0.0, false), 0.0);
+        assert_eq!(nudge_restitution(0.33, false), 0.2);
+    }
+}

@@ -1,0 +1,313 @@
+//! Mouse gestures on the world: drag-to-launch, and grab-and-fling.
+//!
+//! Pure logic over world coordinates (the window converts the mouse through
+//! the camera first), so it is tested without a window.
+//!
+//! - Press on empty space and drag: a new disc is launched from the press
+//!   point with velocity `LAUNCH_GAIN × drag` (drag in metres), placed on the
+//!   nearest free spot so it never starts overlapping another disc.
+//! - Press on a disc: it is held at the same offset from the cursor, kept
+//!   inside the walls, and on release keeps the velocity of the recent mouse
+//!   trajectory (metres per real second).
+
+use glam::DVec2;
+use impulse::{Boundary, Color, Particle, World};
+use std::collections::VecDeque;
+
+/// Launch speed per metre of drag (1/s): a 2 m drag launches at 3 m/s.
+pub const LAUNCH_GAIN: f64 = 1.5;
+/// How much recent mouse history sets a fling's velocity (s).
+pub const TRAIL_SECONDS: f64 = 0.08;
+
+/// What a newly launched disc looks like.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NewDisc {
+    /// Radius (m).
+    pub radius: f64,
+    /// Mass (kg).
+    pub mass: f64,
+}
+
+/// The gesture in progress.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum Gesture {
+    /// Nothing held.
+    #[default]
+    Idle,
+    /// Dragging out a new disc from `start`.
+    Launching {
+        /// Where the press happened (world).
+        start: DVec2,
+    },
+    /// Holding disc `index`, which sits at `cursor + offset`.
+    Holding {
+        /// The held disc.
+        index: usize,
+        /// Disc centre minus the grab point.
+        offset: DVec2,
+        /// Recent (real time, cursor world position) samples.
+        trail: VecDeque<(f64, DVec2)>,
+    },
+}
+
+/// What a release did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Released {
+    /// Nothing was in progress.
+    Nothing,
+    /// A disc was launched; its index.
+    Launched(usize),
+    /// There was no free room for the new disc.
+    NoRoom,
+    /// A held disc was let go with this velocity.
+    Flung(usize, DVec2),
+}
+
+/// Launch velocity for a drag from `start` to `end` (world).
+pub fn launch_velocity(start: DVec2, end: DVec2) -> DVec2 {
+    (end - start) * LAUNCH_GAIN
+}
+
+/// Velocity of the cursor over the last `TRAIL_SECONDS` of samples.
+pub fn trail_velocity(trail: &VecDeque<(f64, DVec2)>) -> DVec2 {
+    let (Some(&(t1, p1)), Some(&(t0, p0))) = (trail.back(), trail.front()) else {
+        return DVec2::ZERO;
+    };
+    let span = t1 - t0;
+    if span > 1e-3 {
+        (p1 - p0) / span
+    } else {
+        DVec2::ZERO
+    }
+}
+
+impl Gesture {
+    /// Starts a gesture at world point `at`; returns the disc grabbed, if any.
+    pub fn press(&mut self, world: &World, at: DVec2, now: f64) -> Option<usize> {
+        match world.particle_at(at) {
+            Some(index) => {
+                let offset = world.particles[index].pos - at;
+                *self = Gesture::Holding {
+                    index,
+                    offset,
+                    trail: VecDeque::from([(now, at)]),
+                };
+                Some(index)
+            }
+            None => {
+                *self = Gesture::Launching { start: at };
+                None
+            }
+        }
+    }
+
+    /// Follows the cursor; a held disc moves with it (inside the walls).
+    pub fn drag(&mut self, world: &mut World, at: DVec2, now: f64) {
+        if let Gesture::Holding { trail, .. } = self {
+            trail.push_back((now, at));
+            while trail.len() > 2 && trail.front().is_some_and(|&(t, _)| now - t > TRAIL_SECONDS) {
+                trail.pop_front();
+            }
+        }
+        self.pin_held(world);
+    }
+
+    /// Puts a held disc back under the cursor with the cursor's velocity
+    /// (after physics steps have moved it).
+    pub fn pin_held(&self, world: &mut World) {
+        let Gesture::Holding {
+            index,
+            offset,
+            trail,
+        } = self
+        else {
+            return;
+        };
+        let (Some(&(_, cursor)), size, boundary) = (trail.back(), world.size, world.boundary)
+        else {
+            return;
+        };
+        let velocity = trail_velocity(trail);
+        if let Some(p) = world.particles.get_mut(*index) {
+            p.pos = keep_inside(cursor + *offset, p.radius, size, boundary);
+            p.vel = velocity;
+        }
+    }
+
+    /// Ends the gesture at `at`.
+    pub fn release(&mut self, world: &mut World, at: DVec2, new_disc: NewDisc) -> Released {
+        match std::mem::take(self) {
+            Gesture::Idle => Released::Nothing,
+            Gesture::Launching { start } => {
+                let Some(pos) = world.free_spot_near(start, new_disc.radius) else {
+                    return Released::NoRoom;
+                };
+                let color = Color::palette(world.particles.len());
+                let vel = launch_velocity(start, at);
+                world.particles.push(Particle::new(
+                    pos,
+                    vel,
+                    new_disc.mass,
+                    new_disc.radius,
+                    color,
+                ));
+                Released::Launched(world.particles.len() - 1)
+            }
+            Gesture::Holding { index, trail, .. } => {
+                let velocity = trail_velocity(&trail);
+                match world.particles.get_mut(index) {
+                    Some(p) => {
+                        p.vel = velocity;
+                        Released::Flung(index, velocity)
+                    }
+                    None => Released::Nothing,
+                }
+            }
+        }
+    }
+
+    /// The held disc, if any.
+    pub fn held(&self) -> Option<usize> {
+        match self {
+            Gesture::Holding { index, .. } => Some(*index),
+            _ => None,
+        }
+    }
+
+    /// Keeps indices right after disc `removed` was deleted.
+    pub fn on_removed(&mut self, removed: usize) {
+        if let Gesture::Holding { index, .. } = self {
+            if *index == removed {
+                *self = Gesture::Idle;
+            } else if *index > removed {
+                *index -= 1;
+            }
+        }
+    }
+}
+
+/// Clamps a disc centre into the box (other boundaries have no walls).
+fn keep_inside(pos: DVec2, radius: f64, size: DVec2, boundary: Boundary) -> DVec2 {
+    match boundary {
+        Boundary::Box => {
+            let lo = DVec2::splat(radius).min(0.5 * size);
+            pos.clamp(lo, size - lo)
+        }
+        Boundary::Periodic => pos.rem_euclid(size),
+        Boundary::Open => pos,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const NEW: NewDisc = NewDisc {
+        radius: 0.5,
+        mass: 1.0,
+    };
+
+    fn world() -> World {
+        let mut w = World::new(DVec2::new(10.0, 10.0));
+        w.particles.push(Particle::new(
+            DVec2::new(5.0, 5.0),
+            DVec2::ZERO,
+            2.0,
+            1.0,
+            Color::palette(0),
+        ));
+        w
+    }
+
+    #[test]
+    fn drag_on_empty_space_launches_along_the_drag() {
+        let mut w = world();
+        let mut g = Gesture::default();
+        assert_eq!(g.press(&w, DVec2::new(2.0, 2.0), 0.0), None);
+        g.drag(&mut w, DVec2::new(3.0, 4.0), 0.1);
+        let r = g.release(&mut w, DVec2::new(3.0, 4.0), NEW);
+        assert_eq!(r, Released::Launched(1));
+        let p = w.particles[1];
+        assert_eq!(p.pos, DVec2::new(2.0, 2.0));
+        assert_eq!(p.vel, DVec2::new(1.0, 2.0) * LAUNCH_GAIN);
+    }
+
+    #[test]
+    fn a_launch_never_overlaps_another_disc() {
+        let mut w = world();
+        let mut g = Gesture::default();
+        // Just outside the big disc: a new disc here would overlap it.
+        g.press(&w, DVec2::new(6.2, 5.0), 0.0);
+        assert_eq!(
+            g.release(&mut w, DVec2::new(6.2, 5.0), NEW),
+            Released::Launched(1)
+        );
+        let (a, b) = (w.particles[0], w.particles[1]);
+        assert!(a.pos.distance(b.pos) >= a.radius + b.radius);
+        assert!(b.pos.distance(DVec2::new(6.2, 5.0)) < 0.5, "placed nearby");
+    }
+
+    #[test]
+    fn no_room_is_reported_not_forced() {
+        let mut w = World::new(DVec2::new(1.0, 1.0));
+        w.particles.push(Particle::new(
+            DVec2::splat(0.5),
+            DVec2::ZERO,
+            1.0,
+            0.5,
+            Color::palette(0),
+        ));
+        let mut g = Gesture::default();
+        g.press(&w, DVec2::new(0.05, 0.05), 0.0);
+        assert_eq!(
+            g.release(&mut w, DVec2::new(0.05, 0.05), NEW),
+            Released::NoRoom
+        );
+        assert_eq!(w.particles.len(), 1);
+    }
+
+    #[test]
+    fn a_grab_keeps_its_offset_and_a_fling_keeps_the_trajectory_velocity() {
+        let mut w = world();
+        let mut g = Gesture::default();
+        assert_eq!(g.press(&w, DVec2::new(5.5, 5.0), 0.0), Some(0));
+        for k in 1..=10 {
+            let t = k as f64 * 0.01;
+            g.drag(&mut w, DVec2::new(5.5 + 2.0 * t, 5.0 - 1.0 * t), t);
+        }
+        let p = w.particles[0];
+        assert!(
+            (p.pos - DVec2::new(5.7 - 0.5, 4.9)).length() < 1e-12,
+            "offset kept: {}",
+            p.pos
+        );
+        match g.release(&mut w, DVec2::new(5.7, 4.9), NEW) {
+            Released::Flung(0, v) => assert!((v - DVec2::new(2.0, -1.0)).length() < 1e-9, "{v}"),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_held_disc_stays_inside_the_walls() {
+        let mut w = world();
+        let mut g = Gesture::default();
+        g.press(&w, DVec2::new(5.0, 5.0), 0.0);
+        g.drag(&mut w, DVec2::new(-30.0, 50.0), 0.05);
+        let p = w.particles[0];
+        assert_eq!(p.pos, DVec2::new(1.0, 9.0));
+    }
+
+    #[test]
+    fn a_still_cursor_drops_the_disc_at_rest() {
+        let mut w = world();
+        let mut g = Gesture::default();
+        g.press(&w, DVec2::new(5.0, 5.0), 0.0);
+        g.drag(&mut w, DVec2::new(6.0, 5.0), 0.05);
+        g.drag(&mut w, DVec2::new(6.0, 5.0), 0.5);
+        g.drag(&mut w, DVec2::new(6.0, 5.0), 0.6);
+        assert_eq!(
+            g.release(&mut w, DVec2::new(6.0, 5.0), NEW),
+            Released::Flung(0, DVec2::ZERO)
+        );
+    }
+}

@@ -1,0 +1,329 @@
+//! The sandbox window: a fixed-step loop around a [`World`], with a camera,
+//! mouse gestures and overlays. Everything here is presentation; the physics
+//! lives in the `impulse` library.
+
+mod camera;
+mod clock;
+pub mod display;
+mod draw;
+mod dump;
+mod hud;
+mod input;
+mod interaction;
+
+use camera::Camera;
+use clock::FixedStepClock;
+use draw::Overlays;
+use glam::DVec2;
+use impulse::{Scene, World};
+use interaction::{Gesture, NewDisc};
+use macroquad::miniquad::conf::{Conf, LinuxBackend, Platform};
+use macroquad::prelude::*;
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+/// Options for the window, from the command line.
+#[derive(Clone, Debug, clap::Args)]
+pub struct WindowOptions {
+    /// Scene file to open (TOML); the built-in sandbox scene when absent.
+    pub scene: Option<PathBuf>,
+    /// Start paused.
+    #[arg(long)]
+    pub paused: bool,
+    /// Physics time step in seconds.
+    #[arg(long, default_value_t = 1.0 / 240.0, value_parser = positive_seconds)]
+    pub dt: f64,
+    /// Keep FILE updated with the state as JSON (rewritten atomically each frame).
+    #[arg(long, value_name = "FILE")]
+    pub dump_state: Option<PathBuf>,
+    /// Save the last frame as a PNG when the window closes.
+    #[arg(long, value_name = "FILE")]
+    pub screenshot: Option<PathBuf>,
+    /// Close the window after this many seconds of real time.
+    #[arg(long, value_name = "SECONDS", value_parser = positive_seconds)]
+    pub exit_after: Option<f64>,
+    /// Window size in pixels, WIDTHxHEIGHT.
+    #[arg(long, default_value = "1280x800", value_parser = window_size)]
+    pub size: (i32, i32),
+}
+
+fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?} is not a positive number of seconds")),
+    }
+}
+
+fn window_size(s: &str) -> Result<(i32, i32), String> {
+    let parsed = s
+        .split_once('x')
+        .and_then(|(w, h)| Some((w.parse::<i32>().ok()?, h.parse::<i32>().ok()?)));
+    match parsed {
+        Some((w, h)) if (200..=8192).contains(&w) && (200..=8192).contains(&h) => Ok((w, h)),
+        _ => Err(format!(
+            "{s:?} is not a window size like 1280x800 (200 to 8192 px)"
+        )),
+    }
+}
+
+/// The scene the window opens without a file: something is already moving.
+pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");
+
+/// Loads the scene, then opens the window (or explains why it cannot).
+pub fn run(options: WindowOptions) -> anyhow::Result<()> {
+    let (scene, origin) = match &options.scene {
+        Some(path) => (Scene::load(path)?, path.display().to_string()),
+        None => {
+            let origin = "built-in default scene".to_string();
+            (Scene::parse(DEFAULT_SCENE, &origin)?, origin)
+        }
+    };
+    let world = scene.build(&origin)?;
+    if let Some(problem) = display::problem() {
+        anyhow::bail!("{problem}; {}", display::HEADLESS_HINT);
+    }
+    let title = match &scene.name {
+        Some(name) => format!("Impulse - {name}"),
+        None => "Impulse".to_string(),
+    };
+    let conf = Conf {
+        window_title: title,
+        window_width: options.size.0,
+        window_height: options.size.1,
+        window_resizable: true,
+        sample_count: 4,
+        platform: Platform {
+            linux_backend: LinuxBackend::X11WithWaylandFallback,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    display::guard_window_start();
+    macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
+    Ok(())
+}
+
+/// The window's whole state.
+struct App {
+    options: WindowOptions,
+    scene: Scene,
+    scene_origin: String,
+    world: World,
+    camera: Camera,
+    clock: FixedStepClock,
+    gesture: Gesture,
+    overlays: Overlays,
+    selected: Option<usize>,
+    new_disc: NewDisc,
+    toast: Option<(String, f64)>,
+    /// Recent per-step wall-clock times (µs) for the HUD.
+    step_micros: VecDeque<f64>,
+    steps_last_frame: u32,
+    frame: u64,
+    last_mouse: DVec2,
+    fullscreen: bool,
+    font: f32,
+    quit: bool,
+}
+
+impl App {
+    fn new(options: WindowOptions, scene: Scene, scene_origin: String, world: World) -> Self {
+        let mut clock = FixedStepClock::new(options.dt, 64);
+        clock.paused = options.paused;
+        let size = world.size;
+        App {
+            options,
+            scene,
+            scene_origin,
+            camera: Camera::fitting(size, DVec2::new(1280.0, 800.0), 30.0),
+            world,
+            clock,
+            gesture: Gesture::Idle,
+            overlays: Overlays::default(),
+            selected: None,
+            new_disc: NewDisc {
+                radius: 0.4,
+                mass: 1.0,
+            },
+            toast: None,
+            step_micros: VecDeque::new(),
+            steps_last_frame: 0,
+            frame: 0,
+            last_mouse: DVec2::ZERO,
+            fullscreen: false,
+            font: 20.0,
+            quit: false,
+        }
+    }
+
+    async fn run(mut self) {
+        prevent_quit();
+        loop {
+            let viewport = DVec2::new(screen_width() as f64, screen_height() as f64);
+            if self.frame == 0 {
+                self.camera = Camera::fitting(self.world.size, viewport, 30.0);
+                display::mark_open();
+            }
+            self.camera.viewport = viewport;
+            self.handle_keys();
+            self.handle_mouse();
+            self.advance_physics(get_frame_time() as f64);
+            self.draw();
+            self.frame += 1;
+            let timed_out = self
+                .options
+                .exit_after
+                .is_some_and(|limit| get_time() >= limit);
+            let closing = self.quit || is_quit_requested() || timed_out;
+            if closing {
+                self.save_screenshot();
+            }
+            self.write_dump();
+            if closing {
+                break;
+            }
+            next_frame().await;
+        }
+    }
+
+    fn advance_physics(&mut self, frame_seconds: f64) {
+        let steps = self.clock.advance(frame_seconds);
+        self.steps_last_frame = steps;
+        for _ in 0..steps {
+            let stats = self.world.step(self.clock.dt);
+            self.gesture.pin_held(&mut self.world);
+            self.step_micros
+                .push_back(stats.timings.total().as_secs_f64() * 1e6);
+            if self.step_micros.len() > 240 {
+                self.step_micros.pop_front();
+            }
+        }
+    }
+
+    fn toast(&mut self, message: impl Into<String>) {
+        self.toast = Some((message.into(), get_time() + 3.0));
+    }
+
+    fn reset_scene(&mut self) {
+        match self.scene.build(&self.scene_origin) {
+            Ok(world) => {
+                self.world = world;
+                self.selected = None;
+                self.gesture = Gesture::Idle;
+                self.toast("Scene reset");
+            }
+            Err(e) => self.toast(format!("Cannot reset: {e}")),
+        }
+    }
+
+    fn draw(&self) {
+        clear_background(Color::new(0.09, 0.10, 0.14, 1.0));
+        draw::draw_boundary(&self.world, &self.camera);
+        draw::draw_discs(&self.world, &self.camera, self.selected);
+        draw::draw_arrows(&self.world, &self.camera, &self.overlays);
+        draw::draw_readouts(
+            &self.world,
+            &self.camera,
+            &self.overlays,
+            self.selected,
+            self.font * 0.8,
+        );
+        if let Gesture::Launching { start } = self.gesture {
+            let cursor = self.camera.screen_to_world(self.last_mouse);
+            draw::draw_launch_preview(
+                &self.world,
+                &self.camera,
+                start,
+                cursor,
+                self.new_disc,
+                self.font,
+            );
+        }
+        let viewport = vec2(self.camera.viewport.x as f32, self.camera.viewport.y as f32);
+        if self.overlays.hud {
+            hud::text_panel(10.0, 10.0, &self.hud_lines(), self.font, 0.75);
+        }
+        hud::draw_scale_bar(&self.camera, self.font);
+        if let Some((message, until)) = &self.toast {
+            if get_time() < *until {
+                hud::draw_toast(message, viewport, self.font);
+            }
+        }
+        if self.overlays.help {
+            hud::draw_help(viewport, self.font);
+        }
+    }
+
+    fn hud_lines(&self) -> Vec<String> {
+        let m = self.world.metrics();
+        let status = if self.clock.paused {
+            "PAUSED".to_string()
+        } else {
+            format!("speed x{}", self.clock.time_scale())
+        };
+        let mut micros: Vec<f64> = self.step_micros.iter().copied().collect();
+        micros.sort_by(f64::total_cmp);
+        let median_step = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
+        let name = self.scene.name.as_deref().unwrap_or("Sandbox");
+        vec![
+            format!("Impulse - {name}"),
+            format!(
+                "{} discs   t = {:.2} s   {status}",
+                m.count, self.world.time
+            ),
+            format!(
+                "p = ({:+.3}, {:+.3}) kg m/s   |p| = {:.3}",
+                m.momentum.x,
+                m.momentum.y,
+                m.momentum.length()
+            ),
+            format!("KE = {:.3} J", m.kinetic_energy),
+            format!(
+                "e = {:.2}   wall e = {:.2}   g = {:.2} m/s^2   {}",
+                self.world.restitution,
+                self.world.wall_restitution,
+                self.world.gravity.length(),
+                self.world.boundary.name()
+            ),
+            format!(
+                "FPS {}   step {:.1} us x{}   dt = {:.2} ms",
+                get_fps(),
+                median_step,
+                self.steps_last_frame,
+                self.clock.dt * 1e3
+            ),
+            format!(
+                "new disc: r = {:.2} m  m = {:.2} kg   H: help",
+                self.new_disc.radius, self.new_disc.mass
+            ),
+        ]
+    }
+
+    fn save_screenshot(&self) {
+        let Some(path) = &self.options.screenshot else {
+            return;
+        };
+        let image = get_screen_data();
+        let (w, h) = (u32::from(image.width), u32::from(image.height));
+        match dump::write_png(path, w, h, &image.bytes) {
+            Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
+            Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
+        }
+    }
+
+    fn write_dump(&self) {
+        let Some(path) = &self.options.dump_state else {
+            return;
+        };
+        let mut state = dump::StateDump::of(&self.world, &self.camera);
+        state.frame = self.frame;
+        state.paused = self.clock.paused;
+        state.time_scale = self.clock.time_scale();
+        state.dt = self.clock.dt;
+        state.selected = self.selected;
+        state.held = self.gesture.held();
+        if let Err(e) = dump::write_state(path, &state) {
+            eprintln!("impulse: cannot write state dump {}: {e}", path.display());
+        }
+    }
+}

@@ -1,0 +1,139 @@
+//! `impulse run`: simulate a scene without a window and print a summary.
+
+use impulse::{DVec2, Scene};
+use serde::Serialize;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Arguments of `impulse run`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct RunArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+    /// Simulated time in seconds.
+    #[arg(long, value_parser = non_negative_seconds)]
+    pub time: f64,
+    /// Physics time step in seconds.
+    #[arg(long, default_value_t = 1.0 / 240.0, value_parser = positive_seconds)]
+    pub dt: f64,
+    /// Print the summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?} is not a positive number of seconds")),
+    }
+}
+
+fn non_negative_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v >= 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?} is not a number of seconds (0 or more)")),
+    }
+}
+
+/// Most steps one run may take, so a typo cannot run for days.
+const MAX_STEPS: f64 = 1e9;
+
+/// What `run` prints.
+#[derive(Serialize)]
+struct Summary {
+    scene: String,
+    steps: u64,
+    sim_time: f64,
+    dt: f64,
+    pair_collisions: u64,
+    wall_hits: u64,
+    max_overlap: f64,
+    momentum: DVec2,
+    kinetic_energy: f64,
+    wall_clock_seconds: f64,
+    broad_phase: &'static str,
+    particles: Vec<impulse::Particle>,
+}
+
+/// Runs the scene and prints the summary.
+pub fn run(args: &RunArgs) -> anyhow::Result<()> {
+    let scene = Scene::load(&args.scene)?;
+    let origin = args.scene.display().to_string();
+    let mut world = scene.build(&origin)?;
+    let steps = (args.time / args.dt).round();
+    if steps > MAX_STEPS {
+        anyhow::bail!(
+            "--time {} with --dt {} would take {steps:e} steps (limit {MAX_STEPS:e})",
+            args.time,
+            args.dt
+        );
+    }
+    let started = Instant::now();
+    let mut max_overlap = 0.0f64;
+    for _ in 0..steps as u64 {
+        max_overlap = max_overlap.max(world.step(args.dt).max_overlap);
+    }
+    let metrics = world.metrics();
+    let summary = Summary {
+        scene: origin,
+        steps: world.steps,
+        sim_time: world.time,
+        dt: args.dt,
+        pair_collisions: world.total_pair_collisions,
+        wall_hits: world.total_wall_hits,
+        max_overlap,
+        momentum: metrics.momentum,
+        kinetic_energy: metrics.kinetic_energy,
+        wall_clock_seconds: started.elapsed().as_secs_f64(),
+        broad_phase: world.broad_phase().name(),
+        particles: world.particles,
+    };
+    let text = if args.json {
+        serde_json::to_string_pretty(&summary)? + "\n"
+    } else {
+        summary_text(&summary)
+    };
+    print_quietly(&text)
+}
+
+/// Prints to stdout; a reader that went away (`| head`) is not an error.
+fn print_quietly(text: &str) -> anyhow::Result<()> {
+    use std::io::Write;
+    match std::io::stdout().lock().write_all(text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.into()),
+        _ => Ok(()),
+    }
+}
+
+fn summary_text(s: &Summary) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    // Writing to a String cannot fail.
+    macro_rules! println {
+        ($($arg:tt)*) => { let _ = writeln!(out, $($arg)*); };
+    }
+    println!("scene            {}", s.scene);
+    println!("steps            {} (dt = {} s)", s.steps, s.dt);
+    println!("sim time         {:.6} s", s.sim_time);
+    println!("pair collisions  {}", s.pair_collisions);
+    println!("wall hits        {}", s.wall_hits);
+    println!("max overlap      {:.3e} m", s.max_overlap);
+    println!(
+        "momentum         ({:.9}, {:.9}) kg m/s",
+        s.momentum.x, s.momentum.y
+    );
+    println!("kinetic energy   {:.9} J", s.kinetic_energy);
+    println!("wall clock       {:.3} s", s.wall_clock_seconds);
+    println!("broad phase      {}", s.broad_phase);
+    println!("particles        {}", s.particles.len());
+    for (i, p) in s.particles.iter().enumerate().take(20) {
+        println!(
+            "  {i:>4}  pos ({:.4}, {:.4})  vel ({:.4}, {:.4})  m {}  r {}",
+            p.pos.x, p.pos.y, p.vel.x, p.vel.y, p.mass, p.radius
+        );
+    }
+    if s.particles.len() > 20 {
+        println!("  ... {} more (use --json for all)", s.particles.len() - 20);
+    }
+    out
+}
