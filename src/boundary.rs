@@ -114,7 +114,7 @@ fn bounce_axis(
         return false;
     };
     if into_wall {
-        *vel = -restitution * *vel;
+        *vel *= -restitution;
     }
     // Moving the disc by `shift` against gravity costs −g·shift per unit mass.
     let shift = target - *pos;

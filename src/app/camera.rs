@@ -55,7 +55,7 @@ impl Camera {
     }
 
     /// A world length in pixels.
-    pub fn to_pixels(&self, metres: f64) -> f64 {
+    pub fn length_in_pixels(&self, metres: f64) -> f64 {
         metres * self.scale
     }
 

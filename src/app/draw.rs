@@ -106,7 +106,7 @@ fn dashed_line(from: Vec2, to: Vec2, dash: f32, color: Color) {
 pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>) {
     for (i, p) in world.particles.iter().enumerate() {
         let c = px(camera.world_to_screen(p.pos));
-        let r = camera.to_pixels(p.radius).max(1.0) as f32;
+        let r = camera.length_in_pixels(p.radius).max(1.0) as f32;
         if !on_screen(c, r, camera) {
             continue;
         }
@@ -148,7 +148,11 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
         world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
     for p in &world.particles {
         let c = camera.world_to_screen(p.pos);
-        if !on_screen(px(c), 4.0 + camera.to_pixels(p.radius) as f32, camera) {
+        if !on_screen(
+            px(c),
+            4.0 + camera.length_in_pixels(p.radius) as f32,
+            camera,
+        ) {
             continue;
         }
         if overlays.velocity {
@@ -192,7 +196,7 @@ pub fn draw_readouts(
             continue;
         };
         let c = px(camera.world_to_screen(p.pos));
-        let r = camera.to_pixels(p.radius) as f32;
+        let r = camera.length_in_pixels(p.radius) as f32;
         if !on_screen(c, r + 200.0, camera) {
             continue;
         }
@@ -216,7 +220,7 @@ pub fn draw_launch_preview(
 ) {
     let spot = world.free_spot_near(start, new_disc.radius);
     let at = px(camera.world_to_screen(spot.unwrap_or(start)));
-    let r = camera.to_pixels(new_disc.radius).max(1.0) as f32;
+    let r = camera.length_in_pixels(new_disc.radius).max(1.0) as f32;
     let ghost = if spot.is_some() {
         Color::new(1.0, 1.0, 1.0, 0.35)
     } else {

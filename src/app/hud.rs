@@ -88,7 +88,7 @@ pub fn draw_scale_bar(camera: &Camera, font: f32) {
     draw_line(x, y - 6.0, x, y + 6.0, 2.0, color);
     draw_line(x + length, y - 6.0, x + length, y + 6.0, 2.0, color);
     draw_text(
-        &format_metres(metres),
+        format_metres(metres).as_str(),
         x + length + 10.0,
         y + 0.3 * font,
         font,
