@@ -3,7 +3,9 @@
 //! The box walls reflect a disc that has crossed them, scaled by the wall
 //! restitution, and put it back inside. Moving a disc back inside changes its
 //! height, so under gravity the wall also takes the potential energy that move
-//! gains out of the disc's speed along that axis: a wall never creates energy.
+//! gains out of the disc's speed along that axis: a bounce never creates
+//! energy. (A disc pushed into the floor while at rest has no speed to pay
+//! with; lifting it back costs at most m·g·depth, and it ends at rest.)
 
 use crate::particle::Particle;
 use glam::DVec2;
@@ -150,7 +152,16 @@ mod tests {
                 bounce_axis(&mut pos, &mut vel, 0.5, 10.0, g, 1.0);
                 let after = 0.5 * vel * vel - g * pos;
                 assert!(pos >= 0.5, "disc left inside the floor");
-                assert!(after <= before + 1e-12, "energy {before} -> {after}");
+                // Never more than before, unless the disc had too little
+                // speed to pay for the lift, and then it ends at rest.
+                let at_rest_on_floor = -g * 0.5;
+                assert!(
+                    after <= before.max(at_rest_on_floor) + 1e-12,
+                    "energy {before} -> {after}"
+                );
+                if after > before + 1e-12 {
+                    assert_eq!(vel, 0.0);
+                }
             }
         }
     }
