@@ -1,0 +1,415 @@
+//! The real window under Xvfb, driven with xdotool as a person would use it,
+//! checked through the state dump (`--dump-state`) and screenshots.
+//!
+//! Needs the Debian packages xvfb, libgl1-mesa-dri, libxi6, libxkbcommon0 and
+//! xdotool (`.ci/run` installs them). Without them the tests print why they
+//! skip; with `CI` set, a missing package is a failure.
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::Mutex;
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+
+/// One window at a time: two cores cannot render several at a usable rate.
+static ONE_WINDOW: Mutex<()> = Mutex::new(());
+static NEXT_DISPLAY: AtomicU32 = AtomicU32::new(0);
+
+fn have(program: &str) -> bool {
+    Command::new("sh")
+        .args(["-c", &format!("command -v {program}")])
+        .stdout(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+/// A private X server; killed when dropped.
+struct Xvfb {
+    child: Child,
+    display: String,
+}
+
+impl Xvfb {
+    /// Starts one, or returns `None` (after saying why) when it cannot here.
+    fn start(test: &str) -> Option<Xvfb> {
+        let missing: Vec<&str> = ["Xvfb", "xdotool"]
+            .into_iter()
+            .filter(|p| !have(p))
+            .collect();
+        if !missing.is_empty() {
+            let why = format!(
+                "{test}: {} not installed (apt-get install xvfb xdotool)",
+                missing.join(", ")
+            );
+            if std::env::var_os("CI").is_some() {
+                panic!("CI is set, so the window tests must run: {why}");
+            }
+            eprintln!("SKIPPED {why}");
+            return None;
+        }
+        let number =
+            200 + (std::process::id() % 300) * 3 + NEXT_DISPLAY.fetch_add(1, Ordering::SeqCst);
+        let display = format!(":{number}");
+        let child = Command::new("Xvfb")
+            .args([&display, "-screen", "0", "1280x800x24", "-nolisten", "tcp"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("Xvfb starts");
+        let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while !socket.exists() {
+            assert!(Instant::now() < deadline, "Xvfb {display} did not come up");
+            sleep(Duration::from_millis(50));
+        }
+        Some(Xvfb { child, display })
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// The `impulse` window running on an Xvfb display.
+struct Sandbox {
+    child: Child,
+    dump: PathBuf,
+    display: String,
+    _dir: tempfile::TempDir,
+}
+
+impl Sandbox {
+    fn start(x: &Xvfb, args: &[&str]) -> Sandbox {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let dump = dir.path().join("state.json");
+        let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
+            .args(args)
+            .arg("--dump-state")
+            .arg(&dump)
+            .args(["--exit-after", "120"])
+            .env("DISPLAY", &x.display)
+            .stdout(Stdio::null())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("impulse starts");
+        let sandbox = Sandbox {
+            child,
+            dump,
+            display: x.display.clone(),
+            _dir: dir,
+        };
+        sandbox.wait_frames(5);
+        sandbox
+    }
+
+    /// The latest state dump.
+    fn state(&self) -> Value {
+        let deadline = Instant::now() + Duration::from_secs(60);
+        loop {
+            if let Ok(text) = std::fs::read_to_string(&self.dump) {
+                if let Ok(v) = serde_json::from_str(&text) {
+                    return v;
+                }
+            }
+            assert!(
+                Instant::now() < deadline,
+                "no state dump appeared at {}",
+                self.dump.display()
+            );
+            sleep(Duration::from_millis(50));
+        }
+    }
+
+    /// Waits until `n` more frames have been drawn, and returns the state.
+    fn wait_frames(&self, n: u64) -> Value {
+        let start = self.state()["frame"].as_u64().unwrap_or(0);
+        let deadline = Instant::now() + Duration::from_secs(60);
+        loop {
+            let s = self.state();
+            if s["frame"].as_u64().unwrap_or(0) >= start + n {
+                return s;
+            }
+            assert!(
+                Instant::now() < deadline,
+                "the window stopped drawing frames"
+            );
+            sleep(Duration::from_millis(20));
+        }
+    }
+
+    fn xdo(&self, args: &[&str]) {
+        let status = Command::new("xdotool")
+            .args(args)
+            .env("DISPLAY", &self.display)
+            .status()
+            .expect("xdotool runs");
+        assert!(status.success(), "xdotool {args:?} failed");
+    }
+
+    fn move_to(&self, p: [f64; 2]) {
+        self.xdo(&[
+            "mousemove",
+            &format!("{}", p[0].round()),
+            &format!("{}", p[1].round()),
+        ]);
+    }
+
+    /// Presses Ctrl+Q and returns the final state once the window has closed.
+    fn quit(mut self) -> Value {
+        self.xdo(&["key", "ctrl+q"]);
+        let deadline = Instant::now() + Duration::from_secs(30);
+        loop {
+            if let Some(status) = self.child.try_wait().expect("wait") {
+                assert!(status.success(), "impulse exited with {status}");
+                return self.state();
+            }
+            assert!(Instant::now() < deadline, "Ctrl+Q did not close the window");
+            sleep(Duration::from_millis(50));
+        }
+    }
+}
+
+impl Drop for Sandbox {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// The camera of a dump: world point → screen pixel and back.
+struct View {
+    center: [f64; 2],
+    scale: f64,
+    viewport: [f64; 2],
+}
+
+impl View {
+    fn of(state: &Value) -> View {
+        let c = &state["camera"];
+        let pair = |v: &Value| [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()];
+        View {
+            center: pair(&c["center"]),
+            scale: c["scale"].as_f64().unwrap(),
+            viewport: pair(&c["viewport"]),
+        }
+    }
+    fn to_screen(&self, w: [f64; 2]) -> [f64; 2] {
+        [
+            self.viewport[0] / 2.0 + (w[0] - self.center[0]) * self.scale,
+            self.viewport[1] / 2.0 - (w[1] - self.center[1]) * self.scale,
+        ]
+    }
+    fn to_world(&self, s: [f64; 2]) -> [f64; 2] {
+        [
+            self.center[0] + (s[0] - self.viewport[0] / 2.0) / self.scale,
+            self.center[1] - (s[1] - self.viewport[1] / 2.0) / self.scale,
+        ]
+    }
+}
+
+fn vec2(v: &Value) -> [f64; 2] {
+    [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()]
+}
+
+fn scene_file(dir: &Path, text: &str) -> PathBuf {
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn asset(name: &str) -> String {
+    format!("{}/assets/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("launch") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &[&asset("empty.toml"), "--paused"]);
+    let view = View::of(&app.state());
+    let (from, to) = ([400.0, 450.0], [640.0, 330.0]); // right and up on screen
+    app.move_to(from);
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    for k in 1..=6 {
+        let t = k as f64 / 6.0;
+        app.move_to([
+            from[0] + t * (to[0] - from[0]),
+            from[1] + t * (to[1] - from[1]),
+        ]);
+        sleep(Duration::from_millis(30));
+    }
+    app.wait_frames(2);
+    app.xdo(&["mouseup", "1"]);
+    let s = app.wait_frames(3);
+
+    let discs = s["particles"].as_array().unwrap();
+    assert_eq!(discs.len(), 1, "one disc launched");
+    let (pos, vel) = (vec2(&discs[0]["pos"]), vec2(&discs[0]["vel"]));
+    let (start, end) = (view.to_world(from), view.to_world(to));
+    for k in 0..2 {
+        assert!(
+            (pos[k] - start[k]).abs() < 1e-9,
+            "launched where pressed: {pos:?} vs {start:?}"
+        );
+        // The interaction module's gain: 1.5 m/s per metre of drag.
+        let want = 1.5 * (end[k] - start[k]);
+        assert!(
+            (vel[k] - want).abs() < 1e-9,
+            "velocity follows the drag: {vel:?}"
+        );
+    }
+    assert!(
+        vel[0] > 0.0 && vel[1] > 0.0,
+        "screen right-and-up is world +x, +y: {vel:?}"
+    );
+    assert_eq!(s["selected"], 0, "the new disc is selected");
+
+    // Running again moves it along its velocity.
+    app.xdo(&["key", "space"]);
+    let later = app.wait_frames(10);
+    assert_eq!(later["paused"], false);
+    let moved = vec2(&later["particles"][0]["pos"]);
+    assert!(
+        moved[0] > pos[0] && moved[1] > pos[1],
+        "{pos:?} -> {moved:?}"
+    );
+    app.quit();
+}
+
+#[test]
+fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("zoom") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let scene = scene_file(
+        dir.path(),
+        "[world]\nsize = [16.0, 10.0]\n[[particles]]\npos = [8.0, 5.0]\nmass = 1.0\nradius = 0.5\n",
+    );
+    let app = Sandbox::start(&x, &[scene.to_str().unwrap(), "--paused"]);
+    let before = View::of(&app.state());
+    let anchor_world = [9.0, 5.5];
+    let anchor = before.to_screen(anchor_world);
+    app.move_to(anchor);
+    app.wait_frames(2);
+    for _ in 0..4 {
+        app.xdo(&["click", "4"]);
+        app.wait_frames(1);
+    }
+    let zoomed = View::of(&app.wait_frames(2));
+    assert!(
+        zoomed.scale > before.scale * 1.5,
+        "wheel up zooms in: {} -> {}",
+        before.scale,
+        zoomed.scale
+    );
+    let still = zoomed.to_world(anchor);
+    assert!(
+        (still[0] - anchor_world[0]).abs() < 1e-6 && (still[1] - anchor_world[1]).abs() < 1e-6,
+        "the point under the cursor stays put: {still:?}"
+    );
+
+    // Grab the disc off-centre where it is drawn now, and fling it right.
+    let grab_world = [8.3, 5.2];
+    let grab = zoomed.to_screen(grab_world);
+    app.move_to(grab);
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    let release = [grab[0] + 150.0, grab[1]];
+    for k in 1..=10 {
+        app.move_to([grab[0] + 15.0 * k as f64, grab[1]]);
+        sleep(Duration::from_millis(25));
+    }
+    let held = app.wait_frames(1);
+    assert_eq!(held["held"], 0, "the disc under the cursor was grabbed");
+    app.xdo(&["mouseup", "1"]);
+    let s = app.wait_frames(2);
+    assert_eq!(s["held"], Value::Null);
+    assert_eq!(s["selected"], 0);
+    let disc = &s["particles"][0];
+    let (pos, vel) = (vec2(&disc["pos"]), vec2(&disc["vel"]));
+    let target = zoomed.to_world(release);
+    let offset = [8.0 - grab_world[0], 5.0 - grab_world[1]];
+    for k in 0..2 {
+        assert!(
+            (pos[k] - (target[k] + offset[k])).abs() < 1e-6,
+            "the disc kept its grab offset: {pos:?}"
+        );
+    }
+    assert!(vel[0] > 0.0, "flung to the right: {vel:?}");
+    app.quit();
+}
+
+#[test]
+fn space_pauses_and_n_steps_once() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("pause") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &[]);
+    let running = app.wait_frames(5);
+    assert_eq!(running["paused"], false);
+    assert!(
+        running["time"].as_f64().unwrap() > 0.0,
+        "the default scene runs"
+    );
+    app.move_to([640.0, 400.0]);
+    app.xdo(&["key", "space"]);
+    let paused = app.wait_frames(3);
+    assert_eq!(paused["paused"], true);
+    let held = app.wait_frames(10);
+    assert_eq!(held["steps"], paused["steps"], "no steps while paused");
+    assert_eq!(
+        held["particles"], paused["particles"],
+        "nothing moves while paused"
+    );
+    app.xdo(&["key", "n"]);
+    let stepped = app.wait_frames(3);
+    assert_eq!(
+        stepped["steps"].as_u64(),
+        paused["steps"].as_u64().map(|s| s + 1),
+        "N runs one step"
+    );
+    app.xdo(&["key", "space"]);
+    let resumed = app.wait_frames(10);
+    assert!(
+        resumed["steps"].as_u64() > stepped["steps"].as_u64(),
+        "Space resumes"
+    );
+    let last = app.quit();
+    assert!(last["metrics"]["count"].as_u64().unwrap() > 2);
+}
+
+#[test]
+fn screenshot_saves_the_frame_as_a_png() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("screenshot") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("shot.png");
+    let status = Command::new(env!("CARGO_BIN_EXE_impulse"))
+        .args(["--exit-after", "2", "--screenshot"])
+        .arg(&png)
+        .env("DISPLAY", &x.display)
+        .status()
+        .expect("impulse runs");
+    assert!(status.success());
+    let img = image::open(&png).expect("a readable PNG").to_rgb8();
+    assert_eq!(img.dimensions(), (1280, 800));
+    let background = *img.get_pixel(640, 790);
+    let differing = img.pixels().filter(|p| **p != background).count();
+    assert!(
+        differing > 20_000,
+        "the frame shows discs and text, {differing} pixels differ"
+    );
+}
