@@ -9,6 +9,8 @@ use macroquad::prelude::*;
 const ZOOM_STEP: f64 = 1.15;
 /// Keyboard pan speed, pixels per frame.
 const PAN_PIXELS: f64 = 12.0;
+/// A press that moves less than this is a click, not a drag.
+const CLICK_SLOP_PIXELS: f64 = 4.0;
 /// Gravity G switches on (m/s², downwards).
 const EARTH_GRAVITY: f64 = 9.81;
 
@@ -187,7 +189,8 @@ impl App {
         }
 
         if is_mouse_button_pressed(MouseButton::Left) {
-            self.selected = self.gesture.press(&self.world, at, now);
+            let slop = CLICK_SLOP_PIXELS / self.camera.scale;
+            self.selected = self.gesture.press(&self.world, at, now, slop);
         } else if is_mouse_button_down(MouseButton::Left) {
             self.gesture.drag(&mut self.world, at, now);
         }

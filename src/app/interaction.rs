@@ -9,6 +9,9 @@
 //! - Press on a disc: it is held at the same offset from the cursor, kept
 //!   inside the walls, and on release keeps the velocity of the recent mouse
 //!   trajectory (metres per real second).
+//! - A click (press and release without moving more than a few pixels) only
+//!   selects: on empty space it launches nothing, on a disc it gives the disc
+//!   back the velocity it had, so selecting a disc to read it never stops it.
 
 use glam::DVec2;
 use impulse::{Boundary, Color, Particle, World};
@@ -38,6 +41,8 @@ pub enum Gesture {
     Launching {
         /// Where the press happened (world).
         start: DVec2,
+        /// Drags shorter than this (m) are clicks.
+        slop: f64,
     },
     /// Holding disc `index`, which sits at `cursor + offset`.
     Holding {
@@ -47,6 +52,14 @@ pub enum Gesture {
         offset: DVec2,
         /// Recent (real time, cursor world position) samples.
         trail: VecDeque<(f64, DVec2)>,
+        /// The disc's velocity when it was grabbed.
+        velocity_before: DVec2,
+        /// Where the press happened (world).
+        pressed_at: DVec2,
+        /// Whether the cursor has gone further than `slop` from `pressed_at`.
+        dragged: bool,
+        /// Drags shorter than this (m) are clicks.
+        slop: f64,
     },
 }
 
@@ -83,19 +96,24 @@ pub fn trail_velocity(trail: &VecDeque<(f64, DVec2)>) -> DVec2 {
 
 impl Gesture {
     /// Starts a gesture at world point `at`; returns the disc grabbed, if any.
-    pub fn press(&mut self, world: &World, at: DVec2, now: f64) -> Option<usize> {
+    /// Moves shorter than `slop` (m) count as a click.
+    pub fn press(&mut self, world: &World, at: DVec2, now: f64, slop: f64) -> Option<usize> {
         match world.particle_at(at) {
             Some(index) => {
-                let offset = world.particles[index].pos - at;
+                let p = &world.particles[index];
                 *self = Gesture::Holding {
                     index,
-                    offset,
+                    offset: p.pos - at,
                     trail: VecDeque::from([(now, at)]),
+                    velocity_before: p.vel,
+                    pressed_at: at,
+                    dragged: false,
+                    slop,
                 };
                 Some(index)
             }
             None => {
-                *self = Gesture::Launching { start: at };
+                *self = Gesture::Launching { start: at, slop };
                 None
             }
         }
@@ -103,7 +121,15 @@ impl Gesture {
 
     /// Follows the cursor; a held disc moves with it (inside the walls).
     pub fn drag(&mut self, world: &mut World, at: DVec2, now: f64) {
-        if let Gesture::Holding { trail, .. } = self {
+        if let Gesture::Holding {
+            trail,
+            pressed_at,
+            dragged,
+            slop,
+            ..
+        } = self
+        {
+            *dragged |= pressed_at.distance(at) > *slop;
             trail.push_back((now, at));
             while trail.len() > 2 && trail.front().is_some_and(|&(t, _)| now - t > TRAIL_SECONDS) {
                 trail.pop_front();
@@ -119,6 +145,7 @@ impl Gesture {
             index,
             offset,
             trail,
+            ..
         } = self
         else {
             return;
@@ -138,7 +165,10 @@ impl Gesture {
     pub fn release(&mut self, world: &mut World, at: DVec2, new_disc: NewDisc) -> Released {
         match std::mem::take(self) {
             Gesture::Idle => Released::Nothing,
-            Gesture::Launching { start } => {
+            Gesture::Launching { start, slop } => {
+                if start.distance(at) <= slop {
+                    return Released::Nothing; // a click on empty space
+                }
                 let Some(pos) = world.free_spot_near(start, new_disc.radius) else {
                     return Released::NoRoom;
                 };
@@ -153,8 +183,18 @@ impl Gesture {
                 ));
                 Released::Launched(world.particles.len() - 1)
             }
-            Gesture::Holding { index, trail, .. } => {
-                let velocity = trail_velocity(&trail);
+            Gesture::Holding {
+                index,
+                trail,
+                velocity_before,
+                dragged,
+                ..
+            } => {
+                let velocity = if dragged {
+                    trail_velocity(&trail)
+                } else {
+                    velocity_before // a click selects; it does not stop the disc
+                };
                 match world.particles.get_mut(index) {
                     Some(p) => {
                         p.vel = velocity;
@@ -206,6 +246,7 @@ mod tests {
         radius: 0.5,
         mass: 1.0,
     };
+    const SLOP: f64 = 0.02;
 
     fn world() -> World {
         let mut w = World::new(DVec2::new(10.0, 10.0));
@@ -223,7 +264,7 @@ mod tests {
     fn drag_on_empty_space_launches_along_the_drag() {
         let mut w = world();
         let mut g = Gesture::default();
-        assert_eq!(g.press(&w, DVec2::new(2.0, 2.0), 0.0), None);
+        assert_eq!(g.press(&w, DVec2::new(2.0, 2.0), 0.0, SLOP), None);
         g.drag(&mut w, DVec2::new(3.0, 4.0), 0.1);
         let r = g.release(&mut w, DVec2::new(3.0, 4.0), NEW);
         assert_eq!(r, Released::Launched(1));
@@ -237,9 +278,9 @@ mod tests {
         let mut w = world();
         let mut g = Gesture::default();
         // Just outside the big disc: a new disc here would overlap it.
-        g.press(&w, DVec2::new(6.2, 5.0), 0.0);
+        g.press(&w, DVec2::new(6.2, 5.0), 0.0, SLOP);
         assert_eq!(
-            g.release(&mut w, DVec2::new(6.2, 5.0), NEW),
+            g.release(&mut w, DVec2::new(6.3, 5.0), NEW),
             Released::Launched(1)
         );
         let (a, b) = (w.particles[0], w.particles[1]);
@@ -258,9 +299,9 @@ mod tests {
             Color::palette(0),
         ));
         let mut g = Gesture::default();
-        g.press(&w, DVec2::new(0.05, 0.05), 0.0);
+        g.press(&w, DVec2::new(0.05, 0.05), 0.0, SLOP);
         assert_eq!(
-            g.release(&mut w, DVec2::new(0.05, 0.05), NEW),
+            g.release(&mut w, DVec2::new(0.1, 0.05), NEW),
             Released::NoRoom
         );
         assert_eq!(w.particles.len(), 1);
@@ -270,7 +311,7 @@ mod tests {
     fn a_grab_keeps_its_offset_and_a_fling_keeps_the_trajectory_velocity() {
         let mut w = world();
         let mut g = Gesture::default();
-        assert_eq!(g.press(&w, DVec2::new(5.5, 5.0), 0.0), Some(0));
+        assert_eq!(g.press(&w, DVec2::new(5.5, 5.0), 0.0, SLOP), Some(0));
         for k in 1..=10 {
             let t = k as f64 * 0.01;
             g.drag(&mut w, DVec2::new(5.5 + 2.0 * t, 5.0 - 1.0 * t), t);
@@ -291,7 +332,7 @@ mod tests {
     fn a_held_disc_stays_inside_the_walls() {
         let mut w = world();
         let mut g = Gesture::default();
-        g.press(&w, DVec2::new(5.0, 5.0), 0.0);
+        g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
         g.drag(&mut w, DVec2::new(-30.0, 50.0), 0.05);
         let p = w.particles[0];
         assert_eq!(p.pos, DVec2::new(1.0, 9.0));
@@ -301,13 +342,38 @@ mod tests {
     fn a_still_cursor_drops_the_disc_at_rest() {
         let mut w = world();
         let mut g = Gesture::default();
-        g.press(&w, DVec2::new(5.0, 5.0), 0.0);
+        g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
         g.drag(&mut w, DVec2::new(6.0, 5.0), 0.05);
         g.drag(&mut w, DVec2::new(6.0, 5.0), 0.5);
         g.drag(&mut w, DVec2::new(6.0, 5.0), 0.6);
         assert_eq!(
             g.release(&mut w, DVec2::new(6.0, 5.0), NEW),
             Released::Flung(0, DVec2::ZERO)
+        );
+    }
+
+    #[test]
+    fn a_click_selects_without_launching_or_stopping() {
+        let mut w = world();
+        w.particles[0].vel = DVec2::new(1.0, -2.0);
+        let mut g = Gesture::default();
+        g.press(&w, DVec2::new(2.0, 2.0), 0.0, SLOP);
+        assert_eq!(
+            g.release(&mut w, DVec2::new(2.01, 2.0), NEW),
+            Released::Nothing
+        );
+        assert_eq!(
+            w.particles.len(),
+            1,
+            "a click on empty space launches nothing"
+        );
+        assert_eq!(g.press(&w, DVec2::new(5.2, 5.0), 0.0, SLOP), Some(0));
+        g.drag(&mut w, DVec2::new(5.21, 5.0), 0.2);
+        let r = g.release(&mut w, DVec2::new(5.21, 5.0), NEW);
+        assert_eq!(
+            r,
+            Released::Flung(0, DVec2::new(1.0, -2.0)),
+            "a click keeps the velocity"
         );
     }
 }

@@ -228,7 +228,7 @@ impl App {
             self.selected,
             self.font * 0.8,
         );
-        if let Gesture::Launching { start } = self.gesture {
+        if let Gesture::Launching { start, .. } = self.gesture {
             let cursor = self.camera.screen_to_world(self.last_mouse);
             draw::draw_launch_preview(
                 &self.world,
@@ -265,7 +265,7 @@ impl App {
         micros.sort_by(f64::total_cmp);
         let median_step = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
         let name = self.scene.name.as_deref().unwrap_or("Sandbox");
-        vec![
+        let mut lines = vec![
             format!("Impulse - {name}"),
             format!(
                 "{} discs   t = {:.2} s   {status}",
@@ -296,7 +296,18 @@ impl App {
                 "new disc: r = {:.2} m  m = {:.2} kg   H: help",
                 self.new_disc.radius, self.new_disc.mass
             ),
-        ]
+        ];
+        let arrows = match (self.overlays.velocity, self.overlays.momentum) {
+            (true, true) => Some("white v, pink p / mean mass"),
+            (true, false) => Some("white v"),
+            (false, true) => Some("pink p / mean mass"),
+            (false, false) => None,
+        };
+        if let Some(arrows) = arrows {
+            let secs = draw::ARROW_SECONDS;
+            lines.push(format!("arrows: {arrows}, x {secs} s"));
+        }
+        lines
     }
 
     fn save_screenshot(&self) {

@@ -1,0 +1,99 @@
+//! The binary from the outside: one-line errors, exit codes, `run` output.
+
+use std::process::{Command, Output};
+
+fn impulse(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_impulse"))
+        .args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn asset(name: &str) -> String {
+    format!("{}/assets/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn without_a_display_it_says_so_in_one_line_and_names_the_headless_command() {
+    let out = impulse(&[]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(
+        err.contains("display") && err.contains("impulse run"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn a_bad_scene_file_is_one_line_naming_file_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bad.toml");
+    std::fs::write(
+        &path,
+        "[world]\nsize = [4.0, 4.0]\n[[particles]]\npos = [2.0, 2.0]\nmass = -3.0\nradius = 0.5\n",
+    )
+    .unwrap();
+    for args in [
+        vec![path.to_str().unwrap()],
+        vec!["run", path.to_str().unwrap(), "--time", "1"],
+    ] {
+        let out = impulse(&args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = stderr(&out);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("bad.toml") && err.contains("particles[0].mass"),
+            "{err}"
+        );
+    }
+    let out = impulse(&["/no/such/file.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("/no/such/file.toml"));
+}
+
+#[test]
+fn wrong_arguments_are_refused_by_the_parser() {
+    for args in [
+        vec!["run", "x.toml", "--time", "-1"],
+        vec!["run", "x.toml", "--time", "1", "--dt", "0"],
+        vec!["--dt", "nan"],
+        vec!["--size", "10x10"],
+        vec!["--no-such-flag"],
+    ] {
+        let out = impulse(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
+        assert!(!stderr(&out).contains("panicked"));
+    }
+}
+
+#[test]
+fn run_simulates_headlessly_and_reports_json() {
+    let out = impulse(&[
+        "run",
+        &asset("default.toml"),
+        "--time",
+        "2",
+        "--dt",
+        "0.005",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    assert_eq!(v["steps"], 400);
+    assert!((v["sim_time"].as_f64().unwrap() - 2.0).abs() < 1e-9);
+    assert_eq!(v["particles"].as_array().unwrap().len(), 26);
+    let ke = v["kinetic_energy"].as_f64().unwrap();
+    assert!(ke > 0.0 && ke.is_finite());
+    // The default scene is elastic everywhere: kinetic energy is conserved.
+    let scene = impulse::Scene::load(std::path::Path::new(&asset("default.toml"))).unwrap();
+    let ke0 = scene.build("default").unwrap().metrics().kinetic_energy;
+    assert!((ke - ke0).abs() < 1e-9 * ke0, "{ke} vs {ke0}");
+}
