@@ -14,12 +14,18 @@ const CLICK_SLOP_PIXELS: f64 = 4.0;
 /// Gravity G switches on (m/s², downwards).
 const EARTH_GRAVITY: f64 = 9.81;
 
+/// Whether a modifier is held, or was pressed during this frame: at a low
+/// frame rate a quick Ctrl+Q can press and release Ctrl within one frame.
+fn held_or_pressed(keys: [KeyCode; 2]) -> bool {
+    keys.into_iter().any(|k| is_key_down(k) || is_key_pressed(k))
+}
+
 fn shift() -> bool {
-    is_key_down(KeyCode::LeftShift) || is_key_down(KeyCode::RightShift)
+    held_or_pressed([KeyCode::LeftShift, KeyCode::RightShift])
 }
 
 fn ctrl() -> bool {
-    is_key_down(KeyCode::LeftControl) || is_key_down(KeyCode::RightControl)
+    held_or_pressed([KeyCode::LeftControl, KeyCode::RightControl])
 }
 
 /// `e` moved by one tenth up or down, kept in [0, 1].
