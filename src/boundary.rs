@@ -42,30 +42,32 @@ impl Boundary {
     pub fn separation(self, a: DVec2, b: DVec2, size: DVec2) -> DVec2 {
         let d = b - a;
         match self {
-            Boundary::Periodic => d - size * (d / size).round(),
+            Boundary::Periodic => DVec2::new(wrap(d.x, size.x), wrap(d.y, size.y)),
             Boundary::Box | Boundary::Open => d,
         }
     }
 
-    /// Applies the boundary to every disc; returns the number of wall bounces.
+    /// Applies the boundary to every disc.
     pub fn apply(
         self,
         particles: &mut [Particle],
         size: DVec2,
         gravity: DVec2,
         wall_restitution: f64,
-    ) -> usize {
+    ) -> WallReport {
         match self {
-            Boundary::Open => 0,
+            Boundary::Open => WallReport::default(),
             Boundary::Periodic => {
                 for p in particles {
                     p.pos = p.pos.rem_euclid(size);
                 }
-                0
+                WallReport::default()
             }
             Boundary::Box => {
                 let mut hits = 0;
+                let mut impulse = 0.0;
                 for p in particles {
+                    let before = p.vel;
                     let (x, y) = (&mut p.pos.x, &mut p.pos.y);
                     hits += usize::from(bounce_axis(
                         x,
@@ -83,10 +85,44 @@ impl Boundary {
                         gravity.y,
                         wall_restitution,
                     ));
+                    impulse += p.mass * (p.vel - before).abs().element_sum();
                 }
-                hits
+                WallReport { hits, impulse }
             }
         }
+    }
+}
+
+/// What the walls did in one boundary stage.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WallReport {
+    /// Discs that bounced.
+    pub hits: usize,
+    /// Momentum the walls gave the discs, Σ m·|Δv| (kg·m/s): over time and
+    /// wall length, the pressure.
+    pub impulse: f64,
+}
+
+/// The shortest signed distance along one axis of a torus of length `len`
+/// (exact for |d| < 1.5·len, which holds for positions kept inside the box).
+fn wrap(d: f64, len: f64) -> f64 {
+    let half = 0.5 * len;
+    if d > half {
+        let w = d - len;
+        if w > half {
+            d - len * (d / len).round()
+        } else {
+            w
+        }
+    } else if d < -half {
+        let w = d + len;
+        if w < -half {
+            d - len * (d / len).round()
+        } else {
+            w
+        }
+    } else {
+        d
     }
 }
 

@@ -1,5 +1,8 @@
 //! `impulse run`: simulate a scene without a window and print a summary.
 
+use impulse::auto::Plan;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
 use impulse::{DVec2, Scene};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -13,9 +16,18 @@ pub struct RunArgs {
     /// Simulated time in seconds.
     #[arg(long, value_parser = non_negative_seconds)]
     pub time: f64,
-    /// Physics time step in seconds.
-    #[arg(long, default_value_t = 1.0 / 240.0, value_parser = positive_seconds)]
-    pub dt: f64,
+    /// Physics time step in seconds [default: the scene's, else 1/240].
+    #[arg(long, value_parser = positive_seconds)]
+    pub dt: Option<f64>,
+    /// Collision method: seed, impulse, verlet, exact or auto [default: the scene's].
+    #[arg(long)]
+    pub method: Option<Setting<Method>>,
+    /// Broad phase: brute, grid, sap, quadtree or auto [default: the scene's].
+    #[arg(long)]
+    pub broadphase: Option<Setting<BroadPhaseKind>>,
+    /// Substeps per step (impulse, verlet), or auto [default: the scene's].
+    #[arg(long)]
+    pub substeps: Option<Setting<u32>>,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
@@ -35,6 +47,9 @@ fn non_negative_seconds(s: &str) -> Result<f64, String> {
     }
 }
 
+/// Step used when neither the command line nor the scene gives one (s).
+pub const DEFAULT_DT: f64 = 1.0 / 240.0;
+
 /// Most steps one run may take, so a typo cannot run for days.
 const MAX_STEPS: f64 = 1e9;
 
@@ -51,7 +66,7 @@ struct Summary {
     momentum: DVec2,
     kinetic_energy: f64,
     wall_clock_seconds: f64,
-    broad_phase: &'static str,
+    plan: Plan,
     particles: Vec<impulse::Particle>,
 }
 
@@ -60,32 +75,47 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     let scene = Scene::load(&args.scene)?;
     let origin = args.scene.display().to_string();
     let mut world = scene.build(&origin)?;
-    let steps = (args.time / args.dt).round();
+    if let Some(m) = args.method {
+        world.method = m;
+    }
+    if let Some(b) = args.broadphase {
+        world.broad_phase = b;
+    }
+    if let Some(k) = args.substeps {
+        world.substeps = k;
+    }
+    let dt = args.dt.or(scene.simulation.dt).unwrap_or(DEFAULT_DT);
+    let steps = (args.time / dt).round();
     if steps > MAX_STEPS {
         anyhow::bail!(
-            "--time {} with --dt {} would take {steps:e} steps (limit {MAX_STEPS:e})",
-            args.time,
-            args.dt
+            "--time {} with --dt {dt} would take {steps:e} steps (limit {MAX_STEPS:e})",
+            args.time
         );
     }
+    let plan = world.plan_for(dt);
     let started = Instant::now();
     let mut max_overlap = 0.0f64;
-    for _ in 0..steps as u64 {
-        max_overlap = max_overlap.max(world.step(args.dt).max_overlap);
+    let bar = crate::lab::progress::bar(steps as u64, "simulating");
+    for k in 0..steps as u64 {
+        max_overlap = max_overlap.max(world.step(dt).max_overlap);
+        if k % 256 == 0 {
+            bar.set_position(k);
+        }
     }
+    bar.finish_and_clear();
     let metrics = world.metrics();
     let summary = Summary {
         scene: origin,
         steps: world.steps,
         sim_time: world.time,
-        dt: args.dt,
+        dt,
         pair_collisions: world.total_pair_collisions,
         wall_hits: world.total_wall_hits,
         max_overlap,
         momentum: metrics.momentum,
         kinetic_energy: metrics.kinetic_energy,
         wall_clock_seconds: started.elapsed().as_secs_f64(),
-        broad_phase: world.broad_phase().name(),
+        plan,
         particles: world.particles,
     };
     let text = if args.json {
@@ -124,7 +154,15 @@ fn summary_text(s: &Summary) -> String {
     );
     println!("kinetic energy   {:.9} J", s.kinetic_energy);
     println!("wall clock       {:.3} s", s.wall_clock_seconds);
-    println!("broad phase      {}", s.broad_phase);
+    println!(
+        "method           {} / {} / {} substep(s)",
+        s.plan.method.name(),
+        s.plan.broad_phase.name(),
+        s.plan.substeps
+    );
+    if !s.plan.reason.is_empty() {
+        println!("auto chose       {}", s.plan.reason);
+    }
     println!("particles        {}", s.particles.len());
     for (i, p) in s.particles.iter().enumerate().take(20) {
         println!(

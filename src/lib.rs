@@ -16,12 +16,15 @@
 //! how long each stage took, and [`scene`] turns TOML scene files into worlds.
 #![warn(missing_docs)]
 
+pub mod auto;
 pub mod boundary;
 pub mod broad_phase;
 pub mod integration;
+pub mod method;
 pub mod metrics;
 pub mod narrow_phase;
 pub mod particle;
+pub mod presets;
 pub mod resolution;
 pub mod scene;
 pub mod stats;

@@ -2,7 +2,9 @@
 //! subcommands. Errors are one line on stderr and a non-zero exit code.
 
 mod app;
+mod files;
 mod headless;
+mod lab;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -21,12 +23,18 @@ struct Cli {
 enum Command {
     /// Simulate a scene without a window and print a summary.
     Run(headless::RunArgs),
+    /// Time a step per disc for every broad phase and method against n.
+    Bench(lab::bench::BenchArgs),
+    /// Chart speed against accuracy for every method, against `exact`.
+    Accuracy(lab::accuracy::AccuracyArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Some(Command::Run(args)) => headless::run(&args),
+        Some(Command::Bench(args)) => lab::bench::run(&args),
+        Some(Command::Accuracy(args)) => lab::accuracy::run(&args),
         None => app::run(cli.window),
     };
     match result {

@@ -28,19 +28,79 @@ pub struct ResolutionReport {
     pub max_overlap: f64,
 }
 
+/// Which velocity changes a contact gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Velocities {
+    /// The collision law, only for pairs that approach (the cure for sticking).
+    ApproachingOnly,
+    /// The collision law for every overlapping pair (the seed's method).
+    Always,
+    /// None: position-based methods imply velocity from positions.
+    Never,
+}
+
+/// How overlap is removed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PushApart {
+    /// Shares proportional to inverse mass: the centre of mass stays put.
+    InverseMass,
+    /// Half each, whatever the masses (the seeds' rule; moves the centre of mass).
+    HalfEach,
+}
+
+/// A resolution rule: what a contact does to velocities and positions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rule {
+    /// Velocity changes.
+    pub velocities: Velocities,
+    /// Overlap removal.
+    pub push_apart: PushApart,
+}
+
+impl Rule {
+    /// Impulse method: approaching pairs only, inverse-mass push-apart.
+    pub const IMPULSE: Rule = Rule {
+        velocities: Velocities::ApproachingOnly,
+        push_apart: PushApart::InverseMass,
+    };
+    /// The presentation's method: every overlapping pair, half each.
+    pub const SEED: Rule = Rule {
+        velocities: Velocities::Always,
+        push_apart: PushApart::HalfEach,
+    };
+    /// Position projection (Verlet): no velocity change, inverse-mass push.
+    pub const PROJECTION: Rule = Rule {
+        velocities: Velocities::Never,
+        push_apart: PushApart::InverseMass,
+    };
+}
+
 /// Resolves `contacts` in order with particle restitution `restitution`.
 pub fn resolve_contacts(
     particles: &mut [Particle],
     contacts: &[Contact],
     restitution: f64,
+    rule: Rule,
 ) -> ResolutionReport {
     let mut report = ResolutionReport::default();
     for c in contacts {
         let (a, b) = pair_mut(particles, c.i as usize, c.j as usize);
-        if collide(a, b, c.normal, restitution) {
-            report.collisions += 1;
+        let collided = match rule.velocities {
+            Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
+            Velocities::Always => {
+                apply_collision_law(a, b, c.normal, restitution);
+                true
+            }
+            Velocities::Never => false,
+        };
+        report.collisions += usize::from(collided);
+        match rule.push_apart {
+            PushApart::InverseMass => push_apart(a, b, c.normal, c.depth),
+            PushApart::HalfEach => {
+                a.pos -= c.normal * (0.5 * c.depth);
+                b.pos += c.normal * (0.5 * c.depth);
+            }
         }
-        push_apart(a, b, c.normal, c.depth);
         report.max_overlap = report.max_overlap.max(c.depth);
     }
     report
@@ -53,14 +113,34 @@ pub fn collide(a: &mut Particle, b: &mut Particle, normal: DVec2, restitution: f
     if v2n - v1n >= 0.0 {
         return false; // separating or resting: never re-resolved
     }
-    let (m1, m2, e) = (a.mass, b.mass, restitution);
+    apply_collision_law(a, b, normal, restitution);
+    true
+}
+
+/// The collision law along `normal`, whether or not the pair approaches.
+pub fn apply_collision_law(a: &mut Particle, b: &mut Particle, normal: DVec2, restitution: f64) {
+    (a.vel, b.vel) = collision_velocities(a.mass, b.mass, a.vel, b.vel, normal, restitution);
+}
+
+/// Velocities after the collision law along `normal` (from disc 1 to disc 2):
+/// normal parts by the 1D law with restitution `e`, tangential parts kept.
+pub fn collision_velocities(
+    m1: f64,
+    m2: f64,
+    v1: DVec2,
+    v2: DVec2,
+    normal: DVec2,
+    e: f64,
+) -> (DVec2, DVec2) {
+    let (v1n, v2n) = (v1.dot(normal), v2.dot(normal));
     let total = m1 + m2;
     let v1n_after = ((m1 - e * m2) * v1n + (1.0 + e) * m2 * v2n) / total;
     let v2n_after = ((m2 - e * m1) * v2n + (1.0 + e) * m1 * v1n) / total;
     // The tangential parts are untouched: only the normal components change.
-    a.vel += (v1n_after - v1n) * normal;
-    b.vel += (v2n_after - v2n) * normal;
-    true
+    (
+        v1 + (v1n_after - v1n) * normal,
+        v2 + (v2n_after - v2n) * normal,
+    )
 }
 
 /// Moves `a` and `b` apart along `normal` by `depth` in total, split by

@@ -11,6 +11,12 @@
 //! wall_restitution = 1.0       # at the walls, default 1
 //! boundary = "box"             # "box", "open" or "periodic"
 //!
+//! [simulation]                 # optional; every entry defaults to "auto"
+//! method = "auto"              # "seed", "impulse", "verlet", "exact"
+//! broad_phase = "auto"         # "brute", "grid", "sap", "quadtree"
+//! substeps = "auto"            # or a number (impulse and verlet)
+//! dt = 0.004                   # s; the window's and `run`'s default step
+//!
 //! [[particles]]
 //! pos = [4.0, 5.0]
 //! vel = [2.0, 0.0]
@@ -27,6 +33,8 @@
 //! ```
 
 use crate::boundary::Boundary;
+use crate::broad_phase::BroadPhaseKind;
+use crate::method::{Method, Setting};
 use crate::particle::{Color, Particle};
 use crate::world::World;
 use glam::DVec2;
@@ -50,6 +58,9 @@ pub struct Scene {
     pub description: Option<String>,
     /// The world's size and laws.
     pub world: WorldSpec,
+    /// How it is simulated.
+    #[serde(default, skip_serializing_if = "SimulationSpec::is_default")]
+    pub simulation: SimulationSpec,
     /// Discs placed one by one.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub particles: Vec<ParticleSpec>,
@@ -76,6 +87,30 @@ pub struct WorldSpec {
     /// Edge behaviour.
     #[serde(default)]
     pub boundary: Boundary,
+}
+
+/// The `[simulation]` table: method, broad phase, substeps, step.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SimulationSpec {
+    /// Collision method.
+    #[serde(default)]
+    pub method: Setting<Method>,
+    /// Broad phase.
+    #[serde(default)]
+    pub broad_phase: Setting<BroadPhaseKind>,
+    /// Substeps per step for `impulse` and `verlet`.
+    #[serde(default)]
+    pub substeps: Setting<u32>,
+    /// Time step (s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+}
+
+impl SimulationSpec {
+    fn is_default(&self) -> bool {
+        *self == SimulationSpec::default()
+    }
 }
 
 /// One `[[particles]]` entry.
@@ -218,6 +253,21 @@ impl Scene {
                 }
             }
         }
+        let sim = &self.simulation;
+        if sim.dt.is_some_and(|dt| !(dt > 0.0 && dt.is_finite())) {
+            return Err(bad(
+                "simulation.dt".into(),
+                "must be a positive number of seconds",
+            ));
+        }
+        if let Setting::Fixed(k) = sim.substeps {
+            if !(1..=10_000).contains(&k) {
+                return Err(bad(
+                    "simulation.substeps".into(),
+                    "must be between 1 and 10000",
+                ));
+            }
+        }
         if self.particles.len() > MAX_PARTICLES {
             return Err(bad("particles".into(), "too many discs"));
         }
@@ -261,6 +311,9 @@ impl Scene {
         world.restitution = w.restitution;
         world.wall_restitution = w.wall_restitution;
         world.boundary = w.boundary;
+        world.method = self.simulation.method;
+        world.broad_phase = self.simulation.broad_phase;
+        world.substeps = self.simulation.substeps;
         world.particles = self
             .particles
             .iter()
@@ -291,6 +344,12 @@ impl Scene {
                 restitution: world.restitution,
                 wall_restitution: world.wall_restitution,
                 boundary: world.boundary,
+            },
+            simulation: SimulationSpec {
+                method: world.method,
+                broad_phase: world.broad_phase,
+                substeps: world.substeps,
+                dt: None,
             },
             particles: world
                 .particles

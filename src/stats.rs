@@ -1,7 +1,24 @@
 //! Step statistics: what the last step did and how long each stage took.
 
 use serde::Serialize;
-use std::time::Duration;
+use std::time::{Duration, Instant};
+
+/// Measures consecutive stages: each [`Lap::lap`] returns the time since
+/// the previous one.
+pub(crate) struct Lap(Instant);
+
+impl Lap {
+    pub(crate) fn start() -> Self {
+        Lap(Instant::now())
+    }
+
+    pub(crate) fn lap(&mut self) -> Duration {
+        let now = Instant::now();
+        let elapsed = now - self.0;
+        self.0 = now;
+        elapsed
+    }
+}
 
 /// Wall-clock time spent in each stage of one step.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
@@ -36,8 +53,17 @@ pub struct StepStats {
     pub pair_collisions: usize,
     /// Discs that bounced off a wall.
     pub wall_hits: usize,
+    /// Momentum the walls transferred, Σ m·|Δv| (kg·m/s).
+    pub wall_impulse: f64,
     /// Deepest pair overlap before it was pushed apart (m).
     pub max_overlap: f64,
+    /// Substeps the step was split into.
+    pub substeps: u32,
+    /// Events the exact method processed (collisions, wall hits, cell
+    /// crossings, re-predictions of stale events).
+    pub events: usize,
+    /// The exact method hit its per-step event cap and stopped early.
+    pub truncated: bool,
     /// Per-stage wall-clock time.
     pub timings: StageTimings,
 }

@@ -1,18 +1,20 @@
-//! The world: discs in a rectangle, and [`World::step`], the whole pipeline.
+//! The world: discs in a rectangle, and [`World::step`], which runs the
+//! chosen collision method over the shared pipeline.
 
+use crate::auto::{self, Plan};
 use crate::boundary::Boundary;
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
-use crate::integration::integrate;
+use crate::method::{discrete, exact, Method, Setting};
 use crate::metrics::Metrics;
 use crate::narrow_phase::{find_contacts, Contact};
 use crate::particle::Particle;
-use crate::resolution::resolve_contacts;
-use crate::stats::StepStats;
+use crate::resolution::Rule;
+use crate::stats::{Lap, StepStats};
 use glam::DVec2;
 use std::hash::{Hash, Hasher};
-use std::time::Instant;
 
-/// Discs in the rectangle (0,0)–`size`, with the laws they obey.
+/// Discs in the rectangle (0,0)–`size`, with the laws they obey and the
+/// method that steps them.
 pub struct World {
     /// The discs, in a stable order (indices are identities within a step).
     pub particles: Vec<Particle>,
@@ -26,6 +28,12 @@ pub struct World {
     pub wall_restitution: f64,
     /// What the edges do.
     pub boundary: Boundary,
+    /// Collision method, or `auto`.
+    pub method: Setting<Method>,
+    /// Broad phase, or `auto`.
+    pub broad_phase: Setting<BroadPhaseKind>,
+    /// Substeps per step for `impulse` and `verlet`, or `auto`.
+    pub substeps: Setting<u32>,
     /// Simulated time so far (s).
     pub time: f64,
     /// Steps taken so far.
@@ -34,17 +42,105 @@ pub struct World {
     pub total_pair_collisions: u64,
     /// Wall bounces since the world was made.
     pub total_wall_hits: u64,
-    broad_phase_kind: BroadPhaseKind,
-    broad_phase: Box<dyn BroadPhase + Send>,
+    /// Momentum transferred by the walls since the world was made (kg·m/s).
+    pub total_wall_impulse: f64,
+    pipeline: Pipeline,
+    plan: Option<Plan>,
+    plan_key: Option<PlanKey>,
     last_stats: StepStats,
-    pairs: Vec<Pair>,
-    contacts: Vec<Contact>,
 }
 
+/// What a plan was made for; a different key means plan again.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct PlanKey {
+    method: Setting<Method>,
+    broad_phase: Setting<BroadPhaseKind>,
+    substeps: Setting<u32>,
+    laws: [u64; 5],
+    boundary: Boundary,
+    particles: usize,
+}
+
+/// The physical laws of a world, copied out for the methods.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Laws {
+    /// World size (m).
+    pub size: DVec2,
+    /// Gravity (m/s²).
+    pub gravity: DVec2,
+    /// Restitution between discs.
+    pub restitution: f64,
+    /// Restitution at walls.
+    pub wall_restitution: f64,
+    /// Edge behaviour.
+    pub boundary: Boundary,
+}
+
+impl Laws {
+    /// Applies the boundary stage, adding what the walls did to `stats`.
+    pub fn apply_boundary(&self, particles: &mut [Particle], stats: &mut StepStats) {
+        let walls = self
+            .boundary
+            .apply(particles, self.size, self.gravity, self.wall_restitution);
+        stats.wall_hits += walls.hits;
+        stats.wall_impulse += walls.impulse;
+    }
+}
+
+/// Detection stages and their reusable buffers.
+pub(crate) struct Pipeline {
+    kind: BroadPhaseKind,
+    broad_phase: Box<dyn BroadPhase + Send>,
+    pairs: Vec<Pair>,
+    /// Contacts found by the last [`Pipeline::detect`].
+    pub(crate) contacts: Vec<Contact>,
+    /// Scratch: positions before a Verlet substep.
+    pub(crate) previous_positions: Vec<DVec2>,
+}
+
+impl Pipeline {
+    fn new(kind: BroadPhaseKind) -> Self {
+        Pipeline {
+            kind,
+            broad_phase: kind.build(),
+            pairs: Vec::new(),
+            contacts: Vec::new(),
+            previous_positions: Vec::new(),
+        }
+    }
+
+    fn use_kind(&mut self, kind: BroadPhaseKind) {
+        if kind != self.kind {
+            *self = Pipeline::new(kind);
+        }
+    }
+
+    /// Broad phase then narrow phase: fills `self.contacts`.
+    pub(crate) fn detect(&mut self, particles: &[Particle], laws: &Laws, stats: &mut StepStats) {
+        let mut lap = Lap::start();
+        self.broad_phase
+            .candidate_pairs(particles, laws.boundary, laws.size, &mut self.pairs);
+        stats.candidate_pairs += self.pairs.len();
+        stats.timings.broad_phase += lap.lap();
+        find_contacts(
+            particles,
+            &self.pairs,
+            laws.boundary,
+            laws.size,
+            &mut self.contacts,
+        );
+        stats.contacts += self.contacts.len();
+        stats.timings.narrow_phase += lap.lap();
+    }
+}
+
+/// How often `auto` looks at the scene again (steps).
+const REPLAN_EVERY: u64 = 30;
+
 impl World {
-    /// An empty closed box of the given size: no gravity, elastic everywhere.
+    /// An empty closed box of the given size: no gravity, elastic
+    /// everywhere, the `impulse` method with one substep, brute force.
     pub fn new(size: DVec2) -> Self {
-        let kind = BroadPhaseKind::default();
         Self {
             particles: Vec::new(),
             size,
@@ -52,85 +148,128 @@ impl World {
             restitution: 1.0,
             wall_restitution: 1.0,
             boundary: Boundary::Box,
+            method: Setting::Fixed(Method::Impulse),
+            broad_phase: Setting::Fixed(BroadPhaseKind::Brute),
+            substeps: Setting::Fixed(1),
             time: 0.0,
             steps: 0,
             total_pair_collisions: 0,
             total_wall_hits: 0,
-            broad_phase_kind: kind,
-            broad_phase: kind.build(),
+            total_wall_impulse: 0.0,
+            pipeline: Pipeline::new(BroadPhaseKind::Brute),
+            plan: None,
+            plan_key: None,
             last_stats: StepStats::default(),
-            pairs: Vec::new(),
-            contacts: Vec::new(),
         }
     }
 
-    /// The broad phase in use.
-    pub fn broad_phase(&self) -> BroadPhaseKind {
-        self.broad_phase_kind
-    }
-
-    /// Switches the broad phase (results do not depend on it).
+    /// Switches to a fixed broad phase (results do not depend on it).
     pub fn set_broad_phase(&mut self, kind: BroadPhaseKind) {
-        self.broad_phase_kind = kind;
-        self.broad_phase = kind.build();
+        self.broad_phase = Setting::Fixed(kind);
     }
 
-    /// Advances the world by `dt` seconds, stage by stage:
-    /// broad phase → narrow phase → resolution → integration → boundary.
+    /// The laws, as the methods see them.
+    pub fn laws(&self) -> Laws {
+        Laws {
+            size: self.size,
+            gravity: self.gravity,
+            restitution: self.restitution,
+            wall_restitution: self.wall_restitution,
+            boundary: self.boundary,
+        }
+    }
+
+    /// What the last step used: method, broad phase, substeps, and why.
+    pub fn plan(&self) -> Option<&Plan> {
+        self.plan.as_ref()
+    }
+
+    /// Decides method, broad phase and substeps for a step of `dt`:
+    /// fixed settings as given, `auto` ones from the scene.
+    pub fn plan_for(&self, dt: f64) -> Plan {
+        auto::plan(self, dt)
+    }
+
+    /// Advances the world by `dt` seconds with the chosen method.
     ///
     /// A `dt` that is not a positive finite number leaves the world unchanged.
     pub fn step(&mut self, dt: f64) -> StepStats {
         if !(dt > 0.0 && dt.is_finite()) {
             return StepStats::default();
         }
-        let mut stats = StepStats::default();
-        let mut clock = Instant::now();
-        let mut lap = || {
-            let now = Instant::now();
-            let elapsed = now - clock;
-            clock = now;
-            elapsed
+        // Re-plan when anything auto looks at may have changed: the settings,
+        // the laws, the disc count, the step; and every so often for speeds.
+        let key = PlanKey {
+            method: self.method,
+            broad_phase: self.broad_phase,
+            substeps: self.substeps,
+            laws: [
+                dt,
+                self.restitution,
+                self.wall_restitution,
+                self.gravity.x,
+                self.gravity.y,
+            ]
+            .map(f64::to_bits),
+            boundary: self.boundary,
+            particles: self.particles.len(),
         };
-
-        self.broad_phase.candidate_pairs(
-            &self.particles,
-            self.boundary,
-            self.size,
-            &mut self.pairs,
-        );
-        stats.candidate_pairs = self.pairs.len();
-        stats.timings.broad_phase = lap();
-
-        find_contacts(
-            &self.particles,
-            &self.pairs,
-            self.boundary,
-            self.size,
-            &mut self.contacts,
-        );
-        stats.contacts = self.contacts.len();
-        stats.timings.narrow_phase = lap();
-
-        let report = resolve_contacts(&mut self.particles, &self.contacts, self.restitution);
-        stats.pair_collisions = report.collisions;
-        stats.max_overlap = report.max_overlap;
-        stats.timings.resolution = lap();
-
-        integrate(&mut self.particles, self.gravity, dt);
-        stats.timings.integration = lap();
-
-        stats.wall_hits = self.boundary.apply(
-            &mut self.particles,
-            self.size,
-            self.gravity,
-            self.wall_restitution,
-        );
-        stats.timings.boundary = lap();
-
-        self.time += dt;
+        if self.plan.is_none() || self.plan_key != Some(key) || self.steps % REPLAN_EVERY == 0 {
+            self.plan = Some(auto::plan(self, dt));
+            self.plan_key = Some(key);
+        }
+        let plan = self.plan.clone().unwrap_or_else(|| auto::plan(self, dt));
+        self.pipeline.use_kind(plan.broad_phase);
+        let laws = self.laws();
+        let mut stats = StepStats {
+            substeps: plan.substeps,
+            ..StepStats::default()
+        };
+        let mut simulated = dt;
+        match plan.method {
+            Method::Impulse | Method::Verlet | Method::Seed => {
+                let substeps = if plan.method == Method::Seed {
+                    1
+                } else {
+                    plan.substeps.max(1)
+                };
+                stats.substeps = substeps;
+                let h = dt / f64::from(substeps);
+                for _ in 0..substeps {
+                    let (pipeline, particles) = (&mut self.pipeline, &mut self.particles);
+                    match plan.method {
+                        Method::Verlet => {
+                            discrete::verlet_substep(pipeline, particles, &laws, h, &mut stats)
+                        }
+                        Method::Seed => discrete::impulse_substep(
+                            pipeline,
+                            particles,
+                            &laws,
+                            h,
+                            Rule::SEED,
+                            &mut stats,
+                        ),
+                        _ => discrete::impulse_substep(
+                            pipeline,
+                            particles,
+                            &laws,
+                            h,
+                            Rule::IMPULSE,
+                            &mut stats,
+                        ),
+                    }
+                }
+            }
+            Method::Exact => {
+                stats.substeps = 1;
+                simulated = exact::advance(&mut self.particles, &laws, dt, &mut stats);
+            }
+        }
+        self.time += simulated;
         self.steps += 1;
         self.total_pair_collisions += stats.pair_collisions as u64;
         self.total_wall_hits += stats.wall_hits as u64;
+        self.total_wall_impulse += stats.wall_impulse;
         self.last_stats = stats;
         stats
     }
@@ -211,19 +350,26 @@ impl World {
 
 impl Clone for World {
     fn clone(&self) -> Self {
-        let mut copy = World::new(self.size);
-        copy.particles = self.particles.clone();
-        copy.gravity = self.gravity;
-        copy.restitution = self.restitution;
-        copy.wall_restitution = self.wall_restitution;
-        copy.boundary = self.boundary;
-        copy.time = self.time;
-        copy.steps = self.steps;
-        copy.total_pair_collisions = self.total_pair_collisions;
-        copy.total_wall_hits = self.total_wall_hits;
-        copy.set_broad_phase(self.broad_phase_kind);
-        copy.last_stats = self.last_stats;
-        copy
+        World {
+            particles: self.particles.clone(),
+            size: self.size,
+            gravity: self.gravity,
+            restitution: self.restitution,
+            wall_restitution: self.wall_restitution,
+            boundary: self.boundary,
+            method: self.method,
+            broad_phase: self.broad_phase,
+            substeps: self.substeps,
+            time: self.time,
+            steps: self.steps,
+            total_pair_collisions: self.total_pair_collisions,
+            total_wall_hits: self.total_wall_hits,
+            total_wall_impulse: self.total_wall_impulse,
+            pipeline: Pipeline::new(self.pipeline.kind),
+            plan: self.plan.clone(),
+            plan_key: self.plan_key,
+            last_stats: self.last_stats,
+        }
     }
 }
 
@@ -233,6 +379,7 @@ impl std::fmt::Debug for World {
             .field("size", &self.size)
             .field("particles", &self.particles.len())
             .field("boundary", &self.boundary)
+            .field("method", &self.method)
             .field("time", &self.time)
             .finish_non_exhaustive()
     }

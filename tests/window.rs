@@ -350,7 +350,7 @@ fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
 }
 
 #[test]
-fn space_pauses_and_n_steps_once() {
+fn space_pauses_n_steps_once_and_y_switches_the_method() {
     let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("pause") else {
         return;
@@ -385,6 +385,15 @@ fn space_pauses_and_n_steps_once() {
         resumed["steps"].as_u64() > stepped["steps"].as_u64(),
         "Space resumes"
     );
+
+    // Y cycles the method live: auto -> seed -> impulse -> verlet -> exact.
+    assert_eq!(resumed["method"], "auto", "scenes default to auto");
+    for want in ["seed", "impulse", "verlet", "exact"] {
+        app.xdo(&["key", "y"]);
+        let s = app.wait_frames(4);
+        assert_eq!(s["method"], want);
+        assert_eq!(s["plan"]["method"], want, "the steps use it");
+    }
     let last = app.quit();
     assert!(last["metrics"]["count"].as_u64().unwrap() > 2);
 }

@@ -2,6 +2,7 @@
 //! and PNG screenshots, both written atomically (temporary file, then rename).
 
 use super::camera::Camera;
+use crate::files::write_atomically;
 use impulse::{Metrics, Particle, World};
 use serde::Serialize;
 use std::path::Path;
@@ -27,6 +28,14 @@ pub struct StateDump<'a> {
     pub selected: Option<usize>,
     /// Disc held by the mouse.
     pub held: Option<usize>,
+    /// Method setting ("auto" or a name).
+    pub method: String,
+    /// Broad-phase setting.
+    pub broad_phase: String,
+    /// Substep setting.
+    pub substeps: String,
+    /// What the last step used.
+    pub plan: Option<impulse::auto::Plan>,
     /// Particle restitution.
     pub restitution: f64,
     /// Wall restitution.
@@ -73,6 +82,10 @@ impl<'a> StateDump<'a> {
             camera: camera.into(),
             selected: None,
             held: None,
+            method: world.method.to_string(),
+            broad_phase: world.broad_phase.to_string(),
+            substeps: world.substeps.to_string(),
+            plan: world.plan().cloned(),
             restitution: world.restitution,
             wall_restitution: world.wall_restitution,
             size: world.size.to_array(),
@@ -80,17 +93,6 @@ impl<'a> StateDump<'a> {
             particles: &world.particles,
         }
     }
-}
-
-/// Writes `bytes` to `path` through a temporary file and a rename, so a
-/// reader never sees half a file and a failure leaves the old file intact.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".tmp");
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path).inspect_err(|_| {
-        let _ = std::fs::remove_file(&tmp);
-    })
 }
 
 /// Writes the dump as JSON.

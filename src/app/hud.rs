@@ -47,6 +47,10 @@ pub const HELP: &[(&str, &str)] = &[
     ("E / Shift+E", "restitution between discs + / -"),
     ("W / Shift+W", "wall restitution + / -"),
     ("G", "gravity on / off"),
+    (
+        "Y / B / K",
+        "method / broad phase / substeps (auto or fixed)",
+    ),
     ("PgUp / PgDn", "size of new discs"),
     ("Home / End", "mass of new discs"),
     ("Delete / Backspace", "delete the selected disc"),

@@ -3,6 +3,8 @@
 use super::interaction::Released;
 use super::App;
 use glam::DVec2;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
 use macroquad::prelude::*;
 
 /// Zoom factor per wheel notch or key press.
@@ -17,7 +19,8 @@ const EARTH_GRAVITY: f64 = 9.81;
 /// Whether a modifier is held, or was pressed during this frame: at a low
 /// frame rate a quick Ctrl+Q can press and release Ctrl within one frame.
 fn held_or_pressed(keys: [KeyCode; 2]) -> bool {
-    keys.into_iter().any(|k| is_key_down(k) || is_key_pressed(k))
+    keys.into_iter()
+        .any(|k| is_key_down(k) || is_key_pressed(k))
 }
 
 fn shift() -> bool {
@@ -32,6 +35,35 @@ fn ctrl() -> bool {
 fn nudge_restitution(e: f64, up: bool) -> f64 {
     let tenths = (e * 10.0).round() + if up { 1.0 } else { -1.0 };
     (tenths / 10.0).clamp(0.0, 1.0)
+}
+
+const METHODS: [Setting<Method>; 5] = [
+    Setting::Auto,
+    Setting::Fixed(Method::Seed),
+    Setting::Fixed(Method::Impulse),
+    Setting::Fixed(Method::Verlet),
+    Setting::Fixed(Method::Exact),
+];
+const BROAD_PHASES: [Setting<BroadPhaseKind>; 5] = [
+    Setting::Auto,
+    Setting::Fixed(BroadPhaseKind::Brute),
+    Setting::Fixed(BroadPhaseKind::Grid),
+    Setting::Fixed(BroadPhaseKind::Sap),
+    Setting::Fixed(BroadPhaseKind::Quadtree),
+];
+const SUBSTEPS: [Setting<u32>; 6] = [
+    Setting::Auto,
+    Setting::Fixed(1),
+    Setting::Fixed(2),
+    Setting::Fixed(4),
+    Setting::Fixed(8),
+    Setting::Fixed(16),
+];
+
+/// The entry after `current` in `list` (the first if `current` is not in it).
+fn cycle<T: PartialEq + Copy>(list: &[T], current: T) -> T {
+    let next = list.iter().position(|&x| x == current).map_or(0, |k| k + 1);
+    list[next % list.len()]
 }
 
 impl App {
@@ -128,6 +160,18 @@ impl App {
                 "Wall restitution = {:.1}",
                 self.world.wall_restitution
             ));
+        }
+        if is_key_pressed(KeyCode::Y) {
+            self.world.method = cycle(&METHODS, self.world.method);
+            self.toast(format!("Method: {}", self.world.method));
+        }
+        if is_key_pressed(KeyCode::B) {
+            self.world.broad_phase = cycle(&BROAD_PHASES, self.world.broad_phase);
+            self.toast(format!("Broad phase: {}", self.world.broad_phase));
+        }
+        if is_key_pressed(KeyCode::K) {
+            self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
+            self.toast(format!("Substeps: {}", self.world.substeps));
         }
         if is_key_pressed(KeyCode::G) {
             self.world.gravity = if self.world.gravity == DVec2::ZERO {

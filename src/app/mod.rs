@@ -30,9 +30,9 @@ pub struct WindowOptions {
     /// Start paused.
     #[arg(long)]
     pub paused: bool,
-    /// Physics time step in seconds.
-    #[arg(long, default_value_t = 1.0 / 240.0, value_parser = positive_seconds)]
-    pub dt: f64,
+    /// Physics time step in seconds [default: the scene's, else 1/240].
+    #[arg(long, value_parser = positive_seconds)]
+    pub dt: Option<f64>,
     /// Keep FILE updated with the state as JSON (rewritten atomically each frame).
     #[arg(long, value_name = "FILE")]
     pub dump_state: Option<PathBuf>,
@@ -128,7 +128,11 @@ struct App {
 
 impl App {
     fn new(options: WindowOptions, scene: Scene, scene_origin: String, world: World) -> Self {
-        let mut clock = FixedStepClock::new(options.dt, 64);
+        let dt = options
+            .dt
+            .or(scene.simulation.dt)
+            .unwrap_or(crate::headless::DEFAULT_DT);
+        let mut clock = FixedStepClock::new(dt, 64);
         clock.paused = options.paused;
         let size = world.size;
         App {
@@ -292,6 +296,7 @@ impl App {
                 self.steps_last_frame,
                 self.clock.dt * 1e3
             ),
+            self.method_line(),
             format!(
                 "new disc: r = {:.2} m  m = {:.2} kg   H: help",
                 self.new_disc.radius, self.new_disc.mass
@@ -308,6 +313,30 @@ impl App {
             lines.push(format!("arrows: {arrows}, x {secs} s"));
         }
         lines
+    }
+
+    /// "impulse x4 / grid (auto: ...)": what the steps use, and why.
+    fn method_line(&self) -> String {
+        let plan = self
+            .world
+            .plan()
+            .cloned()
+            .unwrap_or_else(|| self.world.plan_for(self.clock.dt));
+        let substeps = if plan.method.uses_substeps() {
+            format!(" x{}", plan.substeps)
+        } else {
+            String::new()
+        };
+        let broad = if plan.method == impulse::method::Method::Exact {
+            "cells"
+        } else {
+            plan.broad_phase.name()
+        };
+        let mut line = format!("method {}{substeps} / {broad}", plan.method.name());
+        if !plan.reason.is_empty() {
+            line.push_str(&format!("   auto: {}", plan.reason));
+        }
+        line
     }
 
     fn save_screenshot(&self) {

@@ -1,0 +1,538 @@
+//! Uniform grid (cell list), rebuilt every step.
+//!
+//! The plane is cut into square cells at least as wide as the largest disc's
+//! diameter, so two discs can only overlap if their cells are the same or
+//! neighbours. Each step:
+//!
+//! 1. every disc's cell is computed from its centre, and a counting sort
+//!    (count per cell, prefix sum, scatter) lays the discs out cell by cell
+//!    in one array, with `starts[c]..starts[c + 1]` the discs of cell `c`;
+//! 2. cells are visited in order and each disc is tested against the rest of
+//!    its own cell and the four "forward" neighbours (right, and the three
+//!    cells of the row above), so every pair of neighbouring cells is seen
+//!    once; in row-major order the own cell and its right neighbour, and the
+//!    three cells above, are each one contiguous run of the array;
+//! 3. the pairs found are put in `(i, j)` order by a counting sort on `i`.
+//!
+//! Cost: O(n + cells + pairs) time per step, and no allocation once the
+//! buffers have grown. The number of cells is capped at about 2n: when the
+//! discs are spread thinly the cells grow instead (more discs per cell, still
+//! correct).
+//!
+//! - **Periodic**: the grid covers the box and wraps, so the last column's
+//!   right neighbour is the first column. An axis with fewer than three cells
+//!   is made a single cell (with two, the left and right neighbours would be
+//!   the same cell and pairs would be reported twice).
+//! - **Box and open**: the grid covers the bounding box of the centres. If a
+//!   few discs have flown far away, that box would need huge cells; the grid
+//!   then covers the bulk (2–98 % quantiles of a sample of the discs, padded)
+//!   and the stragglers are clamped into the border cells, which stays
+//!   correct because clamping keeps neighbours neighbours.
+//! - **Mixed radii**: the cell size follows the largest disc. A few discs
+//!   (at most 32) much larger than the mean are taken out of the grid and
+//!   tested against every disc, so one huge disc does not make every cell
+//!   huge. Many large discs among small ones still make big cells; the
+//!   quadtree is the better choice there.
+
+use super::{pair, sort_pairs, touches, BroadPhase, BruteForce, Disc, Pair, Space};
+use crate::boundary::Boundary;
+use crate::particle::Particle;
+use glam::DVec2;
+
+/// Cells per gridded disc, at most (plus a few).
+const CELLS_PER_DISC: usize = 2;
+/// A disc is "big" when its radius exceeds this many times the mean radius…
+const BIG_FACTOR: f64 = 4.0;
+/// …and there are at most this many such discs.
+const MAX_BIG: usize = 32;
+/// Marks a big disc in its `tag`.
+const BIG: u32 = u32::MAX;
+
+/// Uniform grid broad phase: O(n) for discs of similar size.
+#[derive(Clone, Debug, Default)]
+pub struct Grid {
+    /// Candidate discs, in index order; `tag` is the cell, or [`BIG`].
+    discs: Vec<Disc>,
+    /// Positions in `discs` of the big discs, ascending.
+    big: Vec<u32>,
+    /// Row `r` begins at `by_row[row_starts[r]]` (during the sort).
+    row_starts: Vec<u32>,
+    /// The gridded discs, row by row.
+    by_row: Vec<Disc>,
+    /// Scratch: where the next disc of each column of a row goes.
+    cursor: Vec<u32>,
+    /// Cell `c` holds `sorted[starts[c]..starts[c + 1]]`.
+    starts: Vec<u32>,
+    /// The gridded discs, cell by cell.
+    sorted: Vec<Disc>,
+    /// Scratch for the quantiles of a sample of positions.
+    sample: Vec<f64>,
+    /// Pairs as found, before sorting.
+    raw: Vec<Pair>,
+    /// Scratch for the pair sort.
+    ends: Vec<u32>,
+}
+
+/// Where the cells are: cell (cx, cy) covers
+/// `origin + [cx, cx + 1) / inv_width.x` along x, likewise y.
+#[derive(Clone, Copy, Debug)]
+struct Layout {
+    origin: DVec2,
+    inv_width: DVec2,
+    nx: usize,
+    ny: usize,
+}
+
+impl Layout {
+    /// The disc's column.
+    #[inline(always)]
+    fn column(&self, d: &Disc) -> usize {
+        axis(d.x, self.origin.x, self.inv_width.x, self.nx)
+    }
+
+    /// The disc's row.
+    #[inline(always)]
+    fn row(&self, d: &Disc) -> usize {
+        axis(d.y, self.origin.y, self.inv_width.y, self.ny)
+    }
+}
+
+/// The cell index along one axis.
+#[inline(always)]
+fn axis(v: f64, origin: f64, inv_width: f64, n: usize) -> usize {
+    // `as` saturates (and maps NaN to 0); clamping keeps neighbours
+    // neighbours for discs outside the covered region.
+    let c = ((v - origin) * inv_width) as i64;
+    c.clamp(0, n as i64 - 1) as usize
+}
+
+impl BroadPhase for Grid {
+    fn candidate_pairs(
+        &mut self,
+        particles: &[Particle],
+        boundary: Boundary,
+        size: DVec2,
+        out: &mut Vec<Pair>,
+    ) {
+        out.clear();
+        self.raw.clear();
+        let Some(mut space) = Space::new(boundary, size) else {
+            BruteForce.candidate_pairs(particles, boundary, size, out);
+            return;
+        };
+        // One pass: the candidate discs, their radii, and their extent.
+        self.discs.clear();
+        let mut stats = Gathered::default();
+        for (i, p) in particles.iter().enumerate() {
+            if let Some(d) = space.disc(i, p) {
+                stats.add(&d);
+                self.discs.push(d);
+            }
+        }
+        space.finish();
+        if self.discs.len() < 2 {
+            return;
+        }
+
+        let (grid_radius, lo, hi) = self.split_off_big_discs(&stats);
+        let gridded = self.discs.len() - self.big.len();
+        if gridded > 0 {
+            let layout = match space.period {
+                Some(period) => periodic_layout(period, grid_radius, gridded, &space),
+                None => self.open_layout(grid_radius, lo, hi, gridded),
+            };
+            self.sort_into_cells(&layout);
+            let cells = Cells {
+                starts: &self.starts,
+                sorted: &self.sorted,
+                nx: layout.nx,
+                ny: layout.ny,
+            };
+            match space.period {
+                None => cells.sweep::<OPEN>(&space, &mut self.raw),
+                Some(_) if layout.nx >= 3 && layout.ny >= 3 => {
+                    cells.sweep::<SHIFTED>(&space, &mut self.raw)
+                }
+                Some(_) => cells.sweep::<FOLDED>(&space, &mut self.raw),
+            }
+        }
+        if !self.big.is_empty() {
+            if space.period.is_some() {
+                self.big_discs::<true>(&space);
+            } else {
+                self.big_discs::<false>(&space);
+            }
+        }
+        sort_pairs(&self.raw, particles.len(), &mut self.ends, out);
+    }
+}
+
+/// What one pass over the discs learns.
+#[derive(Clone, Copy, Debug)]
+struct Gathered {
+    /// Sum, count and maximum of the finite radii (negative ones as 0).
+    r_sum: f64,
+    r_count: usize,
+    r_max: f64,
+    /// Whether some radius is +∞.
+    infinite: bool,
+    /// Bounding box of the centres.
+    lo: DVec2,
+    hi: DVec2,
+}
+
+impl Default for Gathered {
+    fn default() -> Self {
+        Gathered {
+            r_sum: 0.0,
+            r_count: 0,
+            r_max: 0.0,
+            infinite: false,
+            lo: DVec2::INFINITY,
+            hi: DVec2::NEG_INFINITY,
+        }
+    }
+}
+
+impl Gathered {
+    /// Adds a disc (finite centre, radius not NaN). Plain comparisons rather
+    /// than `f64::max`, which pays for NaN handling not needed here.
+    #[inline(always)]
+    fn add(&mut self, d: &Disc) {
+        if d.r < f64::INFINITY {
+            let r = if d.r > 0.0 { d.r } else { 0.0 };
+            self.r_sum += r;
+            self.r_count += 1;
+            if r > self.r_max {
+                self.r_max = r;
+            }
+        } else {
+            self.infinite = true;
+        }
+        if d.x < self.lo.x {
+            self.lo.x = d.x;
+        }
+        if d.x > self.hi.x {
+            self.hi.x = d.x;
+        }
+        if d.y < self.lo.y {
+            self.lo.y = d.y;
+        }
+        if d.y > self.hi.y {
+            self.hi.y = d.y;
+        }
+    }
+}
+
+impl Grid {
+    /// Lists the big discs in `big` (ascending) and returns the largest
+    /// radius of the others and the bounding box of their centres.
+    fn split_off_big_discs(&mut self, stats: &Gathered) -> (f64, DVec2, DVec2) {
+        self.big.clear();
+        let mean = stats.r_sum / stats.r_count.max(1) as f64;
+        let mut cut = f64::INFINITY;
+        if stats.r_max > BIG_FACTOR * mean {
+            let candidate = BIG_FACTOR * mean;
+            if self.discs.iter().filter(|d| d.r > candidate).count() <= MAX_BIG {
+                cut = candidate;
+            }
+        }
+        if cut == f64::INFINITY && !stats.infinite {
+            return (stats.r_max, stats.lo, stats.hi); // the common case
+        }
+        let (mut grid_radius, mut lo, mut hi) = (0.0f64, DVec2::INFINITY, DVec2::NEG_INFINITY);
+        for (k, d) in self.discs.iter().enumerate() {
+            if d.r > cut || d.r == f64::INFINITY {
+                self.big.push(k as u32);
+            } else {
+                grid_radius = grid_radius.max(d.r);
+                let c = DVec2::new(d.x, d.y);
+                lo = lo.min(c);
+                hi = hi.max(c);
+            }
+        }
+        (grid_radius, lo, hi)
+    }
+
+    /// Cells for a closed or open world: over the bounding box of the
+    /// centres `lo..hi`, or over the bulk of the discs if that box is far too
+    /// big for the cell cap.
+    fn open_layout(
+        &mut self,
+        grid_radius: f64,
+        mut lo: DVec2,
+        mut hi: DVec2,
+        gridded: usize,
+    ) -> Layout {
+        let cap = CELLS_PER_DISC * gridded + 8;
+        let diameter = 2.0 * grid_radius * (1.0 + 1e-5);
+        let needed = |lo: DVec2, hi: DVec2, w: f64| {
+            let ext = hi - lo;
+            ((ext.x / w).floor() + 1.0) * ((ext.y / w).floor() + 1.0)
+        };
+        if !(needed(lo, hi, diameter.max(f64::MIN_POSITIVE)) <= 4.0 * cap as f64) {
+            (lo, hi) = self.bulk(lo, hi, diameter);
+        }
+        // Widen the cells by the rounding error of (x − origin)/w, so that two
+        // centres closer than a diameter never land two cells apart.
+        let scale = lo.abs().max(hi.abs()).max_element() + 2.0 * grid_radius;
+        let h = (diameter + 64.0 * f64::EPSILON * scale).max(f64::MIN_POSITIVE);
+        let mut w = h;
+        for _ in 0..100 {
+            let cells = needed(lo, hi, w);
+            if cells <= cap as f64 {
+                let ext = hi - lo;
+                return Layout {
+                    origin: lo,
+                    inv_width: DVec2::splat(1.0 / w),
+                    nx: (ext.x / w) as usize + 1,
+                    ny: (ext.y / w) as usize + 1,
+                };
+            }
+            w *= (cells / cap as f64).sqrt().max(1.001);
+        }
+        Layout {
+            origin: lo,
+            inv_width: DVec2::ZERO,
+            nx: 1,
+            ny: 1,
+        }
+    }
+
+    /// The region holding the bulk of the gridded discs: the 2–98 %
+    /// quantiles of a sample of at most 256 of them, padded, within `lo..hi`.
+    fn bulk(&mut self, lo: DVec2, hi: DVec2, diameter: f64) -> (DVec2, DVec2) {
+        let gridded = self.discs.len() - self.big.len();
+        let stride = (gridded / 256).max(1);
+        let mut range = |coord: fn(&Disc) -> f64, lo: f64, hi: f64| {
+            self.sample.clear();
+            let mut big = self.big.iter().peekable();
+            let in_grid = self.discs.iter().enumerate().filter_map(|(k, d)| {
+                if big.peek() == Some(&&(k as u32)) {
+                    big.next();
+                    None
+                } else {
+                    Some(coord(d))
+                }
+            });
+            self.sample.extend(in_grid.step_by(stride));
+            self.sample.sort_unstable_by(f64::total_cmp);
+            let m = self.sample.len();
+            let skip = m * 2 / 100;
+            let (q_lo, q_hi) = (self.sample[skip], self.sample[m - 1 - skip]);
+            let pad = 0.25 * (q_hi - q_lo) + diameter;
+            ((q_lo - pad).max(lo), (q_hi + pad).min(hi))
+        };
+        let (x0, x1) = range(|d| d.x, lo.x, hi.x);
+        let (y0, y1) = range(|d| d.y, lo.y, hi.y);
+        (DVec2::new(x0, y0), DVec2::new(x1, y1))
+    }
+
+    /// Counting sort of the gridded discs by cell into `sorted` and
+    /// `starts`, each disc keeping its cell in `tag`. Two passes, so that
+    /// memory is touched in order rather than at random: by row into
+    /// `by_row` (a few hundred output streams), then each row, small enough
+    /// to stay in cache, by column.
+    fn sort_into_cells(&mut self, layout: &Layout) {
+        let (nx, ny) = (layout.nx, layout.ny);
+        self.row_starts.clear();
+        self.row_starts.resize(ny + 2, 0);
+        let mut big = self.big.iter().peekable();
+        for (k, d) in self.discs.iter_mut().enumerate() {
+            if big.peek() == Some(&&(k as u32)) {
+                big.next();
+                d.tag = BIG;
+            } else {
+                let cy = layout.row(d);
+                d.tag = cy as u32;
+                self.row_starts[cy + 2] += 1;
+            }
+        }
+        let mut total = 0;
+        for s in self.row_starts.iter_mut() {
+            total += *s;
+            *s = total;
+        }
+        // row_starts[r + 1] is now where row r begins; use it as the cursor.
+        // (Every slot is written below, so the buffers are not cleared.)
+        self.by_row.resize(total as usize, Disc::default());
+        for d in &self.discs {
+            if d.tag != BIG {
+                let slot = &mut self.row_starts[d.tag as usize + 1];
+                self.by_row[*slot as usize] = *d;
+                *slot += 1;
+            }
+        }
+        // Row r is by_row[row_starts[r]..row_starts[r + 1]]. Sort each by
+        // column: count into starts[c + 1], sum up from the row's start.
+        self.starts.clear();
+        self.starts.resize(nx * ny + 1, 0);
+        self.sorted.resize(total as usize, Disc::default());
+        self.cursor.resize(nx, 0);
+        for r in 0..ny {
+            let (first, end) = (self.row_starts[r] as usize, self.row_starts[r + 1] as usize);
+            let base = r * nx;
+            let row = &mut self.by_row[first..end];
+            for d in row.iter_mut() {
+                let cx = layout.column(d);
+                d.tag = (base + cx) as u32;
+                self.starts[base + cx + 1] += 1;
+            }
+            let mut at = first as u32;
+            self.starts[base] = at;
+            for (cx, cursor) in self.cursor.iter_mut().enumerate() {
+                *cursor = at;
+                at += self.starts[base + cx + 1];
+                self.starts[base + cx + 1] = at;
+            }
+            for d in row.iter() {
+                let slot = &mut self.cursor[d.tag as usize - base];
+                self.sorted[*slot as usize] = *d;
+                *slot += 1;
+            }
+        }
+    }
+
+    /// Tests each big disc against every other disc.
+    fn big_discs<const PERIODIC: bool>(&mut self, space: &Space) {
+        for &k in &self.big {
+            let a = self.discs[k as usize];
+            for (m, b) in self.discs.iter().enumerate() {
+                // A pair of big discs is tested from the first of them.
+                let other_big_first = b.tag == BIG && m <= k as usize;
+                if !other_big_first && touches::<PERIODIC>(&a, b, space) {
+                    self.raw.push(pair(a.i, b.i));
+                }
+            }
+        }
+    }
+}
+
+/// Cells for a periodic box of size `period`, at least `2·radius` wide.
+fn periodic_layout(period: DVec2, radius: f64, gridded: usize, space: &Space) -> Layout {
+    let cap = CELLS_PER_DISC * gridded + 8;
+    let h =
+        (2.0 * radius + space.slack) * (1.0 + 1e-5) + 64.0 * f64::EPSILON * period.max_element();
+    let along = |side: f64| (side / h).floor().clamp(1.0, cap as f64) as usize;
+    let (mut nx, mut ny) = (along(period.x), along(period.y));
+    if nx * ny > cap {
+        let f = ((nx * ny) as f64 / cap as f64).sqrt();
+        nx = ((nx as f64 / f) as usize).max(1);
+        ny = ((ny as f64 / f) as usize).max(1);
+        if nx * ny > cap {
+            if nx == 1 {
+                ny = cap;
+            } else {
+                nx = cap;
+            }
+        }
+    }
+    // With two cells along an axis, left and right neighbours coincide.
+    if nx < 3 {
+        nx = 1;
+    }
+    if ny < 3 {
+        ny = 1;
+    }
+    Layout {
+        origin: DVec2::ZERO,
+        inv_width: DVec2::new(nx as f64 / period.x, ny as f64 / period.y),
+        nx,
+        ny,
+    }
+}
+
+/// The filled grid, read-only.
+struct Cells<'a> {
+    starts: &'a [u32],
+    sorted: &'a [Disc],
+    nx: usize,
+    ny: usize,
+}
+
+/// How the sweep compares two discs.
+const OPEN: u8 = 0;
+/// Periodic with at least three cells along both axes: the shift that takes
+/// a neighbour cell's disc to the minimum image is known per range (0, or ±
+/// the box across the seam), so the raw difference is tested, widened by the
+/// slack. Between adjacent cells, a pair that passes has |d| < a cell width
+/// ≤ a third of the box, so it is the minimum image indeed.
+const SHIFTED: u8 = 1;
+/// Periodic with an axis of a single cell: the minimum image by folding.
+const FOLDED: u8 = 2;
+
+/// The candidate test in sweep mode `MODE`, `shift` added to `b`'s centre.
+#[inline(always)]
+fn test<const MODE: u8>(a: &Disc, b: &Disc, shift: DVec2, space: &Space) -> bool {
+    match MODE {
+        OPEN => touches::<false>(a, b, space),
+        SHIFTED => {
+            let reach = a.r + b.r + space.slack;
+            let dx = (b.x + shift.x) - a.x;
+            let dy = (b.y + shift.y) - a.y;
+            (dx.abs() <= reach) & (dy.abs() <= reach)
+        }
+        _ => touches::<true>(a, b, space),
+    }
+}
+
+impl Cells<'_> {
+    /// Tests every gridded disc against the rest of its own cell and the
+    /// forward neighbours (right; up-left, up, up-right), row by row.
+    #[inline(never)]
+    fn sweep<const MODE: u8>(&self, space: &Space, raw: &mut Vec<Pair>) {
+        let (nx, ny, sorted) = (self.nx, self.ny, self.sorted);
+        let start = |c: usize| self.starts[c] as usize;
+        let periodic = MODE != OPEN;
+        let period = space.period.unwrap_or(DVec2::ZERO);
+        let wrap_x = periodic && nx >= 3;
+        let scan = |a: &Disc, from: usize, to: usize, shift: DVec2, raw: &mut Vec<Pair>| {
+            for b in &sorted[from..to] {
+                if test::<MODE>(a, b, shift, space) {
+                    raw.push(pair(a.i, b.i));
+                }
+            }
+        };
+        for cy in 0..ny {
+            let row = cy * nx;
+            let (up, up_y) = if cy + 1 < ny {
+                (Some(row + nx), 0.0)
+            } else if periodic && ny >= 3 {
+                (Some(0), period.y)
+            } else {
+                (None, 0.0)
+            };
+            let here = DVec2::ZERO;
+            let (left, right) = (DVec2::new(-period.x, 0.0), DVec2::new(period.x, 0.0));
+            for k in start(row)..start(row + nx) {
+                let a = &sorted[k];
+                let c = a.tag as usize;
+                let cx = c - row;
+                // The rest of the own cell runs on into the right neighbour.
+                if cx + 1 < nx {
+                    scan(a, k + 1, start(c + 2), here, raw);
+                } else {
+                    scan(a, k + 1, start(c + 1), here, raw);
+                    if wrap_x {
+                        scan(a, start(row), start(row + 1), right, raw);
+                    }
+                }
+                let Some(up) = up else {
+                    continue;
+                };
+                let above = DVec2::new(0.0, up_y);
+                if !wrap_x || (cx > 0 && cx + 1 < nx) {
+                    // Up-left to up-right: one run of the array.
+                    let (l, r) = (cx.saturating_sub(1), (cx + 1).min(nx - 1));
+                    scan(a, start(up + l), start(up + r + 1), above, raw);
+                } else if cx == 0 {
+                    scan(a, start(up), start(up + 2), above, raw);
+                    scan(a, start(up + nx - 1), start(up + nx), above + left, raw);
+                } else {
+                    scan(a, start(up + nx - 2), start(up + nx), above, raw);
+                    scan(a, start(up), start(up + 1), above + right, raw);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,376 @@
+//! Broad phase, the first stage of a step: list the pairs that *might* touch.
+//!
+//! Every broad phase answers the same question through [`BroadPhase`], so one
+//! test can hold each to the brute-force answer:
+//!
+//! | Kind | Type | Cost per step | Good for |
+//! |---|---|---|---|
+//! | `brute` | [`BruteForce`] | O(n²) | a handful of discs; the reference |
+//! | `grid` | [`Grid`] | O(n) | many discs of similar size |
+//! | `sap` | [`SweepAndPrune`] | O(n) sort (warm) + O(n·k) sweep | discs spread along one axis |
+//! | `quadtree` | [`Quadtree`] | O(n log n) | radii that differ by orders of magnitude |
+//!
+//! ## The contract
+//!
+//! [`BroadPhase::candidate_pairs`] replaces `out` with pairs `i < j`, each
+//! once, sorted ascending by `(i, j)`. It includes every pair whose discs
+//! overlap (distance < rᵢ + rⱼ, measured by [`Boundary::separation`], so
+//! across the seam for [`Boundary::Periodic`]); it may include a few pairs
+//! that do not. Resolution runs in this order, so a world steps bit for bit
+//! the same whatever the broad phase.
+//!
+//! No input makes a broad phase panic or run away: discs far outside the box,
+//! coincident discs, one huge disc among tiny ones, zero or one disc. Discs
+//! with a non-finite position or a NaN radius can never be a candidate (their
+//! separation test is never true) and are skipped; a disc of infinite radius
+//! pairs with every other. A periodic world with a zero or non-finite side
+//! has no meaningful minimum image; there the accelerated phases hand over
+//! to brute force.
+//!
+//! The accelerated phases keep their buffers between steps, so once warmed up
+//! a step allocates nothing. They share two helpers from this module: the
+//! exact candidate test (bit-identical to brute force's for closed and open
+//! worlds; with a rounding slack of a few ulps for periodic ones) and a
+//! counting sort that puts the pairs they find in `(i, j)` order.
+
+mod brute;
+mod grid;
+mod quadtree;
+mod sap;
+
+pub use brute::BruteForce;
+pub use grid::Grid;
+pub use quadtree::Quadtree;
+pub use sap::SweepAndPrune;
+
+use crate::boundary::Boundary;
+use crate::particle::Particle;
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+
+/// A candidate pair of particle indices, always with `i < j`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Pair {
+    /// Lower index.
+    pub i: u32,
+    /// Higher index.
+    pub j: u32,
+}
+
+/// Finds candidate pairs: a superset of the overlapping pairs.
+pub trait BroadPhase {
+    /// Replaces `out` with the candidate pairs, each once, `i < j`, in
+    /// ascending order (so that resolution order, and hence results, do not
+    /// depend on the broad phase). Every overlapping pair is included.
+    fn candidate_pairs(
+        &mut self,
+        particles: &[Particle],
+        boundary: Boundary,
+        size: DVec2,
+        out: &mut Vec<Pair>,
+    );
+}
+
+/// The broad phases a world can use; scene files and the CLI name them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum BroadPhaseKind {
+    /// Every pair i < j: O(n²).
+    #[default]
+    Brute,
+    /// Uniform grid of cells as wide as the largest disc: O(n).
+    Grid,
+    /// Sort and sweep along one axis, warm-started from the last step.
+    Sap,
+    /// Loose quadtree: for radii that differ by orders of magnitude.
+    Quadtree,
+}
+
+impl BroadPhaseKind {
+    /// Every kind, in the order the UI cycles through them.
+    pub const ALL: [BroadPhaseKind; 4] = [
+        BroadPhaseKind::Brute,
+        BroadPhaseKind::Grid,
+        BroadPhaseKind::Sap,
+        BroadPhaseKind::Quadtree,
+    ];
+
+    /// A fresh broad phase of this kind.
+    pub fn build(self) -> Box<dyn BroadPhase + Send> {
+        match self {
+            BroadPhaseKind::Brute => Box::new(BruteForce),
+            BroadPhaseKind::Grid => Box::<Grid>::default(),
+            BroadPhaseKind::Sap => Box::<SweepAndPrune>::default(),
+            BroadPhaseKind::Quadtree => Box::<Quadtree>::default(),
+        }
+    }
+
+    /// The lowercase name used in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            BroadPhaseKind::Brute => "brute",
+            BroadPhaseKind::Grid => "grid",
+            BroadPhaseKind::Sap => "sap",
+            BroadPhaseKind::Quadtree => "quadtree",
+        }
+    }
+}
+
+impl fmt::Display for BroadPhaseKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for BroadPhaseKind {
+    type Err = String;
+
+    /// Parses a name as written by [`BroadPhaseKind::name`].
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        BroadPhaseKind::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = BroadPhaseKind::ALL.iter().map(|k| k.name()).collect();
+                format!(
+                    "unknown broad phase {s:?}: expected one of {}",
+                    names.join(", ")
+                )
+            })
+    }
+}
+
+/// One disc as the accelerated phases store it: centre (wrapped into the box
+/// when periodic), radius, and index into the particle slice.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Disc {
+    x: f64,
+    y: f64,
+    r: f64,
+    i: u32,
+    /// Free for the phase's own use (the grid keeps the cell here); it fits
+    /// in what would otherwise be padding.
+    tag: u32,
+}
+
+/// The geometry of one call: open space or a torus, and the rounding slack.
+#[derive(Clone, Copy, Debug)]
+struct Space {
+    /// Box size when periodic (both components positive and finite).
+    period: Option<DVec2>,
+    /// Added to the reach in the periodic candidate test, to cover the
+    /// difference between wrapping here and [`Boundary::separation`]'s
+    /// minimum image (a few ulps of the largest coordinate).
+    slack: f64,
+    /// Largest |coordinate| of a periodic disc found outside the box.
+    outside: f64,
+}
+
+impl Space {
+    /// The space for `boundary`, or `None` when a periodic `size` has a zero
+    /// or non-finite side. Such a torus is meaningless and its separations are
+    /// degenerate (NaN, or unwrapped), so the caller defers to brute force,
+    /// which follows [`Boundary::separation`] whatever it does there.
+    fn new(boundary: Boundary, size: DVec2) -> Option<Space> {
+        let period = match boundary {
+            Boundary::Periodic => {
+                // A negative side gives the same minimum image as its absolute value.
+                let period = size.abs();
+                if !(period.x > 0.0 && period.y > 0.0 && period.is_finite()) {
+                    return None;
+                }
+                Some(period)
+            }
+            Boundary::Box | Boundary::Open => None,
+        };
+        Some(Space {
+            period,
+            slack: 0.0,
+            outside: 0.0,
+        })
+    }
+
+    /// The disc as stored, or `None` if it can never be a candidate.
+    #[inline(always)]
+    fn disc(&mut self, i: usize, p: &Particle) -> Option<Disc> {
+        let r = p.radius;
+        if !(p.pos.is_finite() && r > f64::NEG_INFINITY) {
+            return None; // non-finite centre, NaN or −∞ radius
+        }
+        let mut pos = p.pos;
+        if let Some(period) = self.period {
+            // After a periodic step every centre is inside already.
+            if !((0.0..period.x).contains(&pos.x) && (0.0..period.y).contains(&pos.y)) {
+                pos = self.wrap(pos, period);
+            }
+        }
+        Some(Disc {
+            x: pos.x,
+            y: pos.y,
+            r,
+            i: i as u32,
+            tag: 0,
+        })
+    }
+
+    /// A centre outside the periodic box, wrapped into `[0, period]`
+    /// (`rem_euclid` is a software division: kept off the common path).
+    #[cold]
+    #[inline(never)]
+    fn wrap(&mut self, pos: DVec2, period: DVec2) -> DVec2 {
+        self.outside = self.outside.max(pos.abs().max_element());
+        pos.rem_euclid(period)
+    }
+
+    /// Sets the periodic slack once every disc has been seen.
+    fn finish(&mut self) {
+        if let Some(period) = self.period {
+            let scale = period.max_element().max(self.outside);
+            self.slack = 8.0 * f64::EPSILON * scale;
+        }
+    }
+}
+
+/// The shorter way round a circle of length `period` (`d` within ±`period`).
+#[inline(always)]
+fn fold(d: f64, period: f64) -> f64 {
+    if d > 0.5 * period {
+        d - period
+    } else if d < -0.5 * period {
+        d + period
+    } else {
+        d
+    }
+}
+
+/// The candidate test: do the discs' bounding boxes touch?
+///
+/// With `PERIODIC = false` this is exactly brute force's test (same floating
+/// point operations on the same numbers). With `PERIODIC = true` the discs
+/// hold wrapped centres; the minimum image is taken by folding and the reach
+/// is widened by `space.slack`, so the result is a superset of brute force's
+/// overlapping pairs.
+#[inline(always)]
+fn touches<const PERIODIC: bool>(a: &Disc, b: &Disc, space: &Space) -> bool {
+    let reach = a.r + b.r;
+    if PERIODIC {
+        let period = space.period.unwrap_or(DVec2::ONE);
+        let dx = fold(b.x - a.x, period.x);
+        let dy = fold(b.y - a.y, period.y);
+        let reach = reach + space.slack;
+        // `&`, not `&&`: the x test alone is a coin flip for neighbours, and
+        // a mispredicted branch costs more than the y test.
+        (dx.abs() <= reach) & (dy.abs() <= reach)
+    } else {
+        let dx = b.x - a.x;
+        let dy = b.y - a.y;
+        (dx.abs() <= reach) & (dy.abs() <= reach)
+    }
+}
+
+/// The pair of two distinct particle indices, lower first.
+#[inline(always)]
+fn pair(a: u32, b: u32) -> Pair {
+    if a < b {
+        Pair { i: a, j: b }
+    } else {
+        Pair { i: b, j: a }
+    }
+}
+
+/// Replaces `out` with `raw` (distinct pairs with `i < j < n`) sorted by
+/// `(i, j)`: a counting sort on `i`, then each particle's few partners sorted.
+fn sort_pairs(raw: &[Pair], n: usize, ends: &mut Vec<u32>, out: &mut Vec<Pair>) {
+    out.clear();
+    if raw.len() <= 32 {
+        out.extend_from_slice(raw);
+        out.sort_unstable();
+        return;
+    }
+    // ends[i + 1] counts pairs with first index i; after the prefix sum,
+    // ends[i] is where they start; after scattering, where they end.
+    ends.clear();
+    ends.resize(n + 1, 0);
+    for p in raw {
+        ends[p.i as usize + 1] += 1;
+    }
+    let mut total = 0;
+    for e in ends.iter_mut() {
+        total += *e;
+        *e = total;
+    }
+    out.resize(raw.len(), Pair::default());
+    for &p in raw {
+        let slot = &mut ends[p.i as usize];
+        out[*slot as usize] = p;
+        *slot += 1;
+    }
+    // Now particle i's pairs are out[ends[i-1]..ends[i]]: sort each by j.
+    let mut start = 0;
+    for &end in &ends[..n] {
+        let group = &mut out[start..end as usize];
+        match group.len() {
+            0 | 1 => {}
+            2..=16 => insertion_sort(group),
+            _ => group.sort_unstable(),
+        }
+        start = end as usize;
+    }
+}
+
+/// Sorts a short slice of pairs that share `i` by `j`.
+#[inline]
+fn insertion_sort(group: &mut [Pair]) {
+    for k in 1..group.len() {
+        let cur = group[k];
+        let mut m = k;
+        while m > 0 && group[m - 1].j > cur.j {
+            group[m] = group[m - 1];
+            m -= 1;
+        }
+        group[m] = cur;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_errors_list_the_choices() {
+        for k in BroadPhaseKind::ALL {
+            assert_eq!(k.name().parse::<BroadPhaseKind>(), Ok(k));
+            assert_eq!(k.to_string(), k.name());
+        }
+        let err = "octree".parse::<BroadPhaseKind>().unwrap_err();
+        for k in BroadPhaseKind::ALL {
+            assert!(err.contains(k.name()), "{err}");
+        }
+        assert!(err.contains("octree"));
+    }
+
+    #[test]
+    fn counting_sort_orders_pairs() {
+        let mut raw = Vec::new();
+        for i in 0..50u32 {
+            for j in (i + 1..60).rev().step_by(7) {
+                raw.push(Pair { i, j });
+            }
+        }
+        raw.reverse();
+        let mut expected = raw.clone();
+        expected.sort_unstable();
+        let (mut ends, mut out) = (Vec::new(), Vec::new());
+        sort_pairs(&raw, 60, &mut ends, &mut out);
+        assert_eq!(out, expected);
+    }
+
+    #[test]
+    fn fold_takes_the_short_way() {
+        assert_eq!(fold(9.0, 10.0), -1.0);
+        assert_eq!(fold(-9.0, 10.0), 1.0);
+        assert_eq!(fold(4.0, 10.0), 4.0);
+    }
+}

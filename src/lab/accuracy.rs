@@ -1,0 +1,325 @@
+//! `impulse accuracy`: speed against accuracy, one curve per method.
+//!
+//! Every discrete method is swept over time steps and substeps and compared
+//! with `exact` on the same scene. x is the cost (wall-clock seconds per
+//! simulated second), y an error against the `exact` reference:
+//!
+//! - trajectory: RMS distance from the reference after a short horizon
+//!   ([`TRAJECTORY_HORIZON`]), in disc radii (before chaos takes over);
+//! - collisions: relative error of the pair-collision count over [`HORIZON`];
+//! - energy drift with gravity: |E(T) − E(0)| / E(0) for an elastic gas
+//!   falling under gravity (the reference conserves it to rounding);
+//! - wall pressure: relative error of the momentum the walls transfer.
+//!
+//! The scene is a 100-disc elastic gas at 30 % area fraction in a closed box.
+//! Points on the Pareto front (no other point is both cheaper and more
+//! accurate) are marked. Errors of exactly zero are drawn at 1e-16.
+
+use super::chart::{write_chart, Chart, Series};
+use super::progress;
+use impulse::boundary::Boundary;
+use impulse::method::{Method, Setting};
+use impulse::presets::Gas;
+use impulse::{DVec2, World};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Arguments of `impulse accuracy`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct AccuracyArgs {
+    /// Fewer time steps and substeps (well under a minute).
+    #[arg(long)]
+    pub quick: bool,
+    /// Folder for accuracy.csv and the charts.
+    #[arg(long, default_value = "lab-out")]
+    pub out: PathBuf,
+}
+
+/// Simulated time for collision, energy and pressure errors (s).
+pub const HORIZON: f64 = 2.0;
+/// Simulated time for the trajectory error (s).
+pub const TRAJECTORY_HORIZON: f64 = 0.25;
+/// Floor for drawing zero errors on a log axis.
+const ZERO_ERROR: f64 = 1e-16;
+
+/// One point of the sweep.
+#[derive(Clone, Debug, Serialize)]
+pub struct Point {
+    /// Method.
+    pub method: Method,
+    /// Time step (s).
+    pub dt: f64,
+    /// Substeps per step.
+    pub substeps: u32,
+    /// Wall-clock seconds per simulated second.
+    pub cost: f64,
+    /// RMS position error after the short horizon (radii).
+    pub trajectory_error: f64,
+    /// Relative error of the collision count.
+    pub collision_error: f64,
+    /// Relative energy drift under gravity.
+    pub energy_drift: f64,
+    /// Relative error of the wall pressure.
+    pub pressure_error: f64,
+}
+
+/// The errors, by name, for tables and charts.
+const METRICS: [(&str, &str, fn(&Point) -> f64); 4] = [
+    (
+        "trajectory",
+        "RMS position error after 0.25 s (radii)",
+        |p| p.trajectory_error,
+    ),
+    ("collisions", "relative error of the collision count", |p| {
+        p.collision_error
+    }),
+    ("energy", "relative energy drift under gravity", |p| {
+        p.energy_drift
+    }),
+    ("pressure", "relative error of the wall pressure", |p| {
+        p.pressure_error
+    }),
+];
+
+fn gas(gravity: bool) -> World {
+    let mut world = Gas {
+        count: 100,
+        boundary: Boundary::Box,
+        speed: 2.0,
+        seed: 4,
+        ..Gas::default()
+    }
+    .build();
+    if gravity {
+        world.gravity = DVec2::new(0.0, -9.81);
+    }
+    world
+}
+
+fn configure(world: &mut World, method: Method, substeps: u32) {
+    world.method = Setting::Fixed(method);
+    world.substeps = Setting::Fixed(substeps);
+    world.broad_phase = Setting::Auto;
+}
+
+/// Runs `world` to `time` with steps of `dt`; returns wall-clock seconds.
+fn simulate(world: &mut World, time: f64, dt: f64) -> f64 {
+    let steps = (time / dt).round() as u64;
+    let started = Instant::now();
+    for _ in 0..steps {
+        world.step(dt);
+    }
+    started.elapsed().as_secs_f64()
+}
+
+/// The reference and the measured state a point is compared with.
+struct Outcome {
+    short: World,
+    long: World,
+    falling: World,
+    seconds: f64,
+}
+
+fn outcome(method: Method, dt: f64, substeps: u32) -> Outcome {
+    let mut short = gas(false);
+    configure(&mut short, method, substeps);
+    simulate(&mut short, TRAJECTORY_HORIZON, dt);
+    let mut long = gas(false);
+    configure(&mut long, method, substeps);
+    let seconds = simulate(&mut long, HORIZON, dt);
+    let mut falling = gas(true);
+    configure(&mut falling, method, substeps);
+    simulate(&mut falling, HORIZON, dt);
+    Outcome {
+        short,
+        long,
+        falling,
+        seconds,
+    }
+}
+
+fn relative(value: f64, reference: f64) -> f64 {
+    ((value - reference) / reference).abs()
+}
+
+fn compare(method: Method, dt: f64, substeps: u32, got: &Outcome, reference: &Outcome) -> Point {
+    let radius = got.short.particles.first().map_or(1.0, |p| p.radius);
+    let squared: f64 = got
+        .short
+        .particles
+        .iter()
+        .zip(&reference.short.particles)
+        .map(|(a, b)| a.pos.distance_squared(b.pos))
+        .sum();
+    let n = got.short.particles.len().max(1) as f64;
+    let e0 = gas(true).total_energy();
+    Point {
+        method,
+        dt,
+        substeps,
+        cost: got.seconds / HORIZON,
+        trajectory_error: (squared / n).sqrt() / radius,
+        collision_error: relative(
+            got.long.total_pair_collisions as f64,
+            reference.long.total_pair_collisions as f64,
+        ),
+        energy_drift: relative(got.falling.total_energy(), e0),
+        pressure_error: relative(
+            got.long.total_wall_impulse,
+            reference.long.total_wall_impulse,
+        ),
+    }
+}
+
+/// Runs the sweep, prints the table, writes CSV and one chart per error.
+pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
+    let dts: &[f64] = if args.quick {
+        &[1.0 / 60.0, 1.0 / 240.0, 1.0 / 960.0]
+    } else {
+        &[
+            1.0 / 30.0,
+            1.0 / 60.0,
+            1.0 / 120.0,
+            1.0 / 240.0,
+            1.0 / 480.0,
+            1.0 / 960.0,
+            1.0 / 1920.0,
+        ]
+    };
+    let substeps: &[u32] = if args.quick { &[1, 8] } else { &[1, 4, 16] };
+    let mut runs: Vec<(Method, f64, u32)> = Vec::new();
+    for &dt in dts {
+        runs.push((Method::Seed, dt, 1));
+        for &k in substeps {
+            runs.push((Method::Impulse, dt, k));
+            runs.push((Method::Verlet, dt, k));
+        }
+    }
+    for dt in [0.1, 0.01, 0.001] {
+        runs.push((Method::Exact, dt, 1));
+    }
+    let bar = progress::bar(runs.len() as u64 + 1, "accuracy");
+    bar.set_message("reference (exact)");
+    let reference = outcome(Method::Exact, 0.01, 1);
+    bar.inc(1);
+    let mut points = Vec::new();
+    for (method, dt, k) in runs {
+        bar.set_message(format!("{method} dt {dt:.5} x{k}"));
+        let got = outcome(method, dt, k);
+        points.push(compare(method, dt, k, &got, &reference));
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+
+    std::fs::create_dir_all(&args.out)?;
+    let table = table(&points);
+    print!("{table}");
+    crate::files::write_atomically(&args.out.join("accuracy.md"), table.as_bytes())?;
+    crate::files::write_atomically(&args.out.join("accuracy.csv"), csv(&points).as_bytes())?;
+    for (name, label, error) in METRICS {
+        let series = series_by_method(&points, error);
+        let front = pareto_front(&points, error);
+        let title = format!("Speed against accuracy: {name}");
+        let chart = Chart {
+            title: &title,
+            x_label: "cost: wall-clock seconds per simulated second",
+            y_label: label,
+            log_x: true,
+            log_y: true,
+            series: &series,
+            highlight: Some(&front),
+        };
+        let (png, _) = write_chart(&chart, &args.out.join(format!("accuracy-{name}")))?;
+        println!("wrote {}", png.display());
+    }
+    Ok(())
+}
+
+fn series_by_method(points: &[Point], error: fn(&Point) -> f64) -> Vec<Series> {
+    let mut series: Vec<Series> = Vec::new();
+    for p in points {
+        let name = p.method.name().to_string();
+        let xy = (p.cost, error(p).max(ZERO_ERROR));
+        match series.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push(xy),
+            None => series.push(Series {
+                name,
+                points: vec![xy],
+                dashed: false,
+            }),
+        }
+    }
+    for s in &mut series {
+        s.points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    }
+    series
+}
+
+/// The points no other point beats on both cost and error.
+pub fn pareto_front(points: &[Point], error: fn(&Point) -> f64) -> Series {
+    let mut sorted: Vec<(f64, f64)> = points
+        .iter()
+        .map(|p| (p.cost, error(p).max(ZERO_ERROR)))
+        .collect();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut front = Vec::new();
+    let mut best = f64::INFINITY;
+    for (cost, err) in sorted {
+        if err < best {
+            best = err;
+            front.push((cost, err));
+        }
+    }
+    Series {
+        name: "Pareto front".into(),
+        points: front,
+        dashed: true,
+    }
+}
+
+fn table(points: &[Point]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "| method | dt (s) | substeps | cost (s/s) | trajectory (radii) | collisions | energy drift | pressure |"
+    );
+    let _ = writeln!(out, "|---|---:|---:|---:|---:|---:|---:|---:|");
+    for p in points {
+        let _ = writeln!(
+            out,
+            "| {} | {:.5} | {} | {:.2e} | {:.2e} | {:.2e} | {:.2e} | {:.2e} |",
+            p.method,
+            p.dt,
+            p.substeps,
+            p.cost,
+            p.trajectory_error,
+            p.collision_error,
+            p.energy_drift,
+            p.pressure_error
+        );
+    }
+    out
+}
+
+fn csv(points: &[Point]) -> String {
+    let mut out = String::from(
+        "method,dt,substeps,cost,trajectory_error,collision_error,energy_drift,pressure_error\n",
+    );
+    for p in points {
+        let _ = writeln!(
+            out,
+            "{},{},{},{},{},{},{},{}",
+            p.method,
+            p.dt,
+            p.substeps,
+            p.cost,
+            p.trajectory_error,
+            p.collision_error,
+            p.energy_drift,
+            p.pressure_error
+        );
+    }
+    out
+}

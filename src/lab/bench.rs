@@ -1,0 +1,299 @@
+//! `impulse bench`: what a step costs per disc, for every broad phase and
+//! method, as the number of discs grows.
+//!
+//! The scene is a gas of equal discs (radius 0.5 m, rms speed 1 m/s) at 30 %
+//! area fraction in a periodic square, stepped at dt = 0.01 s (a disc moves
+//! 2 % of its radius per step). Each configuration is timed in batches of
+//! about 0.2 s after a warm-up; the figure is the median batch, in ns per
+//! particle-step (wall-clock of one step divided by n). Configurations whose
+//! estimated run time would exceed the budget (brute force at large n) are
+//! skipped and said so.
+
+use super::chart::{write_chart, Chart, Series};
+use super::progress;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use impulse::presets::Gas;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Arguments of `impulse bench`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Up to 10,000 discs and shorter timings (about a minute).
+    #[arg(long)]
+    pub quick: bool,
+    /// Folder for bench.csv, bench.png and bench.svg.
+    #[arg(long, default_value = "lab-out")]
+    pub out: PathBuf,
+}
+
+/// Time step of the benchmark gas (s).
+pub const DT: f64 = 0.01;
+
+/// One measured configuration.
+#[derive(Clone, Debug, Serialize)]
+pub struct Row {
+    /// Collision method.
+    pub method: Method,
+    /// Broad phase (`exact` keeps its own cells and ignores it).
+    pub broad_phase: String,
+    /// Discs.
+    pub n: usize,
+    /// Median ns per particle-step.
+    pub ns_per_particle_step: f64,
+    /// Pair collisions per wall-clock second.
+    pub collisions_per_second: f64,
+    /// Steps timed.
+    pub steps: u64,
+}
+
+/// The configurations: every broad phase under `impulse`, and every other
+/// method on the grid.
+fn configurations() -> Vec<(Method, BroadPhaseKind)> {
+    let mut list: Vec<_> = BroadPhaseKind::ALL
+        .iter()
+        .map(|&b| (Method::Impulse, b))
+        .collect();
+    list.extend([Method::Seed, Method::Verlet, Method::Exact].map(|m| (m, BroadPhaseKind::Grid)));
+    list
+}
+
+/// Runs the benchmark, prints the table and writes CSV and chart.
+pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    let sizes: &[usize] = if args.quick {
+        &[100, 1_000, 10_000]
+    } else {
+        &[100, 1_000, 10_000, 100_000, 1_000_000]
+    };
+    let (batch_seconds, budget_seconds) = if args.quick { (0.05, 5.0) } else { (0.2, 40.0) };
+    let configs = configurations();
+    let bar = progress::bar((configs.len() * sizes.len()) as u64, "bench");
+    let mut rows = Vec::new();
+    let mut skipped = Vec::new();
+    for &(method, broad) in &configs {
+        let mut last: Option<(usize, f64)> = None;
+        for &n in sizes {
+            bar.inc(1);
+            if let Some((prev_n, prev_ns)) = last {
+                // Brute force costs O(n) per disc, the others O(1).
+                let growth = if broad == BroadPhaseKind::Brute && method != Method::Exact {
+                    1.0
+                } else {
+                    0.0
+                };
+                let step_seconds =
+                    prev_ns * 1e-9 * n as f64 * (n as f64 / prev_n as f64).powf(growth);
+                if step_seconds * 12.0 > budget_seconds {
+                    skipped.push(format!(
+                        "{} / {} at n = {n}: about {step_seconds:.1} s per step",
+                        method,
+                        broad.name()
+                    ));
+                    continue;
+                }
+            }
+            bar.set_message(format!("{method} / {} n = {n}", broad.name()));
+            let row = measure(method, broad, n, batch_seconds);
+            last = Some((n, row.ns_per_particle_step));
+            rows.push(row);
+        }
+    }
+    bar.finish_and_clear();
+    let throughput_sizes: &[usize] = if args.quick {
+        &[10_000]
+    } else {
+        &[10_000, 100_000]
+    };
+    let throughput: Vec<Throughput> = throughput_sizes
+        .iter()
+        .map(|&n| exact_throughput(n))
+        .collect();
+    std::fs::create_dir_all(&args.out)?;
+    let mut table = table(&rows, &skipped);
+    let _ = writeln!(table, "\n| exact, long steps (dt = {EXACT_DT} s) | n | collisions per wall-clock second | events per collision | relative energy change |");
+    let _ = writeln!(table, "|---|---:|---:|---:|---:|");
+    for t in &throughput {
+        let _ = writeln!(
+            table,
+            "| exact | {} | {:.3e} | {:.2} | {:.1e} |",
+            t.n, t.collisions_per_second, t.events_per_collision, t.energy_change
+        );
+    }
+    print!("{table}");
+    write_csv(&args.out.join("bench.csv"), &rows)?;
+    crate::files::write_atomically(&args.out.join("bench.md"), table.as_bytes())?;
+    let series = series_of(&rows);
+    let chart = Chart {
+        title: "Cost of a step per disc (gas, 30 % area fraction)",
+        x_label: "discs n",
+        y_label: "ns per particle-step",
+        log_x: true,
+        log_y: true,
+        series: &series,
+        highlight: None,
+    };
+    let (png, svg) = write_chart(&chart, &args.out.join("bench"))?;
+    println!(
+        "wrote {}, {}, {}",
+        args.out.join("bench.csv").display(),
+        png.display(),
+        svg.display()
+    );
+    Ok(())
+}
+
+/// Step for the exact method's throughput, long enough that the per-step
+/// set-up is amortised over many collisions (s).
+pub const EXACT_DT: f64 = 2.0;
+
+/// Collisions per wall-clock second of the exact method.
+#[derive(Clone, Debug, Serialize)]
+pub struct Throughput {
+    /// Discs.
+    pub n: usize,
+    /// Pair collisions per wall-clock second (median of 3 steps).
+    pub collisions_per_second: f64,
+    /// Events processed per pair collision.
+    pub events_per_collision: f64,
+    /// |KE after − KE before| / KE before over the timed steps.
+    pub energy_change: f64,
+}
+
+/// Measures `exact` on the gas with long steps.
+pub fn exact_throughput(n: usize) -> Throughput {
+    let mut world = Gas {
+        count: n,
+        ..Gas::default()
+    }
+    .build();
+    world.method = Setting::Fixed(Method::Exact);
+    world.step(EXACT_DT);
+    let ke0 = world.metrics().kinetic_energy;
+    let (mut rates, mut events, mut collisions) = (Vec::new(), 0usize, 0usize);
+    for _ in 0..3 {
+        let t = Instant::now();
+        let stats = world.step(EXACT_DT);
+        rates.push(stats.pair_collisions as f64 / t.elapsed().as_secs_f64());
+        events += stats.events;
+        collisions += stats.pair_collisions;
+    }
+    Throughput {
+        n,
+        collisions_per_second: median(&mut rates),
+        events_per_collision: events as f64 / collisions.max(1) as f64,
+        energy_change: (world.metrics().kinetic_energy - ke0).abs() / ke0,
+    }
+}
+
+/// Times one configuration.
+pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f64) -> Row {
+    let mut world = Gas {
+        count: n,
+        ..Gas::default()
+    }
+    .build();
+    world.method = Setting::Fixed(method);
+    world.broad_phase = Setting::Fixed(broad);
+    world.substeps = Setting::Fixed(1);
+    let warm = Instant::now();
+    for _ in 0..2 {
+        world.step(DT);
+    }
+    let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
+    let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
+    let mut samples = Vec::new();
+    let (mut steps, mut collisions, mut elapsed) = (0u64, 0u64, 0.0f64);
+    for _ in 0..5 {
+        let before = world.total_pair_collisions;
+        let t = Instant::now();
+        for _ in 0..batch {
+            world.step(DT);
+        }
+        let secs = t.elapsed().as_secs_f64();
+        samples.push(secs * 1e9 / (batch as f64 * n as f64));
+        steps += batch;
+        collisions += world.total_pair_collisions - before;
+        elapsed += secs;
+    }
+    Row {
+        method,
+        broad_phase: if method == Method::Exact {
+            "cells".into()
+        } else {
+            broad.name().into()
+        },
+        n,
+        ns_per_particle_step: median(&mut samples),
+        collisions_per_second: collisions as f64 / elapsed.max(1e-12),
+        steps,
+    }
+}
+
+/// The middle value (mean of the two middle ones for an even count).
+pub fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    match values.len() {
+        0 => f64::NAN,
+        len if len % 2 == 1 => values[len / 2],
+        len => 0.5 * (values[len / 2 - 1] + values[len / 2]),
+    }
+}
+
+fn label(row: &Row) -> String {
+    format!("{} / {}", row.method, row.broad_phase)
+}
+
+fn table(rows: &[Row], skipped: &[String]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "| method / broad phase | n | ns per particle-step (median) | collisions per second |"
+    );
+    let _ = writeln!(out, "|---|---:|---:|---:|");
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "| {} | {} | {:.1} | {:.3e} |",
+            label(r),
+            r.n,
+            r.ns_per_particle_step,
+            r.collisions_per_second
+        );
+    }
+    for s in skipped {
+        let _ = writeln!(out, "\nskipped: {s}");
+    }
+    out
+}
+
+fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
+    let mut csv =
+        String::from("method,broad_phase,n,ns_per_particle_step,collisions_per_second,steps\n");
+    for r in rows {
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{},{}",
+            r.method, r.broad_phase, r.n, r.ns_per_particle_step, r.collisions_per_second, r.steps
+        );
+    }
+    Ok(crate::files::write_atomically(path, csv.as_bytes())?)
+}
+
+fn series_of(rows: &[Row]) -> Vec<Series> {
+    let mut series: Vec<Series> = Vec::new();
+    for r in rows {
+        let name = label(r);
+        match series.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push((r.n as f64, r.ns_per_particle_step)),
+            None => series.push(Series {
+                name,
+                points: vec![(r.n as f64, r.ns_per_particle_step)],
+                dashed: r.method != Method::Impulse,
+            }),
+        }
+    }
+    series
+}

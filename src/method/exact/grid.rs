@@ -1,0 +1,129 @@
+//! The exact method's cell grid: cells at least one diameter wide, so a
+//! disc can only touch discs in its own and the eight neighbouring cells.
+
+use crate::boundary::Boundary;
+use crate::particle::Particle;
+use crate::world::Laws;
+use glam::DVec2;
+use smallvec::SmallVec;
+
+/// Cap on grid cells, per disc.
+const CELLS_PER_DISC: usize = 4;
+
+/// Discs of one cell; the first few inline.
+pub(super) type CellList = SmallVec<[u32; 6]>;
+
+/// A grid over the world (or, for open space, over where the discs are),
+/// with cells at least one diameter wide.
+pub(super) struct Grid {
+    origin: DVec2,
+    cell: DVec2,
+    pub(super) dims: [i32; 2],
+    pub(super) periodic: bool,
+    pub(super) cells: Vec<CellList>,
+}
+
+impl Grid {
+    pub(super) fn new(particles: &[Particle], laws: &Laws) -> Grid {
+        let n = particles.len();
+        let max_d = particles
+            .iter()
+            .map(|p| 2.0 * p.radius)
+            .fold(0.0, f64::max)
+            .max(1e-12);
+        let (origin, extent) = match laws.boundary {
+            Boundary::Box | Boundary::Periodic => (DVec2::ZERO, laws.size),
+            Boundary::Open => {
+                let (mut lo, mut hi) =
+                    (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
+                for p in particles {
+                    lo = lo.min(p.pos);
+                    hi = hi.max(p.pos);
+                }
+                if n == 0 || !lo.is_finite() || !hi.is_finite() {
+                    (DVec2::ZERO, DVec2::ONE)
+                } else {
+                    let margin = (hi - lo).max(DVec2::splat(4.0 * max_d));
+                    (lo - margin, (hi - lo) + 2.0 * margin)
+                }
+            }
+        };
+        let cap = (CELLS_PER_DISC * n).max(16) as f64;
+        let mut dims = (extent / max_d)
+            .floor()
+            .max(DVec2::ONE)
+            .min(DVec2::splat(1e6));
+        while dims.x * dims.y > cap {
+            dims = (dims * 0.5).floor().max(DVec2::ONE);
+        }
+        let dims = [dims.x as i32, dims.y as i32];
+        Grid {
+            origin,
+            cell: extent / DVec2::new(f64::from(dims[0]), f64::from(dims[1])),
+            dims,
+            periodic: laws.boundary == Boundary::Periodic,
+            cells: vec![CellList::new(); (dims[0] as usize) * (dims[1] as usize)],
+        }
+    }
+
+    pub(super) fn cell_of(&self, pos: DVec2) -> [i32; 2] {
+        let rel = (pos - self.origin) / self.cell;
+        let clamp = |v: f64, n: i32| {
+            if v.is_finite() {
+                (v.floor().clamp(0.0, f64::from(n - 1))) as i32
+            } else {
+                0
+            }
+        };
+        [clamp(rel.x, self.dims[0]), clamp(rel.y, self.dims[1])]
+    }
+
+    pub(super) fn index(&self, c: [i32; 2]) -> usize {
+        (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
+    }
+
+    /// The up to nine cells around `c`, each once.
+    pub(super) fn neighbourhood(&self, c: [i32; 2]) -> SmallVec<[usize; 9]> {
+        let around = |v: i32, n: i32| -> SmallVec<[i32; 3]> {
+            let mut out = SmallVec::new();
+            for d in [v - 1, v, v + 1] {
+                let w = if !self.periodic || (0..n).contains(&d) {
+                    d
+                } else if d < 0 {
+                    d + n
+                } else {
+                    d - n
+                };
+                if (0..n).contains(&w) && !out.contains(&w) {
+                    out.push(w);
+                }
+            }
+            out
+        };
+        let (xs, ys) = (around(c[0], self.dims[0]), around(c[1], self.dims[1]));
+        let mut out = SmallVec::new();
+        for &y in &ys {
+            for &x in &xs {
+                out.push(self.index([x, y]));
+            }
+        }
+        out
+    }
+
+    pub(super) fn bounds(&self, c: [i32; 2], axis: usize) -> (f64, f64) {
+        let lo = self.origin[axis] + f64::from(c[axis]) * self.cell[axis];
+        (lo, lo + self.cell[axis])
+    }
+
+    pub(super) fn insert(&mut self, i: u32, c: [i32; 2]) {
+        let k = self.index(c);
+        self.cells[k].push(i);
+    }
+
+    pub(super) fn remove(&mut self, i: u32, c: [i32; 2]) {
+        let k = self.index(c);
+        if let Some(at) = self.cells[k].iter().position(|&j| j == i) {
+            self.cells[k].swap_remove(at);
+        }
+    }
+}

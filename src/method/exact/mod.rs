@@ -1,0 +1,430 @@
+//! `exact`: event-driven hard discs.
+//!
+//! Discs fly on exact trajectories (straight lines, or parabolas under
+//! gravity) between events. A priority queue holds each disc's earliest
+//! predicted event: a collision with a disc in its own or a neighbouring cell,
+//! a wall hit, or a crossing into the next cell of a grid whose cells are at
+//! least one diameter wide (so predicting an event costs O(1) and processing
+//! one O(log n)). Each step takes the earliest event, advances the discs
+//! involved to that instant, resolves it, re-predicts them, and repeats until
+//! the end of the step; then every disc is advanced to the end.
+//!
+//! - Invalidation: each disc has a generation counter, bumped only when its
+//!   trajectory changes (a collision or a wall hit). An event remembers the
+//!   generations it was predicted with; a stale one is dropped, or, if only
+//!   the partner changed, its owner is re-predicted *without* a bump, so two
+//!   discs can never invalidate each other forever.
+//! - Round-off can leave a pair a hair inside contact; a pair that overlaps
+//!   and approaches collides at once (time zero), never at a negative time
+//!   (Bannerman et al. 2014). A pair that overlaps but separates is left to
+//!   separate.
+//! - Relative motion of two discs is straight even under gravity (both fall
+//!   alike), so pair times solve a quadratic; walls and cell borders under
+//!   gravity solve a quadratic too.
+//! - Inelastic collapse (e < 1 can produce infinitely many collisions in
+//!   finite time): the TC rule of Luding & McNamara (1998): a collision of a
+//!   disc that already collided within [`TC_FRACTION`] of the step is
+//!   elastic. It keeps the count of collisions per step finite while changing
+//!   the dissipation only in those rare rapid sequences. A hard cap of
+//!   [`EVENTS_PER_DISC`]·n + [`EVENTS_BASE`] events per step bounds the work
+//!   in any case; hitting it ends the step early and is reported
+//!   (`StepStats::truncated`).
+//! - Speed: each step copies the discs into a local array sorted by cell, so
+//!   neighbours sit close in memory, and each cell keeps its first few discs
+//!   inline; the results are written back in the caller's order.
+
+use crate::boundary::Boundary;
+use crate::particle::Particle;
+use crate::resolution::collision_velocities;
+use crate::stats::StepStats;
+use crate::world::Laws;
+use glam::DVec2;
+use grid::Grid;
+use kinematics::{first_crossing, pair_time};
+use std::time::Instant;
+
+mod grid;
+mod kinematics;
+mod queue;
+
+use queue::{Event, EventQueue};
+
+/// TC-model window, as a fraction of the step.
+pub const TC_FRACTION: f64 = 1e-4;
+/// Event budget per disc and step.
+pub const EVENTS_PER_DISC: usize = 10_000;
+/// Event budget per step on top of the per-disc one.
+pub const EVENTS_BASE: usize = 1_000_000;
+
+/// Advances `particles` by `dt`; returns the time actually simulated (less
+/// than `dt` only if the event cap was hit).
+pub fn advance(particles: &mut [Particle], laws: &Laws, dt: f64, stats: &mut StepStats) -> f64 {
+    let started = Instant::now();
+    let mut sim = Sim::new(particles, laws, dt);
+    sim.run();
+    let end = if sim.truncated { sim.now } else { sim.end };
+    sim.finish(end, particles);
+    stats.pair_collisions += sim.collisions;
+    stats.wall_hits += sim.wall_hits;
+    stats.wall_impulse += sim.wall_impulse;
+    stats.events += sim.events;
+    stats.truncated |= sim.truncated;
+    stats.max_overlap = stats.max_overlap.max(sim.max_overlap);
+    stats.timings.resolution += started.elapsed();
+    end
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Kind {
+    /// Collision with `partner`, predicted when it had generation `gen`.
+    Pair { partner: u32, gen: u32 },
+    /// Hit on the wall of `axis` (upper or lower).
+    Wall { axis: u8, upper: bool },
+    /// Crossing into the next cell along `axis`.
+    Cell { axis: u8, upper: bool },
+    /// Open boundary: leaving the grid's region; the grid is rebuilt.
+    Leave,
+}
+
+/// A disc during a step: its state at its own local time.
+#[derive(Clone, Copy, Debug)]
+struct Body {
+    pos: DVec2,
+    vel: DVec2,
+    /// The time `pos` and `vel` refer to.
+    time: f64,
+    radius: f64,
+    mass: f64,
+    /// When it last collided (for the TC rule).
+    last_hit: f64,
+    /// Bumped whenever its trajectory changes.
+    gen: u32,
+    /// Its grid cell.
+    cell: [i32; 2],
+}
+
+struct Sim {
+    laws: Laws,
+    end: f64,
+    now: f64,
+    t_c: f64,
+    /// The discs in cell order; `order[k]` is body k's index in the caller's slice.
+    bodies: Vec<Body>,
+    order: Vec<u32>,
+    grid: Grid,
+    queue: EventQueue<Kind>,
+    cap: usize,
+    events: usize,
+    collisions: usize,
+    wall_hits: usize,
+    wall_impulse: f64,
+    max_overlap: f64,
+    truncated: bool,
+}
+
+impl Sim {
+    fn new(particles: &[Particle], laws: &Laws, dt: f64) -> Self {
+        let n = particles.len();
+        let mut sim = Sim {
+            laws: *laws,
+            end: dt,
+            now: 0.0,
+            t_c: TC_FRACTION * dt,
+            bodies: Vec::with_capacity(n),
+            order: Vec::with_capacity(n),
+            grid: Grid::new(particles, laws),
+            queue: EventQueue::new(n),
+            cap: EVENTS_PER_DISC
+                .saturating_mul(n)
+                .saturating_add(EVENTS_BASE),
+            events: 0,
+            collisions: 0,
+            wall_hits: 0,
+            wall_impulse: 0.0,
+            max_overlap: 0.0,
+            truncated: false,
+        };
+        let wrap = laws.boundary == Boundary::Periodic;
+        let mut keyed: Vec<(usize, u32)> = particles
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let pos = if wrap {
+                    p.pos.rem_euclid(laws.size)
+                } else {
+                    p.pos
+                };
+                (sim.grid.index(sim.grid.cell_of(pos)), i as u32)
+            })
+            .collect();
+        keyed.sort_unstable();
+        for (k, &(_, i)) in keyed.iter().enumerate() {
+            let p = &particles[i as usize];
+            let pos = if wrap {
+                p.pos.rem_euclid(laws.size)
+            } else {
+                p.pos
+            };
+            let cell = sim.grid.cell_of(pos);
+            sim.bodies.push(Body {
+                pos,
+                vel: p.vel,
+                time: 0.0,
+                radius: p.radius,
+                mass: p.mass,
+                last_hit: f64::NEG_INFINITY,
+                gen: 0,
+                cell,
+            });
+            sim.order.push(i);
+            sim.grid.insert(k as u32, cell);
+        }
+        sim.predict_all();
+        sim
+    }
+
+    fn predict_all(&mut self) {
+        self.queue.clear();
+        for i in 0..self.bodies.len() as u32 {
+            self.predict(i);
+        }
+    }
+
+    fn run(&mut self) {
+        while let Some(ev) = self.queue.pop() {
+            if ev.time > self.end {
+                break;
+            }
+            if self.events >= self.cap {
+                self.truncated = true;
+                break;
+            }
+            self.events += 1;
+            let i = ev.owner;
+            self.now = ev.time;
+            match ev.kind {
+                Kind::Pair { partner, gen } => {
+                    if self.bodies[partner as usize].gen != gen {
+                        // Only the partner changed: re-predict the owner
+                        // without a bump, so nobody else is invalidated.
+                        self.advance_to(i, self.now);
+                        self.predict(i);
+                    } else {
+                        self.collide_pair(i, partner);
+                    }
+                }
+                Kind::Wall { axis, upper } => self.hit_wall(i, usize::from(axis), upper),
+                Kind::Cell { axis, upper } => self.cross_cell(i, usize::from(axis), upper),
+                Kind::Leave => self.rebuild_grid(),
+            }
+        }
+    }
+
+    /// Open space: a disc left the grid's region; grow the grid round all.
+    fn rebuild_grid(&mut self) {
+        for j in 0..self.bodies.len() as u32 {
+            self.advance_to(j, self.now);
+        }
+        let as_particles: Vec<Particle> = self
+            .bodies
+            .iter()
+            .map(|b| Particle::new(b.pos, b.vel, b.mass, b.radius, crate::Color::rgb(0, 0, 0)))
+            .collect();
+        self.grid = Grid::new(&as_particles, &self.laws);
+        for (k, b) in self.bodies.iter_mut().enumerate() {
+            b.cell = self.grid.cell_of(b.pos);
+            self.grid.insert(k as u32, b.cell);
+        }
+        self.predict_all();
+    }
+
+    /// Puts every disc at time `t` and writes them back.
+    fn finish(&mut self, t: f64, particles: &mut [Particle]) {
+        for k in 0..self.order.len() {
+            self.advance_to(k as u32, t);
+            let i = self.order[k];
+            let b = &self.bodies[k];
+            let p = &mut particles[i as usize];
+            p.pos = if self.laws.boundary == Boundary::Periodic {
+                b.pos.rem_euclid(self.laws.size)
+            } else {
+                b.pos
+            };
+            p.vel = b.vel;
+        }
+    }
+
+    fn advance_to(&mut self, i: u32, t: f64) {
+        let g = self.laws.gravity;
+        let b = &mut self.bodies[i as usize];
+        let tau = t - b.time;
+        if tau != 0.0 {
+            b.pos += b.vel * tau + 0.5 * g * tau * tau;
+            b.vel += g * tau;
+            b.time = t;
+        }
+    }
+
+    /// Pushes disc `i`'s earliest event before the end of the step (`i` must
+    /// be at the current time).
+    fn predict(&mut self, i: u32) {
+        let me = self.bodies[i as usize];
+        let g = self.laws.gravity;
+        let mut best: Option<(f64, Kind)> = None;
+        let consider = |tau: Option<f64>, kind: Kind, best: &mut Option<(f64, Kind)>| {
+            if let Some(tau) = tau {
+                if best.is_none_or(|(b, _)| tau < b) {
+                    *best = Some((tau, kind));
+                }
+            }
+        };
+
+        for cell in self.grid.neighbourhood(me.cell) {
+            for &j in &self.grid.cells[cell] {
+                if j == i {
+                    continue;
+                }
+                let other = &self.bodies[j as usize];
+                let tau = self.now - other.time;
+                let pj = other.pos + other.vel * tau + 0.5 * g * tau * tau;
+                let vj = other.vel + g * tau;
+                let d = self.laws.boundary.separation(me.pos, pj, self.laws.size);
+                let kind = Kind::Pair {
+                    partner: j,
+                    gen: other.gen,
+                };
+                consider(
+                    pair_time(d, vj - me.vel, me.radius + other.radius),
+                    kind,
+                    &mut best,
+                );
+            }
+        }
+
+        for axis in 0..2 {
+            let (p, v, ga) = (me.pos[axis], me.vel[axis], g[axis]);
+            let a = axis as u8;
+            if self.laws.boundary == Boundary::Box {
+                let hi = self.laws.size[axis] - me.radius;
+                consider(
+                    first_crossing(p, v, ga, me.radius, -1.0),
+                    Kind::Wall {
+                        axis: a,
+                        upper: false,
+                    },
+                    &mut best,
+                );
+                consider(
+                    first_crossing(p, v, ga, hi, 1.0),
+                    Kind::Wall {
+                        axis: a,
+                        upper: true,
+                    },
+                    &mut best,
+                );
+            }
+            let (lo, hi) = self.grid.bounds(me.cell, axis);
+            let last = self.grid.dims[axis] - 1;
+            for (upper, bound, sign) in [(false, lo, -1.0), (true, hi, 1.0)] {
+                let at_edge = if upper {
+                    me.cell[axis] == last
+                } else {
+                    me.cell[axis] == 0
+                };
+                let kind = match (at_edge, self.laws.boundary) {
+                    (true, Boundary::Box) => continue, // the wall comes first
+                    (true, Boundary::Open) => Kind::Leave,
+                    _ => Kind::Cell { axis: a, upper },
+                };
+                consider(first_crossing(p, v, ga, bound, sign), kind, &mut best);
+            }
+        }
+
+        let event = best
+            .map(|(tau, kind)| Event {
+                time: self.now + tau,
+                owner: i,
+                kind,
+            })
+            .filter(|e| e.time <= self.end);
+        self.queue.set(i, event);
+    }
+
+    fn collide_pair(&mut self, i: u32, j: u32) {
+        self.advance_to(i, self.now);
+        self.advance_to(j, self.now);
+        let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let dist = d.length();
+        let normal = if dist > 0.0 && (d / dist).is_finite() {
+            d / dist
+        } else {
+            crate::narrow_phase::COINCIDENT_NORMAL
+        };
+        if (b.vel - a.vel).dot(normal) < 0.0 {
+            let rapid = self.now - a.last_hit < self.t_c || self.now - b.last_hit < self.t_c;
+            let e = if rapid { 1.0 } else { self.laws.restitution };
+            let (va, vb) = collision_velocities(a.mass, b.mass, a.vel, b.vel, normal, e);
+            for (k, v) in [(i, va), (j, vb)] {
+                let body = &mut self.bodies[k as usize];
+                body.vel = v;
+                body.gen += 1;
+                body.last_hit = self.now;
+            }
+            self.collisions += 1;
+            self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
+        }
+        self.predict(i);
+        self.predict(j);
+    }
+
+    fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
+        self.advance_to(i, self.now);
+        let rapid = self.now - self.bodies[i as usize].last_hit < self.t_c;
+        let e = if rapid {
+            1.0
+        } else {
+            self.laws.wall_restitution
+        };
+        let size = self.laws.size[axis];
+        let b = &mut self.bodies[i as usize];
+        let into_wall = if upper {
+            b.vel[axis] > 0.0
+        } else {
+            b.vel[axis] < 0.0
+        };
+        b.pos[axis] = if upper { size - b.radius } else { b.radius };
+        if into_wall {
+            self.wall_impulse += b.mass * (1.0 + e) * b.vel[axis].abs();
+            b.vel[axis] *= -e;
+            b.gen += 1;
+            b.last_hit = self.now;
+            self.wall_hits += 1;
+        }
+        self.predict(i);
+    }
+
+    fn cross_cell(&mut self, i: u32, axis: usize, upper: bool) {
+        self.advance_to(i, self.now);
+        let from = self.bodies[i as usize].cell;
+        let mut to = from;
+        to[axis] += if upper { 1 } else { -1 };
+        if self.grid.periodic {
+            let n = self.grid.dims[axis];
+            let size = self.laws.size[axis];
+            let b = &mut self.bodies[i as usize];
+            if to[axis] >= n {
+                to[axis] = 0;
+                b.pos[axis] -= size;
+            } else if to[axis] < 0 {
+                to[axis] = n - 1;
+                b.pos[axis] += size;
+            }
+        }
+        to[axis] = to[axis].clamp(0, self.grid.dims[axis] - 1);
+        self.grid.remove(i, from);
+        self.grid.insert(i, to);
+        self.bodies[i as usize].cell = to;
+        self.predict(i);
+    }
+}
