@@ -297,3 +297,32 @@ fn series_of(rows: &[Row]) -> Vec<Series> {
     }
     series
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn median_is_the_middle() {
+        assert_eq!(median(&mut [3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&mut [4.0, 1.0, 2.0, 3.0]), 2.5);
+        assert!(median(&mut []).is_nan());
+    }
+
+    #[test]
+    fn every_configuration_measures_a_positive_cost_and_the_gas_collides() {
+        for (method, broad) in configurations() {
+            let row = measure(method, broad, 200, 0.001);
+            assert!(
+                row.ns_per_particle_step > 0.0 && row.ns_per_particle_step.is_finite(),
+                "{row:?}"
+            );
+        }
+        let t = exact_throughput(300);
+        assert!(t.collisions_per_second > 0.0, "{t:?}");
+        assert!(
+            t.energy_change < 1e-12,
+            "exact keeps the gas's energy: {t:?}"
+        );
+    }
+}
