@@ -97,3 +97,42 @@ fn run_simulates_headlessly_and_reports_json() {
     let ke0 = scene.build("default").unwrap().metrics().kinetic_energy;
     assert!((ke - ke0).abs() < 1e-9 * ke0, "{ke} vs {ke0}");
 }
+
+#[test]
+fn run_takes_method_broad_phase_and_substeps_and_says_what_auto_chose() {
+    let scene = asset("default.toml");
+    let out = impulse(&[
+        "run",
+        &scene,
+        "--time",
+        "1",
+        "--method",
+        "impulse",
+        "--broadphase",
+        "grid",
+        "--substeps",
+        "3",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["plan"]["method"], "impulse");
+    assert_eq!(v["plan"]["broad_phase"], "grid");
+    assert_eq!(v["plan"]["substeps"], 3);
+
+    let out = impulse(&["run", &scene, "--time", "1"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("auto chose") && text.contains("exact"),
+        "{text}"
+    );
+
+    let out = impulse(&["run", &scene, "--time", "1", "--method", "rk4"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("seed, impulse, verlet, exact"),
+        "{}",
+        stderr(&out)
+    );
+}
