@@ -4,10 +4,6 @@
 //! otherwise, so output piped to a file or another program stays quiet (and a
 //! test harness sees nothing).
 
-// `impulse bench` and `impulse accuracy`, which use this module, are not wired
-// into main.rs yet; until they are, the binary does not call anything here.
-#![allow(dead_code)]
-
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 
