@@ -15,8 +15,12 @@ pub struct Gas {
     pub count: usize,
     /// Fraction of the area the discs cover (0.3 is a dense gas).
     pub area_fraction: f64,
-    /// Disc radius (m).
+    /// Largest disc radius (m).
     pub radius: f64,
+    /// Largest over smallest radius: 1 for equal discs; otherwise radii are
+    /// spread log-uniformly down to `radius / radius_ratio` (same density,
+    /// so mass grows with area).
+    pub radius_ratio: f64,
     /// Root-mean-square speed (m/s); directions are uniform.
     pub speed: f64,
     /// Random seed.
@@ -31,6 +35,7 @@ impl Default for Gas {
             count: 1000,
             area_fraction: 0.3,
             radius: 0.5,
+            radius_ratio: 1.0,
             speed: 1.0,
             seed: 1,
             boundary: Boundary::Periodic,
@@ -59,7 +64,13 @@ impl Gas {
                 let angle = rng.random_range(0.0..std::f64::consts::TAU);
                 let pos = cell * spacing + offset * jitter;
                 let vel = self.speed * DVec2::from_angle(angle);
-                Particle::new(pos, vel, 1.0, self.radius, Color::palette(k))
+                let radius = if self.radius_ratio > 1.0 {
+                    self.radius * self.radius_ratio.powf(-rng.random_range(0.0..=1.0))
+                } else {
+                    self.radius
+                };
+                let mass = (radius / self.radius).powi(2);
+                Particle::new(pos, vel, mass, radius, Color::palette(k))
             })
             .collect();
         let drift = world.metrics().center_of_mass_velocity;

@@ -102,6 +102,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         }
     }
     bar.finish_and_clear();
+    let crossovers = crossovers(batch_seconds);
     let throughput_sizes: &[usize] = if args.quick {
         &[10_000]
     } else {
@@ -122,6 +123,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             t.n, t.collisions_per_second, t.events_per_collision, t.energy_change
         );
     }
+    table.push_str(&crossovers);
     print!("{table}");
     write_csv(&args.out.join("bench.csv"), &rows)?;
     crate::files::write_atomically(&args.out.join("bench.md"), table.as_bytes())?;
@@ -143,6 +145,83 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         svg.display()
     );
     Ok(())
+}
+
+/// The measurements behind `auto`'s thresholds: brute force against the
+/// grid at small n, and the quadtree against the grid as radii spread.
+fn crossovers(batch_seconds: f64) -> String {
+    let mut out = String::from(
+        "\n| crossover: brute vs grid (impulse) | n | brute ns | grid ns |\n|---|---:|---:|---:|\n",
+    );
+    for n in [8, 16, 32, 64, 128, 256] {
+        let brute = measure(Method::Impulse, BroadPhaseKind::Brute, n, batch_seconds);
+        let grid = measure(Method::Impulse, BroadPhaseKind::Grid, n, batch_seconds);
+        let _ = writeln!(
+            out,
+            "| | {n} | {:.1} | {:.1} |",
+            brute.ns_per_particle_step, grid.ns_per_particle_step
+        );
+    }
+    out.push_str(
+        "\n| crossover: grid vs quadtree (impulse, 10,000 discs) | radii | grid ns | quadtree ns |\n|---|---|---:|---:|\n",
+    );
+    let spread = |ratio: f64| {
+        Gas {
+            count: 10_000,
+            radius_ratio: ratio,
+            ..Gas::default()
+        }
+        .build()
+    };
+    let giant = |ratio: f64| {
+        let mut world = Gas {
+            count: 10_000,
+            radius: 0.5 / ratio,
+            area_fraction: 0.3 / (ratio * ratio),
+            ..Gas::default()
+        }
+        .build();
+        world.particles[0].radius = 0.5;
+        world
+    };
+    let cases: [(String, impulse::World); 6] = [
+        ("log-uniform, max/min 4".into(), spread(4.0)),
+        ("log-uniform, max/min 16".into(), spread(16.0)),
+        ("log-uniform, max/min 64".into(), spread(64.0)),
+        ("one disc 4x the rest".into(), giant(4.0)),
+        ("one disc 16x the rest".into(), giant(16.0)),
+        ("one disc 64x the rest".into(), giant(64.0)),
+    ];
+    for (name, world) in cases {
+        let time = |broad| {
+            let mut w = world.clone();
+            w.method = Setting::Fixed(Method::Impulse);
+            w.broad_phase = Setting::Fixed(broad);
+            time_world(&mut w, batch_seconds)
+        };
+        let (g, q) = (time(BroadPhaseKind::Grid), time(BroadPhaseKind::Quadtree));
+        let _ = writeln!(out, "| | {name} | {g:.1} | {q:.1} |");
+    }
+    out
+}
+
+/// Median ns per particle-step of `world` over a few batches.
+fn time_world(world: &mut impulse::World, batch_seconds: f64) -> f64 {
+    let n = world.particles.len().max(1) as f64;
+    let warm = Instant::now();
+    world.step(DT);
+    let batch =
+        ((batch_seconds / warm.elapsed().as_secs_f64().max(1e-7)).round() as u64).clamp(1, 100_000);
+    let mut samples: Vec<f64> = (0..5)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..batch {
+                world.step(DT);
+            }
+            t.elapsed().as_secs_f64() * 1e9 / (batch as f64 * n)
+        })
+        .collect();
+    median(&mut samples)
 }
 
 /// Step for the exact method's throughput, long enough that the per-step
