@@ -4,13 +4,19 @@
 //! the scene, for every setting left on `auto` (fixed settings are kept). The
 //! rules, and the measurements behind their thresholds:
 //!
-//! - **Method.** `exact` when its event rate is affordable and nothing in
-//!   the scene defeats it: at most [`EXACT_MAX_DISCS`] discs, or extreme mass
-//!   ratios (≥ [`EXTREME_MASS_RATIO`], where the discrete methods miscount
-//!   collisions) up to [`EXACT_MAX_DISCS_ACCURACY`] discs; but never where
-//!   discs will come to rest in contact (gravity with restitution below 1 at
-//!   walls or between discs), because resting contact is an endless sequence
-//!   of events for an event-driven method. Otherwise `impulse`.
+//! - **Method.** `exact` when it is affordable and nothing in the scene
+//!   defeats it, `impulse` otherwise. Affordable: its estimated cost per
+//!   simulated second, n·([`EXACT_SETUP_NS`]/dt + ν·[`EXACT_COLLISION_NS`])
+//!   with ν = √2·(n/A)·2r̄·v_rms the collision frequency of a 2D gas, stays
+//!   within [`EXACT_BUDGET`] seconds (so real time costs at most a quarter of
+//!   a core); four times that when masses differ by [`EXTREME_MASS_RATIO`] or
+//!   more, where the discrete methods miscount collisions. The two costs are
+//!   measured by `impulse bench`: a step of the exact method costs 250–400 ns
+//!   per disc before any collision (it re-predicts every disc), and a
+//!   collision about 2 µs (2.45 events of ~0.8 µs; 5.2·10⁵ collisions per
+//!   second at 10⁴ discs). Never where discs will come to rest in contact
+//!   (gravity with restitution below 1), because resting contact is an
+//!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
 //!   65 / 59 / 91 / 152 at n = 8 / 16 / 32 / 64 against the grid's 95 / 64 /
@@ -27,12 +33,14 @@ use crate::method::{Method, Setting};
 use crate::world::World;
 use serde::Serialize;
 
-/// `exact` is chosen up to this many discs.
-pub const EXACT_MAX_DISCS: usize = 500;
-/// Mass ratio above which accuracy needs `exact`.
+/// Measured cost of the exact method per disc and step, before collisions (ns).
+pub const EXACT_SETUP_NS: f64 = 300.0;
+/// Measured cost of the exact method per pair collision (ns).
+pub const EXACT_COLLISION_NS: f64 = 2000.0;
+/// Most wall-clock seconds per simulated second `auto` spends on `exact`.
+pub const EXACT_BUDGET: f64 = 0.25;
+/// Mass ratio above which accuracy needs `exact` (budget ×4).
 pub const EXTREME_MASS_RATIO: f64 = 1e3;
-/// `exact` is chosen for extreme mass ratios up to this many discs.
-pub const EXACT_MAX_DISCS_ACCURACY: usize = 5_000;
 /// Brute force is chosen up to this many discs.
 pub const BRUTE_MAX_DISCS: usize = 24;
 /// Largest travel per substep, as a fraction of the smallest radius.
@@ -55,6 +63,25 @@ pub struct Plan {
     pub particles: usize,
     /// Step the plan was made for (s).
     pub dt: f64,
+}
+
+/// Estimated wall-clock seconds `exact` needs per simulated second.
+pub fn exact_cost_per_second(world: &World, dt: f64) -> f64 {
+    let n = world.particles.len() as f64;
+    if n == 0.0 {
+        return 0.0;
+    }
+    let mean_diameter = world.particles.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n;
+    let v_rms = (world
+        .particles
+        .iter()
+        .map(|p| p.vel.length_squared())
+        .sum::<f64>()
+        / n)
+        .sqrt();
+    let area = world.size.x * world.size.y;
+    let frequency = std::f64::consts::SQRT_2 * (n / area) * mean_diameter * v_rms;
+    n * (EXACT_SETUP_NS / dt + frequency * EXACT_COLLISION_NS) * 1e-9
 }
 
 /// Resolves every `auto` setting of `world` for a step of `dt`.
@@ -80,15 +107,28 @@ pub fn plan(world: &World, dt: f64) -> Plan {
             if resting {
                 reasons.push("impulse: discs will rest in contact (gravity, e < 1)".to_string());
                 Method::Impulse
-            } else if n <= EXACT_MAX_DISCS {
-                reasons.push(format!("exact: {n} discs <= {EXACT_MAX_DISCS}"));
-                Method::Exact
-            } else if mass_ratio >= EXTREME_MASS_RATIO && n <= EXACT_MAX_DISCS_ACCURACY {
-                reasons.push(format!("exact: mass ratio {mass_ratio:.0e}"));
-                Method::Exact
             } else {
-                reasons.push(format!("impulse: {n} discs"));
-                Method::Impulse
+                let cost = exact_cost_per_second(world, dt);
+                let extreme = mass_ratio >= EXTREME_MASS_RATIO;
+                let budget = if extreme {
+                    4.0 * EXACT_BUDGET
+                } else {
+                    EXACT_BUDGET
+                };
+                let why = if extreme {
+                    format!(", mass ratio {mass_ratio:.0e}")
+                } else {
+                    String::new()
+                };
+                if cost <= budget {
+                    reasons.push(format!("exact: est. {cost:.3} s/s <= {budget}{why}"));
+                    Method::Exact
+                } else {
+                    reasons.push(format!(
+                        "impulse: exact would cost {cost:.2} s/s > {budget}{why}"
+                    ));
+                    Method::Impulse
+                }
             }
         }
     };

@@ -3,7 +3,7 @@
 
 mod common;
 use common::{disc, world_with};
-use impulse::auto::MAX_SUBSTEPS;
+use impulse::auto::{exact_cost_per_second, MAX_SUBSTEPS};
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
@@ -253,12 +253,26 @@ fn auto_models_no_more_than_the_scene_needs() {
     let fast = w.plan_for(0.01).substeps;
     assert!(fast > slow, "{slow} -> {fast}");
     assert!(fast as f64 >= (200.0f64 * 0.01 / (0.5 * 0.5)).floor() && fast <= MAX_SUBSTEPS);
-    // Many discs: impulse on a grid; the grid also for mixed radii (it beat
-    // the quadtree in every mix measured).
+    // Exact while its estimated cost fits the budget: more discs, a hotter
+    // gas or a shorter step tip it to impulse.
     let mut big = gas(2000, Boundary::Periodic, 1);
     big.method = Setting::Auto;
     big.broad_phase = Setting::Auto;
-    assert_eq!(big.plan_for(0.01).method, Method::Impulse);
+    let cost = exact_cost_per_second(&big, 0.01);
+    assert_eq!(big.plan_for(0.01).method, Method::Exact, "{cost}");
+    assert!(exact_cost_per_second(&big, 0.001) > 5.0 * cost);
+    assert_eq!(big.plan_for(0.001).method, Method::Impulse);
+    let mut hot = big.clone();
+    for p in &mut hot.particles {
+        p.vel *= 1000.0;
+    }
+    assert!(exact_cost_per_second(&hot, 0.01) > 10.0 * cost);
+    assert_eq!(hot.plan_for(0.01).method, Method::Impulse);
+    let mut many = gas(20_000, Boundary::Periodic, 1);
+    many.method = Setting::Auto;
+    assert_eq!(many.plan_for(0.01).method, Method::Impulse);
+    // Beyond a few dozen discs, the grid; also for mixed radii (it beat the
+    // quadtree in every mix measured).
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
     big.particles[0].radius = 5.0;
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
