@@ -4,25 +4,36 @@
 //! diameter, so two discs can only overlap if their cells are the same or
 //! neighbours. Each step:
 //!
-//! 1. every disc's cell is computed from its centre, and a counting sort
-//!    (count per cell, prefix sum, scatter) lays the discs out cell by cell
-//!    in one array, with `starts[c]..starts[c + 1]` the discs of cell `c`;
-//! 2. cells are visited in order and each disc is tested against the rest of
-//!    its own cell and the four "forward" neighbours (right, and the three
-//!    cells of the row above), so every pair of neighbouring cells is seen
-//!    once; in row-major order the own cell and its right neighbour, and the
-//!    three cells above, are each one contiguous run of the array;
-//! 3. the pairs found are put in `(i, j)` order by a counting sort on `i`.
+//! 1. one pass over the particles collects the candidate discs (struct of
+//!    centre, radius, index: 32 bytes) and their largest radius and extent,
+//!    which fix the cells;
+//! 2. a counting sort (count, prefix sum, scatter) lays the discs out cell
+//!    by cell in one array, `starts[c]..starts[c + 1]` being cell `c`. It
+//!    runs in two passes, by row and then each row by column, because the
+//!    particles come in no spatial order and a single scatter into
+//!    ~2n cells would touch memory at random (about 25 % slower at 10⁶ discs);
+//! 3. each disc, row by row, is tested against the rest of its own cell and
+//!    the four "forward" neighbours (right, and the three cells of the row
+//!    above), so every pair of neighbouring cells is seen once. In row-major
+//!    order the own cell and its right neighbour, and the three cells above,
+//!    are each one contiguous run of the array, so a disc costs two short
+//!    loops; a candidate is written unconditionally and kept by advancing
+//!    the end, with no branch on the test's outcome;
+//! 4. the pairs found are put in `(i, j)` order by a counting sort on `i`.
 //!
 //! Cost: O(n + cells + pairs) time per step, and no allocation once the
 //! buffers have grown. The number of cells is capped at about 2n: when the
 //! discs are spread thinly the cells grow instead (more discs per cell, still
-//! correct).
+//! correct). For a gas of equal discs at 30 % area fraction this is about
+//! 25–45 ns per disc for n = 10³–10⁵.
 //!
 //! - **Periodic**: the grid covers the box and wraps, so the last column's
-//!   right neighbour is the first column. An axis with fewer than three cells
-//!   is made a single cell (with two, the left and right neighbours would be
-//!   the same cell and pairs would be reported twice).
+//!   right neighbour is the first column; a neighbour across the seam is
+//!   compared with its centre shifted by the box size, so no minimum-image
+//!   arithmetic is needed per pair. An axis with fewer than three cells is
+//!   made a single cell (with two, the left and right neighbours would be
+//!   the same cell and pairs would be reported twice) and then the minimum
+//!   image is taken by folding.
 //! - **Box and open**: the grid covers the bounding box of the centres. If a
 //!   few discs have flown far away, that box would need huge cells; the grid
 //!   then covers the bulk (2–98 % quantiles of a sample of the discs, padded)
@@ -55,10 +66,10 @@ pub struct Grid {
     discs: Vec<Disc>,
     /// Positions in `discs` of the big discs, ascending.
     big: Vec<u32>,
-    /// Row `r` begins at `by_row[row_starts[r]]` (during the sort).
+    /// Row `r` begins at `sorted[row_starts[r]]` (during the sort).
     row_starts: Vec<u32>,
-    /// The gridded discs, row by row.
-    by_row: Vec<Disc>,
+    /// Scratch: one row of discs, sorted by column.
+    row_buf: Vec<Disc>,
     /// Scratch: where the next disc of each column of a row goes.
     cursor: Vec<u32>,
     /// Cell `c` holds `sorted[starts[c]..starts[c + 1]]`.
@@ -195,32 +206,23 @@ impl Default for Gathered {
 }
 
 impl Gathered {
-    /// Adds a disc (finite centre, radius not NaN). Plain comparisons rather
-    /// than `f64::max`, which pays for NaN handling not needed here.
+    /// Adds a disc (finite centre, radius not NaN). Plain selects (one
+    /// `minsd`/`maxsd` each) rather than `f64::max`, which pays for NaN
+    /// handling not needed here.
     #[inline(always)]
     fn add(&mut self, d: &Disc) {
         if d.r < f64::INFINITY {
             let r = if d.r > 0.0 { d.r } else { 0.0 };
             self.r_sum += r;
             self.r_count += 1;
-            if r > self.r_max {
-                self.r_max = r;
-            }
+            self.r_max = if r > self.r_max { r } else { self.r_max };
         } else {
             self.infinite = true;
         }
-        if d.x < self.lo.x {
-            self.lo.x = d.x;
-        }
-        if d.x > self.hi.x {
-            self.hi.x = d.x;
-        }
-        if d.y < self.lo.y {
-            self.lo.y = d.y;
-        }
-        if d.y > self.hi.y {
-            self.hi.y = d.y;
-        }
+        self.lo.x = if d.x < self.lo.x { d.x } else { self.lo.x };
+        self.lo.y = if d.y < self.lo.y { d.y } else { self.lo.y };
+        self.hi.x = if d.x > self.hi.x { d.x } else { self.hi.x };
+        self.hi.y = if d.y > self.hi.y { d.y } else { self.hi.y };
     }
 }
 
@@ -270,7 +272,9 @@ impl Grid {
             let ext = hi - lo;
             ((ext.x / w).floor() + 1.0) * ((ext.y / w).floor() + 1.0)
         };
-        if !(needed(lo, hi, diameter.max(f64::MIN_POSITIVE)) <= 4.0 * cap as f64) {
+        // (An extent too large for f64 gives NaN here: not a fit either.)
+        let fits = needed(lo, hi, diameter.max(f64::MIN_POSITIVE)) <= 4.0 * cap as f64;
+        if !fits {
             (lo, hi) = self.bulk(lo, hi, diameter);
         }
         // Widen the cells by the rounding error of (x − origin)/w, so that two
@@ -330,9 +334,9 @@ impl Grid {
 
     /// Counting sort of the gridded discs by cell into `sorted` and
     /// `starts`, each disc keeping its cell in `tag`. Two passes, so that
-    /// memory is touched in order rather than at random: by row into
-    /// `by_row` (a few hundred output streams), then each row, small enough
-    /// to stay in cache, by column.
+    /// memory is touched in order rather than at random: by row (a few
+    /// hundred output streams), then each row, small enough to stay in
+    /// cache, by column through `row_buf`.
     fn sort_into_cells(&mut self, layout: &Layout) {
         let (nx, ny) = (layout.nx, layout.ny);
         self.row_starts.clear();
@@ -348,48 +352,50 @@ impl Grid {
                 self.row_starts[cy + 2] += 1;
             }
         }
-        let mut total = 0;
+        let (mut total, mut longest) = (0, 0);
         for s in self.row_starts.iter_mut() {
+            longest = longest.max(*s);
             total += *s;
             *s = total;
         }
         // row_starts[r + 1] is now where row r begins; use it as the cursor.
         // (Every slot is written below, so the buffers are not cleared.)
-        self.by_row.resize(total as usize, Disc::default());
+        self.sorted.resize(total as usize, Disc::default());
         for d in &self.discs {
             if d.tag != BIG {
                 let slot = &mut self.row_starts[d.tag as usize + 1];
-                self.by_row[*slot as usize] = *d;
+                self.sorted[*slot as usize] = *d;
                 *slot += 1;
             }
         }
-        // Row r is by_row[row_starts[r]..row_starts[r + 1]]. Sort each by
+        // Row r is sorted[row_starts[r]..row_starts[r + 1]]. Sort each by
         // column: count into starts[c + 1], sum up from the row's start.
         self.starts.clear();
         self.starts.resize(nx * ny + 1, 0);
-        self.sorted.resize(total as usize, Disc::default());
+        self.row_buf.resize(longest as usize, Disc::default());
         self.cursor.resize(nx, 0);
         for r in 0..ny {
             let (first, end) = (self.row_starts[r] as usize, self.row_starts[r + 1] as usize);
             let base = r * nx;
-            let row = &mut self.by_row[first..end];
+            let row = &mut self.sorted[first..end];
             for d in row.iter_mut() {
                 let cx = layout.column(d);
                 d.tag = (base + cx) as u32;
                 self.starts[base + cx + 1] += 1;
             }
-            let mut at = first as u32;
-            self.starts[base] = at;
+            let mut at = 0;
+            self.starts[base] = first as u32;
             for (cx, cursor) in self.cursor.iter_mut().enumerate() {
                 *cursor = at;
                 at += self.starts[base + cx + 1];
-                self.starts[base + cx + 1] = at;
+                self.starts[base + cx + 1] = first as u32 + at;
             }
             for d in row.iter() {
                 let slot = &mut self.cursor[d.tag as usize - base];
-                self.sorted[*slot as usize] = *d;
+                self.row_buf[*slot as usize] = *d;
                 *slot += 1;
             }
+            row.copy_from_slice(&self.row_buf[..row.len()]);
         }
     }
 
@@ -450,7 +456,9 @@ struct Cells<'a> {
     ny: usize,
 }
 
-/// How the sweep compares two discs.
+// How the sweep compares two discs (`Cells::sweep`'s `MODE`).
+
+/// Box or open: brute force's own test.
 const OPEN: u8 = 0;
 /// Periodic with at least three cells along both axes: the shift that takes
 /// a neighbour cell's disc to the minimum image is known per range (0, or ±
@@ -486,11 +494,17 @@ impl Cells<'_> {
         let periodic = MODE != OPEN;
         let period = space.period.unwrap_or(DVec2::ZERO);
         let wrap_x = periodic && nx >= 3;
-        let scan = |a: &Disc, from: usize, to: usize, shift: DVec2, raw: &mut Vec<Pair>| {
+        // Every candidate is written and the end moves on only if it passes:
+        // no branch on the test's outcome, which is hard to predict.
+        let mut found = raw.len();
+        let mut scan = |a: &Disc, from: usize, to: usize, shift: DVec2, raw: &mut Vec<Pair>| {
+            let need = found + (to - from);
+            if raw.len() < need {
+                raw.resize(need.max(2 * raw.len()), Pair::default());
+            }
             for b in &sorted[from..to] {
-                if test::<MODE>(a, b, shift, space) {
-                    raw.push(pair(a.i, b.i));
-                }
+                raw[found] = pair(a.i, b.i);
+                found += usize::from(test::<MODE>(a, b, shift, space));
             }
         };
         for cy in 0..ny {
@@ -504,8 +518,9 @@ impl Cells<'_> {
             };
             let here = DVec2::ZERO;
             let (left, right) = (DVec2::new(-period.x, 0.0), DVec2::new(period.x, 0.0));
-            for k in start(row)..start(row + nx) {
-                let a = &sorted[k];
+            let first = start(row);
+            for (k, a) in sorted[first..start(row + nx)].iter().enumerate() {
+                let k = first + k;
                 let c = a.tag as usize;
                 let cx = c - row;
                 // The rest of the own cell runs on into the right neighbour.
@@ -534,5 +549,6 @@ impl Cells<'_> {
                 }
             }
         }
+        raw.truncate(found);
     }
 }
