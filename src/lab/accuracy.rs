@@ -75,8 +75,11 @@ pub struct Point {
     pub pressure_error: f64,
 }
 
+/// An error measure: short name, axis label, and how to read it off a point.
+type Metric = (&'static str, &'static str, fn(&Point) -> f64);
+
 /// The errors, by name, for tables and charts.
-const METRICS: [(&str, &str, fn(&Point) -> f64); 4] = [
+const METRICS: [Metric; 4] = [
     (
         "trajectory",
         "RMS position error after 0.25 s (radii)",
