@@ -20,10 +20,14 @@
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
 //!   65 / 59 / 91 / 152 at n = 8 / 16 / 32 / 64 against the grid's 95 / 64 /
-//!   70 / 49, so the crossover lies between 16 and 32. The quadtree was meant
-//!   for mixed radii, but the grid beat it in every mix measured (10,000
-//!   discs, radii spread 4x to 64x, or one disc 4x to 64x the rest: grid 45–75
-//!   ns, quadtree 110–170 ns), so `auto` does not choose it.
+//!   70 / 49, so the crossover lies between 16 and 32. Mixed radii: the grid
+//!   sizes its cells by the ordinary discs and tests up to 32 big ones (over
+//!   4x the mean radius) against everyone, and so beat the quadtree in every
+//!   smooth mix measured (10,000 discs, radii spread 4x to 64x, or one disc 4x
+//!   to 64x the rest: grid 45–75 ns, quadtree 110–170 ns). With more than
+//!   [`GRID_MAX_BIG_DISCS`] big discs the grid's cells grow and it fell to
+//!   360–410 ns against the quadtree's 143–267 ns (1 % of 10,000 discs
+//!   large), so `auto` picks the `quadtree` there.
 //! - **Substeps** (discrete methods): enough that the fastest disc travels at
 //!   most [`MAX_TRAVEL_PER_SUBSTEP`] of the smallest radius per substep, so
 //!   nothing tunnels, capped at [`MAX_SUBSTEPS`].
@@ -43,6 +47,10 @@ pub const EXACT_BUDGET: f64 = 0.25;
 pub const EXTREME_MASS_RATIO: f64 = 1e3;
 /// Brute force is chosen up to this many discs.
 pub const BRUTE_MAX_DISCS: usize = 24;
+/// A disc is "big" for the grid above this multiple of the mean radius.
+pub const BIG_DISC_FACTOR: f64 = 4.0;
+/// Big discs the grid handles on the side; more, and the quadtree is chosen.
+pub const GRID_MAX_BIG_DISCS: usize = 32;
 /// Largest travel per substep, as a fraction of the smallest radius.
 pub const MAX_TRAVEL_PER_SUBSTEP: f64 = 0.5;
 /// Most substeps `auto` will ask for.
@@ -136,8 +144,17 @@ pub fn plan(world: &World, dt: f64) -> Plan {
     let broad_phase = match world.broad_phase {
         Setting::Fixed(b) => b,
         Setting::Auto => {
+            let mean_r = world.particles.iter().map(|p| p.radius).sum::<f64>() / n.max(1) as f64;
+            let big = world
+                .particles
+                .iter()
+                .filter(|p| p.radius > BIG_DISC_FACTOR * mean_r)
+                .count();
             let choice = if n <= BRUTE_MAX_DISCS {
                 BroadPhaseKind::Brute
+            } else if big > GRID_MAX_BIG_DISCS {
+                reasons.push(format!("{big} big discs"));
+                BroadPhaseKind::Quadtree
             } else {
                 BroadPhaseKind::Grid
             };

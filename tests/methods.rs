@@ -276,6 +276,11 @@ fn auto_models_no_more_than_the_scene_needs() {
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
     big.particles[0].radius = 5.0;
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
+    // Many big discs among small ones: the quadtree.
+    for p in big.particles.iter_mut().step_by(40) {
+        p.radius = 5.0;
+    }
+    assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Quadtree);
     let mut few = gas(20, Boundary::Box, 1);
     few.broad_phase = Setting::Auto;
     assert_eq!(few.plan_for(0.01).broad_phase, BroadPhaseKind::Brute);

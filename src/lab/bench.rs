@@ -184,13 +184,21 @@ fn crossovers(batch_seconds: f64) -> String {
         world.particles[0].radius = 0.5;
         world
     };
-    let cases: [(String, impulse::World); 6] = [
+    let bimodal = |ratio: f64| {
+        let mut world = giant(ratio);
+        for p in world.particles.iter_mut().step_by(100) {
+            p.radius = 0.5;
+        }
+        world
+    };
+    let cases: [(String, impulse::World); 7] = [
         ("log-uniform, max/min 4".into(), spread(4.0)),
         ("log-uniform, max/min 16".into(), spread(16.0)),
         ("log-uniform, max/min 64".into(), spread(64.0)),
         ("one disc 4x the rest".into(), giant(4.0)),
         ("one disc 16x the rest".into(), giant(16.0)),
         ("one disc 64x the rest".into(), giant(64.0)),
+        ("1 % of discs 8x the rest".into(), bimodal(8.0)),
     ];
     for (name, world) in cases {
         let time = |broad| {
