@@ -25,9 +25,12 @@
 //!   4x the mean radius) against everyone, and so beat the quadtree in every
 //!   smooth mix measured (10,000 discs, radii spread 4x to 64x, or one disc 4x
 //!   to 64x the rest: grid 45–75 ns, quadtree 110–170 ns). With more than
-//!   [`GRID_MAX_BIG_DISCS`] big discs the grid's cells grow and it fell to
-//!   360–410 ns against the quadtree's 143–267 ns (1 % of 10,000 discs
-//!   large), so `auto` picks the `quadtree` there.
+//!   [`GRID_MAX_BIG_DISCS`] big discs the grid sizes its cells by them; that
+//!   only hurts when many small discs then share a cell: 1 % large discs
+//!   (8x) among a sparse gas kept the grid ahead (45 against 110 ns), among a
+//!   dense one (about 24 discs per cell) the grid fell to 360–410 ns against
+//!   the quadtree's 143–267 ns. So `auto` picks the `quadtree` when the grid
+//!   would hold more than [`MAX_DISCS_PER_CELL`] discs per cell on average.
 //! - **Substeps** (discrete methods): enough that the fastest disc travels at
 //!   most [`MAX_TRAVEL_PER_SUBSTEP`] of the smallest radius per substep, so
 //!   nothing tunnels, capped at [`MAX_SUBSTEPS`].
@@ -49,8 +52,10 @@ pub const EXTREME_MASS_RATIO: f64 = 1e3;
 pub const BRUTE_MAX_DISCS: usize = 24;
 /// A disc is "big" for the grid above this multiple of the mean radius.
 pub const BIG_DISC_FACTOR: f64 = 4.0;
-/// Big discs the grid handles on the side; more, and the quadtree is chosen.
+/// Big discs the grid handles on the side; more, and its cells grow.
 pub const GRID_MAX_BIG_DISCS: usize = 32;
+/// Mean discs per grid cell above which the quadtree is chosen.
+pub const MAX_DISCS_PER_CELL: f64 = 8.0;
 /// Largest travel per substep, as a fraction of the smallest radius.
 pub const MAX_TRAVEL_PER_SUBSTEP: f64 = 0.5;
 /// Most substeps `auto` will ask for.
@@ -71,6 +76,39 @@ pub struct Plan {
     pub particles: usize,
     /// Step the plan was made for (s).
     pub dt: f64,
+}
+
+/// Mean discs per cell of the grid broad phase: its cells are as wide as
+/// the largest disc it does not set aside (it sets aside up to
+/// [`GRID_MAX_BIG_DISCS`] discs bigger than [`BIG_DISC_FACTOR`] × the mean).
+pub fn grid_crowding(world: &World) -> f64 {
+    let n = world.particles.len();
+    if n == 0 {
+        return 0.0;
+    }
+    let mean_r = world.particles.iter().map(|p| p.radius).sum::<f64>() / n as f64;
+    let mut radii: Vec<f64> = world.particles.iter().map(|p| p.radius).collect();
+    radii.sort_by(|a, b| b.total_cmp(a));
+    let set_aside = radii
+        .iter()
+        .take(GRID_MAX_BIG_DISCS)
+        .take_while(|&&r| r > BIG_DISC_FACTOR * mean_r)
+        .count();
+    let cell = 2.0 * radii.get(set_aside).copied().unwrap_or(0.0);
+    let area = match world.boundary {
+        crate::Boundary::Open => {
+            let (lo, hi) = world.particles.iter().fold(
+                (
+                    glam::DVec2::splat(f64::INFINITY),
+                    glam::DVec2::splat(f64::NEG_INFINITY),
+                ),
+                |(lo, hi), p| (lo.min(p.pos), hi.max(p.pos)),
+            );
+            ((hi - lo).x * (hi - lo).y).max(cell * cell)
+        }
+        _ => world.size.x * world.size.y,
+    };
+    n as f64 * cell * cell / area.max(f64::MIN_POSITIVE)
 }
 
 /// Estimated wall-clock seconds `exact` needs per simulated second.
@@ -144,16 +182,11 @@ pub fn plan(world: &World, dt: f64) -> Plan {
     let broad_phase = match world.broad_phase {
         Setting::Fixed(b) => b,
         Setting::Auto => {
-            let mean_r = world.particles.iter().map(|p| p.radius).sum::<f64>() / n.max(1) as f64;
-            let big = world
-                .particles
-                .iter()
-                .filter(|p| p.radius > BIG_DISC_FACTOR * mean_r)
-                .count();
+            let crowding = grid_crowding(world);
             let choice = if n <= BRUTE_MAX_DISCS {
                 BroadPhaseKind::Brute
-            } else if big > GRID_MAX_BIG_DISCS {
-                reasons.push(format!("{big} big discs"));
+            } else if crowding > MAX_DISCS_PER_CELL {
+                reasons.push(format!("{crowding:.0} discs per grid cell"));
                 BroadPhaseKind::Quadtree
             } else {
                 BroadPhaseKind::Grid

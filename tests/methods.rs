@@ -3,7 +3,7 @@
 
 mod common;
 use common::{disc, world_with};
-use impulse::auto::{exact_cost_per_second, MAX_SUBSTEPS};
+use impulse::auto::{exact_cost_per_second, grid_crowding, MAX_SUBSTEPS};
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
@@ -276,10 +276,11 @@ fn auto_models_no_more_than_the_scene_needs() {
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
     big.particles[0].radius = 5.0;
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Grid);
-    // Many big discs among small ones: the quadtree.
+    // Many big discs crowding the grid's cells with small ones: the quadtree.
     for p in big.particles.iter_mut().step_by(40) {
         p.radius = 5.0;
     }
+    assert!(grid_crowding(&big) > 8.0, "{}", grid_crowding(&big));
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Quadtree);
     let mut few = gas(20, Boundary::Box, 1);
     few.broad_phase = Setting::Auto;

@@ -184,21 +184,37 @@ fn crossovers(batch_seconds: f64) -> String {
         world.particles[0].radius = 0.5;
         world
     };
-    let bimodal = |ratio: f64| {
-        let mut world = giant(ratio);
-        for p in world.particles.iter_mut().step_by(100) {
+    // A dense gas of small discs with 1 % large ones (the small ones they
+    // would overlap removed): the grid's cells grow to the large diameter.
+    let bimodal = |ratio: f64, area_fraction: f64| {
+        let mut world = Gas {
+            count: 10_000,
+            radius: 0.5 / ratio,
+            area_fraction,
+            ..Gas::default()
+        }
+        .build();
+        let big: Vec<glam::DVec2> = world.particles.iter().step_by(100).map(|p| p.pos).collect();
+        world.particles.retain(|p| {
+            big.iter().all(|b| b.distance(p.pos) >= 0.5 + p.radius) || big.contains(&p.pos)
+        });
+        for p in world.particles.iter_mut().filter(|p| big.contains(&p.pos)) {
             p.radius = 0.5;
         }
         world
     };
-    let cases: [(String, impulse::World); 7] = [
+    let cases: [(String, impulse::World); 8] = [
         ("log-uniform, max/min 4".into(), spread(4.0)),
         ("log-uniform, max/min 16".into(), spread(16.0)),
         ("log-uniform, max/min 64".into(), spread(64.0)),
         ("one disc 4x the rest".into(), giant(4.0)),
         ("one disc 16x the rest".into(), giant(16.0)),
         ("one disc 64x the rest".into(), giant(64.0)),
-        ("1 % of discs 8x the rest".into(), bimodal(8.0)),
+        (
+            "1 % of discs 8x the rest, sparse".into(),
+            bimodal(8.0, 0.3 / 64.0),
+        ),
+        ("1 % of discs 8x the rest, dense".into(), bimodal(8.0, 0.3)),
     ];
     for (name, world) in cases {
         let time = |broad| {
