@@ -23,7 +23,8 @@ pub fn world_with(size: [f64; 2], boundary: Boundary, particles: Vec<Particle>) 
 }
 
 /// A periodic gas of `n` discs at roughly 30 % area fraction with a drift,
-/// built from the scene format so the test also exercises the fill.
+/// built from the scene format so the test also exercises the fill; stepped
+/// by the `impulse` method (tests/methods.rs covers the others).
 pub fn periodic_gas(n: usize, seed: u64, restitution: f64) -> World {
     let text = format!(
         r#"
@@ -31,6 +32,8 @@ pub fn periodic_gas(n: usize, seed: u64, restitution: f64) -> World {
         size = [20.0, 20.0]
         boundary = "periodic"
         restitution = {restitution}
+        [simulation]
+        method = "impulse"
         [fill]
         count = {n}
         seed = {seed}
