@@ -191,7 +191,10 @@ pub fn plan(world: &World, dt: f64) -> Plan {
             } else {
                 BroadPhaseKind::Grid
             };
-            reasons.push(format!("{} for {n} discs", choice.name()));
+            if method != Method::Exact {
+                // Exact keeps its own cells; naming a broad phase would mislead.
+                reasons.push(format!("{} for {n} discs", choice.name()));
+            }
             choice
         }
     };
