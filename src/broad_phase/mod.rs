@@ -40,11 +40,13 @@ mod brute;
 mod grid;
 mod quadtree;
 mod sap;
+mod skin;
 
 pub use brute::BruteForce;
 pub use grid::Grid;
 pub use quadtree::Quadtree;
 pub use sap::SweepAndPrune;
+pub use skin::Skinned;
 
 use crate::boundary::Boundary;
 use crate::particle::Particle;
@@ -104,7 +106,7 @@ impl BroadPhaseKind {
     pub fn build(self) -> Box<dyn BroadPhase + Send> {
         match self {
             BroadPhaseKind::Brute => Box::new(BruteForce),
-            BroadPhaseKind::Grid => Box::<Grid>::default(),
+            BroadPhaseKind::Grid => Box::<Skinned<Grid>>::default(),
             BroadPhaseKind::Sap => Box::<SweepAndPrune>::default(),
             BroadPhaseKind::Quadtree => Box::<Quadtree>::default(),
         }
