@@ -245,6 +245,8 @@ impl App {
             self.gesture.drag(&mut self.world, at, now);
         }
         if is_mouse_button_released(MouseButton::Left) {
+            // The cursor may have moved since the last frame: follow it first.
+            self.gesture.drag(&mut self.world, at, now);
             match self.gesture.release(&mut self.world, at, self.new_disc) {
                 Released::Launched(i) => self.selected = Some(i),
                 Released::NoRoom => self.toast("No room for a new disc here"),
