@@ -19,7 +19,8 @@ use std::collections::VecDeque;
 
 /// Launch speed per metre of drag (1/s): a 2 m drag launches at 3 m/s.
 pub const LAUNCH_GAIN: f64 = 1.5;
-/// How much recent mouse history sets a fling's velocity (s).
+/// How much recent mouse history sets a fling's velocity (s); at a low
+/// frame rate, three frames' worth, so a few samples always remain.
 pub const TRAIL_SECONDS: f64 = 0.08;
 
 /// What a newly launched disc looks like.
@@ -130,8 +131,10 @@ impl Gesture {
         } = self
         {
             *dragged |= pressed_at.distance(at) > *slop;
+            let frame_gap = trail.back().map_or(0.0, |&(t, _)| now - t);
+            let window = TRAIL_SECONDS.max(3.0 * frame_gap);
             trail.push_back((now, at));
-            while trail.len() > 2 && trail.front().is_some_and(|&(t, _)| now - t > TRAIL_SECONDS) {
+            while trail.len() > 2 && trail.front().is_some_and(|&(t, _)| now - t > window) {
                 trail.pop_front();
             }
         }
@@ -350,6 +353,23 @@ mod tests {
             g.release(&mut w, DVec2::new(6.0, 5.0), NEW),
             Released::Flung(0, DVec2::ZERO)
         );
+    }
+
+    #[test]
+    fn a_fling_at_a_low_frame_rate_keeps_its_velocity() {
+        // Five frames a second: the cursor moved until the last frame.
+        let mut w = world();
+        let mut g = Gesture::default();
+        g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
+        for k in 1..=3 {
+            let t = 0.2 * k as f64;
+            g.drag(&mut w, DVec2::new(5.0 + t, 5.0), t);
+        }
+        g.drag(&mut w, DVec2::new(5.6, 5.0), 0.8);
+        match g.release(&mut w, DVec2::new(5.6, 5.0), NEW) {
+            Released::Flung(0, v) => assert!(v.x > 0.4, "{v}"),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]
