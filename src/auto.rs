@@ -19,18 +19,18 @@
 //!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
-//!   65 / 59 / 91 / 152 at n = 8 / 16 / 32 / 64 against the grid's 95 / 64 /
-//!   70 / 49, so the crossover lies between 16 and 32. Mixed radii: the grid
+//!   92 / 83 / 108 / 184 at n = 8 / 16 / 32 / 64 against the grid's 94 / 64 /
+//!   46 / 37, so the crossover lies between 8 and 16. Mixed radii: the grid
 //!   sizes its cells by the ordinary discs and tests up to 32 big ones (over
 //!   4x the mean radius) against everyone, and so beat the quadtree in every
 //!   smooth mix measured (10,000 discs, radii spread 4x to 64x, or one disc 4x
-//!   to 64x the rest: grid 45–75 ns, quadtree 110–170 ns). With more than
+//!   to 64x the rest: grid 28–89 ns, quadtree 127–187 ns). With more than
 //!   [`GRID_MAX_BIG_DISCS`] big discs the grid sizes its cells by them; that
-//!   only hurts when many small discs then share a cell: 1 % large discs
-//!   (8x) among a sparse gas kept the grid ahead (45 against 110 ns), among a
-//!   dense one (about 24 discs per cell) the grid fell to 360–410 ns against
-//!   the quadtree's 143–267 ns. So `auto` picks the `quadtree` when the grid
-//!   would hold more than [`MAX_DISCS_PER_CELL`] discs per cell on average.
+//!   only hurts when many small discs then share a cell: 1 % large discs (8x)
+//!   in a sparse gas kept the grid ahead (33 against 113 ns), in a dense one
+//!   (about 24 discs per cell) it fell to 427 ns against the quadtree's 270.
+//!   So `auto` picks the `quadtree` when the grid would hold more than
+//!   [`MAX_DISCS_PER_CELL`] discs per cell on average.
 //! - **Substeps** (discrete methods): enough that the fastest disc travels at
 //!   most [`MAX_TRAVEL_PER_SUBSTEP`] of the smallest radius per substep, so
 //!   nothing tunnels, capped at [`MAX_SUBSTEPS`].
@@ -49,7 +49,7 @@ pub const EXACT_BUDGET: f64 = 0.25;
 /// Mass ratio above which accuracy needs `exact` (budget ×4).
 pub const EXTREME_MASS_RATIO: f64 = 1e3;
 /// Brute force is chosen up to this many discs.
-pub const BRUTE_MAX_DISCS: usize = 24;
+pub const BRUTE_MAX_DISCS: usize = 12;
 /// A disc is "big" for the grid above this multiple of the mean radius.
 pub const BIG_DISC_FACTOR: f64 = 4.0;
 /// Big discs the grid handles on the side; more, and its cells grow.

@@ -282,7 +282,7 @@ fn auto_models_no_more_than_the_scene_needs() {
     }
     assert!(grid_crowding(&big) > 8.0, "{}", grid_crowding(&big));
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Quadtree);
-    let mut few = gas(20, Boundary::Box, 1);
+    let mut few = gas(10, Boundary::Box, 1);
     few.broad_phase = Setting::Auto;
     assert_eq!(few.plan_for(0.01).broad_phase, BroadPhaseKind::Brute);
 }
