@@ -7,6 +7,8 @@ use crate::world::Laws;
 use glam::DVec2;
 use smallvec::SmallVec;
 
+/// Cell width in largest diameters.
+const CELL_DIAMETERS: f64 = 1.0;
 /// Cap on grid cells, per disc.
 const CELLS_PER_DISC: usize = 4;
 
@@ -49,7 +51,7 @@ impl Grid {
             }
         };
         let cap = (CELLS_PER_DISC * n).max(16) as f64;
-        let mut dims = (extent / max_d)
+        let mut dims = (extent / (CELL_DIAMETERS * max_d))
             .floor()
             .max(DVec2::ONE)
             .min(DVec2::splat(1e6));
