@@ -218,26 +218,26 @@ impl World {
             self.plan = Some(auto::plan(self, dt));
             self.plan_key = Some(key);
         }
-        let plan = self.plan.clone().unwrap_or_else(|| auto::plan(self, dt));
-        self.pipeline.use_kind(plan.broad_phase);
-        let laws = self.laws();
-        let mut stats = StepStats {
-            substeps: plan.substeps,
-            ..StepStats::default()
+        let (method, broad_phase, planned_substeps) = match &self.plan {
+            Some(p) => (p.method, p.broad_phase, p.substeps),
+            None => (Method::Impulse, BroadPhaseKind::Brute, 1),
         };
+        self.pipeline.use_kind(broad_phase);
+        let laws = self.laws();
+        let mut stats = StepStats::default();
         let mut simulated = dt;
-        match plan.method {
+        match method {
             Method::Impulse | Method::Verlet | Method::Seed => {
-                let substeps = if plan.method == Method::Seed {
+                let substeps = if method == Method::Seed {
                     1
                 } else {
-                    plan.substeps.max(1)
+                    planned_substeps.max(1)
                 };
                 stats.substeps = substeps;
                 let h = dt / f64::from(substeps);
                 for _ in 0..substeps {
                     let (pipeline, particles) = (&mut self.pipeline, &mut self.particles);
-                    match plan.method {
+                    match method {
                         Method::Verlet => {
                             discrete::verlet_substep(pipeline, particles, &laws, h, &mut stats)
                         }
