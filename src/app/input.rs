@@ -16,11 +16,12 @@ const CLICK_SLOP_PIXELS: f64 = 4.0;
 /// Gravity G switches on (m/s², downwards).
 const EARTH_GRAVITY: f64 = 9.81;
 
-/// Whether a modifier is held, or was pressed during this frame: at a low
-/// frame rate a quick Ctrl+Q can press and release Ctrl within one frame.
+/// Whether a modifier was down at any moment of this frame: held, pressed
+/// or released. At a low frame rate a quick Ctrl+Q can press and release
+/// Ctrl, or release it together with Q, within one frame.
 fn held_or_pressed(keys: [KeyCode; 2]) -> bool {
     keys.into_iter()
-        .any(|k| is_key_down(k) || is_key_pressed(k))
+        .any(|k| is_key_down(k) || is_key_pressed(k) || is_key_released(k))
 }
 
 fn shift() -> bool {
