@@ -84,32 +84,45 @@ impl Grid {
         (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
     }
 
-    /// The up to nine cells around `c`, each once.
-    pub(super) fn neighbourhood(&self, c: [i32; 2]) -> SmallVec<[usize; 9]> {
-        let around = |v: i32, n: i32| -> SmallVec<[i32; 3]> {
-            let mut out = SmallVec::new();
-            for d in [v - 1, v, v + 1] {
-                let w = if !self.periodic || (0..n).contains(&d) {
-                    d
-                } else if d < 0 {
-                    d + n
-                } else {
-                    d - n
-                };
-                if (0..n).contains(&w) && !out.contains(&w) {
-                    out.push(w);
-                }
-            }
-            out
-        };
-        let (xs, ys) = (around(c[0], self.dims[0]), around(c[1], self.dims[1]));
-        let mut out = SmallVec::new();
-        for &y in &ys {
-            for &x in &xs {
-                out.push(self.index([x, y]));
+    /// The up to three distinct cell coordinates around `v` along an axis
+    /// of `n` cells (wrapped when periodic), and how many there are.
+    #[inline]
+    fn around(&self, v: i32, n: i32) -> ([i32; 3], usize) {
+        if v > 0 && v < n - 1 {
+            return ([v - 1, v, v + 1], 3); // the common case: an inner cell
+        }
+        let mut out = [0; 3];
+        let mut count = 0;
+        for d in [v - 1, v, v + 1] {
+            let w = if !self.periodic {
+                d
+            } else if d < 0 {
+                d + n
+            } else if d >= n {
+                d - n
+            } else {
+                d
+            };
+            if (0..n).contains(&w) && !out[..count].contains(&w) {
+                out[count] = w;
+                count += 1;
             }
         }
-        out
+        (out, count)
+    }
+
+    /// Calls `visit` with the index of each of the up to nine cells around
+    /// `c`, each once.
+    #[inline]
+    pub(super) fn for_each_neighbour(&self, c: [i32; 2], mut visit: impl FnMut(usize)) {
+        let (xs, nx) = self.around(c[0], self.dims[0]);
+        let (ys, ny) = self.around(c[1], self.dims[1]);
+        let row = self.dims[0] as usize;
+        for &y in &ys[..ny] {
+            for &x in &xs[..nx] {
+                visit(y as usize * row + x as usize);
+            }
+        }
     }
 
     pub(super) fn bounds(&self, c: [i32; 2], axis: usize) -> (f64, f64) {

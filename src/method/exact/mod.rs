@@ -279,16 +279,17 @@ impl Sim {
             }
         };
 
-        for cell in self.grid.neighbourhood(me.cell) {
-            for &j in &self.grid.cells[cell] {
+        let (bodies, grid, laws, now) = (&self.bodies, &self.grid, &self.laws, self.now);
+        grid.for_each_neighbour(me.cell, |cell| {
+            for &j in &grid.cells[cell] {
                 if j == i {
                     continue;
                 }
-                let other = &self.bodies[j as usize];
-                let tau = self.now - other.time;
+                let other = &bodies[j as usize];
+                let tau = now - other.time;
                 let pj = other.pos + other.vel * tau + 0.5 * g * tau * tau;
                 let vj = other.vel + g * tau;
-                let d = self.laws.boundary.separation(me.pos, pj, self.laws.size);
+                let d = laws.boundary.separation(me.pos, pj, laws.size);
                 let kind = Kind::Pair {
                     partner: j,
                     gen: other.gen,
@@ -299,7 +300,7 @@ impl Sim {
                     &mut best,
                 );
             }
-        }
+        });
 
         for axis in 0..2 {
             let (p, v, ga) = (me.pos[axis], me.vel[axis], g[axis]);

@@ -4,8 +4,6 @@
 //! than n entries; pop and update are O(log n). It is 4-ary: a node's four
 //! children share one cache line, which halves the depth of a binary heap.
 
-use std::cmp::Ordering;
-
 /// An event owned by one disc.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Event<K> {
@@ -40,8 +38,11 @@ impl<K: Copy> EventQueue<K> {
         }
     }
 
+    /// Event times are finite (events past the step are never queued), so
+    /// plain comparisons order them.
+    #[inline]
     fn before(a: (f64, u32), b: (f64, u32)) -> bool {
-        a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)) == Ordering::Less
+        a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
     }
 
     /// Sets disc `owner`'s event (replacing any), or clears it with `None`.
@@ -68,10 +69,45 @@ impl<K: Copy> EventQueue<K> {
     }
 
     /// The earliest event, removed from the queue.
+    ///
+    /// Bottom-up: the hole left at the root moves down along the smallest
+    /// children to a leaf, and the last entry is sifted up from there, which
+    /// takes about half the comparisons of sifting the last entry down.
     pub fn pop(&mut self) -> Option<Event<K>> {
         let &(_, top) = self.heap.first()?;
         let event = self.events[top as usize].take();
-        self.remove_at(0);
+        self.slot[top as usize] = ABSENT;
+        let last = self.heap.pop().expect("non-empty");
+        let len = self.heap.len();
+        if len == 0 {
+            return event;
+        }
+        let mut hole = 0;
+        loop {
+            let first_child = ARITY * hole + 1;
+            if first_child >= len {
+                break;
+            }
+            let children = &self.heap[first_child..(first_child + ARITY).min(len)];
+            let (offset, _) = children
+                .iter()
+                .enumerate()
+                .reduce(|best, next| {
+                    if Self::before(*next.1, *best.1) {
+                        next
+                    } else {
+                        best
+                    }
+                })
+                .expect("at least one child");
+            let child = first_child + offset;
+            self.heap[hole] = self.heap[child];
+            self.slot[self.heap[hole].1 as usize] = hole as u32;
+            hole = child;
+        }
+        self.heap[hole] = last;
+        self.slot[last.1 as usize] = hole as u32;
+        self.sift_up(hole);
         event
     }
 
@@ -117,20 +153,30 @@ impl<K: Copy> EventQueue<K> {
     }
 
     fn sift_down(&mut self, mut at: usize) {
+        let len = self.heap.len();
         loop {
             let first_child = ARITY * at + 1;
-            let last_child = (first_child + ARITY).min(self.heap.len());
-            let mut first = at;
-            for child in first_child..last_child {
-                if Self::before(self.heap[child], self.heap[first]) {
-                    first = child;
-                }
-            }
-            if first == at {
+            if first_child >= len {
                 break;
             }
-            self.swap(at, first);
-            at = first;
+            let children = &self.heap[first_child..(first_child + ARITY).min(len)];
+            let (offset, &smallest) = children
+                .iter()
+                .enumerate()
+                .reduce(|best, next| {
+                    if Self::before(*next.1, *best.1) {
+                        next
+                    } else {
+                        best
+                    }
+                })
+                .expect("at least one child");
+            if !Self::before(smallest, self.heap[at]) {
+                break;
+            }
+            let child = first_child + offset;
+            self.swap(at, child);
+            at = child;
         }
     }
 }
