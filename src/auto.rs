@@ -11,24 +11,24 @@
 //!   within [`EXACT_BUDGET`] seconds (so real time costs at most a quarter of
 //!   a core); four times that when masses differ by [`EXTREME_MASS_RATIO`] or
 //!   more, where the discrete methods miscount collisions. The two costs are
-//!   measured by `impulse bench`: a step of the exact method costs 250–400 ns
+//!   measured by `impulse bench`: a step of the exact method costs 235–340 ns
 //!   per disc before any collision (it re-predicts every disc), and a
-//!   collision about 2 µs (2.45 events of ~0.8 µs; 5.2·10⁵ collisions per
-//!   second at 10⁴ discs). Never where discs will come to rest in contact
+//!   collision about 2 µs (2.45 events; 5.0·10⁵ collisions per second at
+//!   10⁴ discs). Never where discs will come to rest in contact
 //!   (gravity with restitution below 1), because resting contact is an
 //!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
-//!   92 / 83 / 108 / 184 at n = 8 / 16 / 32 / 64 against the grid's 94 / 64 /
-//!   46 / 37, so the crossover lies between 8 and 16. Mixed radii: the grid
+//!   59 / 52 / 65 / 112 at n = 8 / 16 / 32 / 64 against the grid's 60 / 39 /
+//!   27 / 22, so the crossover lies between 8 and 16. Mixed radii: the grid
 //!   sizes its cells by the ordinary discs and tests up to 32 big ones (over
 //!   4x the mean radius) against everyone, and so beat the quadtree in every
 //!   smooth mix measured (10,000 discs, radii spread 4x to 64x, or one disc 4x
-//!   to 64x the rest: grid 28–89 ns, quadtree 127–187 ns). With more than
+//!   to 64x the rest: grid 21–86 ns, quadtree 97–149 ns). With more than
 //!   [`GRID_MAX_BIG_DISCS`] big discs the grid sizes its cells by them; that
 //!   only hurts when many small discs then share a cell: 1 % large discs (8x)
-//!   in a sparse gas kept the grid ahead (33 against 113 ns), in a dense one
-//!   (about 24 discs per cell) it fell to 427 ns against the quadtree's 270.
+//!   in a sparse gas kept the grid ahead (31 against 116 ns), in a dense one
+//!   (about 24 discs per cell) it fell to 386 ns against the quadtree's 226.
 //!   So `auto` picks the `quadtree` when the grid would hold more than
 //!   [`MAX_DISCS_PER_CELL`] discs per cell on average.
 //! - **Substeps** (discrete methods): enough that the fastest disc travels at
