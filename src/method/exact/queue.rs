@@ -88,19 +88,7 @@ impl<K: Copy> EventQueue<K> {
             if first_child >= len {
                 break;
             }
-            let children = &self.heap[first_child..(first_child + ARITY).min(len)];
-            let (offset, _) = children
-                .iter()
-                .enumerate()
-                .reduce(|best, next| {
-                    if Self::before(*next.1, *best.1) {
-                        next
-                    } else {
-                        best
-                    }
-                })
-                .expect("at least one child");
-            let child = first_child + offset;
+            let child = self.smallest_child(first_child, len);
             self.heap[hole] = self.heap[child];
             self.slot[self.heap[hole].1 as usize] = hole as u32;
             hole = child;
@@ -134,6 +122,22 @@ impl<K: Copy> EventQueue<K> {
         }
     }
 
+    /// The earliest of the up to `ARITY` children starting at `first`.
+    #[inline]
+    fn smallest_child(&self, first: usize, len: usize) -> usize {
+        let end = (first + ARITY).min(len);
+        let mut best = first;
+        let mut best_key = self.heap[first];
+        for c in first + 1..end {
+            let key = self.heap[c];
+            if Self::before(key, best_key) {
+                best = c;
+                best_key = key;
+            }
+        }
+        best
+    }
+
     fn swap(&mut self, a: usize, b: usize) {
         self.heap.swap(a, b);
         self.slot[self.heap[a].1 as usize] = a as u32;
@@ -159,22 +163,10 @@ impl<K: Copy> EventQueue<K> {
             if first_child >= len {
                 break;
             }
-            let children = &self.heap[first_child..(first_child + ARITY).min(len)];
-            let (offset, &smallest) = children
-                .iter()
-                .enumerate()
-                .reduce(|best, next| {
-                    if Self::before(*next.1, *best.1) {
-                        next
-                    } else {
-                        best
-                    }
-                })
-                .expect("at least one child");
-            if !Self::before(smallest, self.heap[at]) {
+            let child = self.smallest_child(first_child, len);
+            if !Self::before(self.heap[child], self.heap[at]) {
                 break;
             }
-            let child = first_child + offset;
             self.swap(at, child);
             at = child;
         }
