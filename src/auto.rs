@@ -87,14 +87,28 @@ pub fn grid_crowding(world: &World) -> f64 {
         return 0.0;
     }
     let mean_r = world.particles.iter().map(|p| p.radius).sum::<f64>() / n as f64;
-    let mut radii: Vec<f64> = world.particles.iter().map(|p| p.radius).collect();
-    radii.sort_by(|a, b| b.total_cmp(a));
-    let set_aside = radii
+    let big_limit = BIG_DISC_FACTOR * mean_r;
+    let big = world
+        .particles
         .iter()
-        .take(GRID_MAX_BIG_DISCS)
-        .take_while(|&&r| r > BIG_DISC_FACTOR * mean_r)
+        .filter(|p| p.radius > big_limit)
         .count();
-    let cell = 2.0 * radii.get(set_aside).copied().unwrap_or(0.0);
+    let cell_radius = if big <= GRID_MAX_BIG_DISCS {
+        // Every big disc is set aside: cells fit the largest ordinary one.
+        world
+            .particles
+            .iter()
+            .map(|p| p.radius)
+            .filter(|&r| r <= big_limit)
+            .fold(0.0, f64::max)
+    } else {
+        // The grid sets aside the largest few; cells fit the next one. Only
+        // this rare case pays for a copy of the radii.
+        let mut radii: Vec<f64> = world.particles.iter().map(|p| p.radius).collect();
+        let (_, next, _) = radii.select_nth_unstable_by(GRID_MAX_BIG_DISCS, |a, b| b.total_cmp(a));
+        *next
+    };
+    let cell = 2.0 * cell_radius;
     let area = match world.boundary {
         crate::Boundary::Open => {
             let (lo, hi) = world.particles.iter().fold(
@@ -134,11 +148,10 @@ pub fn exact_cost_per_second(world: &World, dt: f64) -> f64 {
 pub fn plan(world: &World, dt: f64) -> Plan {
     let n = world.particles.len();
     let mut reasons = Vec::new();
-    let (mut min_r, mut max_r, mut min_m, mut max_m, mut max_speed) =
-        (f64::INFINITY, 0.0f64, f64::INFINITY, 0.0f64, 0.0f64);
+    let (mut min_r, mut min_m, mut max_m, mut max_speed) =
+        (f64::INFINITY, f64::INFINITY, 0.0f64, 0.0f64);
     for p in &world.particles {
         min_r = min_r.min(p.radius);
-        max_r = max_r.max(p.radius);
         min_m = min_m.min(p.mass);
         max_m = max_m.max(p.mass);
         max_speed = max_speed.max(p.vel.length());

@@ -70,6 +70,8 @@ pub fn advance(particles: &mut [Particle], laws: &Laws, dt: f64, stats: &mut Ste
     stats.events += sim.events;
     stats.truncated |= sim.truncated;
     stats.max_overlap = stats.max_overlap.max(sim.max_overlap);
+    // Detection, resolution and flight interleave event by event, so the
+    // whole step is booked as resolution.
     stats.timings.resolution += started.elapsed();
     end
 }
