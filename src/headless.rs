@@ -33,7 +33,8 @@ pub struct RunArgs {
     pub json: bool,
 }
 
-fn positive_seconds(s: &str) -> Result<f64, String> {
+/// Command-line parser for a positive, finite number of seconds.
+pub fn positive_seconds(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
         _ => Err(format!("{s:?} is not a positive number of seconds")),

@@ -31,7 +31,7 @@ pub struct WindowOptions {
     #[arg(long)]
     pub paused: bool,
     /// Physics time step in seconds [default: the scene's, else 1/240].
-    #[arg(long, value_parser = positive_seconds)]
+    #[arg(long, value_parser = crate::headless::positive_seconds)]
     pub dt: Option<f64>,
     /// Keep FILE updated with the state as JSON (rewritten atomically each frame).
     #[arg(long, value_name = "FILE")]
@@ -40,18 +40,11 @@ pub struct WindowOptions {
     #[arg(long, value_name = "FILE")]
     pub screenshot: Option<PathBuf>,
     /// Close the window after this many seconds of real time.
-    #[arg(long, value_name = "SECONDS", value_parser = positive_seconds)]
+    #[arg(long, value_name = "SECONDS", value_parser = crate::headless::positive_seconds)]
     pub exit_after: Option<f64>,
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = window_size)]
     pub size: (i32, i32),
-}
-
-fn positive_seconds(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
-        _ => Err(format!("{s:?} is not a positive number of seconds")),
-    }
 }
 
 fn window_size(s: &str) -> Result<(i32, i32), String> {
