@@ -11,10 +11,13 @@
 //!   within [`EXACT_BUDGET`] seconds (so real time costs at most a quarter of
 //!   a core); four times that when masses differ by [`EXTREME_MASS_RATIO`] or
 //!   more, where the discrete methods miscount collisions. The two costs are
-//!   measured by `impulse bench`: a step of the exact method costs 235–340 ns
-//!   per disc before any collision (it re-predicts every disc), and a
-//!   collision about 2 µs (2.45 events; 5.0·10⁵ collisions per second at
-//!   10⁴ discs). Never where discs will come to rest in contact
+//!   measured by `impulse bench`: a step of the exact method costs about
+//!   15–20 ns per disc before any collision (it carries its event calendar
+//!   from step to step and only checks that nothing was edited and moves
+//!   every disc to the end of the step; the first step after an edit costs
+//!   about 300 ns per disc, for sorting and predicting every disc afresh),
+//!   and a collision about 2 µs (2.46 events; 4–6·10⁵ collisions per second
+//!   at 10⁴ discs). Never where discs will come to rest in contact
 //!   (gravity with restitution below 1), because resting contact is an
 //!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
@@ -40,8 +43,9 @@ use crate::method::{Method, Setting};
 use crate::world::World;
 use serde::Serialize;
 
-/// Measured cost of the exact method per disc and step, before collisions (ns).
-pub const EXACT_SETUP_NS: f64 = 300.0;
+/// Measured cost of the exact method per disc and step, before collisions,
+/// while the world is not edited between steps (ns).
+pub const EXACT_SETUP_NS: f64 = 20.0;
 /// Measured cost of the exact method per pair collision (ns).
 pub const EXACT_COLLISION_NS: f64 = 2000.0;
 /// Most wall-clock seconds per simulated second `auto` spends on `exact`.

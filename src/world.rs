@@ -96,6 +96,8 @@ pub(crate) struct Pipeline {
     pub(crate) contacts: Vec<Contact>,
     /// Scratch: positions before a Verlet substep.
     pub(crate) previous_positions: Vec<DVec2>,
+    /// The exact method's event calendar, carried from step to step.
+    exact: exact::Exact,
 }
 
 impl Pipeline {
@@ -106,6 +108,7 @@ impl Pipeline {
             pairs: Vec::new(),
             contacts: Vec::new(),
             previous_positions: Vec::new(),
+            exact: exact::Exact::default(),
         }
     }
 
@@ -234,6 +237,7 @@ impl World {
                     planned_substeps.max(1)
                 };
                 stats.substeps = substeps;
+                self.pipeline.exact.forget();
                 let h = dt / f64::from(substeps);
                 for _ in 0..substeps {
                     let (pipeline, particles) = (&mut self.pipeline, &mut self.particles);
@@ -262,7 +266,10 @@ impl World {
             }
             Method::Exact => {
                 stats.substeps = 1;
-                simulated = exact::advance(&mut self.particles, &laws, dt, &mut stats);
+                simulated = self
+                    .pipeline
+                    .exact
+                    .advance(&mut self.particles, &laws, dt, &mut stats);
             }
         }
         self.time += simulated;

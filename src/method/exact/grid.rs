@@ -19,6 +19,8 @@ pub(super) type CellList = SmallVec<[u32; 6]>;
 /// with cells at least one diameter wide.
 pub(super) struct Grid {
     origin: DVec2,
+    /// Size of the gridded region.
+    extent: DVec2,
     cell: DVec2,
     pub(super) dims: [i32; 2],
     pub(super) periodic: bool,
@@ -61,6 +63,7 @@ impl Grid {
         let dims = [dims.x as i32, dims.y as i32];
         Grid {
             origin,
+            extent,
             cell: extent / DVec2::new(f64::from(dims[0]), f64::from(dims[1])),
             dims,
             periodic: laws.boundary == Boundary::Periodic,
@@ -84,43 +87,59 @@ impl Grid {
         (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
     }
 
+    /// Whether a neighbour's image is fixed by its cell: true unless the
+    /// grid wraps with fewer than three cells along an axis, where one cell
+    /// can be a neighbour on both sides and the nearest image must be found
+    /// per pair.
+    pub(super) fn images_by_cell(&self) -> bool {
+        !self.periodic || (self.dims[0] >= 3 && self.dims[1] >= 3)
+    }
+
     /// The up to three distinct cell coordinates around `v` along an axis
-    /// of `n` cells (wrapped when periodic), and how many there are.
+    /// of `n` cells (wrapped when periodic), how many there are, and for
+    /// each the wrap it took (−1, 0 or +1 world lengths): a disc in that
+    /// cell is nearest at its position plus that many lengths.
     #[inline]
-    fn around(&self, v: i32, n: i32) -> ([i32; 3], usize) {
+    fn around(&self, v: i32, n: i32) -> ([i32; 3], [f64; 3], usize) {
         if v > 0 && v < n - 1 {
-            return ([v - 1, v, v + 1], 3); // the common case: an inner cell
+            // The common case: an inner cell.
+            return ([v - 1, v, v + 1], [0.0; 3], 3);
         }
         let mut out = [0; 3];
+        let mut wraps = [0.0; 3];
         let mut count = 0;
         for d in [v - 1, v, v + 1] {
-            let w = if !self.periodic {
-                d
+            let (w, wrap) = if !self.periodic {
+                (d, 0.0)
             } else if d < 0 {
-                d + n
+                (d + n, -1.0)
             } else if d >= n {
-                d - n
+                (d - n, 1.0)
             } else {
-                d
+                (d, 0.0)
             };
             if (0..n).contains(&w) && !out[..count].contains(&w) {
                 out[count] = w;
+                wraps[count] = wrap;
                 count += 1;
             }
         }
-        (out, count)
+        (out, wraps, count)
     }
 
     /// Calls `visit` with the index of each of the up to nine cells around
-    /// `c`, each once.
+    /// `c`, each once, and the shift that puts its discs at their nearest
+    /// periodic image (zero unless the grid wraps there; meaningful only
+    /// when [`Grid::images_by_cell`]).
     #[inline]
-    pub(super) fn for_each_neighbour(&self, c: [i32; 2], mut visit: impl FnMut(usize)) {
-        let (xs, nx) = self.around(c[0], self.dims[0]);
-        let (ys, ny) = self.around(c[1], self.dims[1]);
+    pub(super) fn for_each_neighbour(&self, c: [i32; 2], mut visit: impl FnMut(usize, DVec2)) {
+        let (xs, x_wraps, nx) = self.around(c[0], self.dims[0]);
+        let (ys, y_wraps, ny) = self.around(c[1], self.dims[1]);
         let row = self.dims[0] as usize;
-        for &y in &ys[..ny] {
-            for &x in &xs[..nx] {
-                visit(y as usize * row + x as usize);
+        for (&y, &y_wrap) in ys[..ny].iter().zip(&y_wraps) {
+            for (&x, &x_wrap) in xs[..nx].iter().zip(&x_wraps) {
+                let shift = DVec2::new(x_wrap * self.extent.x, y_wrap * self.extent.y);
+                visit(y as usize * row + x as usize, shift);
             }
         }
     }

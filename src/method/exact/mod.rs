@@ -29,9 +29,13 @@
 //!   [`EVENTS_PER_DISC`]·n + [`EVENTS_BASE`] events per step bounds the work
 //!   in any case; hitting it ends the step early and is reported
 //!   (`StepStats::truncated`).
-//! - Speed: each step copies the discs into a local array sorted by cell, so
+//! - Speed: the discs are copied into a local array sorted by cell, so
 //!   neighbours sit close in memory, and each cell keeps its first few discs
-//!   inline; the results are written back in the caller's order.
+//!   inline; the results are written back in the caller's order. [`Exact`]
+//!   keeps that array, the cells and the queue (with the events that lie past
+//!   the step) from one step to the next; a step first checks that every
+//!   disc is exactly where the last one left it, and only an edit (or a
+//!   change of size, gravity or boundary) makes it start afresh.
 
 use crate::boundary::Boundary;
 use crate::particle::Particle;
@@ -56,24 +60,52 @@ pub const EVENTS_PER_DISC: usize = 10_000;
 /// Event budget per step on top of the per-disc one.
 pub const EVENTS_BASE: usize = 1_000_000;
 
-/// Advances `particles` by `dt`; returns the time actually simulated (less
-/// than `dt` only if the event cap was hit).
-pub fn advance(particles: &mut [Particle], laws: &Laws, dt: f64, stats: &mut StepStats) -> f64 {
-    let started = Instant::now();
-    let mut sim = Sim::new(particles, laws, dt);
-    sim.run();
-    let end = if sim.truncated { sim.now } else { sim.end };
-    sim.finish(end, particles);
-    stats.pair_collisions += sim.collisions;
-    stats.wall_hits += sim.wall_hits;
-    stats.wall_impulse += sim.wall_impulse;
-    stats.events += sim.events;
-    stats.truncated |= sim.truncated;
-    stats.max_overlap = stats.max_overlap.max(sim.max_overlap);
-    // Detection, resolution and flight interleave event by event, so the
-    // whole step is booked as resolution.
-    stats.timings.resolution += started.elapsed();
-    end
+/// The exact method's state between steps. While nobody edits the world,
+/// the next step continues the event calendar where the last one stopped
+/// instead of sorting the discs and predicting every event afresh.
+#[derive(Default)]
+pub struct Exact {
+    sim: Option<Sim>,
+}
+
+impl Exact {
+    /// Advances `particles` by `dt`; returns the time actually simulated
+    /// (less than `dt` only if the event cap was hit).
+    pub fn advance(
+        &mut self,
+        particles: &mut [Particle],
+        laws: &Laws,
+        dt: f64,
+        stats: &mut StepStats,
+    ) -> f64 {
+        let started = Instant::now();
+        let mut sim = match self.sim.take() {
+            Some(mut sim) if sim.continues(particles, laws) => {
+                sim.restart(laws, dt);
+                sim
+            }
+            _ => Sim::new(particles, laws, dt),
+        };
+        sim.run();
+        let end = if sim.truncated { sim.now } else { sim.end };
+        sim.finish(end, particles);
+        stats.pair_collisions += sim.collisions;
+        stats.wall_hits += sim.wall_hits;
+        stats.wall_impulse += sim.wall_impulse;
+        stats.events += sim.events;
+        stats.truncated |= sim.truncated;
+        stats.max_overlap = stats.max_overlap.max(sim.max_overlap);
+        self.sim = Some(sim);
+        // Detection, resolution and flight interleave event by event, so the
+        // whole step is booked as resolution.
+        stats.timings.resolution += started.elapsed();
+        end
+    }
+
+    /// Drops the carried state (another method moved the discs).
+    pub fn forget(&mut self) {
+        self.sim = None;
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -122,6 +154,8 @@ struct Sim {
     wall_impulse: f64,
     max_overlap: f64,
     truncated: bool,
+    /// The time [`Sim::finish`] put every disc at.
+    finished_at: f64,
 }
 
 impl Sim {
@@ -145,6 +179,7 @@ impl Sim {
             wall_impulse: 0.0,
             max_overlap: 0.0,
             truncated: false,
+            finished_at: 0.0,
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -185,6 +220,44 @@ impl Sim {
         sim
     }
 
+    /// Whether the discs are exactly as the last step left them, under the
+    /// same geometry, so the queued events still hold.
+    fn continues(&self, particles: &[Particle], laws: &Laws) -> bool {
+        let same_geometry = laws.size == self.laws.size
+            && laws.gravity == self.laws.gravity
+            && laws.boundary == self.laws.boundary;
+        same_geometry
+            && particles.len() == self.bodies.len()
+            && self.order.iter().zip(&self.bodies).all(|(&i, b)| {
+                let p = &particles[i as usize];
+                p.pos == self.written_pos(b)
+                    && p.vel == b.vel
+                    && p.mass == b.mass
+                    && p.radius == b.radius
+            })
+    }
+
+    /// Starts a new step of `dt` from where the last one ended: every disc is
+    /// at the end time, which becomes time zero.
+    fn restart(&mut self, laws: &Laws, dt: f64) {
+        let shift = self.finished_at;
+        for b in &mut self.bodies {
+            b.time -= shift;
+            b.last_hit -= shift;
+        }
+        self.queue.shift_times(shift);
+        self.laws = *laws; // restitutions may have changed
+        self.now = 0.0;
+        self.end = dt;
+        self.t_c = TC_FRACTION * dt;
+        self.events = 0;
+        self.collisions = 0;
+        self.wall_hits = 0;
+        self.wall_impulse = 0.0;
+        self.max_overlap = 0.0;
+        self.truncated = false;
+    }
+
     fn predict_all(&mut self) {
         self.queue.clear();
         for i in 0..self.bodies.len() as u32 {
@@ -193,14 +266,15 @@ impl Sim {
     }
 
     fn run(&mut self) {
-        while let Some(ev) = self.queue.pop() {
+        while let Some(ev) = self.queue.peek() {
             if ev.time > self.end {
-                break;
+                break; // it stays queued for the next step
             }
             if self.events >= self.cap {
                 self.truncated = true;
                 break;
             }
+            self.queue.pop();
             self.events += 1;
             let i = ev.owner;
             self.now = ev.time;
@@ -244,15 +318,22 @@ impl Sim {
     fn finish(&mut self, t: f64, particles: &mut [Particle]) {
         for k in 0..self.order.len() {
             self.advance_to(k as u32, t);
-            let i = self.order[k];
             let b = &self.bodies[k];
-            let p = &mut particles[i as usize];
-            p.pos = if self.laws.boundary == Boundary::Periodic {
-                b.pos.rem_euclid(self.laws.size)
-            } else {
-                b.pos
-            };
+            let p = &mut particles[self.order[k] as usize];
+            p.pos = self.written_pos(b);
             p.vel = b.vel;
+        }
+        self.finished_at = t;
+    }
+
+    /// Where a disc is reported: in the periodic world's rectangle.
+    fn written_pos(&self, b: &Body) -> DVec2 {
+        let size = self.laws.size;
+        let inside = b.pos.cmpge(DVec2::ZERO).all() && b.pos.cmplt(size).all();
+        if self.laws.boundary == Boundary::Periodic && !inside {
+            b.pos.rem_euclid(size)
+        } else {
+            b.pos
         }
     }
 
@@ -267,12 +348,17 @@ impl Sim {
         }
     }
 
-    /// Pushes disc `i`'s earliest event before the end of the step (`i` must
-    /// be at the current time).
+    /// Queues disc `i`'s earliest event (`i` must be at the current time).
+    /// Events past the step stay queued for the steps after.
     fn predict(&mut self, i: u32) {
         let me = self.bodies[i as usize];
         let g = self.laws.gravity;
-        let mut best: Option<(f64, Kind)> = None;
+        let mut best = match (g == DVec2::ZERO, self.grid.images_by_cell()) {
+            (true, true) => self.nearest_pair::<false, true>(i, &me),
+            (false, true) => self.nearest_pair::<true, true>(i, &me),
+            (true, false) => self.nearest_pair::<false, false>(i, &me),
+            (false, false) => self.nearest_pair::<true, false>(i, &me),
+        };
         let consider = |tau: Option<f64>, kind: Kind, best: &mut Option<(f64, Kind)>| {
             if let Some(tau) = tau {
                 if best.is_none_or(|(b, _)| tau < b) {
@@ -280,29 +366,6 @@ impl Sim {
                 }
             }
         };
-
-        let (bodies, grid, laws, now) = (&self.bodies, &self.grid, &self.laws, self.now);
-        grid.for_each_neighbour(me.cell, |cell| {
-            for &j in &grid.cells[cell] {
-                if j == i {
-                    continue;
-                }
-                let other = &bodies[j as usize];
-                let tau = now - other.time;
-                let pj = other.pos + other.vel * tau + 0.5 * g * tau * tau;
-                let vj = other.vel + g * tau;
-                let d = laws.boundary.separation(me.pos, pj, laws.size);
-                let kind = Kind::Pair {
-                    partner: j,
-                    gen: other.gen,
-                };
-                consider(
-                    pair_time(d, vj - me.vel, me.radius + other.radius),
-                    kind,
-                    &mut best,
-                );
-            }
-        });
 
         for axis in 0..2 {
             let (p, v, ga) = (me.pos[axis], me.vel[axis], g[axis]);
@@ -349,8 +412,57 @@ impl Sim {
                 owner: i,
                 kind,
             })
-            .filter(|e| e.time <= self.end);
+            .filter(|e| e.time.is_finite());
         self.queue.set(i, event);
+    }
+
+    /// Disc `i`'s earliest collision with a disc in its own or a
+    /// neighbouring cell, as (time from now, event). Specialised on whether
+    /// there is gravity and whether a neighbour's periodic image follows from
+    /// its cell, since this loop is where the method spends its time.
+    #[inline]
+    fn nearest_pair<const GRAVITY: bool, const IMAGES_BY_CELL: bool>(
+        &self,
+        i: u32,
+        me: &Body,
+    ) -> Option<(f64, Kind)> {
+        let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
+        let g = laws.gravity;
+        let mut best: Option<(f64, Kind)> = None;
+        self.grid.for_each_neighbour(me.cell, |cell, shift| {
+            for &j in &self.grid.cells[cell] {
+                if j == i {
+                    continue;
+                }
+                let other = &bodies[j as usize];
+                let tau = now - other.time;
+                let (pj, vj) = if GRAVITY {
+                    (
+                        other.pos + other.vel * tau + 0.5 * g * tau * tau,
+                        other.vel + g * tau,
+                    )
+                } else {
+                    (other.pos + other.vel * tau, other.vel)
+                };
+                let d = if IMAGES_BY_CELL {
+                    pj + shift - me.pos
+                } else {
+                    laws.boundary.separation(me.pos, pj, laws.size)
+                };
+                if let Some(t) = pair_time(d, vj - me.vel, me.radius + other.radius) {
+                    if best.is_none_or(|(b, _)| t < b) {
+                        best = Some((
+                            t,
+                            Kind::Pair {
+                                partner: j,
+                                gen: other.gen,
+                            },
+                        ));
+                    }
+                }
+            }
+        });
+        best
     }
 
     fn collide_pair(&mut self, i: u32, j: u32) {

@@ -38,8 +38,8 @@ impl<K: Copy> EventQueue<K> {
         }
     }
 
-    /// Event times are finite (events past the step are never queued), so
-    /// plain comparisons order them.
+    /// Event times are finite (the method queues no other), so plain
+    /// comparisons order them.
     #[inline]
     fn before(a: (f64, u32), b: (f64, u32)) -> bool {
         a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
@@ -65,6 +65,24 @@ impl<K: Copy> EventQueue<K> {
             }
             (false, false) => self.remove_at(at as usize),
             (true, false) => {}
+        }
+    }
+
+    /// The earliest event, left in the queue.
+    pub fn peek(&self) -> Option<Event<K>> {
+        let &(_, top) = self.heap.first()?;
+        self.events[top as usize]
+    }
+
+    /// Moves the clock's zero to `shift`: every time drops by it. Rounding
+    /// is monotonic, so time order is kept (two times can become equal,
+    /// which only changes which of two simultaneous events goes first).
+    pub fn shift_times(&mut self, shift: f64) {
+        for entry in &mut self.heap {
+            entry.0 -= shift;
+        }
+        for event in self.events.iter_mut().flatten() {
+            event.time -= shift;
         }
     }
 
