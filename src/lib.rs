@@ -28,6 +28,7 @@ pub mod presets;
 pub mod resolution;
 pub mod scene;
 pub mod stats;
+pub mod stress;
 pub mod world;
 
 pub use boundary::Boundary;

@@ -27,6 +27,8 @@ enum Command {
     Bench(lab::bench::BenchArgs),
     /// Chart speed against accuracy for every method, against `exact`.
     Accuracy(lab::accuracy::AccuracyArgs),
+    /// Run the stability suite under every method: where each one fails.
+    Stress(lab::stress::StressArgs),
 }
 
 fn main() -> ExitCode {
@@ -35,6 +37,7 @@ fn main() -> ExitCode {
         Some(Command::Run(args)) => headless::run(&args),
         Some(Command::Bench(args)) => lab::bench::run(&args),
         Some(Command::Accuracy(args)) => lab::accuracy::run(&args),
+        Some(Command::Stress(args)) => lab::stress::run(&args),
         None => app::run(cli.window),
     };
     match result {

@@ -30,6 +30,7 @@
 //! radius = [0.2, 0.4]
 //! density = 1.0                # kg/m²: mass = density·π·r²
 //! speed = [0.5, 2.0]
+//! overlap = 0.0                # optional: overlap allowed, fraction of a diameter
 //! ```
 
 use crate::boundary::Boundary;
@@ -148,6 +149,15 @@ pub struct FillSpec {
     /// Smallest and largest speed (m/s), in random directions.
     #[serde(default)]
     pub speed: [f64; 2],
+    /// Largest overlap allowed with discs already placed, as a fraction of
+    /// the smaller diameter: 0 (the default) for none; up to 0.5 for a
+    /// deliberately dense start.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub overlap: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 fn one() -> f64 {
@@ -298,6 +308,12 @@ impl Scene {
             if 2.0 * r1 > w.size.min_element() {
                 return Err(bad("fill.radius".into(), "discs wider than the box"));
             }
+            if !(0.0..=0.5).contains(&f.overlap) {
+                return Err(bad(
+                    "fill.overlap".into(),
+                    "must be a fraction of a diameter between 0 and 0.5",
+                ));
+            }
         }
         Ok(())
     }
@@ -384,7 +400,8 @@ fn fits(boundary: Boundary, size: DVec2, pos: DVec2, radius: f64) -> bool {
     }
 }
 
-/// Adds `fill.count` seeded random discs that overlap nothing already there.
+/// Adds `fill.count` seeded random discs that overlap nothing already there
+/// (or no more than `fill.overlap` of the smaller diameter).
 fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
     let mut rng = ChaCha8Rng::seed_from_u64(fill.seed);
     let first = world.particles.len();
@@ -398,7 +415,15 @@ fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
                 rng.random_range(radius..=world.size.x - radius),
                 rng.random_range(radius..=world.size.y - radius),
             );
-            world.is_free(pos, radius).then_some(pos)
+            let free = if fill.overlap > 0.0 {
+                world.particles.iter().all(|q| {
+                    let allowed = fill.overlap * 2.0 * radius.min(q.radius);
+                    (q.pos - pos).length() >= radius + q.radius - allowed
+                })
+            } else {
+                world.is_free(pos, radius)
+            };
+            free.then_some(pos)
         });
         let Some(pos) = spot else {
             return Err(format!(

@@ -136,3 +136,55 @@ fn run_takes_method_broad_phase_and_substeps_and_says_what_auto_chose() {
         stderr(&out)
     );
 }
+
+/// The fields of one CSV line (double-quoted fields, inner quotes doubled).
+fn csv_fields(line: &str) -> Vec<String> {
+    let (mut fields, mut field, mut quoted) = (Vec::new(), String::new(), false);
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                chars.next();
+                field.push('"');
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => fields.push(std::mem::take(&mut field)),
+            (c, _) => field.push(c),
+        }
+    }
+    fields.push(field);
+    fields
+}
+
+#[test]
+fn stress_quick_writes_table_csv_and_chart_for_every_scenario_and_method() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("made/by/stress");
+    let out = impulse(&["stress", "--quick", "--out", out_dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("| scenario | seed | impulse | verlet | exact | auto |"));
+    for name in ["stress.md", "stress.csv", "stress.png", "stress.svg"] {
+        let len = std::fs::metadata(out_dir.join(name)).map_or(0, |m| m.len());
+        assert!(len > 0, "{name} missing or empty");
+    }
+    let md = std::fs::read_to_string(out_dir.join("stress.md")).unwrap();
+    assert!(md.contains("quick") && md.contains("impulse stress --quick"));
+
+    let csv = std::fs::read_to_string(out_dir.join("stress.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 56, "{csv}");
+    assert_eq!(lines[0], "scenario,method,figure_name,figure,pass,summary");
+    let rows: Vec<Vec<String>> = lines[1..].iter().map(|l| csv_fields(l)).collect();
+    assert!(rows.iter().all(|r| r.len() == 6), "{csv}");
+    for scenario in impulse::stress::scenarios() {
+        for method in impulse::stress::METHODS {
+            let method = method.to_string();
+            let found = rows
+                .iter()
+                .filter(|r| r[0] == scenario.key && r[1] == method);
+            assert_eq!(found.count(), 1, "{} × {method}", scenario.key);
+        }
+    }
+    assert!(rows.iter().all(|r| r[4] == "true" || r[4] == "false"));
+}

@@ -1,4 +1,6 @@
-//! Line charts for the lab commands, written as a PNG and an SVG side by side.
+//! Charts for the lab commands, written as a PNG and an SVG side by side: line
+//! charts ([`Chart`]) and grid charts, a heat map of labelled cells ([`Grid`],
+//! in `grid.rs`).
 //!
 //! A [`Chart`] is a title, two axis labels, a linear or logarithmic scale per
 //! axis, some [`Series`] and optionally one highlighted series (say a Pareto
@@ -36,9 +38,11 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Once, OnceLock};
 
 mod axis;
+mod grid;
 mod text;
 
 use axis::*;
+pub use grid::{font_has, write_grid, Grid, GridCell};
 use text::*;
 
 /// One line of a chart: points joined in the given order, with a marker on
