@@ -323,3 +323,75 @@ fn exact_carries_its_events_between_steps_and_sees_edits() {
         .zip(&before)
         .all(|(p, &q)| p.pos == q && p.vel == DVec2::ZERO));
 }
+
+#[test]
+fn impulse_holds_a_stack_at_rest_whatever_the_masses() {
+    // A column of ten discs in a shaft one diameter wide, the top one 400×
+    // heavier, dropped from a small height with e = 0.5: it must come to
+    // rest (no jitter) with overlaps no deeper than the resting slop
+    // allows, and the heavy disc must not sink into the ones below.
+    use impulse::method::resting::SLOP;
+    let r = 0.25;
+    let mut w = World::new(DVec2::new(2.0 * r, 20.0));
+    w.gravity = DVec2::new(0.0, -9.81);
+    w.restitution = 0.5;
+    w.wall_restitution = 0.5;
+    w.method = Setting::Fixed(Method::Impulse);
+    for k in 0..10 {
+        let mass = if k == 9 { 400.0 } else { 1.0 };
+        w.particles
+            .push(disc([r, r + k as f64 * 2.2 * r], [0.0, 0.0], mass, r));
+    }
+    for _ in 0..(6 * 240) {
+        w.step(1.0 / 240.0);
+    }
+    let unit = 9.81 * r; // m·g·r per unit mass
+    for (k, p) in w.particles.iter().enumerate() {
+        assert!(
+            0.5 * p.vel.length_squared() < 1e-9 * unit,
+            "disc {k} still moves at {:?}",
+            p.vel
+        );
+        // Resting on the floor plus k diameters, less at most 2·slop per contact.
+        let rest_height = r + k as f64 * 2.0 * r;
+        let sink = rest_height - p.pos.y;
+        assert!(
+            sink <= 2.0 * SLOP * r * k as f64 + 1e-9,
+            "disc {k} sank {sink:.2e} m"
+        );
+    }
+}
+
+#[test]
+fn impulse_under_gravity_still_bounces_impacts_with_restitution() {
+    // Resting contact must not swallow real impacts: a disc dropped from
+    // height H on the floor, and one dropped on a resting disc, rebound to
+    // e²·H (to the step's resolution).
+    let (g, e, r, drop) = (9.81, 0.5, 0.25, 2.0);
+    let mut w = World::new(DVec2::new(4.0, 10.0));
+    w.gravity = DVec2::new(0.0, -g);
+    w.restitution = e;
+    w.wall_restitution = e;
+    w.method = Setting::Fixed(Method::Impulse);
+    w.particles.push(disc([1.0, r + drop], [0.0, 0.0], 1.0, r)); // onto the floor
+    w.particles.push(disc([3.0, r], [0.0, 0.0], 1e6, r)); // a resting, heavy base
+    w.particles
+        .push(disc([3.0, 3.0 * r + drop], [0.0, 0.0], 1.0, r)); // onto the base
+    let fall_time = (2.0 * drop / g).sqrt();
+    let mut peaks = [f64::NEG_INFINITY; 2];
+    let dt = 1.0 / 2400.0;
+    while w.time < 2.2 * fall_time {
+        w.step(dt);
+        if w.time > 1.2 * fall_time {
+            peaks[0] = peaks[0].max(w.particles[0].pos.y - r);
+            peaks[1] = peaks[1].max(w.particles[2].pos.y - 3.0 * r);
+        }
+    }
+    for peak in peaks {
+        let expected = e * e * drop;
+        assert!(
+            (peak - expected).abs() < 0.02 * drop,
+            "rebound to {peak:.3} m, expected {expected:.3} m"
+        );
+    }
+}

@@ -26,6 +26,10 @@ pub(crate) fn impulse_substep(
     rule: Rule,
     stats: &mut StepStats,
 ) {
+    if rule == Rule::IMPULSE && super::resting::applies(laws) {
+        super::resting::substep(pipeline, particles, laws, h, stats);
+        return;
+    }
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
     let report = resolve_contacts(particles, &pipeline.contacts, laws.restitution, rule);

@@ -3,7 +3,7 @@
 //! | method | idea | where it fails |
 //! |---|---|---|
 //! | `seed` | the presentation's: every overlapping pair gets the collision law, half-each push-apart, one step | sticky pairs, centre of mass moves, tunnelling |
-//! | `impulse` | approach check, restitution, inverse-mass push-apart, K substeps | tunnelling when travel per substep > radius; simultaneous contacts |
+//! | `impulse` | approach check, restitution, inverse-mass push-apart, K substeps; under gravity with e < 1, impacts then resting contact with shock propagation ([`resting`]) | tunnelling when travel per substep > radius; simultaneous contacts |
 //! | `verlet` | position Verlet, overlap projection, velocity implied by positions, K substeps | collisions come out nearly inelastic; restitution is ignored |
 //! | `exact` | event-driven hard discs: earliest impact first, no overlap ever | cost grows with the collision rate; inelastic collapse needs a rule |
 //!
@@ -12,6 +12,7 @@
 
 pub mod discrete;
 pub mod exact;
+pub mod resting;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::fmt;

@@ -56,9 +56,9 @@ use queue::{Event, EventQueue};
 /// TC-model window, as a fraction of the step.
 pub const TC_FRACTION: f64 = 1e-4;
 /// Event budget per disc and step.
-pub const EVENTS_PER_DISC: usize = 10_000;
+pub const EVENTS_PER_DISC: usize = 1_000;
 /// Event budget per step on top of the per-disc one.
-pub const EVENTS_BASE: usize = 1_000_000;
+pub const EVENTS_BASE: usize = 100_000;
 
 /// The exact method's state between steps. While nobody edits the world,
 /// the next step continues the event calendar where the last one stopped
