@@ -395,3 +395,39 @@ fn impulse_under_gravity_still_bounces_impacts_with_restitution() {
         );
     }
 }
+
+#[test]
+fn exact_separates_an_overlapping_start_without_setting_anything_moving() {
+    // Hard discs never overlap by themselves; a scene that starts that way
+    // is pushed apart once, by inverse mass: no velocity, no drift of the
+    // centre of mass.
+    let mut w = with_method(
+        world_with(
+            [20.0, 20.0],
+            Boundary::Open,
+            vec![
+                disc([10.0, 10.0], [0.0, 0.0], 1.0, 0.5),
+                disc([10.6, 10.0], [0.0, 0.0], 1e6, 0.5),
+                disc([10.3, 10.4], [0.0, 0.0], 3.0, 0.5),
+                disc([10.3, 10.4], [0.0, 0.0], 2.0, 0.5), // coincident
+            ],
+        ),
+        Method::Exact,
+    );
+    let com = w.metrics().center_of_mass;
+    w.step(0.01);
+    let after = w.metrics();
+    assert!((after.center_of_mass - com).length() < 1e-12);
+    assert_eq!(after.kinetic_energy, 0.0);
+    let ps = &w.particles;
+    for i in 0..ps.len() {
+        for j in i + 1..ps.len() {
+            let gap = (ps[i].pos - ps[j].pos).length() - ps[i].radius - ps[j].radius;
+            assert!(
+                gap > -1e-9,
+                "discs {i} and {j} still overlap by {:.1e}",
+                -gap
+            );
+        }
+    }
+}

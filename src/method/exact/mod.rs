@@ -29,6 +29,9 @@
 //!   [`EVENTS_PER_DISC`]·n + [`EVENTS_BASE`] events per step bounds the work
 //!   in any case; hitting it ends the step early and is reported
 //!   (`StepStats::truncated`).
+//! - Overlap present at the start (a scene may place discs that way) is
+//!   pushed apart once, by inverse mass and positions only, so nothing
+//!   starts moving and the centre of mass stays.
 //! - Speed: the discs are copied into a local array sorted by cell, so
 //!   neighbours sit close in memory, and each cell keeps its first few discs
 //!   inline; the results are written back in the caller's order. [`Exact`]
@@ -59,6 +62,12 @@ pub const TC_FRACTION: f64 = 1e-4;
 pub const EVENTS_PER_DISC: usize = 1_000;
 /// Event budget per step on top of the per-disc one.
 pub const EVENTS_BASE: usize = 100_000;
+/// Overlap, as a fraction of the two radii, that set-up pushes apart
+/// (anything shallower is round-off, which the collide-now rule handles).
+pub const OVERLAP_TOLERANCE: f64 = 1e-9;
+/// Most sweeps of push-apart per set-up; what is left waits for the next
+/// step, which starts afresh.
+pub const SEPARATION_SWEEPS: usize = 100;
 
 /// The exact method's state between steps. While nobody edits the world,
 /// the next step continues the event calendar where the last one stopped
@@ -156,6 +165,8 @@ struct Sim {
     truncated: bool,
     /// The time [`Sim::finish`] put every disc at.
     finished_at: f64,
+    /// Overlaps were left after separating: start afresh next step.
+    overlapping: bool,
 }
 
 impl Sim {
@@ -180,6 +191,7 @@ impl Sim {
             max_overlap: 0.0,
             truncated: false,
             finished_at: 0.0,
+            overlapping: false,
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -216,8 +228,72 @@ impl Sim {
             sim.order.push(i);
             sim.grid.insert(k as u32, cell);
         }
+        sim.overlapping = !sim.separate_overlaps();
         sim.predict_all();
         sim
+    }
+
+    /// Pushes overlapping discs apart (positions only, shares by inverse
+    /// mass, so no velocity and no momentum appear and the centre of mass
+    /// stays), sweeping up to [`SEPARATION_SWEEPS`] times; returns whether
+    /// every overlap deeper than [`OVERLAP_TOLERANCE`] is gone. Hard discs
+    /// never overlap by themselves, but a scene may start that way; a disc
+    /// pushed across a cell border is moved to its new cell.
+    fn separate_overlaps(&mut self) -> bool {
+        for _ in 0..SEPARATION_SWEEPS {
+            let mut moved = false;
+            for i in 0..self.bodies.len() as u32 {
+                let cell = self.bodies[i as usize].cell;
+                let mut partners: Vec<u32> = Vec::new();
+                self.grid.for_each_neighbour(cell, |c, _| {
+                    partners.extend(self.grid.cells[c].iter().filter(|&&j| j > i));
+                });
+                for j in partners {
+                    moved |= self.push_apart(i, j);
+                }
+            }
+            if !moved {
+                return true;
+            }
+            for k in 0..self.bodies.len() as u32 {
+                let b = &mut self.bodies[k as usize];
+                if self.laws.boundary == Boundary::Box {
+                    let lo = DVec2::splat(b.radius);
+                    b.pos = b.pos.clamp(lo, (self.laws.size - lo).max(lo));
+                } else if self.laws.boundary == Boundary::Periodic {
+                    b.pos = b.pos.rem_euclid(self.laws.size);
+                }
+                let to = self.grid.cell_of(b.pos);
+                if to != b.cell {
+                    let from = b.cell;
+                    b.cell = to;
+                    self.grid.remove(k, from);
+                    self.grid.insert(k, to);
+                }
+            }
+        }
+        false
+    }
+
+    /// Moves discs `i` and `j` apart if they overlap beyond the tolerance.
+    fn push_apart(&mut self, i: u32, j: u32) -> bool {
+        let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let reach = a.radius + b.radius;
+        let dist = d.length();
+        let depth = reach - dist;
+        if depth <= OVERLAP_TOLERANCE * reach {
+            return false;
+        }
+        let normal = if dist > 0.0 {
+            d / dist
+        } else {
+            crate::narrow_phase::COINCIDENT_NORMAL
+        };
+        let total = a.mass + b.mass;
+        self.bodies[i as usize].pos -= normal * (depth * b.mass / total);
+        self.bodies[j as usize].pos += normal * (depth * a.mass / total);
+        true
     }
 
     /// Whether the discs are exactly as the last step left them, under the
@@ -227,6 +303,7 @@ impl Sim {
             && laws.gravity == self.laws.gravity
             && laws.boundary == self.laws.boundary;
         same_geometry
+            && !self.overlapping
             && particles.len() == self.bodies.len()
             && self.order.iter().zip(&self.bodies).all(|(&i, b)| {
                 let p = &particles[i as usize];
