@@ -85,7 +85,7 @@ fn collapse(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     Ok(Outcome {
         figure: work,
         summary: format!(
-            "{work:.1} per disc at most; energy left {:.1e}{}",
+            "{work:.2} per disc at most; energy left {:.1e}{}",
             ke / ke0,
             if rose { ", energy rose" } else { "" }
         ),

@@ -53,6 +53,7 @@ use std::time::Instant;
 mod grid;
 mod kinematics;
 mod queue;
+mod simultaneous;
 
 use queue::{Event, EventQueue};
 
@@ -65,6 +66,9 @@ pub const EVENTS_BASE: usize = 100_000;
 /// Overlap, as a fraction of the two radii, that set-up pushes apart
 /// (anything shallower is round-off, which the collide-now rule handles).
 pub const OVERLAP_TOLERANCE: f64 = 1e-9;
+/// Two discs this close to touching (as a fraction of the two radii) when
+/// another collision happens count as colliding at the same instant.
+pub const SIMULTANEOUS_TOLERANCE: f64 = 1e-9;
 /// Most sweeps of push-apart per set-up; what is left waits for the next
 /// step, which starts afresh.
 pub const SEPARATION_SWEEPS: usize = 100;
@@ -545,6 +549,15 @@ impl Sim {
     fn collide_pair(&mut self, i: u32, j: u32) {
         self.advance_to(i, self.now);
         self.advance_to(j, self.now);
+        if self.queue.peek().is_some_and(|next| next.time <= self.now) {
+            // Another event at this very instant: maybe a disc meeting two
+            // others at once.
+            let touches = self.touches_now(i, j);
+            if touches.len() > 1 {
+                self.collide_together(&touches);
+                return;
+            }
+        }
         let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
         let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
         let dist = d.length();
@@ -568,6 +581,73 @@ impl Sim {
         }
         self.predict(i);
         self.predict(j);
+    }
+
+    /// The contacts, approaching and touching right now (to round-off), of
+    /// `i` and `j` with each other and with their neighbours; each disc
+    /// involved is advanced to now. Pairs are (body, body, normal).
+    fn touches_now(&mut self, i: u32, j: u32) -> Vec<(u32, u32, DVec2)> {
+        let mut around = Vec::new();
+        for d in [i, j] {
+            let cell = self.bodies[d as usize].cell;
+            self.grid.for_each_neighbour(cell, |c, _| {
+                around.extend(self.grid.cells[c].iter().map(|&k| (d, k)));
+            });
+        }
+        let mut touches = Vec::new();
+        for (d, k) in around {
+            if k == d || (d == j && k == i) {
+                continue;
+            }
+            if touches.iter().any(|&(x, y, _)| (x, y) == (k, d)) {
+                continue;
+            }
+            self.advance_to(k, self.now);
+            let (a, b) = (self.bodies[d as usize], self.bodies[k as usize]);
+            let sep = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+            let dist = sep.length();
+            let reach = a.radius + b.radius;
+            if dist > 0.0 && dist <= reach * (1.0 + SIMULTANEOUS_TOLERANCE) {
+                let normal = sep / dist;
+                if (b.vel - a.vel).dot(normal) < 0.0 {
+                    touches.push((d, k, normal));
+                }
+            }
+        }
+        touches
+    }
+
+    /// Resolves `touches` together (see [`simultaneous`]).
+    fn collide_together(&mut self, touches: &[(u32, u32, DVec2)]) {
+        let mut ids: Vec<u32> = touches.iter().flat_map(|&(a, b, _)| [a, b]).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        let slot = |k: u32| ids.binary_search(&k).unwrap_or(0);
+        let masses: Vec<f64> = ids.iter().map(|&k| self.bodies[k as usize].mass).collect();
+        let velocities: Vec<DVec2> = ids.iter().map(|&k| self.bodies[k as usize].vel).collect();
+        let rapid = ids
+            .iter()
+            .any(|&k| self.now - self.bodies[k as usize].last_hit < self.t_c);
+        let e = if rapid { 1.0 } else { self.laws.restitution };
+        let list: Vec<simultaneous::Touch> = touches
+            .iter()
+            .map(|&(a, b, normal)| simultaneous::Touch {
+                a: slot(a),
+                b: slot(b),
+                normal,
+            })
+            .collect();
+        let after = simultaneous::simultaneous_velocities(&masses, &velocities, &list, e);
+        for (&k, v) in ids.iter().zip(after) {
+            let body = &mut self.bodies[k as usize];
+            body.vel = v;
+            body.gen += 1;
+            body.last_hit = self.now;
+        }
+        self.collisions += touches.len();
+        for &k in &ids {
+            self.predict(k);
+        }
     }
 
     fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
