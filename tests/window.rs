@@ -5,6 +5,7 @@
 //! xdotool (`.ci/run` installs them). Without them the tests print why they
 //! skip; with `CI` set, a missing package is a failure.
 
+use impulse::Scene;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
@@ -439,4 +440,58 @@ fn screenshot_saves_the_frame_as_a_png() {
         differing > 20_000,
         "the frame shows discs and text, {differing} pixels differ"
     );
+}
+
+#[test]
+fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("presets") else {
+        return;
+    };
+    let out = tempfile::tempdir().expect("temp dir");
+    let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
+    let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
+    app.move_to([640.0, 400.0]);
+
+    // Key 2 opens "heavy hits light", exactly as its file builds.
+    app.xdo(&["key", "2"]);
+    let opened = app.wait_frames(3);
+    let path = "assets/scenes/preset-2-heavy-hits-light.toml";
+    assert_eq!(opened["scene_origin"], path);
+    let text = std::fs::read_to_string(asset("preset-2-heavy-hits-light.toml")).unwrap();
+    let built = Scene::parse(&text, path).unwrap().build(path).unwrap();
+    assert_eq!(
+        opened["particles"],
+        serde_json::to_value(&built.particles).unwrap()
+    );
+
+    // Let it run into the collision, pause, save.
+    app.xdo(&["key", "space"]);
+    app.wait_frames(30);
+    app.xdo(&["key", "space"]);
+    let paused = app.wait_frames(3);
+    assert!(paused["time"].as_f64().unwrap() > 0.0);
+    app.xdo(&["key", "ctrl+s"]);
+    app.wait_frames(3);
+    let saved: Vec<PathBuf> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    assert_eq!(saved.len(), 1, "one scene saved in {out_dir}: {saved:?}");
+    let reloaded = Scene::load(&saved[0]).unwrap().build("saved").unwrap();
+    assert_eq!(
+        serde_json::to_value(&reloaded.particles).unwrap(),
+        paused["particles"],
+        "the saved file holds the state bit for bit"
+    );
+    app.quit();
+
+    // Reopening it shows the same discs.
+    let saved_path = saved[0].to_str().unwrap().to_string();
+    let again = Sandbox::start(&x, &["--paused", &saved_path]);
+    let reopened = again.wait_frames(3);
+    assert_eq!(reopened["particles"], paused["particles"]);
+    assert_eq!(reopened["dt"], paused["dt"]);
+    again.quit();
 }

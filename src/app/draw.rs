@@ -47,6 +47,8 @@ pub struct Overlays {
     pub hud: bool,
     /// The key list.
     pub help: bool,
+    /// The preset menu.
+    pub presets: bool,
 }
 
 impl Default for Overlays {
@@ -57,6 +59,7 @@ impl Default for Overlays {
             readouts: ReadoutScope::Selected,
             hud: true,
             help: false,
+            presets: false,
         }
     }
 }

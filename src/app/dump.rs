@@ -28,6 +28,10 @@ pub struct StateDump<'a> {
     pub selected: Option<usize>,
     /// Disc held by the mouse.
     pub held: Option<usize>,
+    /// The open scene's name.
+    pub scene_name: Option<String>,
+    /// Where the open scene came from (a file, a preset, the default).
+    pub scene_origin: String,
     /// Method setting ("auto" or a name).
     pub method: String,
     /// Broad-phase setting.
@@ -82,6 +86,8 @@ impl<'a> StateDump<'a> {
             camera: camera.into(),
             selected: None,
             held: None,
+            scene_name: None,
+            scene_origin: String::new(),
             method: world.method.to_string(),
             broad_phase: world.broad_phase.to_string(),
             substeps: world.substeps.to_string(),

@@ -6,6 +6,7 @@ use macroquad::prelude::*;
 /// Draws `lines` on a translucent panel with its top-left corner at (x, y);
 /// returns the panel's size.
 pub fn text_panel(x: f32, y: f32, lines: &[String], font: f32, opacity: f32) -> Vec2 {
+    let lines: Vec<String> = lines.iter().map(|l| screen_text(l)).collect();
     let pad = 0.4 * font;
     let line_height = 1.15 * font;
     let width = lines
@@ -22,6 +23,57 @@ pub fn text_panel(x: f32, y: f32, lines: &[String], font: f32, opacity: f32) -> 
         draw_text(line, x + pad, baseline, font, WHITE);
     }
     size
+}
+
+/// `text` in the characters the window's built-in font has: a few symbols
+/// scene files use are spelt out (π → pi, en dash → hyphen, 10⁸ → 10^8), and
+/// anything else outside ASCII becomes "?".
+pub fn screen_text(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut in_power = false;
+    for c in text.chars() {
+        let power = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻".find(c).map(|_| c);
+        if let Some(p) = power {
+            if !in_power {
+                out.push('^');
+            }
+            in_power = true;
+            let digit = match p {
+                '⁰' => '0',
+                '¹' => '1',
+                '²' => '2',
+                '³' => '3',
+                '⁴' => '4',
+                '⁵' => '5',
+                '⁶' => '6',
+                '⁷' => '7',
+                '⁸' => '8',
+                '⁹' => '9',
+                _ => '-',
+            };
+            out.push(digit);
+            continue;
+        }
+        in_power = false;
+        match c {
+            c if c.is_ascii() => out.push(c),
+            'π' => out.push_str("pi"),
+            '–' | '—' | '−' => out.push('-'),
+            '×' | '·' => out.push(if c == '×' { 'x' } else { '*' }),
+            '≤' => out.push_str("<="),
+            '≥' => out.push_str(">="),
+            '≈' => out.push('~'),
+            '°' => out.push_str(" deg"),
+            'µ' | 'μ' => out.push('u'),
+            '½' => out.push_str("1/2"),
+            '¼' => out.push_str("1/4"),
+            '’' | '‘' => out.push('\''),
+            '“' | '”' => out.push('"'),
+            '…' => out.push_str("..."),
+            _ => out.push('?'),
+        }
+    }
+    out
 }
 
 /// Every key, as the help overlay lists it.
@@ -56,11 +108,50 @@ pub const HELP: &[(&str, &str)] = &[
     ("Delete / Backspace", "delete the selected disc"),
     ("C", "clear all discs"),
     ("R", "reset the scene"),
+    ("1 … 9, 0 / P", "open a classroom preset / the preset menu"),
+    ("Ctrl+N", "new empty box"),
+    ("Ctrl+S", "save the scene (reopens exactly)"),
     ("F11", "full screen"),
     ("Esc", "deselect / close this help"),
     ("H or F1", "this help"),
     ("Ctrl+Q", "quit"),
 ];
+
+/// The preset menu, centred: key, name and description of each preset.
+pub fn draw_preset_menu(viewport: Vec2, font: f32, entries: &[(String, String, String)]) {
+    let mut lines = vec![
+        "Presets - press the key (or click a line); P closes".to_string(),
+        String::new(),
+    ];
+    for (key, name, description) in entries {
+        lines.push(screen_text(&format!("{key:<8}{name}")));
+        lines.push(screen_text(&format!("        {description}")));
+    }
+    let width = lines
+        .iter()
+        .map(|l| measure_text(l, None, font as u16, 1.0).width)
+        .fold(0.0, f32::max);
+    let height = 1.15 * font * lines.len() as f32;
+    let x = ((viewport.x - width) * 0.5).max(0.0);
+    let y = ((viewport.y - height) * 0.5).max(0.0);
+    text_panel(x, y, &lines, font, 0.92);
+}
+
+/// One line of text centred at the bottom of the window, on a dark band.
+pub fn draw_caption(text: &str, viewport: Vec2, font: f32) {
+    let text = &screen_text(text);
+    let width = measure_text(text, None, font as u16, 1.0).width;
+    let x = ((viewport.x - width) * 0.5).max(10.0);
+    let y = viewport.y - 0.6 * font;
+    draw_rectangle(
+        x - 8.0,
+        y - font,
+        width + 16.0,
+        1.3 * font,
+        Color::new(0.0, 0.0, 0.0, 0.55),
+    );
+    draw_text(text, x, y, font, Color::new(0.95, 0.95, 0.95, 1.0));
+}
 
 /// The help overlay, centred.
 pub fn draw_help(viewport: Vec2, font: f32) {
@@ -126,6 +217,7 @@ pub fn format_metres(m: f64) -> String {
 
 /// A short message at the bottom centre.
 pub fn draw_toast(message: &str, viewport: Vec2, font: f32) {
+    let message = &screen_text(message);
     let width = measure_text(message, None, font as u16, 1.0).width + 0.8 * font;
     let x = (viewport.x - width) * 0.5;
     text_panel(
@@ -135,6 +227,22 @@ pub fn draw_toast(message: &str, viewport: Vec2, font: f32) {
         font,
         0.85,
     );
+}
+
+#[cfg(test)]
+mod screen_text_tests {
+    use super::screen_text;
+
+    #[test]
+    fn symbols_are_spelt_out_for_the_builtin_font() {
+        assert_eq!(screen_text("Blocks that count π"), "Blocks that count pi");
+        assert_eq!(
+            screen_text("Maxwell–Boltzmann at 10⁸, 10⁻³"),
+            "Maxwell-Boltzmann at 10^8, 10^-3"
+        );
+        assert_eq!(screen_text("a ≤ b, 90°, ✓"), "a <= b, 90 deg, ?");
+        assert_eq!(screen_text("plain ASCII"), "plain ASCII");
+    }
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Keyboard and mouse: every binding the help overlay lists lives here.
 
 use super::interaction::Released;
-use super::App;
+use super::{scenes, App};
 use glam::DVec2;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
@@ -76,7 +76,7 @@ impl App {
         if is_key_pressed(KeyCode::Space) {
             self.clock.paused = !self.clock.paused;
         }
-        if is_key_pressed(KeyCode::N) {
+        if is_key_pressed(KeyCode::N) && !ctrl() {
             self.clock.single_step();
         }
         if is_key_pressed(KeyCode::LeftBracket) {
@@ -90,6 +90,38 @@ impl App {
         self.handle_view_keys();
         self.handle_overlay_keys();
         self.handle_world_keys();
+        self.handle_scene_keys();
+    }
+
+    fn handle_scene_keys(&mut self) {
+        const DIGITS: [KeyCode; 10] = [
+            KeyCode::Key1,
+            KeyCode::Key2,
+            KeyCode::Key3,
+            KeyCode::Key4,
+            KeyCode::Key5,
+            KeyCode::Key6,
+            KeyCode::Key7,
+            KeyCode::Key8,
+            KeyCode::Key9,
+            KeyCode::Key0,
+        ];
+        if ctrl() {
+            if is_key_pressed(KeyCode::S) {
+                self.save_scene();
+            }
+            if is_key_pressed(KeyCode::N) {
+                self.open_preset(scenes::PRESETS.len() - 1);
+            }
+            return;
+        }
+        if let Some(k) = DIGITS.iter().position(|&key| is_key_pressed(key)) {
+            self.overlays.presets = false;
+            self.open_preset(k);
+        }
+        if is_key_pressed(KeyCode::P) {
+            self.overlays.presets = !self.overlays.presets;
+        }
     }
 
     fn handle_view_keys(&mut self) {
@@ -141,7 +173,9 @@ impl App {
             o.help = !o.help;
         }
         if is_key_pressed(KeyCode::Escape) {
-            if o.help {
+            if o.presets {
+                o.presets = false;
+            } else if o.help {
                 o.help = false;
             } else {
                 self.selected = None;

@@ -10,6 +10,7 @@ mod dump;
 mod hud;
 mod input;
 mod interaction;
+mod scenes;
 
 use camera::Camera;
 use clock::FixedStepClock;
@@ -42,6 +43,9 @@ pub struct WindowOptions {
     /// Close the window after this many seconds of real time.
     #[arg(long, value_name = "SECONDS", value_parser = crate::headless::positive_seconds)]
     pub exit_after: Option<f64>,
+    /// Folder for saved scenes (Ctrl+S); created when first needed.
+    #[arg(long, value_name = "DIR", default_value = "impulse-out")]
+    pub out: PathBuf,
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = window_size)]
     pub size: (i32, i32),
@@ -198,7 +202,11 @@ impl App {
     }
 
     fn toast(&mut self, message: impl Into<String>) {
-        self.toast = Some((message.into(), get_time() + 3.0));
+        self.toast_for(message, 3.0);
+    }
+
+    fn toast_for(&mut self, message: impl Into<String>, seconds: f64) {
+        self.toast = Some((message.into(), get_time() + seconds));
     }
 
     fn reset_scene(&mut self) {
@@ -245,6 +253,27 @@ impl App {
             if get_time() < *until {
                 hud::draw_toast(message, viewport, self.font);
             }
+        }
+        if let Some(description) = &self.scene.description {
+            if self.overlays.hud {
+                hud::draw_caption(description, viewport, self.font);
+            }
+        }
+        if self.overlays.presets {
+            let entries: Vec<(String, String, String)> = scenes::PRESETS
+                .iter()
+                .map(|p| {
+                    let scene = Scene::parse(p.text, p.path).ok();
+                    let name = scene.as_ref().and_then(|s| s.name.clone());
+                    let description = scene.and_then(|s| s.description);
+                    (
+                        p.key.to_string(),
+                        name.unwrap_or_else(|| p.path.to_string()),
+                        description.unwrap_or_default(),
+                    )
+                })
+                .collect();
+            hud::draw_preset_menu(viewport, self.font * 0.8, &entries);
         }
         if self.overlays.help {
             hud::draw_help(viewport, self.font);
@@ -355,6 +384,8 @@ impl App {
         state.dt = self.clock.dt;
         state.selected = self.selected;
         state.held = self.gesture.held();
+        state.scene_name = self.scene.name.clone();
+        state.scene_origin = self.scene_origin.clone();
         if let Err(e) = dump::write_state(path, &state) {
             eprintln!("impulse: cannot write state dump {}: {e}", path.display());
         }

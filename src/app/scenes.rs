@@ -1,0 +1,179 @@
+//! Opening and saving scenes from the window: the classroom presets on the
+//! number keys (and a menu), and Ctrl+S, which saves the current state as a
+//! scene file that reopens exactly.
+
+use super::camera::Camera;
+use super::interaction::Gesture;
+use super::App;
+use crate::files::write_atomically;
+use impulse::Scene;
+use std::path::{Path, PathBuf};
+
+/// A preset: the key that opens it, and its scene file (compiled in).
+pub struct Preset {
+    /// The key's label ("1" … "9", "0", or "Ctrl+N").
+    pub key: &'static str,
+    /// Where the file lives in the repository.
+    pub path: &'static str,
+    /// The file's text.
+    pub text: &'static str,
+}
+
+macro_rules! preset {
+    ($key:literal, $file:literal) => {
+        Preset {
+            key: $key,
+            path: concat!("assets/scenes/", $file),
+            text: include_str!(concat!("../../assets/scenes/", $file)),
+        }
+    };
+}
+
+/// The presets, in menu order.
+pub const PRESETS: [Preset; 11] = [
+    preset!("1", "preset-1-head-on.toml"),
+    preset!("2", "preset-2-heavy-hits-light.toml"),
+    preset!("3", "preset-3-light-hits-heavy.toml"),
+    preset!("4", "preset-4-glancing.toml"),
+    preset!("5", "preset-5-inelastic.toml"),
+    preset!("6", "preset-6-cradle.toml"),
+    preset!("7", "preset-7-pi-blocks.toml"),
+    preset!("8", "preset-8-gas.toml"),
+    preset!("9", "preset-9-billiards.toml"),
+    preset!("0", "preset-0-pile.toml"),
+    preset!("Ctrl+N", "preset-empty.toml"),
+];
+
+/// A file name for saving a scene called `name` (letters and digits kept,
+/// the rest turned into single hyphens).
+pub fn slug(name: &str) -> String {
+    let mut out = String::new();
+    for c in name.chars().flat_map(char::to_lowercase) {
+        if c.is_alphanumeric() {
+            out.push(c);
+        } else if !out.ends_with('-') && !out.is_empty() {
+            out.push('-');
+        }
+    }
+    let out = out.trim_end_matches('-').to_string();
+    if out.is_empty() {
+        "scene".into()
+    } else {
+        out
+    }
+}
+
+/// The first of `dir/stem.toml`, `dir/stem-2.toml`, … that does not exist.
+pub fn free_path(dir: &Path, stem: &str) -> PathBuf {
+    let mut path = dir.join(format!("{stem}.toml"));
+    let mut k = 2;
+    while path.exists() {
+        path = dir.join(format!("{stem}-{k}.toml"));
+        k += 1;
+    }
+    path
+}
+
+impl App {
+    /// Opens preset `index` of [`PRESETS`].
+    pub(super) fn open_preset(&mut self, index: usize) {
+        let Some(preset) = PRESETS.get(index) else {
+            return;
+        };
+        match Scene::parse(preset.text, preset.path) {
+            Ok(scene) => self.open_scene(scene, preset.path.to_string()),
+            Err(e) => self.report(format!("Cannot open {}: {e}", preset.path)),
+        }
+    }
+
+    /// Replaces the world with `scene`'s; on an error says why (in the
+    /// window and on the terminal) and keeps the current scene.
+    pub(super) fn open_scene(&mut self, scene: Scene, origin: String) {
+        match scene.build(&origin) {
+            Ok(world) => {
+                self.world = world;
+                self.clock.dt = self
+                    .options
+                    .dt
+                    .or(scene.simulation.dt)
+                    .unwrap_or(crate::headless::DEFAULT_DT);
+                self.camera = Camera::fitting(self.world.size, self.camera.viewport, 30.0);
+                self.selected = None;
+                self.gesture = Gesture::Idle;
+                let name = scene.name.clone().unwrap_or_else(|| origin.clone());
+                self.scene = scene;
+                self.scene_origin = origin;
+                self.toast(format!("Opened {name}"));
+            }
+            Err(e) => self.report(format!("{e} (kept the current scene)")),
+        }
+    }
+
+    /// Saves the current state as a scene file in the output folder; the
+    /// write is atomic, so a failure leaves any older file as it was.
+    pub(super) fn save_scene(&mut self) {
+        let name = self.scene.name.clone();
+        let mut scene =
+            Scene::from_world(&self.world, name.clone(), self.scene.description.clone());
+        scene.simulation.dt = Some(self.clock.dt);
+        let dir = self.options.out.clone();
+        let stem = slug(name.as_deref().unwrap_or("scene"));
+        let result = std::fs::create_dir_all(&dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))
+            .and_then(|()| {
+                let path = free_path(&dir, &stem);
+                write_atomically(&path, scene.to_toml().as_bytes())
+                    .map(|()| path.clone())
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))
+            });
+        match result {
+            Ok(path) => {
+                eprintln!("impulse: saved {}", path.display());
+                self.toast(format!("Saved {}", path.display()));
+            }
+            Err(e) => self.report(format!("Not saved: {e}")),
+        }
+    }
+
+    /// A message for both the window and the terminal.
+    pub(super) fn report(&mut self, message: String) {
+        eprintln!("impulse: {message}");
+        self.toast_for(message, 8.0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slugs_are_file_names() {
+        assert_eq!(slug("Head-on, equal masses"), "head-on-equal-masses");
+        assert_eq!(slug("  Blocks that count π!  "), "blocks-that-count-π");
+        assert_eq!(slug("???"), "scene");
+    }
+
+    #[test]
+    fn free_path_skips_existing_files() {
+        let dir = std::env::temp_dir().join(format!("impulse-free-path-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let first = free_path(&dir, "gas");
+        assert_eq!(first, dir.join("gas.toml"));
+        std::fs::write(&first, "x").unwrap();
+        assert_eq!(free_path(&dir, "gas"), dir.join("gas-2.toml"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn every_preset_parses_and_builds() {
+        for p in &PRESETS {
+            let scene = Scene::parse(p.text, p.path).unwrap_or_else(|e| panic!("{e}"));
+            scene.build(p.path).unwrap_or_else(|e| panic!("{e}"));
+            assert!(
+                scene.name.is_some() && scene.description.is_some(),
+                "{}",
+                p.path
+            );
+        }
+    }
+}
