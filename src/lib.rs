@@ -19,6 +19,7 @@
 pub mod auto;
 pub mod boundary;
 pub mod broad_phase;
+pub mod history;
 pub mod integration;
 pub mod method;
 pub mod metrics;
