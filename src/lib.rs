@@ -21,6 +21,7 @@ pub mod boundary;
 pub mod broad_phase;
 pub mod history;
 pub mod integration;
+pub mod ledger;
 pub mod method;
 pub mod metrics;
 pub mod narrow_phase;

@@ -15,6 +15,7 @@
 //! Overlap is then removed by moving the discs apart along n̂, each by a share
 //! proportional to its inverse mass, so the centre of mass does not move.
 
+use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
 use crate::particle::Particle;
 use glam::DVec2;
@@ -75,16 +76,20 @@ impl Rule {
     };
 }
 
-/// Resolves `contacts` in order with particle restitution `restitution`.
+/// Resolves `contacts` in order with particle restitution `restitution`;
+/// each collision goes into `ledger` (if it is on) at time `time`.
 pub fn resolve_contacts(
     particles: &mut [Particle],
     contacts: &[Contact],
     restitution: f64,
     rule: Rule,
+    ledger: &mut Ledger,
+    time: f64,
 ) -> ResolutionReport {
     let mut report = ResolutionReport::default();
     for c in contacts {
         let (a, b) = pair_mut(particles, c.i as usize, c.j as usize);
+        let before = [a.vel, b.vel];
         let collided = match rule.velocities {
             Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
             Velocities::Always => {
@@ -94,6 +99,16 @@ pub fn resolve_contacts(
             Velocities::Never => false,
         };
         report.collisions += usize::from(collided);
+        if collided && ledger.is_on() {
+            ledger.push(Collision {
+                time,
+                discs: [c.i as usize, c.j as usize],
+                normal: c.normal,
+                masses: [a.mass, b.mass],
+                before,
+                after: [a.vel, b.vel],
+            });
+        }
         match rule.push_apart {
             PushApart::InverseMass => push_apart(a, b, c.normal, c.depth),
             PushApart::HalfEach => {

@@ -4,6 +4,7 @@
 use crate::auto::{self, Plan};
 use crate::boundary::Boundary;
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
+use crate::ledger::Ledger;
 use crate::method::{discrete, exact, Method, Setting};
 use crate::metrics::Metrics;
 use crate::narrow_phase::{find_contacts, Contact};
@@ -44,6 +45,8 @@ pub struct World {
     pub total_wall_hits: u64,
     /// Momentum transferred by the walls since the world was made (kg·m/s).
     pub total_wall_impulse: f64,
+    /// The last collisions, when turned on (`ledger.keep(n)`).
+    pub ledger: Ledger,
     pipeline: Pipeline,
     plan: Option<Plan>,
     plan_key: Option<PlanKey>,
@@ -159,6 +162,7 @@ impl World {
             total_pair_collisions: 0,
             total_wall_hits: 0,
             total_wall_impulse: 0.0,
+            ledger: Ledger::default(),
             pipeline: Pipeline::new(BroadPhaseKind::Brute),
             plan: None,
             plan_key: None,
@@ -239,8 +243,9 @@ impl World {
                 stats.substeps = substeps;
                 self.pipeline.exact.forget();
                 let h = dt / f64::from(substeps);
-                for _ in 0..substeps {
+                for k in 0..substeps {
                     let (pipeline, particles) = (&mut self.pipeline, &mut self.particles);
+                    let (ledger, time) = (&mut self.ledger, self.time + f64::from(k) * h);
                     match method {
                         Method::Verlet => {
                             discrete::verlet_substep(pipeline, particles, &laws, h, &mut stats)
@@ -252,6 +257,8 @@ impl World {
                             h,
                             Rule::SEED,
                             &mut stats,
+                            ledger,
+                            time,
                         ),
                         _ => discrete::impulse_substep(
                             pipeline,
@@ -260,16 +267,21 @@ impl World {
                             h,
                             Rule::IMPULSE,
                             &mut stats,
+                            ledger,
+                            time,
                         ),
                     }
                 }
             }
             Method::Exact => {
                 stats.substeps = 1;
-                simulated = self
-                    .pipeline
-                    .exact
-                    .advance(&mut self.particles, &laws, dt, &mut stats);
+                simulated = self.pipeline.exact.advance(
+                    &mut self.particles,
+                    &laws,
+                    dt,
+                    &mut stats,
+                    (&mut self.ledger, self.time),
+                );
             }
         }
         self.time += simulated;
@@ -372,6 +384,7 @@ impl Clone for World {
             total_pair_collisions: self.total_pair_collisions,
             total_wall_hits: self.total_wall_hits,
             total_wall_impulse: self.total_wall_impulse,
+            ledger: self.ledger.clone(),
             pipeline: Pipeline::new(self.pipeline.kind),
             plan: self.plan.clone(),
             plan_key: self.plan_key,

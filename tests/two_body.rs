@@ -149,3 +149,45 @@ fn slow_deep_overlap_does_not_stick() {
     assert!(w.particles[0].pos.distance(w.particles[1].pos) > 1.0);
     assert!(w.particles[0].vel.x < 0.0 && w.particles[1].vel.x > 0.0);
 }
+
+#[test]
+fn the_ledger_records_each_collision_with_its_momentum_and_energy() {
+    // A glancing collision at e = 0.5 under impulse and exact: the ledger's
+    // entry keeps momentum, loses ½·μ·(1 − e²)·u² of kinetic energy, leaves
+    // the tangential components alone and reverses the normal approach
+    // times e.
+    use impulse::method::{Method, Setting};
+    for method in [Method::Impulse, Method::Exact] {
+        let mut w = world_with(
+            [40.0, 40.0],
+            Boundary::Open,
+            vec![
+                disc([10.0, 20.0], [2.0, 0.0], 1.0, 0.5),
+                disc([14.0, 20.6], [0.0, 0.0], 3.0, 0.5),
+            ],
+        );
+        w.restitution = 0.5;
+        w.method = Setting::Fixed(method);
+        w.ledger.keep(8);
+        for _ in 0..(4 * 240) {
+            w.step(1.0 / 240.0);
+        }
+        let entries: Vec<_> = w.ledger.entries().copied().collect();
+        assert_eq!(entries.len(), 1, "{method:?}: one collision");
+        let c = entries[0];
+        assert_eq!(c.discs, [0, 1]);
+        assert!(c.time > 1.0 && c.time < 2.0, "{}", c.time);
+        let (dp, dke) = c.total_change();
+        assert!(dp.length() < 1e-12, "{method:?}: momentum kept");
+        let u = (c.before[1] - c.before[0]).dot(c.normal);
+        let mu = 1.0 * 3.0 / 4.0;
+        let loss = 0.5 * mu * (1.0 - 0.25) * u * u;
+        assert!((dke + loss).abs() < 1e-12, "{method:?}: {dke} vs -{loss}");
+        for k in 0..2 {
+            let ((_, t0), (_, t1)) = c.components(k);
+            assert!((t0 - t1).abs() < 1e-12, "{method:?}: tangent kept");
+        }
+        let u_after = (c.after[1] - c.after[0]).dot(c.normal);
+        assert!((u_after + 0.5 * u).abs() < 1e-12, "{method:?}: e·u");
+    }
+}

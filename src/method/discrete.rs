@@ -12,12 +12,14 @@
 //!   by the positions (v = Δx / h), then boundaries; K times per step.
 
 use crate::integration::integrate;
+use crate::ledger::Ledger;
 use crate::resolution::{resolve_contacts, Rule};
 use crate::stats::{Lap, StepStats};
 use crate::world::{Laws, Pipeline};
 use crate::Particle;
 
-/// One impulse-method substep of length `h`.
+/// One impulse-method substep of length `h`, starting at world time `time`
+/// (for the collision ledger).
 pub(crate) fn impulse_substep(
     pipeline: &mut Pipeline,
     particles: &mut [Particle],
@@ -25,14 +27,23 @@ pub(crate) fn impulse_substep(
     h: f64,
     rule: Rule,
     stats: &mut StepStats,
+    ledger: &mut Ledger,
+    time: f64,
 ) {
     if rule == Rule::IMPULSE && super::resting::applies(laws) {
-        super::resting::substep(pipeline, particles, laws, h, stats);
+        super::resting::substep(pipeline, particles, laws, h, stats, ledger, time);
         return;
     }
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
-    let report = resolve_contacts(particles, &pipeline.contacts, laws.restitution, rule);
+    let report = resolve_contacts(
+        particles,
+        &pipeline.contacts,
+        laws.restitution,
+        rule,
+        ledger,
+        time,
+    );
     stats.pair_collisions += report.collisions;
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     stats.timings.resolution += lap.lap();
@@ -64,6 +75,8 @@ pub(crate) fn verlet_substep(
         &pipeline.contacts,
         laws.restitution,
         Rule::PROJECTION,
+        &mut Ledger::default(), // projection changes no velocity: nothing to record
+        0.0,
     );
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     // Contacts that were projected count as collisions for the statistics.

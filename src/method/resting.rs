@@ -31,6 +31,7 @@
 //! inverse-mass shares; momentum is not conserved pair by pair in step 3,
 //! which only matters where the floor holds the discs anyway.
 
+use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
 use crate::resolution::{collision_velocities, push_apart};
 use crate::stats::{Lap, StepStats};
@@ -61,6 +62,8 @@ pub(crate) fn substep(
     laws: &Laws,
     h: f64,
     stats: &mut StepStats,
+    ledger: &mut Ledger,
+    time: f64,
 ) {
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
@@ -93,11 +96,23 @@ pub(crate) fn substep(
 
     // Impacts first, with restitution (gravity has not acted yet, so this
     // is the collision the discs brought into the substep).
-    for _ in 0..PASSES {
+    for pass in 0..PASSES {
         walls.hold(particles, stats, Hold::Impacts);
         for (c, &impact) in contacts.iter().zip(&impacts) {
             if impact {
+                let (i, j) = (c.i as usize, c.j as usize);
+                let before = [particles[i].vel, particles[j].vel];
                 collide(particles, c, laws.restitution, None);
+                if pass == 0 && ledger.is_on() {
+                    ledger.push(Collision {
+                        time,
+                        discs: [i, j],
+                        normal: c.normal,
+                        masses: [particles[i].mass, particles[j].mass],
+                        before,
+                        after: [particles[i].vel, particles[j].vel],
+                    });
+                }
             }
         }
     }

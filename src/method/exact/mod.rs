@@ -41,6 +41,7 @@
 //!   change of size, gravity or boundary) makes it start afresh.
 
 use crate::boundary::Boundary;
+use crate::ledger::{Collision, Ledger};
 use crate::particle::Particle;
 use crate::resolution::collision_velocities;
 use crate::stats::StepStats;
@@ -90,6 +91,7 @@ impl Exact {
         laws: &Laws,
         dt: f64,
         stats: &mut StepStats,
+        (ledger, start): (&mut Ledger, f64),
     ) -> f64 {
         let started = Instant::now();
         let mut sim = match self.sim.take() {
@@ -99,7 +101,12 @@ impl Exact {
             }
             _ => Sim::new(particles, laws, dt),
         };
+        sim.record = ledger.is_on();
         sim.run();
+        for mut c in sim.collided.drain(..) {
+            c.time += start;
+            ledger.push(c);
+        }
         let end = if sim.truncated { sim.now } else { sim.end };
         sim.finish(end, particles);
         stats.pair_collisions += sim.collisions;
@@ -171,6 +178,9 @@ struct Sim {
     finished_at: f64,
     /// Overlaps were left after separating: start afresh next step.
     overlapping: bool,
+    /// Collisions of this step, for the ledger (when it is on).
+    record: bool,
+    collided: Vec<Collision>,
 }
 
 impl Sim {
@@ -196,6 +206,8 @@ impl Sim {
             truncated: false,
             finished_at: 0.0,
             overlapping: false,
+            record: false,
+            collided: Vec::new(),
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -570,6 +582,19 @@ impl Sim {
             let rapid = self.now - a.last_hit < self.t_c || self.now - b.last_hit < self.t_c;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(a.mass, b.mass, a.vel, b.vel, normal, e);
+            if self.record {
+                self.collided.push(Collision {
+                    time: self.now,
+                    discs: [
+                        self.order[i as usize] as usize,
+                        self.order[j as usize] as usize,
+                    ],
+                    normal,
+                    masses: [a.mass, b.mass],
+                    before: [a.vel, b.vel],
+                    after: [va, vb],
+                });
+            }
             for (k, v) in [(i, va), (j, vb)] {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
@@ -638,6 +663,21 @@ impl Sim {
             })
             .collect();
         let after = simultaneous::simultaneous_velocities(&masses, &velocities, &list, e);
+        if self.record {
+            for t in &list {
+                self.collided.push(Collision {
+                    time: self.now,
+                    discs: [
+                        self.order[ids[t.a] as usize] as usize,
+                        self.order[ids[t.b] as usize] as usize,
+                    ],
+                    normal: t.normal,
+                    masses: [masses[t.a], masses[t.b]],
+                    before: [velocities[t.a], velocities[t.b]],
+                    after: [after[t.a], after[t.b]],
+                });
+            }
+        }
         for (&k, v) in ids.iter().zip(after) {
             let body = &mut self.bodies[k as usize];
             body.vel = v;
