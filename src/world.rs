@@ -4,7 +4,7 @@
 use crate::auto::{self, Plan};
 use crate::boundary::Boundary;
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
-use crate::ledger::Ledger;
+use crate::ledger::{Collision, Ledger};
 use crate::method::{discrete, exact, Method, Setting};
 use crate::metrics::Metrics;
 use crate::narrow_phase::{find_contacts, Contact};
@@ -117,7 +117,9 @@ impl Pipeline {
 
     fn use_kind(&mut self, kind: BroadPhaseKind) {
         if kind != self.kind {
+            let stop = self.exact.stop_at_collision;
             *self = Pipeline::new(kind);
+            self.exact.stop_at_collision = stop;
         }
     }
 
@@ -291,6 +293,31 @@ impl World {
         self.total_wall_impulse += stats.wall_impulse;
         self.last_stats = stats;
         stats
+    }
+
+    /// Steps until the next pair collision (for at most `limit` seconds) and
+    /// returns it; the world is left just after it: with `exact` at the very
+    /// instant of impact (the step is cut there), with the discrete methods
+    /// at the end of the step that resolved it. Turns the ledger on if it
+    /// was off.
+    pub fn run_to_next_collision(&mut self, dt: f64, limit: f64) -> Option<Collision> {
+        if !self.ledger.is_on() {
+            self.ledger.keep(1);
+        }
+        let before = self.ledger.recorded;
+        let until = self.time + limit.max(0.0);
+        self.pipeline.exact.stop_at_collision = true;
+        while self.ledger.recorded == before && self.time < until {
+            let time_before = self.time;
+            self.step(dt.min(until - self.time).max(f64::MIN_POSITIVE));
+            if self.time == time_before && self.ledger.recorded == before {
+                break; // no progress (the event cap)
+            }
+        }
+        self.pipeline.exact.stop_at_collision = false;
+        (self.ledger.recorded > before)
+            .then(|| self.ledger.last().copied())
+            .flatten()
     }
 
     /// What the last step did.

@@ -191,3 +191,33 @@ fn the_ledger_records_each_collision_with_its_momentum_and_energy() {
         assert!((u_after + 0.5 * u).abs() < 1e-12, "{method:?}: e·u");
     }
 }
+
+#[test]
+fn run_to_next_collision_stops_exact_at_the_instant_of_impact() {
+    // Discs 4 m apart closing at 2 m/s, radii summing to 1: they touch after
+    // exactly 1.5 s; exact must stop there with the discs just touching.
+    use impulse::method::{Method, Setting};
+    let mut w = world_with(
+        [40.0, 40.0],
+        Boundary::Open,
+        vec![
+            disc([10.0, 20.0], [1.0, 0.0], 1.0, 0.5),
+            disc([14.0, 20.0], [-1.0, 0.0], 1.0, 0.5),
+        ],
+    );
+    w.method = Setting::Fixed(Method::Exact);
+    let c = w
+        .run_to_next_collision(1.0 / 60.0, 10.0)
+        .expect("they collide");
+    assert!((c.time - 1.5).abs() < 1e-12, "impact at {}", c.time);
+    assert!(
+        (w.time - 1.5).abs() < 1e-12,
+        "the world stops at {}",
+        w.time
+    );
+    let gap = (w.particles[1].pos - w.particles[0].pos).length() - 1.0;
+    assert!(gap.abs() < 1e-12, "touching: gap {gap:e}");
+    // Nothing else to hit: the search gives up at the limit.
+    assert!(w.run_to_next_collision(1.0 / 60.0, 2.0).is_none());
+    assert!((w.time - 3.5).abs() < 1e-9);
+}

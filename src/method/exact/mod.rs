@@ -80,6 +80,8 @@ pub const SEPARATION_SWEEPS: usize = 100;
 #[derive(Default)]
 pub struct Exact {
     sim: Option<Sim>,
+    /// End a step at its first pair collision, at the instant of impact.
+    pub stop_at_collision: bool,
 }
 
 impl Exact {
@@ -102,12 +104,18 @@ impl Exact {
             _ => Sim::new(particles, laws, dt),
         };
         sim.record = ledger.is_on();
+        sim.stop_at_collision = self.stop_at_collision;
+        sim.stopped = false;
         sim.run();
         for mut c in sim.collided.drain(..) {
             c.time += start;
             ledger.push(c);
         }
-        let end = if sim.truncated { sim.now } else { sim.end };
+        let end = if sim.truncated || sim.stopped {
+            sim.now
+        } else {
+            sim.end
+        };
         sim.finish(end, particles);
         stats.pair_collisions += sim.collisions;
         stats.wall_hits += sim.wall_hits;
@@ -178,6 +186,10 @@ struct Sim {
     finished_at: f64,
     /// Overlaps were left after separating: start afresh next step.
     overlapping: bool,
+    /// End the step at the first pair collision (run to the next collision).
+    stop_at_collision: bool,
+    /// The step ended there.
+    stopped: bool,
     /// Collisions of this step, for the ledger (when it is on).
     record: bool,
     collided: Vec<Collision>,
@@ -206,6 +218,8 @@ impl Sim {
             truncated: false,
             finished_at: 0.0,
             overlapping: false,
+            stop_at_collision: false,
+            stopped: false,
             record: false,
             collided: Vec::new(),
         };
@@ -380,6 +394,10 @@ impl Sim {
                         self.predict(i);
                     } else {
                         self.collide_pair(i, partner);
+                        if self.stop_at_collision && self.collisions > 0 {
+                            self.stopped = true;
+                            break;
+                        }
                     }
                 }
                 Kind::Wall { axis, upper } => self.hit_wall(i, usize::from(axis), upper),
