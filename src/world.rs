@@ -259,8 +259,7 @@ impl World {
                             h,
                             Rule::SEED,
                             &mut stats,
-                            ledger,
-                            time,
+                            (ledger, time),
                         ),
                         _ => discrete::impulse_substep(
                             pipeline,
@@ -269,8 +268,7 @@ impl World {
                             h,
                             Rule::IMPULSE,
                             &mut stats,
-                            ledger,
-                            time,
+                            (ledger, time),
                         ),
                     }
                 }

@@ -27,11 +27,10 @@ pub(crate) fn impulse_substep(
     h: f64,
     rule: Rule,
     stats: &mut StepStats,
-    ledger: &mut Ledger,
-    time: f64,
+    (ledger, time): (&mut Ledger, f64),
 ) {
     if rule == Rule::IMPULSE && super::resting::applies(laws) {
-        super::resting::substep(pipeline, particles, laws, h, stats, ledger, time);
+        super::resting::substep(pipeline, particles, laws, h, stats, (ledger, time));
         return;
     }
     pipeline.detect(particles, laws, stats);

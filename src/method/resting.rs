@@ -62,8 +62,7 @@ pub(crate) fn substep(
     laws: &Laws,
     h: f64,
     stats: &mut StepStats,
-    ledger: &mut Ledger,
-    time: f64,
+    (ledger, time): (&mut Ledger, f64),
 ) {
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
