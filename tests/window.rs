@@ -309,8 +309,9 @@ fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
     );
     let app = Sandbox::start(&x, &[scene.to_str().unwrap(), "--paused"]);
     let before = View::of(&app.state());
-    let anchor_world = [9.0, 5.5];
-    let anchor = before.to_screen(anchor_world);
+    // The cursor sits on whole pixels: anchor the world point under one.
+    let anchor = before.to_screen([9.0, 5.5]).map(f64::round);
+    let anchor_world = before.to_world(anchor);
     app.move_to(anchor);
     app.wait_frames(2);
     for _ in 0..4 {
@@ -494,4 +495,119 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     assert_eq!(reopened["particles"], paused["particles"]);
     assert_eq!(reopened["dt"], paused["dt"]);
     again.quit();
+}
+
+/// The centre of a rectangle [x, y, width, height] the dump gives for a
+/// widget of the side panel, or a point a fraction `t` along its width.
+fn widget(state: &Value, name: &str, t: f64) -> [f64; 2] {
+    let r = &state["panel_widgets"][name];
+    let r: Vec<f64> = (0..4)
+        .map(|k| r[k].as_f64().unwrap_or_else(|| panic!("no widget {name}")))
+        .collect();
+    [r[0] + t * r[2], r[1] + 0.5 * r[3]]
+}
+
+#[test]
+fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("panel") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    // The names hold keys that must not act while typed: '1' opens a
+    // preset, 'c' clears the discs, 'r' resets, 'e' changes restitution.
+    let good = dir.path().join("good-scene-1-cr.toml");
+    std::fs::write(
+        &good,
+        "name = \"Good\"\n[world]\nsize = [16.0, 10.0]\n\
+         [[particles]]\npos = [4.0, 5.0]\nmass = 1.0\nradius = 0.5\n\
+         [[particles]]\npos = [9.0, 5.0]\nmass = 2.0\nradius = 0.6\n",
+    )
+    .unwrap();
+    let bad = dir.path().join("bad-scene-1-cr.toml");
+    std::fs::write(&bad, "name = \"Bad\"\n[world]\nsize = [16.0, 10.0\n").unwrap();
+    let app = Sandbox::start(&x, &["--paused"]);
+    let s0 = app.wait_frames(2);
+    assert_eq!(s0["panel_visible"], true, "the panel is shown by default");
+    let panel_left = s0["panel_widgets"]["panel"][0].as_f64().unwrap();
+    let right_wall = View::of(&s0).to_screen(vec2(&s0["size"]))[0];
+    assert!(
+        right_wall < panel_left,
+        "the fit leaves the box clear of the panel: wall at {right_wall}, panel at {panel_left}"
+    );
+    let click = |at: [f64; 2]| {
+        app.move_to(at);
+        app.wait_frames(1);
+        app.xdo(&["mousedown", "1"]);
+        app.wait_frames(1);
+        app.xdo(&["mouseup", "1"]);
+        app.wait_frames(1);
+    };
+
+    // Type the good file's path into the (empty) scene field; Enter opens it.
+    click(widget(&s0, "scene_path", 0.5));
+    app.xdo(&["type", "--delay", "30", good.to_str().unwrap()]);
+    app.wait_frames(2);
+    app.xdo(&["key", "Return"]);
+    let s1 = app.wait_frames(3);
+    assert_eq!(
+        s1["scene_origin"],
+        good.to_str().unwrap(),
+        "opened from the panel"
+    );
+    assert_eq!(s1["particles"].as_array().unwrap().len(), 2);
+    assert_eq!(s1["restitution"], 1.0);
+    assert_eq!(s1["gravity"], serde_json::json!([0.0, 0.0]));
+
+    // Drag the restitution slider's handle from the right end to a quarter.
+    app.move_to(widget(&s1, "restitution", 1.0));
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    for t in [0.8, 0.6, 0.4, 0.25] {
+        app.move_to(widget(&s1, "restitution", t));
+        app.wait_frames(1);
+    }
+    app.xdo(&["mouseup", "1"]);
+    let s2 = app.wait_frames(3);
+    let e = s2["restitution"].as_f64().unwrap();
+    assert!(
+        (e - 0.25).abs() <= 0.02,
+        "restitution follows the slider: {e}"
+    );
+    assert_eq!(s2["wall_restitution"], s1["wall_restitution"]);
+    assert_eq!(
+        s2["particles"], s1["particles"],
+        "a drag on the panel launches no disc"
+    );
+
+    // Replace the path (Ctrl+A, then type) with the bad file's; press Open.
+    click(widget(&s2, "scene_path", 0.5));
+    app.xdo(&["keydown", "ctrl"]);
+    app.wait_frames(1);
+    app.xdo(&["key", "a"]);
+    app.wait_frames(1);
+    app.xdo(&["keyup", "ctrl"]);
+    app.wait_frames(1);
+    app.xdo(&["type", "--delay", "30", bad.to_str().unwrap()]);
+    app.wait_frames(2);
+    click(widget(&s2, "open", 0.5));
+    let s3 = app.wait_frames(3);
+    assert_eq!(
+        s3["scene_origin"], s1["scene_origin"],
+        "a bad file keeps the current scene"
+    );
+    assert_eq!(s3["particles"], s2["particles"]);
+    assert_eq!(
+        s3["restitution"], s2["restitution"],
+        "nothing typed acted as a key"
+    );
+    assert_eq!(s3["paused"], true);
+
+    // Out of the field, keys are shortcuts again: L hides the panel.
+    app.xdo(&["key", "l"]);
+    let s4 = app.wait_frames(3);
+    assert_eq!(s4["panel_visible"], false);
+    assert_eq!(s4["panel_widgets"], serde_json::json!({}));
+    app.quit();
 }

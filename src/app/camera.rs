@@ -42,6 +42,18 @@ impl Camera {
         self.center = 0.5 * size;
     }
 
+    /// Shows the whole box in the viewport less `right` pixels on its right
+    /// (where a panel covers it), centred in what is left.
+    pub fn fit_left_of(&mut self, size: DVec2, margin: f64, right: f64) {
+        let full = self.viewport;
+        let right = right.clamp(0.0, (full.x - 1.0).max(0.0));
+        self.viewport.x = full.x - right;
+        self.fit(size, margin);
+        self.viewport = full;
+        // The viewport's centre is `right / 2` pixels right of the free area's.
+        self.center.x += 0.5 * right / self.scale;
+    }
+
     /// Screen pixel of a world point.
     pub fn world_to_screen(&self, world: DVec2) -> DVec2 {
         let d = (world - self.center) * self.scale;
@@ -105,6 +117,25 @@ mod tests {
             assert!(s.x >= 40.0 - 1e-9 && s.x <= 1240.0 + 1e-9, "{s}");
             assert!(s.y >= 40.0 - 1e-9 && s.y <= 760.0 + 1e-9, "{s}");
         }
+    }
+
+    #[test]
+    fn fit_beside_a_panel_centres_the_box_in_the_free_part() {
+        let mut c = camera();
+        c.fit_left_of(DVec2::new(16.0, 10.0), 30.0, 300.0);
+        let (a, b) = (
+            c.world_to_screen(DVec2::ZERO),
+            c.world_to_screen(DVec2::new(16.0, 10.0)),
+        );
+        assert!((a.x - 30.0).abs() < 1e-9, "{a}");
+        assert!(
+            (b.x - 950.0).abs() < 1e-9,
+            "{b}: stops 30 px short of the panel"
+        );
+        assert!(a.y <= 770.0 + 1e-9 && b.y >= 30.0 - 1e-9);
+        let mut plain = camera();
+        plain.fit_left_of(DVec2::new(16.0, 10.0), 40.0, 0.0);
+        assert_eq!(plain, camera(), "no panel: the plain fit");
     }
 
     #[test]

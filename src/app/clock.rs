@@ -40,6 +40,16 @@ impl FixedStepClock {
         TIME_SCALES[self.time_scale_index]
     }
 
+    /// Which of [`TIME_SCALES`] is in use.
+    pub fn time_scale_index(&self) -> usize {
+        self.time_scale_index
+    }
+
+    /// Uses preset `index` of [`TIME_SCALES`] (the last if beyond).
+    pub fn set_time_scale_index(&mut self, index: usize) {
+        self.time_scale_index = index.min(TIME_SCALES.len() - 1);
+    }
+
     /// Next slower (`-1`) or faster (`+1`) preset.
     pub fn change_time_scale(&mut self, direction: i32) {
         let last = TIME_SCALES.len() - 1;
@@ -134,5 +144,9 @@ mod tests {
             clock.change_time_scale(1);
         }
         assert_eq!(clock.time_scale(), 8.0);
+        clock.set_time_scale_index(2);
+        assert_eq!((clock.time_scale_index(), clock.time_scale()), (2, 0.1));
+        clock.set_time_scale_index(99);
+        assert_eq!(clock.time_scale(), 8.0, "clamped to the last preset");
     }
 }

@@ -4,7 +4,12 @@
 use super::camera::Camera;
 use crate::files::write_atomically;
 use impulse::{Metrics, Particle, World};
+use macroquad::prelude::{
+    render_target_msaa, screen_height, screen_width, set_camera, set_default_camera, Camera2D,
+    Rect, RenderTarget,
+};
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Everything a test needs to check what the window did.
@@ -44,6 +49,13 @@ pub struct StateDump<'a> {
     pub restitution: f64,
     /// Wall restitution.
     pub wall_restitution: f64,
+    /// Gravity (m/s², y up).
+    pub gravity: [f64; 2],
+    /// Whether the side panel is shown.
+    pub panel_visible: bool,
+    /// Screen rectangles [x, y, width, height] (px) of the panel and of its
+    /// sliders' tracks, text fields and buttons, by name; empty when hidden.
+    pub panel_widgets: BTreeMap<&'static str, [f32; 4]>,
     /// World size (m).
     pub size: [f64; 2],
     /// Totals.
@@ -94,6 +106,9 @@ impl<'a> StateDump<'a> {
             plan: world.plan().cloned(),
             restitution: world.restitution,
             wall_restitution: world.wall_restitution,
+            gravity: world.gravity.to_array(),
+            panel_visible: false,
+            panel_widgets: BTreeMap::new(),
             size: world.size.to_array(),
             metrics: world.metrics(),
             particles: &world.particles,
@@ -105,6 +120,29 @@ impl<'a> StateDump<'a> {
 pub fn write_state(path: &Path, dump: &StateDump) -> std::io::Result<()> {
     let json = serde_json::to_vec_pretty(dump).map_err(std::io::Error::other)?;
     write_atomically(path, &json)
+}
+
+/// Sends the rest of this frame to an off-screen target of the window's
+/// size, so that once the frame is finished it can be read back whole:
+/// macroquad's UI (the side panel) is drawn at the very end of a frame, after
+/// the program's code, so reading the screen from the code would miss it.
+/// The window shows nothing for that frame; [`finished_frame`] reads it once
+/// the next frame has begun.
+pub fn capture_frame() -> RenderTarget {
+    let (w, h) = (screen_width(), screen_height());
+    let target = render_target_msaa(w as u32, h as u32);
+    set_camera(&Camera2D {
+        render_target: Some(target.clone()),
+        ..Camera2D::from_display_rect(Rect::new(0.0, 0.0, w, h))
+    });
+    target
+}
+
+/// What [`capture_frame`] caught: width, height and RGBA rows bottom-up.
+pub fn finished_frame(target: &RenderTarget) -> (u32, u32, Vec<u8>) {
+    set_default_camera();
+    let image = target.texture.get_texture_data();
+    (u32::from(image.width), u32::from(image.height), image.bytes)
 }
 
 /// Saves an RGBA frame (rows bottom-up, as OpenGL reads them) as a PNG.

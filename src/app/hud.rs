@@ -111,6 +111,10 @@ pub const HELP: &[(&str, &str)] = &[
     ("1 … 9, 0 / P", "open a classroom preset / the preset menu"),
     ("Ctrl+N", "new empty box"),
     ("Ctrl+S", "save the scene (reopens exactly)"),
+    (
+        "L",
+        "side panel: sliders, settings, disc editor, open a file",
+    ),
     ("F11", "full screen"),
     ("Esc", "deselect / close this help"),
     ("H or F1", "this help"),
@@ -141,7 +145,10 @@ pub fn draw_preset_menu(viewport: Vec2, font: f32, entries: &[(String, String, S
 pub fn draw_caption(text: &str, viewport: Vec2, font: f32) {
     let text = &screen_text(text);
     let width = measure_text(text, None, font as u16, 1.0).width;
-    let x = ((viewport.x - width) * 0.5).max(10.0);
+    // Clear of the scale bar (bottom left) when there is room.
+    let x = ((viewport.x - width) * 0.5)
+        .max((viewport.x - width - 10.0).min(SCALE_BAR_ROOM))
+        .max(10.0);
     let y = viewport.y - 0.6 * font;
     draw_rectangle(
         x - 8.0,
@@ -172,6 +179,9 @@ pub fn draw_help(viewport: Vec2, font: f32) {
     let y = ((viewport.y - height) * 0.5).max(0.0);
     text_panel(x, y, &lines, font, 0.92);
 }
+
+/// Width the scale bar and its label take at the bottom left (px).
+const SCALE_BAR_ROOM: f32 = 260.0;
 
 /// A bar of a round number of metres, about 150 px long, bottom left.
 pub fn draw_scale_bar(camera: &Camera, font: f32) {
@@ -215,18 +225,21 @@ pub fn format_metres(m: f64) -> String {
     }
 }
 
-/// A short message at the bottom centre.
+/// A short message at the bottom centre; a long one (an error naming a
+/// file) is wrapped to the width of `viewport`.
 pub fn draw_toast(message: &str, viewport: Vec2, font: f32) {
     let message = &screen_text(message);
-    let width = measure_text(message, None, font as u16, 1.0).width + 0.8 * font;
-    let x = (viewport.x - width) * 0.5;
-    text_panel(
-        x,
-        viewport.y - 3.0 * font,
-        &[message.to_string()],
-        font,
-        0.85,
-    );
+    let char_width = measure_text("0000000000", None, font as u16, 1.0).width / 10.0;
+    let chars = ((viewport.x - 2.0 * font) / char_width).max(10.0) as usize;
+    let lines = super::panel::wrap(message, chars);
+    let width = lines
+        .iter()
+        .map(|l| measure_text(l, None, font as u16, 1.0).width)
+        .fold(0.0, f32::max)
+        + 0.8 * font;
+    let x = ((viewport.x - width) * 0.5).max(0.0);
+    let y = viewport.y - (1.15 * lines.len() as f32 + 1.85) * font;
+    text_panel(x, y, &lines, font, 0.85);
 }
 
 #[cfg(test)]

@@ -38,21 +38,21 @@ fn nudge_restitution(e: f64, up: bool) -> f64 {
     (tenths / 10.0).clamp(0.0, 1.0)
 }
 
-const METHODS: [Setting<Method>; 5] = [
+pub(super) const METHODS: [Setting<Method>; 5] = [
     Setting::Auto,
     Setting::Fixed(Method::Seed),
     Setting::Fixed(Method::Impulse),
     Setting::Fixed(Method::Verlet),
     Setting::Fixed(Method::Exact),
 ];
-const BROAD_PHASES: [Setting<BroadPhaseKind>; 5] = [
+pub(super) const BROAD_PHASES: [Setting<BroadPhaseKind>; 5] = [
     Setting::Auto,
     Setting::Fixed(BroadPhaseKind::Brute),
     Setting::Fixed(BroadPhaseKind::Grid),
     Setting::Fixed(BroadPhaseKind::Sap),
     Setting::Fixed(BroadPhaseKind::Quadtree),
 ];
-const SUBSTEPS: [Setting<u32>; 6] = [
+pub(super) const SUBSTEPS: [Setting<u32>; 6] = [
     Setting::Auto,
     Setting::Fixed(1),
     Setting::Fixed(2),
@@ -72,6 +72,9 @@ impl App {
         if ctrl() && is_key_pressed(KeyCode::Q) {
             self.quit = true;
             return;
+        }
+        if self.panel.typing {
+            return; // the keys went into a text field of the panel
         }
         if is_key_pressed(KeyCode::Space) {
             self.clock.paused = !self.clock.paused;
@@ -108,7 +111,7 @@ impl App {
         ];
         if ctrl() {
             if is_key_pressed(KeyCode::S) {
-                self.save_scene();
+                let _ = self.save_scene(); // reported in the window and on the terminal
             }
             if is_key_pressed(KeyCode::N) {
                 self.open_preset(scenes::PRESETS.len() - 1);
@@ -133,7 +136,7 @@ impl App {
             self.camera.zoom_at(centre, 1.0 / ZOOM_STEP);
         }
         if is_key_pressed(KeyCode::F) {
-            self.camera.fit(self.world.size, 30.0);
+            self.fit_camera();
         }
         let mut pan = DVec2::ZERO;
         for (key, dir) in [
@@ -171,6 +174,9 @@ impl App {
         }
         if is_key_pressed(KeyCode::H) || is_key_pressed(KeyCode::F1) {
             o.help = !o.help;
+        }
+        if is_key_pressed(KeyCode::L) {
+            self.panel.visible = !self.panel.visible;
         }
         if is_key_pressed(KeyCode::Escape) {
             if o.presets {
@@ -236,12 +242,7 @@ impl App {
             self.toast(format!("New discs: mass {:.3} kg", self.new_disc.mass));
         }
         if is_key_pressed(KeyCode::Delete) || is_key_pressed(KeyCode::Backspace) {
-            if let Some(i) = self.selected.take() {
-                if i < self.world.particles.len() {
-                    self.world.particles.remove(i);
-                    self.gesture.on_removed(i);
-                }
-            }
+            self.delete_selected();
         }
         if is_key_pressed(KeyCode::C) && !ctrl() {
             self.world.particles.clear();
@@ -259,9 +260,12 @@ impl App {
         let mouse = DVec2::new(mx as f64, my as f64);
         let at = self.camera.screen_to_world(mouse);
         let now = get_time();
+        // Over the side panel the mouse belongs to the panel's widgets: no
+        // zoom, pan or new gesture there (one begun in the world finishes).
+        let on_panel = self.panel.covers(mouse);
 
         let (_, wheel) = mouse_wheel();
-        if wheel != 0.0 {
+        if wheel != 0.0 && !on_panel {
             let notches = f64::from(wheel.clamp(-5.0, 5.0)).signum();
             self.camera.zoom_at(mouse, ZOOM_STEP.powf(notches));
         }
@@ -269,13 +273,16 @@ impl App {
             is_mouse_button_down(MouseButton::Right) || is_mouse_button_down(MouseButton::Middle);
         let just_started = is_mouse_button_pressed(MouseButton::Right)
             || is_mouse_button_pressed(MouseButton::Middle);
-        if panning && !just_started {
+        if panning && !just_started && !on_panel {
             self.camera.pan_pixels(mouse - self.last_mouse);
         }
 
         if is_mouse_button_pressed(MouseButton::Left) {
-            let slop = CLICK_SLOP_PIXELS / self.camera.scale;
-            self.selected = self.gesture.press(&self.world, at, now, slop);
+            if !on_panel {
+                macroquad::ui::root_ui().clear_input_focus(); // leave any text field
+                let slop = CLICK_SLOP_PIXELS / self.camera.scale;
+                self.selected = self.gesture.press(&self.world, at, now, slop);
+            }
         } else if is_mouse_button_down(MouseButton::Left) {
             self.gesture.drag(&mut self.world, at, now);
         }

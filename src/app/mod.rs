@@ -10,6 +10,7 @@ mod dump;
 mod hud;
 mod input;
 mod interaction;
+mod panel;
 mod scenes;
 
 use camera::Camera;
@@ -121,6 +122,7 @@ struct App {
     fullscreen: bool,
     font: f32,
     quit: bool,
+    panel: panel::Panel,
 }
 
 impl App {
@@ -132,6 +134,7 @@ impl App {
         let mut clock = FixedStepClock::new(dt, 64);
         clock.paused = options.paused;
         let size = world.size;
+        let path = options.scene.as_ref().map(|p| p.display().to_string());
         App {
             options,
             scene,
@@ -154,6 +157,7 @@ impl App {
             fullscreen: false,
             font: 20.0,
             quit: false,
+            panel: panel::Panel::new(path.unwrap_or_default()),
         }
     }
 
@@ -161,26 +165,29 @@ impl App {
         prevent_quit();
         loop {
             let viewport = DVec2::new(screen_width() as f64, screen_height() as f64);
+            self.camera.viewport = viewport;
             if self.frame == 0 {
-                self.camera = Camera::fitting(self.world.size, viewport, 30.0);
+                self.fit_camera();
                 display::mark_open();
             }
-            self.camera.viewport = viewport;
+            self.panel_ui();
             self.handle_keys();
             self.handle_mouse();
             self.advance_physics(get_frame_time() as f64);
-            self.draw();
-            self.frame += 1;
             let timed_out = self
                 .options
                 .exit_after
                 .is_some_and(|limit| get_time() >= limit);
             let closing = self.quit || is_quit_requested() || timed_out;
-            if closing {
-                self.save_screenshot();
-            }
+            let capture = (closing && self.options.screenshot.is_some()).then(dump::capture_frame);
+            self.draw();
+            self.frame += 1;
             self.write_dump();
             if closing {
+                if let Some(target) = capture {
+                    next_frame().await; // finishes the frame, panel included
+                    self.save_screenshot(&target);
+                }
                 break;
             }
             next_frame().await;
@@ -244,7 +251,11 @@ impl App {
                 self.font,
             );
         }
-        let viewport = vec2(self.camera.viewport.x as f32, self.camera.viewport.y as f32);
+        // Messages and menus centre on the part the side panel leaves free.
+        let viewport = vec2(
+            self.camera.viewport.x as f32 - self.panel.width_on_screen(),
+            self.camera.viewport.y as f32,
+        );
         if self.overlays.hud {
             hud::text_panel(10.0, 10.0, &self.hud_lines(), self.font, 0.75);
         }
@@ -361,13 +372,12 @@ impl App {
         line
     }
 
-    fn save_screenshot(&self) {
+    fn save_screenshot(&self, target: &RenderTarget) {
         let Some(path) = &self.options.screenshot else {
             return;
         };
-        let image = get_screen_data();
-        let (w, h) = (u32::from(image.width), u32::from(image.height));
-        match dump::write_png(path, w, h, &image.bytes) {
+        let (w, h, rgba) = dump::finished_frame(target);
+        match dump::write_png(path, w, h, &rgba) {
             Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
             Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
         }
@@ -386,6 +396,8 @@ impl App {
         state.held = self.gesture.held();
         state.scene_name = self.scene.name.clone();
         state.scene_origin = self.scene_origin.clone();
+        state.panel_visible = self.panel.visible;
+        state.panel_widgets = self.panel.widgets.clone();
         if let Err(e) = dump::write_state(path, &state) {
             eprintln!("impulse: cannot write state dump {}: {e}", path.display());
         }

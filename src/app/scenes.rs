@@ -2,7 +2,6 @@
 //! number keys (and a menu), and Ctrl+S, which saves the current state as a
 //! scene file that reopens exactly.
 
-use super::camera::Camera;
 use super::interaction::Gesture;
 use super::App;
 use crate::files::write_atomically;
@@ -81,14 +80,17 @@ impl App {
             return;
         };
         match Scene::parse(preset.text, preset.path) {
-            Ok(scene) => self.open_scene(scene, preset.path.to_string()),
+            Ok(scene) => {
+                let _ = self.open_scene(scene, preset.path.to_string()); // reported
+            }
             Err(e) => self.report(format!("Cannot open {}: {e}", preset.path)),
         }
     }
 
     /// Replaces the world with `scene`'s; on an error says why (in the
-    /// window and on the terminal) and keeps the current scene.
-    pub(super) fn open_scene(&mut self, scene: Scene, origin: String) {
+    /// window and on the terminal), keeps the current scene and returns
+    /// what it said.
+    pub(super) fn open_scene(&mut self, scene: Scene, origin: String) -> Result<(), String> {
         match scene.build(&origin) {
             Ok(world) => {
                 self.world = world;
@@ -97,21 +99,27 @@ impl App {
                     .dt
                     .or(scene.simulation.dt)
                     .unwrap_or(crate::headless::DEFAULT_DT);
-                self.camera = Camera::fitting(self.world.size, self.camera.viewport, 30.0);
+                self.fit_camera();
                 self.selected = None;
                 self.gesture = Gesture::Idle;
                 let name = scene.name.clone().unwrap_or_else(|| origin.clone());
                 self.scene = scene;
                 self.scene_origin = origin;
                 self.toast(format!("Opened {name}"));
+                Ok(())
             }
-            Err(e) => self.report(format!("{e} (kept the current scene)")),
+            Err(e) => {
+                let message = format!("{e} (kept the current scene)");
+                self.report(message.clone());
+                Err(message)
+            }
         }
     }
 
     /// Saves the current state as a scene file in the output folder; the
     /// write is atomic, so a failure leaves any older file as it was.
-    pub(super) fn save_scene(&mut self) {
+    /// Returns the file written, or what was reported.
+    pub(super) fn save_scene(&mut self) -> Result<PathBuf, String> {
         let name = self.scene.name.clone();
         let mut scene =
             Scene::from_world(&self.world, name.clone(), self.scene.description.clone());
@@ -130,8 +138,13 @@ impl App {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
                 self.toast(format!("Saved {}", path.display()));
+                Ok(path)
             }
-            Err(e) => self.report(format!("Not saved: {e}")),
+            Err(e) => {
+                let message = format!("Not saved: {e}");
+                self.report(message.clone());
+                Err(message)
+            }
         }
     }
 
