@@ -611,3 +611,67 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
     assert_eq!(s4["panel_widgets"], serde_json::json!({}));
     app.quit();
 }
+
+#[test]
+fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("lesson") else {
+        return;
+    };
+    let out = tempfile::tempdir().expect("temp dir");
+    let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
+    let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
+    app.move_to([400.0, 400.0]);
+
+    // Head-on: the discs touch when the gap between their edges has closed.
+    app.xdo(&["key", "1"]);
+    let opened = app.wait_frames(3);
+    let p = &opened["particles"];
+    let (a, b) = (&p[0], &p[1]);
+    let gap = (vec2(&b["pos"])[0] - vec2(&a["pos"])[0]).abs()
+        - a["radius"].as_f64().unwrap()
+        - b["radius"].as_f64().unwrap();
+    let closing = (vec2(&a["vel"])[0] - vec2(&b["vel"])[0]).abs();
+    let contact = gap / closing;
+    app.xdo(&["key", "j"]);
+    let hit = app.wait_frames(3);
+    assert_eq!(hit["paused"], true);
+    assert_eq!(hit["collisions_recorded"], 1);
+    let t = hit["time"].as_f64().unwrap();
+    assert!(
+        (t - contact).abs() < 1e-9,
+        "stopped at t = {t}, contact at {contact}"
+    );
+
+    // Rewind three snapshots: earlier, and the discs are back apart.
+    for _ in 0..3 {
+        app.xdo(&["key", "comma"]);
+        app.wait_frames(2);
+    }
+    let back = app.wait_frames(2);
+    assert!(back["history_cursor"].is_u64(), "rewound: {back}");
+    assert!(back["time"].as_f64().unwrap() < t);
+    assert_eq!(
+        back["particles"].as_array().map(Vec::len),
+        Some(2),
+        "the rewind stays within the head-on scene"
+    );
+
+    // X exports three CSV files into the output folder.
+    app.xdo(&["key", "x"]);
+    app.wait_frames(3);
+    let csv: Vec<PathBuf> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "csv"))
+        .collect();
+    assert_eq!(csv.len(), 3, "{csv:?}");
+
+    // Space resumes from the rewound moment and time runs on.
+    app.xdo(&["key", "space"]);
+    let resumed = app.wait_frames(20);
+    assert_eq!(resumed["paused"], false);
+    assert!(resumed["history_cursor"].is_null());
+    assert!(resumed["time"].as_f64().unwrap() > back["time"].as_f64().unwrap());
+    app.quit();
+}

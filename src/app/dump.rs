@@ -33,6 +33,12 @@ pub struct StateDump<'a> {
     pub selected: Option<usize>,
     /// Disc held by the mouse.
     pub held: Option<usize>,
+    /// Snapshots kept for rewinding.
+    pub history_len: usize,
+    /// The snapshot shown while rewound.
+    pub history_cursor: Option<usize>,
+    /// Collisions the ledger has recorded.
+    pub collisions_recorded: u64,
     /// The open scene's name.
     pub scene_name: Option<String>,
     /// Where the open scene came from (a file, a preset, the default).
@@ -98,6 +104,9 @@ impl<'a> StateDump<'a> {
             camera: camera.into(),
             selected: None,
             held: None,
+            history_len: 0,
+            history_cursor: None,
+            collisions_recorded: 0,
             scene_name: None,
             scene_origin: String::new(),
             method: world.method.to_string(),

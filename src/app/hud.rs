@@ -112,6 +112,14 @@ pub const HELP: &[(&str, &str)] = &[
     ("Ctrl+N", "new empty box"),
     ("Ctrl+S", "save the scene (reopens exactly)"),
     (
+        "T / O / D",
+        "totals plot / centre of mass / momentum diagram",
+    ),
+    ("Z", "centre-of-mass frame (total momentum 0)"),
+    ("U / J", "collision ledger / run to the next collision"),
+    (", / .", "rewind / forward (Shift: 10x); Space resumes"),
+    ("X", "export totals, discs, collisions as CSV"),
+    (
         "L",
         "side panel: sliders, settings, disc editor, open a file",
     ),
@@ -144,6 +152,9 @@ pub fn draw_preset_menu(viewport: Vec2, font: f32, entries: &[(String, String, S
 /// One line of text centred at the bottom of the window, on a dark band.
 pub fn draw_caption(text: &str, viewport: Vec2, font: f32) {
     let text = &screen_text(text);
+    // A long caption shrinks to fit (down to a still legible 12 px).
+    let full = measure_text(text, None, font as u16, 1.0).width;
+    let font = (font * (viewport.x - 30.0) / full.max(1.0)).clamp(12.0, font);
     let width = measure_text(text, None, font as u16, 1.0).width;
     // Clear of the scale bar (bottom left) when there is room.
     let x = ((viewport.x - width) * 0.5)

@@ -94,6 +94,7 @@ impl App {
         self.handle_overlay_keys();
         self.handle_world_keys();
         self.handle_scene_keys();
+        self.handle_lesson_keys();
     }
 
     fn handle_scene_keys(&mut self) {
@@ -246,6 +247,7 @@ impl App {
         }
         if is_key_pressed(KeyCode::C) && !ctrl() {
             self.world.particles.clear();
+            self.forget_past();
             self.selected = None;
             self.gesture = Default::default();
             self.toast("Cleared: drag on empty space to launch discs");

@@ -7,10 +7,13 @@ mod clock;
 pub mod display;
 mod draw;
 mod dump;
+mod export;
 mod hud;
 mod input;
 mod interaction;
+mod lesson;
 mod panel;
+mod plot;
 mod scenes;
 
 use camera::Camera;
@@ -123,6 +126,9 @@ struct App {
     font: f32,
     quit: bool,
     panel: panel::Panel,
+    lesson: lesson::LessonOverlays,
+    totals: plot::Totals,
+    history: impulse::history::History,
 }
 
 impl App {
@@ -158,6 +164,9 @@ impl App {
             font: 20.0,
             quit: false,
             panel: panel::Panel::new(path.unwrap_or_default()),
+            lesson: lesson::LessonOverlays::default(),
+            totals: plot::Totals::default(),
+            history: impulse::history::History::default(),
         }
     }
 
@@ -206,6 +215,7 @@ impl App {
                 self.step_micros.pop_front();
             }
         }
+        self.after_steps(steps);
     }
 
     fn toast(&mut self, message: impl Into<String>) {
@@ -220,6 +230,7 @@ impl App {
         match self.scene.build(&self.scene_origin) {
             Ok(world) => {
                 self.world = world;
+                self.forget_past();
                 self.selected = None;
                 self.gesture = Gesture::Idle;
                 self.toast("Scene reset");
@@ -286,6 +297,7 @@ impl App {
                 .collect();
             hud::draw_preset_menu(viewport, self.font * 0.8, &entries);
         }
+        self.draw_lesson(viewport);
         if self.overlays.help {
             hud::draw_help(viewport, self.font);
         }
@@ -393,6 +405,9 @@ impl App {
         state.time_scale = self.clock.time_scale();
         state.dt = self.clock.dt;
         state.selected = self.selected;
+        state.history_len = self.history.len();
+        state.history_cursor = self.history.cursor();
+        state.collisions_recorded = self.world.ledger.recorded;
         state.held = self.gesture.held();
         state.scene_name = self.scene.name.clone();
         state.scene_origin = self.scene_origin.clone();

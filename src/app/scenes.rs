@@ -94,6 +94,7 @@ impl App {
         match scene.build(&origin) {
             Ok(world) => {
                 self.world = world;
+                self.forget_past();
                 self.clock.dt = self
                     .options
                     .dt

@@ -1,0 +1,145 @@
+//! Data out for lab reports: the totals' time series, every disc's values
+//! and the collision ledger as CSV files, written atomically into the
+//! output folder the window names.
+
+use super::plot::Sample;
+use crate::files::write_atomically;
+use impulse::ledger::Ledger;
+use impulse::World;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// The totals against time.
+pub fn totals_csv(samples: &[Sample]) -> String {
+    let mut out = String::from("time_s,px_kg_m_s,py_kg_m_s,kinetic_energy_j\n");
+    for s in samples {
+        let _ = writeln!(
+            out,
+            "{},{},{},{}",
+            s.time, s.momentum.x, s.momentum.y, s.kinetic_energy
+        );
+    }
+    out
+}
+
+/// Every disc now.
+pub fn particles_csv(world: &World) -> String {
+    let mut out = String::from(
+        "disc,x_m,y_m,vx_m_s,vy_m_s,mass_kg,radius_m,px_kg_m_s,py_kg_m_s,kinetic_energy_j\n",
+    );
+    for (k, p) in world.particles.iter().enumerate() {
+        let m = p.momentum();
+        let _ = writeln!(
+            out,
+            "{k},{},{},{},{},{},{},{},{},{}",
+            p.pos.x,
+            p.pos.y,
+            p.vel.x,
+            p.vel.y,
+            p.mass,
+            p.radius,
+            m.x,
+            m.y,
+            p.kinetic_energy()
+        );
+    }
+    out
+}
+
+/// The collision ledger: per collision, both discs' momentum and kinetic
+/// energy before and after, and the change of the totals.
+pub fn ledger_csv(ledger: &Ledger) -> String {
+    let mut out = String::from(
+        "time_s,disc_a,disc_b,normal_x,normal_y,\
+         pa_before_x,pa_before_y,pa_after_x,pa_after_y,ke_a_before_j,ke_a_after_j,\
+         pb_before_x,pb_before_y,pb_after_x,pb_after_y,ke_b_before_j,ke_b_after_j,\
+         total_dp_x,total_dp_y,total_dke_j\n",
+    );
+    for c in ledger.entries() {
+        let _ = write!(
+            out,
+            "{},{},{},{},{}",
+            c.time, c.discs[0], c.discs[1], c.normal.x, c.normal.y
+        );
+        for k in 0..2 {
+            let (p0, p1) = c.momentum(k);
+            let (e0, e1) = c.kinetic_energy(k);
+            let _ = write!(out, ",{},{},{},{},{e0},{e1}", p0.x, p0.y, p1.x, p1.y);
+        }
+        let (dp, dke) = c.total_change();
+        let _ = writeln!(out, ",{},{},{dke}", dp.x, dp.y);
+    }
+    out
+}
+
+/// Writes the three files into `dir` (created if needed), named after
+/// `stem`; returns their paths.
+pub fn export_all(
+    dir: &Path,
+    stem: &str,
+    samples: &[Sample],
+    world: &World,
+) -> std::io::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir)?;
+    let files = [
+        (format!("{stem}-totals.csv"), totals_csv(samples)),
+        (format!("{stem}-discs.csv"), particles_csv(world)),
+        (format!("{stem}-collisions.csv"), ledger_csv(&world.ledger)),
+    ];
+    let mut written = Vec::new();
+    for (name, text) in files {
+        let path = dir.join(name);
+        write_atomically(&path, text.as_bytes())?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+    use impulse::ledger::Collision;
+
+    #[test]
+    fn ledger_rows_carry_the_totals_change() {
+        let mut ledger = Ledger::default();
+        ledger.keep(4);
+        ledger.push(Collision {
+            time: 1.5,
+            discs: [0, 1],
+            normal: DVec2::X,
+            masses: [1.0, 1.0],
+            before: [DVec2::new(1.0, 0.0), DVec2::new(-1.0, 0.0)],
+            after: [DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0)],
+        });
+        let csv = ledger_csv(&ledger);
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines.len(), 2);
+        let header = lines[0].split(',').count();
+        let row: Vec<&str> = lines[1].split(',').collect();
+        assert_eq!(row.len(), header);
+        assert_eq!(&row[..3], ["1.5", "0", "1"]);
+        assert_eq!(
+            &row[row.len() - 3..],
+            ["0", "0", "0"],
+            "elastic swap: nothing changes"
+        );
+    }
+
+    #[test]
+    fn every_disc_is_a_row() {
+        let world = impulse::presets::Gas {
+            count: 7,
+            ..Default::default()
+        }
+        .build();
+        let csv = particles_csv(&world);
+        assert_eq!(csv.lines().count(), 8);
+        let dir = std::env::temp_dir().join(format!("impulse-export-{}", std::process::id()));
+        let files = export_all(&dir, "gas", &[], &world).unwrap();
+        assert_eq!(files.len(), 3);
+        assert!(files.iter().all(|f| f.exists()));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
