@@ -49,6 +49,10 @@ pub struct Overlays {
     pub help: bool,
     /// The preset menu.
     pub presets: bool,
+    /// Projector mode: thick lines (the fonts grow too).
+    pub thick: bool,
+    /// Colour discs by the colour-blind-safe palette, not the scene's colours.
+    pub safe_palette: bool,
 }
 
 impl Default for Overlays {
@@ -60,6 +64,8 @@ impl Default for Overlays {
             hud: true,
             help: false,
             presets: false,
+            thick: false,
+            safe_palette: false,
         }
     }
 }
@@ -106,7 +112,7 @@ fn dashed_line(from: Vec2, to: Vec2, dash: f32, color: Color) {
 }
 
 /// Every disc, with a ring round the selected one.
-pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>) {
+pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>, overlays: &Overlays) {
     for (i, p) in world.particles.iter().enumerate() {
         let c = px(camera.world_to_screen(p.pos));
         let r = camera.length_in_pixels(p.radius).max(1.0) as f32;
@@ -114,9 +120,15 @@ pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>) {
             continue;
         }
         let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
-        draw_poly(c.x, c.y, sides, r, 0.0, disc_color(p.color));
+        let color = if overlays.safe_palette {
+            impulse::Color::palette(i)
+        } else {
+            p.color
+        };
+        draw_poly(c.x, c.y, sides, r, 0.0, disc_color(color));
         if Some(i) == selected {
-            draw_poly_lines(c.x, c.y, sides, r + 3.0, 0.0, 2.5, SELECTED_COLOR);
+            let width = if overlays.thick { 5.0 } else { 2.5 };
+            draw_poly_lines(c.x, c.y, sides, r + 3.0, 0.0, width, SELECTED_COLOR);
         }
     }
 }
@@ -158,13 +170,14 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
         ) {
             continue;
         }
+        let thickness = if overlays.thick { 2.0 } else { 1.0 };
         if overlays.velocity {
             let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
-            arrow(px(c), px(tip), 2.0, VELOCITY_COLOR);
+            arrow(px(c), px(tip), 2.0 * thickness, VELOCITY_COLOR);
         }
         if overlays.momentum {
             let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
-            arrow(px(c), px(tip), 3.0, MOMENTUM_COLOR);
+            arrow(px(c), px(tip), 3.0 * thickness, MOMENTUM_COLOR);
         }
     }
 }

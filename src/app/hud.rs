@@ -119,6 +119,11 @@ pub const HELP: &[(&str, &str)] = &[
     ("U / J", "collision ledger / run to the next collision"),
     (", / .", "rewind / forward (Shift: 10x); Space resumes"),
     ("X", "export totals, discs, collisions as CSV"),
+    ("A", "trails (fading paths)"),
+    (
+        "F2 / F3 / F4",
+        "projector mode / colour-blind palette / speed histogram",
+    ),
     (
         "L",
         "side panel: sliders, settings, disc editor, open a file",

@@ -4,7 +4,8 @@
 //!
 //! Keys: T totals plot, O centre of mass, D momentum diagram, U ledger,
 //! Z centre-of-mass frame, J run to the next collision, `,` / `.` rewind
-//! and forward (Shift: ten times as far), X export CSV files.
+//! and forward (Shift: ten times as far), X export CSV files, A trails,
+//! F2 projector mode, F3 colour-blind-safe palette, F4 speed histogram.
 
 use super::hud::{screen_text, text_panel};
 use super::{export, plot, scenes, App};
@@ -30,6 +31,8 @@ pub struct LessonOverlays {
     pub diagram: bool,
     /// The collision ledger.
     pub ledger: bool,
+    /// The speed histogram against Maxwell–Boltzmann.
+    pub histogram: bool,
 }
 
 impl App {
@@ -65,6 +68,27 @@ impl App {
         if is_key_pressed(KeyCode::X) {
             self.export_data();
         }
+        if is_key_pressed(KeyCode::A) {
+            self.trails.on = !self.trails.on;
+        }
+        if is_key_pressed(KeyCode::F2) {
+            self.overlays.thick = !self.overlays.thick;
+            self.font = if self.overlays.thick { 30.0 } else { 20.0 };
+            let mode = if self.overlays.thick { "on" } else { "off" };
+            self.toast(format!("Projector mode {mode}"));
+        }
+        if is_key_pressed(KeyCode::F3) {
+            self.overlays.safe_palette = !self.overlays.safe_palette;
+            let which = if self.overlays.safe_palette {
+                "colour-blind-safe palette (Okabe-Ito, by disc number)"
+            } else {
+                "the scene's colours"
+            };
+            self.toast(format!("Discs in {which}"));
+        }
+        if is_key_pressed(KeyCode::F4) {
+            self.lesson.histogram = !self.lesson.histogram;
+        }
     }
 
     /// After the frame's steps: keep the ledger on, sample the totals and
@@ -80,6 +104,7 @@ impl App {
         }
         let metrics = self.world.metrics();
         self.totals.push(&self.world, &metrics);
+        self.trails.record(&self.world);
         if steps > 0 || self.history.is_empty() {
             self.history.record(&self.world);
         }
@@ -184,6 +209,10 @@ impl App {
         if self.lesson.totals {
             let rect = Rect::new(free.x - w - 10.0, free.y - h - 3.0 * font, w, h);
             plot::draw_totals(&self.totals, rect, font);
+        }
+        if self.lesson.histogram {
+            let rect = Rect::new(free.x - w - 10.0, free.y - 2.0 * h - 4.0 * font, w, h);
+            plot::draw_speed_histogram(&self.world, rect, font);
         }
         if self.lesson.diagram {
             let side = 220.0f32.min(free.y * 0.4);

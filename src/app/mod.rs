@@ -15,6 +15,7 @@ mod lesson;
 mod panel;
 mod plot;
 mod scenes;
+mod trails;
 
 use camera::Camera;
 use clock::FixedStepClock;
@@ -129,6 +130,7 @@ struct App {
     lesson: lesson::LessonOverlays,
     totals: plot::Totals,
     history: impulse::history::History,
+    trails: trails::Trails,
 }
 
 impl App {
@@ -167,6 +169,7 @@ impl App {
             lesson: lesson::LessonOverlays::default(),
             totals: plot::Totals::default(),
             history: impulse::history::History::default(),
+            trails: trails::Trails::default(),
         }
     }
 
@@ -242,7 +245,8 @@ impl App {
     fn draw(&self) {
         clear_background(Color::new(0.09, 0.10, 0.14, 1.0));
         draw::draw_boundary(&self.world, &self.camera);
-        draw::draw_discs(&self.world, &self.camera, self.selected);
+        self.trails.draw(&self.camera, self.overlays.thick);
+        draw::draw_discs(&self.world, &self.camera, self.selected, &self.overlays);
         draw::draw_arrows(&self.world, &self.camera, &self.overlays);
         draw::draw_readouts(
             &self.world,
@@ -327,6 +331,12 @@ impl App {
                 m.momentum.length()
             ),
             format!("KE = {:.3} J", m.kinetic_energy),
+            format!(
+                "collisions: {} disc-disc + {} wall = {}",
+                self.world.total_pair_collisions,
+                self.world.total_wall_hits,
+                self.world.total_pair_collisions + self.world.total_wall_hits
+            ),
             format!(
                 "e = {:.2}   wall e = {:.2}   g = {:.2} m/s^2   {}",
                 self.world.restitution,

@@ -256,6 +256,95 @@ pub fn draw_momentum_diagram(world: &World, rect: Rect, font: f32) {
     );
 }
 
+/// Speed bins of the histogram.
+const BINS: usize = 20;
+
+/// The discs' speeds as a histogram against the 2D Maxwell–Boltzmann law
+/// at the same temperature, f(v) = (v/σ²)·exp(−v²/2σ²) with σ² = kT/m and
+/// kT = KE/N (two degrees of freedom per disc; the mean mass stands in for
+/// mixed masses), with the temperature written above.
+pub fn draw_speed_histogram(world: &World, rect: Rect, font: f32) {
+    draw_rectangle(
+        rect.x,
+        rect.y,
+        rect.w,
+        rect.h,
+        Color::new(0.05, 0.06, 0.09, 0.8),
+    );
+    let n = world.particles.len();
+    if n < 2 {
+        draw_text(
+            "speed histogram: too few discs",
+            rect.x + 6.0,
+            rect.y + font,
+            font,
+            GRAY,
+        );
+        return;
+    }
+    let kt = world.metrics().kinetic_energy / n as f64;
+    let mean_mass = world.particles.iter().map(|p| p.mass).sum::<f64>() / n as f64;
+    let sigma2 = kt / mean_mass;
+    let top = 4.0 * sigma2.sqrt().max(1e-12);
+    let width = top / BINS as f64;
+    let mut counts = [0usize; BINS];
+    for p in &world.particles {
+        let k = (p.vel.length() / width) as usize;
+        if k < BINS {
+            counts[k] += 1;
+        }
+    }
+    draw_text(
+        format!("speeds vs Maxwell-Boltzmann   kT = KE/N = {kt:.3} J"),
+        rect.x + 6.0,
+        rect.y + font,
+        font,
+        WHITE,
+    );
+    let area = Rect::new(
+        rect.x + 6.0,
+        rect.y + 1.4 * font,
+        rect.w - 12.0,
+        rect.h - 2.6 * font,
+    );
+    let density = |v: f64| v / sigma2 * (-v * v / (2.0 * sigma2)).exp();
+    let peak = density(sigma2.sqrt());
+    let tallest = counts
+        .iter()
+        .map(|&c| c as f64 / (n as f64 * width))
+        .fold(peak, f64::max);
+    let y_of = |d: f64| area.y + area.h * (1.0 - (d / tallest) as f32);
+    let bar = area.w / BINS as f32;
+    for (k, &c) in counts.iter().enumerate() {
+        let d = c as f64 / (n as f64 * width);
+        let y = y_of(d);
+        draw_rectangle(
+            area.x + k as f32 * bar + 1.0,
+            y,
+            bar - 2.0,
+            area.y + area.h - y,
+            PX_COLOR,
+        );
+    }
+    let mut last = None;
+    for k in 0..=100 {
+        let v = top * k as f64 / 100.0;
+        let point = vec2(area.x + area.w * k as f32 / 100.0, y_of(density(v)));
+        if let Some(a) = last {
+            let a: Vec2 = a;
+            draw_line(a.x, a.y, point.x, point.y, 2.0, PY_COLOR);
+        }
+        last = Some(point);
+    }
+    draw_text(
+        format!("0 to {top:.2} m/s; curve: the law at this temperature"),
+        rect.x + 6.0,
+        rect.y + rect.h - 0.3 * font,
+        0.9 * font,
+        GRAY,
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

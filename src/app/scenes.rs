@@ -79,6 +79,8 @@ impl App {
         let Some(preset) = PRESETS.get(index) else {
             return;
         };
+        // The gas preset is about the speed distribution: show it.
+        self.lesson.histogram = preset.path.contains("gas");
         match Scene::parse(preset.text, preset.path) {
             Ok(scene) => {
                 let _ = self.open_scene(scene, preset.path.to_string()); // reported
