@@ -1,0 +1,191 @@
+//! What an event does: a pair collision (alone or with others at the same
+//! instant), a wall hit, a crossing into the next cell.
+
+use super::{simultaneous, Sim, SIMULTANEOUS_TOLERANCE};
+use crate::ledger::Collision;
+use crate::resolution::collision_velocities;
+use glam::DVec2;
+
+impl Sim {
+    pub(super) fn collide_pair(&mut self, i: u32, j: u32) {
+        self.advance_to(i, self.now);
+        self.advance_to(j, self.now);
+        if self.queue.peek().is_some_and(|next| next.time <= self.now) {
+            // Another event at this very instant: maybe a disc meeting two
+            // others at once.
+            let touches = self.touches_now(i, j);
+            if touches.len() > 1 {
+                self.collide_together(&touches);
+                return;
+            }
+        }
+        let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let dist = d.length();
+        let normal = if dist > 0.0 && (d / dist).is_finite() {
+            d / dist
+        } else {
+            crate::narrow_phase::COINCIDENT_NORMAL
+        };
+        if (b.vel - a.vel).dot(normal) < 0.0 {
+            let rapid = self.now - a.last_hit < self.t_c || self.now - b.last_hit < self.t_c;
+            let e = if rapid { 1.0 } else { self.laws.restitution };
+            let (va, vb) = collision_velocities(a.mass, b.mass, a.vel, b.vel, normal, e);
+            if self.record {
+                self.collided.push(Collision {
+                    time: self.now,
+                    discs: [
+                        self.order[i as usize] as usize,
+                        self.order[j as usize] as usize,
+                    ],
+                    normal,
+                    masses: [a.mass, b.mass],
+                    before: [a.vel, b.vel],
+                    after: [va, vb],
+                });
+            }
+            for (k, v) in [(i, va), (j, vb)] {
+                let body = &mut self.bodies[k as usize];
+                body.vel = v;
+                body.gen += 1;
+                body.last_hit = self.now;
+            }
+            self.collisions += 1;
+            self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
+        }
+        self.predict(i);
+        self.predict(j);
+    }
+
+    /// The contacts, approaching and touching right now (to round-off), of
+    /// `i` and `j` with each other and with their neighbours; each disc
+    /// involved is advanced to now. Pairs are (body, body, normal).
+    pub(super) fn touches_now(&mut self, i: u32, j: u32) -> Vec<(u32, u32, DVec2)> {
+        let mut around = Vec::new();
+        for d in [i, j] {
+            let cell = self.bodies[d as usize].cell;
+            self.grid.for_each_neighbour(cell, |c, _| {
+                around.extend(self.grid.cells[c].iter().map(|&k| (d, k)));
+            });
+        }
+        let mut touches = Vec::new();
+        for (d, k) in around {
+            if k == d || (d == j && k == i) {
+                continue;
+            }
+            if touches.iter().any(|&(x, y, _)| (x, y) == (k, d)) {
+                continue;
+            }
+            self.advance_to(k, self.now);
+            let (a, b) = (self.bodies[d as usize], self.bodies[k as usize]);
+            let sep = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+            let dist = sep.length();
+            let reach = a.radius + b.radius;
+            if dist > 0.0 && dist <= reach * (1.0 + SIMULTANEOUS_TOLERANCE) {
+                let normal = sep / dist;
+                if (b.vel - a.vel).dot(normal) < 0.0 {
+                    touches.push((d, k, normal));
+                }
+            }
+        }
+        touches
+    }
+
+    /// Resolves `touches` together (see [`simultaneous`]).
+    pub(super) fn collide_together(&mut self, touches: &[(u32, u32, DVec2)]) {
+        let mut ids: Vec<u32> = touches.iter().flat_map(|&(a, b, _)| [a, b]).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        let slot = |k: u32| ids.binary_search(&k).unwrap_or(0);
+        let masses: Vec<f64> = ids.iter().map(|&k| self.bodies[k as usize].mass).collect();
+        let velocities: Vec<DVec2> = ids.iter().map(|&k| self.bodies[k as usize].vel).collect();
+        let rapid = ids
+            .iter()
+            .any(|&k| self.now - self.bodies[k as usize].last_hit < self.t_c);
+        let e = if rapid { 1.0 } else { self.laws.restitution };
+        let list: Vec<simultaneous::Touch> = touches
+            .iter()
+            .map(|&(a, b, normal)| simultaneous::Touch {
+                a: slot(a),
+                b: slot(b),
+                normal,
+            })
+            .collect();
+        let after = simultaneous::simultaneous_velocities(&masses, &velocities, &list, e);
+        if self.record {
+            for t in &list {
+                self.collided.push(Collision {
+                    time: self.now,
+                    discs: [
+                        self.order[ids[t.a] as usize] as usize,
+                        self.order[ids[t.b] as usize] as usize,
+                    ],
+                    normal: t.normal,
+                    masses: [masses[t.a], masses[t.b]],
+                    before: [velocities[t.a], velocities[t.b]],
+                    after: [after[t.a], after[t.b]],
+                });
+            }
+        }
+        for (&k, v) in ids.iter().zip(after) {
+            let body = &mut self.bodies[k as usize];
+            body.vel = v;
+            body.gen += 1;
+            body.last_hit = self.now;
+        }
+        self.collisions += touches.len();
+        for &k in &ids {
+            self.predict(k);
+        }
+    }
+
+    pub(super) fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
+        self.advance_to(i, self.now);
+        let rapid = self.now - self.bodies[i as usize].last_hit < self.t_c;
+        let e = if rapid {
+            1.0
+        } else {
+            self.laws.wall_restitution
+        };
+        let size = self.laws.size[axis];
+        let b = &mut self.bodies[i as usize];
+        let into_wall = if upper {
+            b.vel[axis] > 0.0
+        } else {
+            b.vel[axis] < 0.0
+        };
+        b.pos[axis] = if upper { size - b.radius } else { b.radius };
+        if into_wall {
+            self.wall_impulse += b.mass * (1.0 + e) * b.vel[axis].abs();
+            b.vel[axis] *= -e;
+            b.gen += 1;
+            b.last_hit = self.now;
+            self.wall_hits += 1;
+        }
+        self.predict(i);
+    }
+
+    pub(super) fn cross_cell(&mut self, i: u32, axis: usize, upper: bool) {
+        self.advance_to(i, self.now);
+        let from = self.bodies[i as usize].cell;
+        let mut to = from;
+        to[axis] += if upper { 1 } else { -1 };
+        if self.grid.periodic {
+            let n = self.grid.dims[axis];
+            let size = self.laws.size[axis];
+            let b = &mut self.bodies[i as usize];
+            if to[axis] >= n {
+                to[axis] = 0;
+                b.pos[axis] -= size;
+            } else if to[axis] < 0 {
+                to[axis] = n - 1;
+                b.pos[axis] += size;
+            }
+        }
+        to[axis] = to[axis].clamp(0, self.grid.dims[axis] - 1);
+        self.grid.remove(i, from);
+        self.grid.insert(i, to);
+        self.bodies[i as usize].cell = to;
+        self.predict(i);
+    }
+}

@@ -1,0 +1,185 @@
+//! Setting a step up: sorting the discs into cells and predicting every
+//! event (at the start, or after an edit), separating overlaps a scene
+//! starts with, and carrying the state into the next step when nothing was
+//! edited.
+
+use super::grid::Grid;
+use super::queue::EventQueue;
+use super::{
+    Body, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, SEPARATION_SWEEPS, TC_FRACTION,
+};
+use crate::boundary::Boundary;
+use crate::particle::Particle;
+use crate::world::Laws;
+use glam::DVec2;
+
+impl Sim {
+    pub(super) fn new(particles: &[Particle], laws: &Laws, dt: f64) -> Self {
+        let n = particles.len();
+        let mut sim = Sim {
+            laws: *laws,
+            end: dt,
+            now: 0.0,
+            t_c: TC_FRACTION * dt,
+            bodies: Vec::with_capacity(n),
+            order: Vec::with_capacity(n),
+            grid: Grid::new(particles, laws),
+            queue: EventQueue::new(n),
+            cap: EVENTS_PER_DISC
+                .saturating_mul(n)
+                .saturating_add(EVENTS_BASE),
+            events: 0,
+            collisions: 0,
+            wall_hits: 0,
+            wall_impulse: 0.0,
+            max_overlap: 0.0,
+            truncated: false,
+            finished_at: 0.0,
+            overlapping: false,
+            stop_at_collision: false,
+            stopped: false,
+            record: false,
+            collided: Vec::new(),
+        };
+        let wrap = laws.boundary == Boundary::Periodic;
+        let mut keyed: Vec<(usize, u32)> = particles
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let pos = if wrap {
+                    p.pos.rem_euclid(laws.size)
+                } else {
+                    p.pos
+                };
+                (sim.grid.index(sim.grid.cell_of(pos)), i as u32)
+            })
+            .collect();
+        keyed.sort_unstable();
+        for (k, &(_, i)) in keyed.iter().enumerate() {
+            let p = &particles[i as usize];
+            let pos = if wrap {
+                p.pos.rem_euclid(laws.size)
+            } else {
+                p.pos
+            };
+            let cell = sim.grid.cell_of(pos);
+            sim.bodies.push(Body {
+                pos,
+                vel: p.vel,
+                time: 0.0,
+                radius: p.radius,
+                mass: p.mass,
+                last_hit: f64::NEG_INFINITY,
+                gen: 0,
+                cell,
+            });
+            sim.order.push(i);
+            sim.grid.insert(k as u32, cell);
+        }
+        sim.overlapping = !sim.separate_overlaps();
+        sim.predict_all();
+        sim
+    }
+
+    /// Pushes overlapping discs apart (positions only, shares by inverse
+    /// mass, so no velocity and no momentum appear and the centre of mass
+    /// stays), sweeping up to [`SEPARATION_SWEEPS`] times; returns whether
+    /// every overlap deeper than [`OVERLAP_TOLERANCE`] is gone. Hard discs
+    /// never overlap by themselves, but a scene may start that way; a disc
+    /// pushed across a cell border is moved to its new cell.
+    pub(super) fn separate_overlaps(&mut self) -> bool {
+        for _ in 0..SEPARATION_SWEEPS {
+            let mut moved = false;
+            for i in 0..self.bodies.len() as u32 {
+                let cell = self.bodies[i as usize].cell;
+                let mut partners: Vec<u32> = Vec::new();
+                self.grid.for_each_neighbour(cell, |c, _| {
+                    partners.extend(self.grid.cells[c].iter().filter(|&&j| j > i));
+                });
+                for j in partners {
+                    moved |= self.push_apart(i, j);
+                }
+            }
+            if !moved {
+                return true;
+            }
+            for k in 0..self.bodies.len() as u32 {
+                let b = &mut self.bodies[k as usize];
+                if self.laws.boundary == Boundary::Box {
+                    let lo = DVec2::splat(b.radius);
+                    b.pos = b.pos.clamp(lo, (self.laws.size - lo).max(lo));
+                } else if self.laws.boundary == Boundary::Periodic {
+                    b.pos = b.pos.rem_euclid(self.laws.size);
+                }
+                let to = self.grid.cell_of(b.pos);
+                if to != b.cell {
+                    let from = b.cell;
+                    b.cell = to;
+                    self.grid.remove(k, from);
+                    self.grid.insert(k, to);
+                }
+            }
+        }
+        false
+    }
+
+    /// Moves discs `i` and `j` apart if they overlap beyond the tolerance.
+    pub(super) fn push_apart(&mut self, i: u32, j: u32) -> bool {
+        let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let reach = a.radius + b.radius;
+        let dist = d.length();
+        let depth = reach - dist;
+        if depth <= OVERLAP_TOLERANCE * reach {
+            return false;
+        }
+        let normal = if dist > 0.0 {
+            d / dist
+        } else {
+            crate::narrow_phase::COINCIDENT_NORMAL
+        };
+        let total = a.mass + b.mass;
+        self.bodies[i as usize].pos -= normal * (depth * b.mass / total);
+        self.bodies[j as usize].pos += normal * (depth * a.mass / total);
+        true
+    }
+
+    /// Whether the discs are exactly as the last step left them, under the
+    /// same geometry, so the queued events still hold.
+    pub(super) fn continues(&self, particles: &[Particle], laws: &Laws) -> bool {
+        let same_geometry = laws.size == self.laws.size
+            && laws.gravity == self.laws.gravity
+            && laws.boundary == self.laws.boundary;
+        same_geometry
+            && !self.overlapping
+            && particles.len() == self.bodies.len()
+            && self.order.iter().zip(&self.bodies).all(|(&i, b)| {
+                let p = &particles[i as usize];
+                p.pos == self.written_pos(b)
+                    && p.vel == b.vel
+                    && p.mass == b.mass
+                    && p.radius == b.radius
+            })
+    }
+
+    /// Starts a new step of `dt` from where the last one ended: every disc is
+    /// at the end time, which becomes time zero.
+    pub(super) fn restart(&mut self, laws: &Laws, dt: f64) {
+        let shift = self.finished_at;
+        for b in &mut self.bodies {
+            b.time -= shift;
+            b.last_hit -= shift;
+        }
+        self.queue.shift_times(shift);
+        self.laws = *laws; // restitutions may have changed
+        self.now = 0.0;
+        self.end = dt;
+        self.t_c = TC_FRACTION * dt;
+        self.events = 0;
+        self.collisions = 0;
+        self.wall_hits = 0;
+        self.wall_impulse = 0.0;
+        self.max_overlap = 0.0;
+        self.truncated = false;
+    }
+}
