@@ -119,14 +119,7 @@ fn legend_width(grid: &Grid) -> i32 {
 /// The directory must exist; each file is replaced atomically, and errors
 /// name the file.
 pub fn write_grid(grid: &Grid, stem: &Path) -> Result<(PathBuf, PathBuf)> {
-    if stem.file_name().is_none() {
-        return Err(anyhow!(
-            "chart path {} does not name a file",
-            stem.display()
-        ));
-    }
-    let png_path = with_suffix(stem, ".png");
-    let svg_path = with_suffix(stem, ".svg");
+    let (png_path, svg_path) = super::image_paths(stem)?;
     ensure_font()?;
     let layout = GridLayout::new(grid);
     let size = layout.size;

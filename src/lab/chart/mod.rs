@@ -94,21 +94,24 @@ pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0x00, 0x00, 0x00), // black
 ];
 
-/// Writes `<stem>.png` (1200x800) and `<stem>.svg` side by side; returns the two paths.
-///
-/// `.png` and `.svg` are appended to `stem` (so `out/bench.v2` gives
-/// `out/bench.v2.png`). The directory must exist. Both images are rendered
-/// before either file is written, and each file is replaced atomically.
-pub fn write_chart(chart: &Chart, stem: &Path) -> Result<(PathBuf, PathBuf)> {
+/// `<stem>.png` and `<stem>.svg`, or an error if `stem` names no file.
+fn image_paths(stem: &Path) -> Result<(PathBuf, PathBuf)> {
     if stem.file_name().is_none() {
         return Err(anyhow!(
             "chart path {} does not name a file",
             stem.display()
         ));
     }
-    let png_path = with_suffix(stem, ".png");
-    let svg_path = with_suffix(stem, ".svg");
+    Ok((with_suffix(stem, ".png"), with_suffix(stem, ".svg")))
+}
 
+/// Writes `<stem>.png` (1200x800) and `<stem>.svg` side by side; returns the two paths.
+///
+/// `.png` and `.svg` are appended to `stem` (so `out/bench.v2` gives
+/// `out/bench.v2.png`). The directory must exist. Both images are rendered
+/// before either file is written, and each file is replaced atomically.
+pub fn write_chart(chart: &Chart, stem: &Path) -> Result<(PathBuf, PathBuf)> {
+    let (png_path, svg_path) = image_paths(stem)?;
     let layout = Layout::new(chart);
     let pixels = render_rgb(chart, &layout)?;
     let svg = render_svg(chart, &layout)?;
