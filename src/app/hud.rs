@@ -137,7 +137,7 @@ pub const HELP: &[(&str, &str)] = &[
 /// The preset menu, centred: key, name and description of each preset.
 pub fn draw_preset_menu(viewport: Vec2, font: f32, entries: &[(String, String, String)]) {
     let mut lines = vec![
-        "Presets - press the key (or click a line); P closes".to_string(),
+        "Presets - press its key; P or Esc closes".to_string(),
         String::new(),
     ];
     for (key, name, description) in entries {
