@@ -675,3 +675,56 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
     assert!(resumed["time"].as_f64().unwrap() > back["time"].as_f64().unwrap());
     app.quit();
 }
+
+#[test]
+fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("aim") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 400.0]);
+    app.xdo(&["key", "1"]); // head-on: disc 0 moves, at 0.5 s per arrow
+    let s = app.wait_frames(3);
+    let view = View::of(&s);
+    let disc = &s["particles"][0];
+    let (pos, vel) = (vec2(&disc["pos"]), vec2(&disc["vel"]));
+    // Select it with a click on its centre.
+    let centre = view.to_screen(pos);
+    app.move_to(centre);
+    app.xdo(&["click", "1"]);
+    let selected = app.wait_frames(3);
+    assert_eq!(selected["selected"], 0);
+    // Drag its arrow's tip straight up by 60 px.
+    let tip = view.to_screen([pos[0] + 0.5 * vel[0], pos[1] + 0.5 * vel[1]]);
+    // Whole pixels: that is where xdotool puts the cursor.
+    let target = [centre[0].round(), (centre[1] - 60.0).round()];
+    app.move_to(tip);
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    for k in 1..=5 {
+        let t = k as f64 / 5.0;
+        app.move_to([
+            tip[0] + t * (target[0] - tip[0]),
+            tip[1] + t * (target[1] - tip[1]),
+        ]);
+        sleep(Duration::from_millis(30));
+    }
+    app.wait_frames(2);
+    app.xdo(&["mouseup", "1"]);
+    let after = app.wait_frames(3);
+    let d = &after["particles"][0];
+    assert_eq!(vec2(&d["pos"]), pos, "aiming does not move the disc");
+    let want = [
+        (view.to_world(target)[0] - pos[0]) / 0.5,
+        (view.to_world(target)[1] - pos[1]) / 0.5,
+    ];
+    let got = vec2(&d["vel"]);
+    assert!(
+        (got[0] - want[0]).abs() < 1e-9 && (got[1] - want[1]).abs() < 1e-9,
+        "velocity {got:?}, expected {want:?}"
+    );
+    assert!(got[1] > 0.0, "dragged up on screen: +y in the world");
+    app.quit();
+}

@@ -86,6 +86,7 @@ pub const HELP: &[(&str, &str)] = &[
         "Left drag on a disc",
         "grab and fling it (it keeps the mouse's velocity)",
     ),
+    ("Drag the selected disc's arrow tip", "set its velocity"),
     ("Right / middle drag, arrows", "pan"),
     ("Wheel, + / -", "zoom (at the cursor / at the centre)"),
     ("F", "fit the box to the window"),

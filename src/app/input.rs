@@ -1,7 +1,7 @@
 //! Keyboard and mouse: every binding the help overlay lists lives here.
 
-use super::interaction::Released;
-use super::{scenes, App};
+use super::interaction::{Gesture, Released};
+use super::{draw, scenes, App};
 use glam::DVec2;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
@@ -13,6 +13,8 @@ const ZOOM_STEP: f64 = 1.15;
 const PAN_PIXELS: f64 = 12.0;
 /// A press that moves less than this is a click, not a drag.
 const CLICK_SLOP_PIXELS: f64 = 4.0;
+/// A press this close (px) to the selected disc's velocity arrow tip drags the tip.
+const ARROW_TIP_PIXELS: f64 = 10.0;
 /// Gravity G switches on (m/s², downwards).
 const EARTH_GRAVITY: f64 = 9.81;
 
@@ -283,7 +285,19 @@ impl App {
             if !on_panel {
                 macroquad::ui::root_ui().clear_input_focus(); // leave any text field
                 let slop = CLICK_SLOP_PIXELS / self.camera.scale;
-                self.selected = self.gesture.press(&self.world, at, now, slop);
+                let tip = self
+                    .selected
+                    .filter(|_| self.overlays.velocity)
+                    .and_then(|i| {
+                        let p = self.world.particles.get(i)?;
+                        let centre = self.camera.world_to_screen(p.pos);
+                        let offset = self.camera.vector_to_screen(p.vel * draw::ARROW_SECONDS);
+                        Gesture::near_tip(mouse, centre, offset, ARROW_TIP_PIXELS).then_some(i)
+                    });
+                match tip {
+                    Some(i) => self.gesture.press_arrow_tip(i, draw::ARROW_SECONDS),
+                    None => self.selected = self.gesture.press(&self.world, at, now, slop),
+                }
             }
         } else if is_mouse_button_down(MouseButton::Left) {
             self.gesture.drag(&mut self.world, at, now);
@@ -294,6 +308,12 @@ impl App {
             match self.gesture.release(&mut self.world, at, self.new_disc) {
                 Released::Launched(i) => self.selected = Some(i),
                 Released::NoRoom => self.toast("No room for a new disc here"),
+                Released::Aimed(i, v) => {
+                    self.toast(format!(
+                        "Disc {i}: velocity set to ({:+.2}, {:+.2}) m/s",
+                        v.x, v.y
+                    ));
+                }
                 Released::Flung(..) | Released::Nothing => {}
             }
         }

@@ -62,6 +62,14 @@ pub enum Gesture {
         /// Drags shorter than this (m) are clicks.
         slop: f64,
     },
+    /// Dragging the tip of disc `index`'s velocity arrow: its velocity is
+    /// (tip − centre) / `seconds`, the arrow's time scale.
+    Aiming {
+        /// The disc.
+        index: usize,
+        /// Seconds of travel the arrow shows.
+        seconds: f64,
+    },
 }
 
 /// What a release did.
@@ -75,6 +83,8 @@ pub enum Released {
     NoRoom,
     /// A held disc was let go with this velocity.
     Flung(usize, DVec2),
+    /// A disc's velocity was set by its arrow's tip.
+    Aimed(usize, DVec2),
 }
 
 /// Launch velocity for a drag from `start` to `end` (world).
@@ -120,8 +130,27 @@ impl Gesture {
         }
     }
 
+    /// Starts dragging the tip of disc `index`'s velocity arrow (drawn
+    /// `seconds` long).
+    pub fn press_arrow_tip(&mut self, index: usize, seconds: f64) {
+        *self = Gesture::Aiming { index, seconds };
+    }
+
+    /// Whether screen point `cursor` is within `reach` pixels of the tip of
+    /// the velocity arrow of a disc at `centre` with velocity `tip_offset`
+    /// (both already in screen pixels).
+    pub fn near_tip(cursor: DVec2, centre: DVec2, tip_offset: DVec2, reach: f64) -> bool {
+        tip_offset.length() > reach && cursor.distance(centre + tip_offset) <= reach
+    }
+
     /// Follows the cursor; a held disc moves with it (inside the walls).
     pub fn drag(&mut self, world: &mut World, at: DVec2, now: f64) {
+        if let Gesture::Aiming { index, seconds } = *self {
+            if let Some(p) = world.particles.get_mut(index) {
+                p.vel = (at - p.pos) / seconds;
+            }
+            return;
+        }
         if let Gesture::Holding {
             trail,
             pressed_at,
@@ -168,6 +197,13 @@ impl Gesture {
     pub fn release(&mut self, world: &mut World, at: DVec2, new_disc: NewDisc) -> Released {
         match std::mem::take(self) {
             Gesture::Idle => Released::Nothing,
+            Gesture::Aiming { index, seconds } => match world.particles.get_mut(index) {
+                Some(p) => {
+                    p.vel = (at - p.pos) / seconds;
+                    Released::Aimed(index, p.vel)
+                }
+                None => Released::Nothing,
+            },
             Gesture::Launching { start, slop } => {
                 if start.distance(at) <= slop {
                     return Released::Nothing; // a click on empty space
@@ -395,5 +431,39 @@ mod tests {
             Released::Flung(0, DVec2::new(1.0, -2.0)),
             "a click keeps the velocity"
         );
+    }
+
+    #[test]
+    fn dragging_the_arrow_tip_sets_the_velocity_it_draws() {
+        let mut w = world();
+        let centre = w.particles[0].pos;
+        // The tip is hit only near it, and only on an arrow longer than the reach.
+        let tip = DVec2::new(40.0, 0.0);
+        assert!(Gesture::near_tip(
+            DVec2::new(105.0, 3.0),
+            DVec2::new(60.0, 0.0),
+            tip,
+            10.0
+        ));
+        assert!(!Gesture::near_tip(
+            DVec2::new(80.0, 0.0),
+            DVec2::new(60.0, 0.0),
+            tip,
+            10.0
+        ));
+        assert!(!Gesture::near_tip(
+            DVec2::ZERO,
+            DVec2::ZERO,
+            DVec2::new(5.0, 0.0),
+            10.0
+        ));
+        let mut g = Gesture::default();
+        g.press_arrow_tip(0, 0.5);
+        g.drag(&mut w, centre + DVec2::new(1.0, 0.0), 0.0);
+        assert_eq!(w.particles[0].vel, DVec2::new(2.0, 0.0));
+        let r = g.release(&mut w, centre + DVec2::new(0.5, 0.5), NEW);
+        assert_eq!(r, Released::Aimed(0, DVec2::new(1.0, 1.0)));
+        assert_eq!(w.particles[0].vel, DVec2::new(1.0, 1.0));
+        assert_eq!(w.particles[0].pos, centre, "aiming moves nothing");
     }
 }
