@@ -212,7 +212,21 @@ impl Scene {
             origin: origin.to_string(),
             message: e.to_string().trim_end().replace('\n', " | "),
         })?;
-        scene.validate(origin)?;
+        scene.validate(origin).map_err(|e| match e {
+            SceneError::Invalid {
+                origin,
+                field,
+                reason,
+            } => SceneError::Invalid {
+                origin: match line_of(text, &field) {
+                    Some(line) => format!("{origin}, line {line}"),
+                    None => origin,
+                },
+                field,
+                reason,
+            },
+            other => other,
+        })?;
         Ok(scene)
     }
 
@@ -398,6 +412,36 @@ fn fits(boundary: Boundary, size: DVec2, pos: DVec2, radius: f64) -> bool {
         Boundary::Periodic => pos.cmpge(DVec2::ZERO).all() && pos.cmplt(size).all(),
         Boundary::Open => true,
     }
+}
+
+/// The line (1-based) of `field` in scene text: `particles[2].mass` is the
+/// `mass` line of the third `[[particles]]` table, `world.size` the `size`
+/// line of `[world]`; the table's header when the key is not written.
+pub fn line_of(text: &str, field: &str) -> Option<usize> {
+    let (table, key) = field.split_once('.').unwrap_or((field, ""));
+    let (header, nth) = match table.split_once('[') {
+        Some((name, index)) => (
+            format!("[[{name}]]"),
+            index.trim_end_matches(']').parse::<usize>().ok()?,
+        ),
+        None => (format!("[{table}]"), 0),
+    };
+    let lines: Vec<&str> = text.lines().collect();
+    let start = lines
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.trim() == header)
+        .nth(nth)
+        .map(|(k, _)| k)?;
+    let key = key.split(['.', '[']).next().unwrap_or("");
+    let found = lines[start + 1..]
+        .iter()
+        .take_while(|l| !l.trim_start().starts_with('['))
+        .position(|l| {
+            let l = l.trim_start();
+            !key.is_empty() && l.starts_with(key) && l[key.len()..].trim_start().starts_with('=')
+        });
+    Some(found.map_or(start, |k| start + 1 + k) + 1)
 }
 
 /// Adds `fill.count` seeded random discs that overlap nothing already there

@@ -55,9 +55,15 @@ fn bad_values_name_the_file_and_the_field() {
         ("pos=[0.2, 5.0]", "particles[0].pos"),
         ("pos=[50.0, 5.0]", "particles[0].pos"),
     ] {
-        let msg = error_of(&disc(field));
-        assert!(msg.starts_with("lab.toml: "), "{msg}");
-        assert!(msg.contains(needle), "{field}: {msg}");
+        let text = disc(field);
+        let msg = error_of(&text);
+        // The message names the file, the line where the field is written
+        // (it is the last line of the table) and the field.
+        let line = text.lines().count();
+        assert!(
+            msg.starts_with(&format!("lab.toml, line {line}: {needle}")),
+            "{field}: {msg}"
+        );
     }
 }
 
@@ -126,4 +132,24 @@ fn a_saved_world_reloads_bit_for_bit() {
         b.step(1e-3);
     }
     assert_eq!(a.state_hash(), b.state_hash());
+}
+
+#[test]
+fn value_errors_give_the_line_of_the_field_too() {
+    // Overlap: the second disc's `pos` line (line 8 of this text).
+    let text = format!(
+        "{WORLD}[[particles]]\npos = [5.0, 5.0]\nmass = 1.0\nradius = 0.5\n\
+         [[particles]]\npos = [5.5, 5.0]\nmass = 1.0\nradius = 0.5\n"
+    );
+    assert_eq!(text.lines().nth(7), Some("pos = [5.5, 5.0]"));
+    let msg = error_of(&text);
+    assert!(msg.contains("lab.toml, line 8: particles[1].pos"), "{msg}");
+    // A negative mass in the first disc: line 5.
+    let text = format!("{WORLD}[[particles]]\npos = [5.0, 5.0]\nmass = -1.0\nradius = 0.5\n");
+    assert_eq!(text.lines().nth(4), Some("mass = -1.0"));
+    let msg = error_of(&text);
+    assert!(msg.contains("line 5: particles[0].mass"), "{msg}");
+    // A bad world value: its own line.
+    let msg = error_of("[world]\nsize = [10.0, 10.0]\nrestitution = 1.5\n");
+    assert!(msg.contains("line 3: world.restitution"), "{msg}");
 }
