@@ -74,6 +74,23 @@ impl Xvfb {
             .parse()
             .unwrap_or_else(|_| panic!("Xvfb said {line:?}"));
         let display = format!(":{number}");
+        // Ready means a client can connect: wait for xdotool to manage it
+        // (on a loaded machine the first connections can still fail).
+        let deadline = Instant::now() + Duration::from_secs(20);
+        while !Command::new("xdotool")
+            .arg("getmouselocation")
+            .env("DISPLAY", &display)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+        {
+            assert!(
+                Instant::now() < deadline,
+                "Xvfb {display} accepts no clients"
+            );
+            sleep(Duration::from_millis(100));
+        }
         Some(Xvfb { child, display })
     }
 }
