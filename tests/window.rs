@@ -684,6 +684,15 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
         .collect();
     assert_eq!(csv.len(), 3, "{csv:?}");
 
+    // F12 saves what the window shows into the same folder.
+    app.xdo(&["key", "F12"]);
+    app.wait_frames(4);
+    let png = out.path().join("head-on-equal-masses.png");
+    let shot = image::open(&png)
+        .unwrap_or_else(|e| panic!("{}: {e}", png.display()))
+        .to_rgb8();
+    assert_eq!(shot.dimensions(), (1280, 800));
+
     // Space resumes from the rewound moment and time runs on.
     app.xdo(&["key", "space"]);
     let resumed = app.wait_frames(20);

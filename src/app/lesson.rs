@@ -5,7 +5,8 @@
 //! Keys: T totals plot, O centre of mass, D momentum diagram, U ledger,
 //! Z centre-of-mass frame, J run to the next collision, `,` / `.` rewind
 //! and forward (Shift: ten times as far), X export CSV files, A trails,
-//! F2 projector mode, F3 colour-blind-safe palette, F4 speed histogram.
+//! F2 projector mode, F3 colour-blind-safe palette, F4 speed histogram,
+//! F12 screenshot into the output folder.
 
 use super::hud::{screen_text, text_panel};
 use super::{export, plot, scenes, App};
@@ -88,6 +89,10 @@ impl App {
         }
         if is_key_pressed(KeyCode::F4) {
             self.lesson.histogram = !self.lesson.histogram;
+        }
+        if is_key_pressed(KeyCode::F12) {
+            let stem = scenes::slug(self.scene.name.as_deref().unwrap_or("scene"));
+            self.screenshot_request = Some(scenes::free_file(&self.options.out, &stem, "png"));
         }
     }
 

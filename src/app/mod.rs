@@ -131,6 +131,8 @@ struct App {
     totals: plot::Totals,
     history: impulse::history::History,
     trails: trails::Trails,
+    /// F12 asked for a screenshot of the next frame, to this file.
+    screenshot_request: Option<PathBuf>,
 }
 
 impl App {
@@ -170,6 +172,7 @@ impl App {
             totals: plot::Totals::default(),
             history: impulse::history::History::default(),
             trails: trails::Trails::default(),
+            screenshot_request: None,
         }
     }
 
@@ -191,18 +194,26 @@ impl App {
                 .exit_after
                 .is_some_and(|limit| get_time() >= limit);
             let closing = self.quit || is_quit_requested() || timed_out;
-            let capture = (closing && self.options.screenshot.is_some()).then(dump::capture_frame);
+            let requested = self.screenshot_request.take();
+            let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
+            let capture = wanted.then(dump::capture_frame);
             self.draw();
             self.frame += 1;
             self.write_dump();
-            if closing {
-                if let Some(target) = capture {
-                    next_frame().await; // finishes the frame, panel included
+            if let Some(target) = capture {
+                next_frame().await; // finishes the frame, panel included
+                if closing {
                     self.save_screenshot(&target);
                 }
+                if let Some(path) = requested {
+                    self.save_screenshot_key(&target, &path);
+                }
+            } else if !closing {
+                next_frame().await;
+            }
+            if closing {
                 break;
             }
-            next_frame().await;
         }
     }
 
@@ -402,6 +413,20 @@ impl App {
         match dump::write_png(path, w, h, &rgba) {
             Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
             Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
+        }
+    }
+
+    /// Saves the frame F12 asked for and says where.
+    fn save_screenshot_key(&mut self, target: &RenderTarget, path: &std::path::Path) {
+        let (w, h, rgba) = dump::finished_frame(target);
+        let saved = std::fs::create_dir_all(&self.options.out)
+            .and_then(|()| dump::write_png(path, w, h, &rgba));
+        match saved {
+            Ok(()) => {
+                eprintln!("impulse: screenshot saved to {}", path.display());
+                self.toast(format!("Screenshot saved to {}", path.display()));
+            }
+            Err(e) => self.report(format!("Screenshot not saved to {}: {e}", path.display())),
         }
     }
 

@@ -64,10 +64,15 @@ pub fn slug(name: &str) -> String {
 
 /// The first of `dir/stem.toml`, `dir/stem-2.toml`, … that does not exist.
 pub fn free_path(dir: &Path, stem: &str) -> PathBuf {
-    let mut path = dir.join(format!("{stem}.toml"));
+    free_file(dir, stem, "toml")
+}
+
+/// The first of `dir/stem.ext`, `dir/stem-2.ext`, … that does not exist.
+pub fn free_file(dir: &Path, stem: &str, ext: &str) -> PathBuf {
+    let mut path = dir.join(format!("{stem}.{ext}"));
     let mut k = 2;
     while path.exists() {
-        path = dir.join(format!("{stem}-{k}.toml"));
+        path = dir.join(format!("{stem}-{k}.{ext}"));
         k += 1;
     }
     path
