@@ -124,7 +124,7 @@ impl App {
     }
 
     /// Every disc's velocity less the centre of mass's: total momentum 0.
-    fn center_of_mass_frame(&mut self) {
+    pub(super) fn center_of_mass_frame(&mut self) {
         let drift = self.world.metrics().center_of_mass_velocity;
         for p in &mut self.world.particles {
             p.vel -= drift;

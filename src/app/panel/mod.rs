@@ -79,6 +79,7 @@ impl Note {
 
 /// What a click asked for, done once the panel is drawn.
 enum Action {
+    CenterOfMassFrame,
     Apply,
     Delete,
     Open,
@@ -226,7 +227,7 @@ impl App {
                 self.world_section(ui);
                 self.method_section(ui);
                 self.new_disc_section(ui);
-                self.overlay_section(ui);
+                self.overlay_section(ui, &mut actions);
                 self.selected_section(ui, &mut actions);
                 self.scene_section(ui, &mut actions);
             });
@@ -236,6 +237,7 @@ impl App {
         drop(ui);
         for action in actions {
             match action {
+                Action::CenterOfMassFrame => self.center_of_mass_frame(),
                 Action::Apply => self.apply_disc_fields(),
                 Action::Delete => self.delete_selected(),
                 Action::Open => self.open_from_panel(),

@@ -9,7 +9,7 @@
 
 use super::selected::field_text;
 use super::widgets::{checkbox, combo, SliderScale};
-use super::ROW;
+use super::{Action, ROW};
 use crate::app::clock::TIME_SCALES;
 use crate::app::draw::ReadoutScope;
 use crate::app::input::{BROAD_PHASES, METHODS, SUBSTEPS};
@@ -171,18 +171,34 @@ impl App {
         }
     }
 
-    pub(super) fn overlay_section(&mut self, ui: &mut Ui) {
+    pub(super) fn overlay_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
         self.panel.header(ui, "Overlays");
         let o = &mut self.overlays;
         checkbox(ui, hash!(), "velocity arrows", &mut o.velocity);
         checkbox(ui, hash!(), "momentum arrows", &mut o.momentum);
         checkbox(ui, hash!(), "totals (HUD)", &mut o.hud);
+        let l = &mut self.lesson;
+        checkbox(ui, hash!(), "totals plot (T)", &mut l.totals);
+        checkbox(ui, hash!(), "centre of mass (O)", &mut l.center_of_mass);
+        checkbox(ui, hash!(), "p diagram (D)", &mut l.diagram);
+        checkbox(ui, hash!(), "ledger (U)", &mut l.ledger);
+        checkbox(ui, hash!(), "histogram (F4)", &mut l.histogram);
+        checkbox(ui, hash!(), "trails (A)", &mut self.trails.on);
+        let o = &mut self.overlays;
         const SCOPES: [ReadoutScope; 3] =
             [ReadoutScope::Off, ReadoutScope::Selected, ReadoutScope::All];
         let labels = ["off", "selected", "all"].map(String::from);
         let index = SCOPES.iter().position(|&s| s == o.readouts).unwrap_or(0);
         if let Some(k) = combo(ui, hash!(), "readouts", &labels, index) {
             o.readouts = SCOPES[k];
+        }
+        let r = self.panel.row(ui, ROW + 2.0);
+        let at = Rect::new(r.x, r.y, 240.0, r.h);
+        if self
+            .panel
+            .button(ui, "com-frame", at, "Centre-of-mass frame (Z)")
+        {
+            actions.push(Action::CenterOfMassFrame);
         }
     }
 }
