@@ -43,6 +43,23 @@ pub const PRESETS: [Preset; 11] = [
     preset!("Ctrl+N", "preset-empty.toml"),
 ];
 
+/// "key  name" of every preset, for menus (parsed once).
+pub fn preset_labels() -> &'static [String] {
+    static LABELS: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+    LABELS.get_or_init(|| {
+        PRESETS
+            .iter()
+            .map(|p| {
+                let name = Scene::parse(p.text, p.path)
+                    .ok()
+                    .and_then(|s| s.name)
+                    .unwrap_or_else(|| p.path.to_string());
+                format!("{}  {}", p.key, super::hud::screen_text(&name))
+            })
+            .collect()
+    })
+}
+
 /// A file name for saving a scene called `name` (ASCII letters and digits
 /// kept, the rest turned into single hyphens).
 pub fn slug(name: &str) -> String {

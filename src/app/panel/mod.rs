@@ -79,6 +79,7 @@ impl Note {
 
 /// What a click asked for, done once the panel is drawn.
 enum Action {
+    OpenPreset(usize),
     CenterOfMassFrame,
     Apply,
     Delete,
@@ -237,6 +238,7 @@ impl App {
         drop(ui);
         for action in actions {
             match action {
+                Action::OpenPreset(k) => self.open_preset(k),
                 Action::CenterOfMassFrame => self.center_of_mass_frame(),
                 Action::Apply => self.apply_disc_fields(),
                 Action::Delete => self.delete_selected(),

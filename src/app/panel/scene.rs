@@ -1,18 +1,26 @@
-//! The "Scene file (TOML)" section: a path field with Open (or Enter) and
+//! The "Scene" section: a menu of the classroom presets, then a path field
+//! for scene files (TOML) with Open (or Enter) and
 //! Save (or Ctrl+S), where saves go, and a note on how the last one went.
 //! A file that does not load is reported and the current scene stays.
 
+use super::widgets::combo;
 use super::{Action, Note, LABEL_X, ROW};
-use crate::app::App;
+use crate::app::{scenes, App};
 use impulse::Scene;
 use macroquad::prelude::*;
-use macroquad::ui::Ui;
+use macroquad::ui::{hash, Ui};
 use std::path::Path;
 
 impl App {
     pub(super) fn scene_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
+        self.panel.header(ui, "Scene");
+        // The classroom presets, as a menu (the number keys do the same).
+        let mut labels = vec!["open a preset...".to_string()];
+        labels.extend(scenes::preset_labels().iter().cloned());
+        if let Some(k) = combo(ui, hash!(), "preset", &labels, 0) {
+            actions.push(Action::OpenPreset(k - 1));
+        }
         let panel = &mut self.panel;
-        panel.header(ui, "Scene file (TOML)");
         let r = panel.row(ui, ROW);
         let at = Rect::new(r.x, r.y + 1.0, r.w, ROW - 2.0);
         let mut path = std::mem::take(&mut panel.path);
