@@ -490,7 +490,9 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     let paused = app.wait_frames(3);
     assert!(paused["time"].as_f64().unwrap() > 0.0);
     app.xdo(&["key", "ctrl+s"]);
-    app.wait_frames(3);
+    let after_save = app.wait_frames(3);
+    assert_eq!(after_save["paused"], true);
+    assert_eq!(after_save["steps"], paused["steps"], "no step while paused");
     let saved: Vec<PathBuf> = std::fs::read_dir(out.path())
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -500,7 +502,7 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     let reloaded = Scene::load(&saved[0]).unwrap().build("saved").unwrap();
     assert_eq!(
         serde_json::to_value(&reloaded.particles).unwrap(),
-        paused["particles"],
+        after_save["particles"],
         "the saved file holds the state bit for bit"
     );
     app.quit();
@@ -509,7 +511,7 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     let saved_path = saved[0].to_str().unwrap().to_string();
     let again = Sandbox::start(&x, &["--paused", &saved_path]);
     let reopened = again.wait_frames(3);
-    assert_eq!(reopened["particles"], paused["particles"]);
+    assert_eq!(reopened["particles"], after_save["particles"]);
     assert_eq!(reopened["dt"], paused["dt"]);
     again.quit();
 }
