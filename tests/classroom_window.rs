@@ -1,0 +1,299 @@
+//! The classroom in the real window under Xvfb: presets and saving, the
+//! side panel, running to the next collision, rewinding, exporting, and
+//! aiming a disc by its velocity arrow (see `window.rs` for the packages).
+
+#[path = "window_harness/mod.rs"]
+mod harness;
+
+use harness::*;
+use impulse::Scene;
+use std::path::PathBuf;
+use std::thread::sleep;
+use std::time::Duration;
+
+#[test]
+fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("presets") else {
+        return;
+    };
+    let out = tempfile::tempdir().expect("temp dir");
+    let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
+    let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
+    app.move_to([640.0, 400.0]);
+
+    // Key 2 opens "heavy hits light", exactly as its file builds.
+    app.xdo(&["key", "2"]);
+    let opened = app.wait_frames(3);
+    let path = "assets/scenes/preset-2-heavy-hits-light.toml";
+    assert_eq!(opened["scene_origin"], path);
+    let text = std::fs::read_to_string(asset("preset-2-heavy-hits-light.toml")).unwrap();
+    let built = Scene::parse(&text, path).unwrap().build(path).unwrap();
+    assert_eq!(
+        opened["particles"],
+        serde_json::to_value(&built.particles).unwrap()
+    );
+
+    // Let it run into the collision, pause, save.
+    app.xdo(&["key", "space"]);
+    app.wait_frames(30);
+    app.xdo(&["key", "space"]);
+    let paused = app.wait_frames(3);
+    assert!(paused["time"].as_f64().unwrap() > 0.0);
+    app.xdo(&["key", "ctrl+s"]);
+    let after_save = app.wait_frames(3);
+    assert_eq!(after_save["paused"], true);
+    assert_eq!(after_save["steps"], paused["steps"], "no step while paused");
+    let saved: Vec<PathBuf> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    assert_eq!(saved.len(), 1, "one scene saved in {out_dir}: {saved:?}");
+    let reloaded = Scene::load(&saved[0]).unwrap().build("saved").unwrap();
+    assert_eq!(
+        serde_json::to_value(&reloaded.particles).unwrap(),
+        after_save["particles"],
+        "the saved file holds the state bit for bit"
+    );
+    app.quit();
+
+    // Reopening it shows the same discs.
+    let saved_path = saved[0].to_str().unwrap().to_string();
+    let again = Sandbox::start(&x, &["--paused", &saved_path]);
+    let reopened = again.wait_frames(3);
+    assert_eq!(reopened["particles"], after_save["particles"]);
+    assert_eq!(reopened["dt"], paused["dt"]);
+    again.quit();
+}
+
+#[test]
+fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("panel") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    // The names hold keys that must not act while typed: '1' opens a
+    // preset, 'c' clears the discs, 'r' resets, 'e' changes restitution.
+    let good = dir.path().join("good-scene-1-cr.toml");
+    std::fs::write(
+        &good,
+        "name = \"Good\"\n[world]\nsize = [16.0, 10.0]\n\
+         [[particles]]\npos = [4.0, 5.0]\nmass = 1.0\nradius = 0.5\n\
+         [[particles]]\npos = [9.0, 5.0]\nmass = 2.0\nradius = 0.6\n",
+    )
+    .unwrap();
+    let bad = dir.path().join("bad-scene-1-cr.toml");
+    std::fs::write(&bad, "name = \"Bad\"\n[world]\nsize = [16.0, 10.0\n").unwrap();
+    let app = Sandbox::start(&x, &["--paused"]);
+    let s0 = app.wait_frames(2);
+    assert_eq!(s0["panel_visible"], true, "the panel is shown by default");
+    let panel_left = s0["panel_widgets"]["panel"][0].as_f64().unwrap();
+    let right_wall = View::of(&s0).to_screen(vec2(&s0["size"]))[0];
+    assert!(
+        right_wall < panel_left,
+        "the fit leaves the box clear of the panel: wall at {right_wall}, panel at {panel_left}"
+    );
+    let click = |at: [f64; 2]| {
+        app.move_to(at);
+        app.wait_frames(1);
+        app.xdo(&["mousedown", "1"]);
+        app.wait_frames(1);
+        app.xdo(&["mouseup", "1"]);
+        app.wait_frames(1);
+    };
+
+    // Type the good file's path into the (empty) scene field; Enter opens it.
+    click(widget(&s0, "scene_path", 0.5));
+    app.xdo(&["type", "--delay", "30", good.to_str().unwrap()]);
+    app.wait_frames(2);
+    app.xdo(&["key", "Return"]);
+    let s1 = app.wait_frames(3);
+    assert_eq!(
+        s1["scene_origin"],
+        good.to_str().unwrap(),
+        "opened from the panel"
+    );
+    assert_eq!(s1["particles"].as_array().unwrap().len(), 2);
+    assert_eq!(s1["restitution"], 1.0);
+    assert_eq!(s1["gravity"], serde_json::json!([0.0, 0.0]));
+
+    // Drag the restitution slider's handle from the right end to a quarter.
+    app.move_to(widget(&s1, "restitution", 1.0));
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    for t in [0.8, 0.6, 0.4, 0.25] {
+        app.move_to(widget(&s1, "restitution", t));
+        app.wait_frames(1);
+    }
+    app.xdo(&["mouseup", "1"]);
+    let s2 = app.wait_frames(3);
+    let e = s2["restitution"].as_f64().unwrap();
+    assert!(
+        (e - 0.25).abs() <= 0.02,
+        "restitution follows the slider: {e}"
+    );
+    assert_eq!(s2["wall_restitution"], s1["wall_restitution"]);
+    assert_eq!(
+        s2["particles"], s1["particles"],
+        "a drag on the panel launches no disc"
+    );
+
+    // Replace the path (Ctrl+A, then type) with the bad file's; press Open.
+    click(widget(&s2, "scene_path", 0.5));
+    app.xdo(&["keydown", "ctrl"]);
+    app.wait_frames(1);
+    app.xdo(&["key", "a"]);
+    app.wait_frames(1);
+    app.xdo(&["keyup", "ctrl"]);
+    app.wait_frames(1);
+    app.xdo(&["type", "--delay", "30", bad.to_str().unwrap()]);
+    app.wait_frames(2);
+    click(widget(&s2, "open", 0.5));
+    let s3 = app.wait_frames(3);
+    assert_eq!(
+        s3["scene_origin"], s1["scene_origin"],
+        "a bad file keeps the current scene"
+    );
+    assert_eq!(s3["particles"], s2["particles"]);
+    assert_eq!(
+        s3["restitution"], s2["restitution"],
+        "nothing typed acted as a key"
+    );
+    assert_eq!(s3["paused"], true);
+
+    // Out of the field, keys are shortcuts again: L hides the panel.
+    app.xdo(&["key", "l"]);
+    let s4 = app.wait_frames(3);
+    assert_eq!(s4["panel_visible"], false);
+    assert_eq!(s4["panel_widgets"], serde_json::json!({}));
+    app.quit();
+}
+
+#[test]
+fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("lesson") else {
+        return;
+    };
+    let out = tempfile::tempdir().expect("temp dir");
+    let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
+    let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
+    app.move_to([400.0, 400.0]);
+
+    // Head-on: the discs touch when the gap between their edges has closed.
+    app.xdo(&["key", "1"]);
+    let opened = app.wait_frames(3);
+    let p = &opened["particles"];
+    let (a, b) = (&p[0], &p[1]);
+    let gap = (vec2(&b["pos"])[0] - vec2(&a["pos"])[0]).abs()
+        - a["radius"].as_f64().unwrap()
+        - b["radius"].as_f64().unwrap();
+    let closing = (vec2(&a["vel"])[0] - vec2(&b["vel"])[0]).abs();
+    let contact = gap / closing;
+    app.xdo(&["key", "j"]);
+    let hit = app.wait_frames(3);
+    assert_eq!(hit["paused"], true);
+    assert_eq!(hit["collisions_recorded"], 1);
+    let t = hit["time"].as_f64().unwrap();
+    assert!(
+        (t - contact).abs() < 1e-9,
+        "stopped at t = {t}, contact at {contact}"
+    );
+
+    // Rewind three snapshots: earlier, and the discs are back apart.
+    for _ in 0..3 {
+        app.xdo(&["key", "comma"]);
+        app.wait_frames(2);
+    }
+    let back = app.wait_frames(2);
+    assert!(back["history_cursor"].is_u64(), "rewound: {back}");
+    assert!(back["time"].as_f64().unwrap() < t);
+    assert_eq!(
+        back["particles"].as_array().map(Vec::len),
+        Some(2),
+        "the rewind stays within the head-on scene"
+    );
+
+    // X exports three CSV files into the output folder.
+    app.xdo(&["key", "x"]);
+    app.wait_frames(3);
+    let csv: Vec<PathBuf> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "csv"))
+        .collect();
+    assert_eq!(csv.len(), 3, "{csv:?}");
+
+    // F12 saves what the window shows into the same folder.
+    app.xdo(&["key", "F12"]);
+    app.wait_frames(4);
+    let png = out.path().join("head-on-equal-masses.png");
+    let shot = image::open(&png)
+        .unwrap_or_else(|e| panic!("{}: {e}", png.display()))
+        .to_rgb8();
+    assert_eq!(shot.dimensions(), (1280, 800));
+
+    // Space resumes from the rewound moment and time runs on.
+    app.xdo(&["key", "space"]);
+    let resumed = app.wait_frames(20);
+    assert_eq!(resumed["paused"], false);
+    assert!(resumed["history_cursor"].is_null());
+    assert!(resumed["time"].as_f64().unwrap() > back["time"].as_f64().unwrap());
+    app.quit();
+}
+
+#[test]
+fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("aim") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 400.0]);
+    app.xdo(&["key", "1"]); // head-on: disc 0 moves, at 0.5 s per arrow
+    let s = app.wait_frames(3);
+    let view = View::of(&s);
+    let disc = &s["particles"][0];
+    let (pos, vel) = (vec2(&disc["pos"]), vec2(&disc["vel"]));
+    // Select it with a click on its centre.
+    let centre = view.to_screen(pos);
+    app.move_to(centre);
+    app.xdo(&["click", "1"]);
+    let selected = app.wait_frames(3);
+    assert_eq!(selected["selected"], 0);
+    // Drag its arrow's tip straight up by 60 px.
+    let tip = view.to_screen([pos[0] + 0.5 * vel[0], pos[1] + 0.5 * vel[1]]);
+    // Whole pixels: that is where xdotool puts the cursor.
+    let target = [centre[0].round(), (centre[1] - 60.0).round()];
+    app.move_to(tip);
+    app.wait_frames(2);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(2);
+    for k in 1..=5 {
+        let t = k as f64 / 5.0;
+        app.move_to([
+            tip[0] + t * (target[0] - tip[0]),
+            tip[1] + t * (target[1] - tip[1]),
+        ]);
+        sleep(Duration::from_millis(30));
+    }
+    app.wait_frames(2);
+    app.xdo(&["mouseup", "1"]);
+    let after = app.wait_frames(3);
+    let d = &after["particles"][0];
+    assert_eq!(vec2(&d["pos"]), pos, "aiming does not move the disc");
+    let want = [
+        (view.to_world(target)[0] - pos[0]) / 0.5,
+        (view.to_world(target)[1] - pos[1]) / 0.5,
+    ];
+    let got = vec2(&d["vel"]);
+    assert!(
+        (got[0] - want[0]).abs() < 1e-9 && (got[1] - want[1]).abs() < 1e-9,
+        "velocity {got:?}, expected {want:?}"
+    );
+    assert!(got[1] > 0.0, "dragged up on screen: +y in the world");
+    app.quit();
+}

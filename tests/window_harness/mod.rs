@@ -1,0 +1,265 @@
+//! What the window tests share: a private Xvfb, the `impulse` binary on it
+//! with a state dump, xdotool to drive it, and the camera maths to aim at
+//! world points. Two test binaries use it (`window.rs`, `classroom_window.rs`),
+//! each a part of it, hence the `dead_code` allowance.
+#![allow(dead_code)]
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::Mutex;
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+
+/// One window at a time: two cores cannot render several at a usable rate.
+pub static ONE_WINDOW: Mutex<()> = Mutex::new(());
+
+pub fn have(program: &str) -> bool {
+    Command::new("sh")
+        .args(["-c", &format!("command -v {program}")])
+        .stdout(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+/// A private X server; killed when dropped.
+pub struct Xvfb {
+    pub child: Child,
+    pub display: String,
+}
+
+impl Xvfb {
+    /// Starts one, or returns `None` (after saying why) when it cannot here.
+    pub fn start(test: &str) -> Option<Xvfb> {
+        let missing: Vec<&str> = ["Xvfb", "xdotool"]
+            .into_iter()
+            .filter(|p| !have(p))
+            .collect();
+        if !missing.is_empty() {
+            let why = format!(
+                "{test}: {} not installed (apt-get install xvfb xdotool)",
+                missing.join(", ")
+            );
+            if std::env::var_os("CI").is_some() {
+                panic!("CI is set, so the window tests must run: {why}");
+            }
+            eprintln!("SKIPPED {why}");
+            return None;
+        }
+        // Xvfb picks a free display itself and writes its number on stdout
+        // once it accepts connections (-displayfd), so stale lock files of
+        // killed servers and parallel runs cannot collide.
+        let mut child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1280x800x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("Xvfb starts");
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("Xvfb's stdout");
+        std::io::BufRead::read_line(&mut std::io::BufReader::new(stdout), &mut line)
+            .expect("Xvfb reports its display");
+        let number: u32 = line
+            .trim()
+            .parse()
+            .unwrap_or_else(|_| panic!("Xvfb said {line:?}"));
+        let display = format!(":{number}");
+        // Ready means a client can connect: wait for xdotool to manage it
+        // (on a loaded machine the first connections can still fail).
+        let deadline = Instant::now() + Duration::from_secs(20);
+        while !Command::new("xdotool")
+            .arg("getmouselocation")
+            .env("DISPLAY", &display)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+        {
+            assert!(
+                Instant::now() < deadline,
+                "Xvfb {display} accepts no clients"
+            );
+            sleep(Duration::from_millis(100));
+        }
+        Some(Xvfb { child, display })
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        // SIGTERM lets Xvfb remove its socket and lock file; SIGKILL would not.
+        let _ = Command::new("kill")
+            .args(["-TERM", &self.child.id().to_string()])
+            .status();
+        let _ = self.child.wait();
+    }
+}
+
+/// The `impulse` window running on an Xvfb display.
+pub struct Sandbox {
+    pub child: Child,
+    pub dump: PathBuf,
+    pub display: String,
+    pub _dir: tempfile::TempDir,
+}
+
+impl Sandbox {
+    pub fn start(x: &Xvfb, args: &[&str]) -> Sandbox {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let dump = dir.path().join("state.json");
+        let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
+            .args(args)
+            .arg("--dump-state")
+            .arg(&dump)
+            .args(["--exit-after", "120"])
+            .env("DISPLAY", &x.display)
+            .stdout(Stdio::null())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("impulse starts");
+        let sandbox = Sandbox {
+            child,
+            dump,
+            display: x.display.clone(),
+            _dir: dir,
+        };
+        sandbox.wait_frames(5);
+        sandbox
+    }
+
+    /// The latest state dump.
+    pub fn state(&self) -> Value {
+        let deadline = Instant::now() + Duration::from_secs(60);
+        loop {
+            if let Ok(text) = std::fs::read_to_string(&self.dump) {
+                if let Ok(v) = serde_json::from_str(&text) {
+                    return v;
+                }
+            }
+            assert!(
+                Instant::now() < deadline,
+                "no state dump appeared at {}",
+                self.dump.display()
+            );
+            sleep(Duration::from_millis(50));
+        }
+    }
+
+    /// Waits until `n` more frames have been drawn, and returns the state.
+    pub fn wait_frames(&self, n: u64) -> Value {
+        let start = self.state()["frame"].as_u64().unwrap_or(0);
+        let deadline = Instant::now() + Duration::from_secs(60);
+        loop {
+            let s = self.state();
+            if s["frame"].as_u64().unwrap_or(0) >= start + n {
+                return s;
+            }
+            assert!(
+                Instant::now() < deadline,
+                "the window stopped drawing frames"
+            );
+            sleep(Duration::from_millis(20));
+        }
+    }
+
+    pub fn xdo(&self, args: &[&str]) {
+        let status = Command::new("xdotool")
+            .args(args)
+            .env("DISPLAY", &self.display)
+            .status()
+            .expect("xdotool runs");
+        assert!(status.success(), "xdotool {args:?} failed");
+    }
+
+    pub fn move_to(&self, p: [f64; 2]) {
+        self.xdo(&[
+            "mousemove",
+            &format!("{}", p[0].round()),
+            &format!("{}", p[1].round()),
+        ]);
+    }
+
+    /// Presses Ctrl+Q and returns the final state once the window has closed.
+    pub fn quit(mut self) -> Value {
+        self.xdo(&["key", "ctrl+q"]);
+        let deadline = Instant::now() + Duration::from_secs(30);
+        loop {
+            if let Some(status) = self.child.try_wait().expect("wait") {
+                assert!(status.success(), "impulse exited with {status}");
+                return self.state();
+            }
+            assert!(Instant::now() < deadline, "Ctrl+Q did not close the window");
+            sleep(Duration::from_millis(50));
+        }
+    }
+}
+
+impl Drop for Sandbox {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// The camera of a dump: world point → screen pixel and back.
+pub struct View {
+    pub center: [f64; 2],
+    pub scale: f64,
+    pub viewport: [f64; 2],
+}
+
+impl View {
+    pub fn of(state: &Value) -> View {
+        let c = &state["camera"];
+        let pair = |v: &Value| [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()];
+        View {
+            center: pair(&c["center"]),
+            scale: c["scale"].as_f64().unwrap(),
+            viewport: pair(&c["viewport"]),
+        }
+    }
+    pub fn to_screen(&self, w: [f64; 2]) -> [f64; 2] {
+        [
+            self.viewport[0] / 2.0 + (w[0] - self.center[0]) * self.scale,
+            self.viewport[1] / 2.0 - (w[1] - self.center[1]) * self.scale,
+        ]
+    }
+    pub fn to_world(&self, s: [f64; 2]) -> [f64; 2] {
+        [
+            self.center[0] + (s[0] - self.viewport[0] / 2.0) / self.scale,
+            self.center[1] - (s[1] - self.viewport[1] / 2.0) / self.scale,
+        ]
+    }
+}
+
+pub fn vec2(v: &Value) -> [f64; 2] {
+    [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()]
+}
+
+pub fn scene_file(dir: &Path, text: &str) -> PathBuf {
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+pub fn asset(name: &str) -> String {
+    format!("{}/assets/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The centre of a rectangle [x, y, width, height] the dump gives for a
+/// widget of the side panel, or a point a fraction `t` along its width.
+pub fn widget(state: &Value, name: &str, t: f64) -> [f64; 2] {
+    let r = &state["panel_widgets"][name];
+    let r: Vec<f64> = (0..4)
+        .map(|k| r[k].as_f64().unwrap_or_else(|| panic!("no widget {name}")))
+        .collect();
+    [r[0] + t * r[2], r[1] + 0.5 * r[3]]
+}
