@@ -99,6 +99,8 @@ pub(crate) struct Pipeline {
     pub(crate) contacts: Vec<Contact>,
     /// Scratch: positions before a Verlet substep.
     pub(crate) previous_positions: Vec<DVec2>,
+    /// Scratch of the resting-contact substep.
+    pub(crate) resting: crate::method::resting::Scratch,
     /// The exact method's event calendar, carried from step to step.
     exact: exact::Exact,
 }
@@ -111,6 +113,7 @@ impl Pipeline {
             pairs: Vec::new(),
             contacts: Vec::new(),
             previous_positions: Vec::new(),
+            resting: Default::default(),
             exact: exact::Exact::default(),
         }
     }

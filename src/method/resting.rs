@@ -49,6 +49,15 @@ pub const SLOP: f64 = 0.005;
 /// within about 84° of gravity (|n·ĝ| above this).
 const VERTICAL: f64 = 0.1;
 
+/// Buffers the substep reuses from step to step (no allocation per substep).
+#[derive(Default)]
+pub(crate) struct Scratch {
+    /// Per disc and axis: did it come into the substep fast (an impact)?
+    fast_at_walls: Vec<[bool; 2]>,
+    /// Per contact: is it an impact?
+    impacts: Vec<bool>,
+}
+
 /// Whether a world needs this substep: gravity, and collisions that lose
 /// energy so that discs come to rest.
 pub(crate) fn applies(laws: &Laws) -> bool {
@@ -71,10 +80,16 @@ pub(crate) fn substep(
     // Which wall contacts are impacts is decided before gravity acts and
     // kept through the sweeps (the sweeps themselves can make a light disc
     // under a heavy one fast, and bouncing that would pump energy in).
-    let fast_at_walls: Vec<[bool; 2]> = particles
-        .iter()
-        .map(|p| [0, 1].map(|axis| p.vel[axis].abs() >= resting_speed))
-        .collect();
+    let Scratch {
+        fast_at_walls,
+        impacts,
+    } = &mut pipeline.resting;
+    fast_at_walls.clear();
+    fast_at_walls.extend(
+        particles
+            .iter()
+            .map(|p| [0, 1].map(|axis| p.vel[axis].abs() >= resting_speed)),
+    );
     let contacts = &mut pipeline.contacts;
     let height =
         |c: &Contact| -(particles[c.i as usize].pos + particles[c.j as usize].pos).dot(down);
@@ -84,20 +99,22 @@ pub(crate) fn substep(
             .then((a.i, a.j).cmp(&(b.i, b.j)))
     });
     // Likewise for pairs.
-    let impacts: Vec<bool> = contacts
-        .iter()
-        .map(|c| approach(particles, c) < -resting_speed)
-        .collect();
+    impacts.clear();
+    impacts.extend(
+        contacts
+            .iter()
+            .map(|c| approach(particles, c) < -resting_speed),
+    );
     let walls = Walls {
         laws,
-        fast: &fast_at_walls,
+        fast: fast_at_walls,
     };
 
     // Impacts first, with restitution (gravity has not acted yet, so this
     // is the collision the discs brought into the substep).
     for pass in 0..PASSES {
         walls.hold(particles, stats, Hold::Impacts);
-        for (c, &impact) in contacts.iter().zip(&impacts) {
+        for (c, &impact) in contacts.iter().zip(impacts.iter()) {
             if impact {
                 let (i, j) = (c.i as usize, c.j as usize);
                 let before = [particles[i].vel, particles[j].vel];
