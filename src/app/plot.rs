@@ -91,6 +91,17 @@ impl Totals {
 /// A plotted total: its label, colour and value.
 type Series = (&'static str, Color, fn(&Sample) -> f64);
 
+/// The dark backdrop every plot here sits on.
+fn backdrop(rect: Rect) {
+    draw_rectangle(
+        rect.x,
+        rect.y,
+        rect.w,
+        rect.h,
+        Color::new(0.05, 0.06, 0.09, 0.8),
+    );
+}
+
 const PX_COLOR: Color = Color::new(0.34, 0.71, 0.91, 1.0); // sky blue
 const PY_COLOR: Color = Color::new(0.90, 0.62, 0.0, 1.0); // orange
 const KE_COLOR: Color = Color::new(0.0, 0.62, 0.45, 1.0); // bluish green
@@ -100,13 +111,7 @@ const COM_COLOR: Color = Color::new(0.94, 0.89, 0.26, 1.0); // yellow
 /// scaled to its own range (so a flat line means conserved), with the
 /// drift written underneath.
 pub fn draw_totals(totals: &Totals, rect: Rect, font: f32) {
-    draw_rectangle(
-        rect.x,
-        rect.y,
-        rect.w,
-        rect.h,
-        Color::new(0.05, 0.06, 0.09, 0.8),
-    );
+    backdrop(rect);
     let samples: Vec<Sample> = totals.samples().copied().collect();
     let title = match totals.drift() {
         Some((dp, dke)) => format!("totals   drift: |dp| {dp:.1e}   dKE {dke:+.1e}"),
@@ -187,13 +192,7 @@ pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64) {
 /// Every disc's momentum tip to tail from the corner of `rect`, and their
 /// sum from the same start: the sum's arrow ends where the chain ends.
 pub fn draw_momentum_diagram(world: &World, rect: Rect, font: f32) {
-    draw_rectangle(
-        rect.x,
-        rect.y,
-        rect.w,
-        rect.h,
-        Color::new(0.05, 0.06, 0.09, 0.8),
-    );
+    backdrop(rect);
     draw_text(
         "momentum, tip to tail",
         rect.x + 6.0,
@@ -264,13 +263,7 @@ const BINS: usize = 20;
 /// kT = KE/N (two degrees of freedom per disc; the mean mass stands in for
 /// mixed masses), with the temperature written above.
 pub fn draw_speed_histogram(world: &World, rect: Rect, font: f32) {
-    draw_rectangle(
-        rect.x,
-        rect.y,
-        rect.w,
-        rect.h,
-        Color::new(0.05, 0.06, 0.09, 0.8),
-    );
+    backdrop(rect);
     let n = world.particles.len();
     if n < 2 {
         draw_text(
