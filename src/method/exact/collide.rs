@@ -10,12 +10,16 @@ impl Sim {
     pub(super) fn collide_pair(&mut self, i: u32, j: u32) {
         self.advance_to(i, self.now);
         self.advance_to(j, self.now);
-        if self.queue.peek().is_some_and(|next| next.time <= self.now) {
+        if self.queue.another_by(i, self.now) {
             // Another event at this very instant: maybe a disc meeting two
             // others at once.
             let touches = self.touches_now(i, j);
             if touches.len() > 1 {
                 self.collide_together(&touches);
+                // Both were advanced to now; re-predict them even if the
+                // pair itself was not among the touches.
+                self.predict(i);
+                self.predict(j);
                 return;
             }
         }
@@ -65,7 +69,7 @@ impl Sim {
         for d in [i, j] {
             let cell = self.bodies[d as usize].cell;
             self.grid.for_each_neighbour(cell, |c, _| {
-                around.extend(self.grid.cells[c].iter().map(|&k| (d, k)));
+                around.extend(self.grid.members(c).map(|k| (d, k)));
             });
         }
         let mut touches = Vec::new();
@@ -186,6 +190,6 @@ impl Sim {
         self.grid.remove(i, from);
         self.grid.insert(i, to);
         self.bodies[i as usize].cell = to;
-        self.predict(i);
+        self.predict_after_crossing(i, axis, upper);
     }
 }

@@ -5,15 +5,14 @@ use crate::boundary::Boundary;
 use crate::particle::Particle;
 use crate::world::Laws;
 use glam::DVec2;
-use smallvec::SmallVec;
 
 /// Cell width in largest diameters.
 const CELL_DIAMETERS: f64 = 1.0;
 /// Cap on grid cells, per disc.
 const CELLS_PER_DISC: usize = 4;
 
-/// Discs of one cell; the first few inline.
-pub(super) type CellList = SmallVec<[u32; 6]>;
+/// End of a cell's list.
+pub(super) const NIL: u32 = u32::MAX;
 
 /// A grid over the world (or, for open space, over where the discs are),
 /// with cells at least one diameter wide.
@@ -24,7 +23,11 @@ pub(super) struct Grid {
     cell: DVec2,
     pub(super) dims: [i32; 2],
     pub(super) periodic: bool,
-    pub(super) cells: Vec<CellList>,
+    /// Each cell's discs as a singly linked list: its first disc, and each
+    /// disc's next (4 bytes a cell and a disc, so the lists of a large grid
+    /// stay in cache; cells hold less than one disc on average).
+    heads: Vec<u32>,
+    next: Vec<u32>,
 }
 
 impl Grid {
@@ -67,7 +70,8 @@ impl Grid {
             cell: extent / DVec2::new(f64::from(dims[0]), f64::from(dims[1])),
             dims,
             periodic: laws.boundary == Boundary::Periodic,
-            cells: vec![CellList::new(); (dims[0] as usize) * (dims[1] as usize)],
+            heads: vec![NIL; (dims[0] as usize) * (dims[1] as usize)],
+            next: vec![NIL; n],
         }
     }
 
@@ -144,20 +148,96 @@ impl Grid {
         }
     }
 
+    /// Calls `visit` like [`Grid::for_each_neighbour`] for the cells that
+    /// came into reach of a disc that has just crossed into cell `c` along
+    /// `axis` (upwards if `upper`): the row or column beyond `c`, up to three
+    /// cells. Only meaningful when [`Grid::images_by_cell`].
+    #[inline]
+    pub(super) fn for_each_new_in_reach(
+        &self,
+        c: [i32; 2],
+        axis: usize,
+        upper: bool,
+        mut visit: impl FnMut(usize, DVec2),
+    ) {
+        let n = self.dims[axis];
+        let mut ahead = c[axis] + if upper { 1 } else { -1 };
+        let mut wrap = 0.0;
+        if !(0..n).contains(&ahead) {
+            if !self.periodic {
+                return;
+            }
+            wrap = if upper { 1.0 } else { -1.0 };
+            ahead = ahead.rem_euclid(n);
+        }
+        let across = 1 - axis;
+        let (others, other_wraps, count) = self.around(c[across], self.dims[across]);
+        for (&other, &other_wrap) in others[..count].iter().zip(&other_wraps) {
+            let mut cell = [0; 2];
+            cell[axis] = ahead;
+            cell[across] = other;
+            let mut shift = DVec2::ZERO;
+            shift[axis] = wrap * self.extent[axis];
+            shift[across] = other_wrap * self.extent[across];
+            visit(self.index(cell), shift);
+        }
+    }
+
+    /// The lower or upper border along `axis` of cells at `along` on it.
+    #[inline]
+    pub(super) fn border(&self, along: i32, axis: usize, upper: bool) -> f64 {
+        let (origin, width) = if axis == 0 {
+            (self.origin.x, self.cell.x)
+        } else {
+            (self.origin.y, self.cell.y)
+        };
+        origin + f64::from(along + i32::from(upper)) * width
+    }
+
     pub(super) fn bounds(&self, c: [i32; 2], axis: usize) -> (f64, f64) {
         let lo = self.origin[axis] + f64::from(c[axis]) * self.cell[axis];
         (lo, lo + self.cell[axis])
     }
 
+    /// The first disc of cell `k` (index), or [`NIL`].
+    #[inline]
+    pub(super) fn first(&self, k: usize) -> u32 {
+        self.heads[k]
+    }
+
+    /// The disc after `i` in its cell, or [`NIL`].
+    #[inline]
+    pub(super) fn after(&self, i: u32) -> u32 {
+        self.next[i as usize]
+    }
+
+    /// The discs of cell `k` (index).
+    pub(super) fn members(&self, k: usize) -> impl Iterator<Item = u32> + '_ {
+        std::iter::successors(Some(self.heads[k]).filter(|&i| i != NIL), |&i| {
+            Some(self.next[i as usize]).filter(|&j| j != NIL)
+        })
+    }
+
     pub(super) fn insert(&mut self, i: u32, c: [i32; 2]) {
         let k = self.index(c);
-        self.cells[k].push(i);
+        self.next[i as usize] = self.heads[k];
+        self.heads[k] = i;
     }
 
     pub(super) fn remove(&mut self, i: u32, c: [i32; 2]) {
         let k = self.index(c);
-        if let Some(at) = self.cells[k].iter().position(|&j| j == i) {
-            self.cells[k].swap_remove(at);
+        let after = self.next[i as usize];
+        if self.heads[k] == i {
+            self.heads[k] = after;
+            return;
+        }
+        let mut j = self.heads[k];
+        while j != NIL {
+            if self.next[j as usize] == i {
+                self.next[j as usize] = after;
+                return;
+            }
+            j = self.next[j as usize];
         }
     }
 }

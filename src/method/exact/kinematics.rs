@@ -5,21 +5,26 @@ use glam::DVec2;
 
 /// Time until two discs at separation `d` with relative velocity `dv`
 /// touch (distance `sigma`), if they approach; zero if they already overlap
-/// and approach.
-pub(super) fn pair_time(d: DVec2, dv: DVec2, sigma: f64) -> Option<f64> {
+/// and approach; infinity if they never touch. Computed without branches
+/// (the prediction loop runs it for every neighbour, and whether a pair
+/// approaches is a coin toss a branch predictor cannot learn).
+#[inline]
+pub(super) fn pair_time(d: DVec2, dv: DVec2, sigma: f64) -> f64 {
     let b = d.dot(dv);
-    if b >= 0.0 {
-        return None;
-    }
     let gap = d.length_squared() - sigma * sigma;
-    if gap <= 0.0 {
-        return Some(0.0);
-    }
     let disc = b * b - dv.length_squared() * gap;
-    if disc <= 0.0 {
-        return None;
+    let overlapping = gap <= 0.0;
+    let meets = b < 0.0 && (overlapping | (disc > 0.0));
+    let t = if overlapping {
+        0.0
+    } else {
+        gap / (-b + disc.max(0.0).sqrt())
+    };
+    if meets {
+        t
+    } else {
+        f64::INFINITY
     }
-    Some(gap / (-b + disc.sqrt()))
 }
 
 /// First time ≥ 0 at which a coordinate `p` moving at `v` with acceleration
@@ -56,20 +61,33 @@ mod tests {
     #[test]
     pub(super) fn pair_time_matches_straight_line_contact() {
         // Discs 10 apart, closing at 2: touch when 1 apart, after 4.5.
-        let t = pair_time(DVec2::new(10.0, 0.0), DVec2::new(-2.0, 0.0), 1.0).unwrap();
+        let t = pair_time(DVec2::new(10.0, 0.0), DVec2::new(-2.0, 0.0), 1.0);
         assert!((t - 4.5).abs() < 1e-12);
+        let never = f64::INFINITY;
         assert_eq!(
             pair_time(DVec2::new(10.0, 0.0), DVec2::new(2.0, 0.0), 1.0),
-            None
+            never,
+            "receding"
         );
         assert_eq!(
             pair_time(DVec2::new(10.0, 5.0), DVec2::new(-2.0, 0.0), 1.0),
-            None,
+            never,
             "miss"
         );
         assert_eq!(
+            pair_time(DVec2::new(10.0, 1.0), DVec2::new(-2.0, 0.0), 1.0),
+            never,
+            "grazing"
+        );
+        assert_eq!(
             pair_time(DVec2::new(0.5, 0.0), DVec2::new(-1.0, 0.0), 1.0),
-            Some(0.0)
+            0.0,
+            "overlapping and approaching"
+        );
+        assert_eq!(
+            pair_time(DVec2::new(0.5, 0.0), DVec2::new(1.0, 0.0), 1.0),
+            never,
+            "overlapping and separating"
         );
     }
 

@@ -47,17 +47,18 @@ use crate::stats::StepStats;
 use crate::world::Laws;
 use glam::DVec2;
 use grid::Grid;
-use kinematics::{first_crossing, pair_time};
 use std::time::Instant;
 
 mod collide;
 mod grid;
 mod kinematics;
+mod predict;
 mod queue;
 mod setup;
 mod simultaneous;
 
-use queue::{Event, EventQueue};
+use predict::PairGuess;
+use queue::EventQueue;
 
 /// TC-model window, as a fraction of the step.
 pub const TC_FRACTION: f64 = 1e-4;
@@ -176,6 +177,8 @@ struct Sim {
     order: Vec<u32>,
     grid: Grid,
     queue: EventQueue<Kind>,
+    /// Each disc's earliest pair collision, as last predicted.
+    guesses: Vec<PairGuess>,
     cap: usize,
     events: usize,
     collisions: usize,
@@ -202,6 +205,7 @@ impl Sim {
         for i in 0..self.bodies.len() as u32 {
             self.predict(i);
         }
+        self.queue.retune();
     }
 
     fn run(&mut self) {
@@ -213,7 +217,8 @@ impl Sim {
                 self.truncated = true;
                 break;
             }
-            self.queue.pop();
+            // The event stays queued while it is carried out: every branch
+            // below re-predicts its owner, which replaces it.
             self.events += 1;
             let i = ev.owner;
             self.now = ev.time;
@@ -289,122 +294,5 @@ impl Sim {
             b.vel += g * tau;
             b.time = t;
         }
-    }
-
-    /// Queues disc `i`'s earliest event (`i` must be at the current time).
-    /// Events past the step stay queued for the steps after.
-    fn predict(&mut self, i: u32) {
-        let me = self.bodies[i as usize];
-        let g = self.laws.gravity;
-        let mut best = match (g == DVec2::ZERO, self.grid.images_by_cell()) {
-            (true, true) => self.nearest_pair::<false, true>(i, &me),
-            (false, true) => self.nearest_pair::<true, true>(i, &me),
-            (true, false) => self.nearest_pair::<false, false>(i, &me),
-            (false, false) => self.nearest_pair::<true, false>(i, &me),
-        };
-        let consider = |tau: Option<f64>, kind: Kind, best: &mut Option<(f64, Kind)>| {
-            if let Some(tau) = tau {
-                if best.is_none_or(|(b, _)| tau < b) {
-                    *best = Some((tau, kind));
-                }
-            }
-        };
-
-        for axis in 0..2 {
-            let (p, v, ga) = (me.pos[axis], me.vel[axis], g[axis]);
-            let a = axis as u8;
-            if self.laws.boundary == Boundary::Box {
-                let hi = self.laws.size[axis] - me.radius;
-                consider(
-                    first_crossing(p, v, ga, me.radius, -1.0),
-                    Kind::Wall {
-                        axis: a,
-                        upper: false,
-                    },
-                    &mut best,
-                );
-                consider(
-                    first_crossing(p, v, ga, hi, 1.0),
-                    Kind::Wall {
-                        axis: a,
-                        upper: true,
-                    },
-                    &mut best,
-                );
-            }
-            let (lo, hi) = self.grid.bounds(me.cell, axis);
-            let last = self.grid.dims[axis] - 1;
-            for (upper, bound, sign) in [(false, lo, -1.0), (true, hi, 1.0)] {
-                let at_edge = if upper {
-                    me.cell[axis] == last
-                } else {
-                    me.cell[axis] == 0
-                };
-                let kind = match (at_edge, self.laws.boundary) {
-                    (true, Boundary::Box) => continue, // the wall comes first
-                    (true, Boundary::Open) => Kind::Leave,
-                    _ => Kind::Cell { axis: a, upper },
-                };
-                consider(first_crossing(p, v, ga, bound, sign), kind, &mut best);
-            }
-        }
-
-        let event = best
-            .map(|(tau, kind)| Event {
-                time: self.now + tau,
-                owner: i,
-                kind,
-            })
-            .filter(|e| e.time.is_finite());
-        self.queue.set(i, event);
-    }
-
-    /// Disc `i`'s earliest collision with a disc in its own or a
-    /// neighbouring cell, as (time from now, event). Specialised on whether
-    /// there is gravity and whether a neighbour's periodic image follows from
-    /// its cell, since this loop is where the method spends its time.
-    #[inline]
-    fn nearest_pair<const GRAVITY: bool, const IMAGES_BY_CELL: bool>(
-        &self,
-        i: u32,
-        me: &Body,
-    ) -> Option<(f64, Kind)> {
-        let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
-        let g = laws.gravity;
-        let mut best: Option<(f64, Kind)> = None;
-        self.grid.for_each_neighbour(me.cell, |cell, shift| {
-            for &j in &self.grid.cells[cell] {
-                if j == i {
-                    continue;
-                }
-                let other = &bodies[j as usize];
-                let tau = now - other.time;
-                let (pj, vj) = if GRAVITY {
-                    (
-                        other.pos + other.vel * tau + 0.5 * g * tau * tau,
-                        other.vel + g * tau,
-                    )
-                } else {
-                    (other.pos + other.vel * tau, other.vel)
-                };
-                let d = if IMAGES_BY_CELL {
-                    pj + shift - me.pos
-                } else {
-                    laws.boundary.separation(me.pos, pj, laws.size)
-                };
-                if let Some(t) = pair_time(d, vj - me.vel, me.radius + other.radius) {
-                    if best.is_none_or(|(b, _)| t < b) {
-                        best = Some((
-                            t,
-                            Kind::Pair {
-                                partner: j,
-                                gen: other.gen,
-                            },
-                        ));
-                    }
-                }
-            }
-        });
-        best
     }
 }

@@ -1,8 +1,20 @@
 //! The event queue: one slot per disc holding its earliest predicted event,
-//! kept in a heap indexed by disc, so re-predicting a disc replaces its old
-//! event instead of leaving a stale copy behind. The heap never holds more
-//! than n entries; pop and update are O(log n). It is 4-ary: a node's four
-//! children share one cache line, which halves the depth of a binary heap.
+//! so re-predicting a disc replaces its old event instead of leaving a stale
+//! copy behind.
+//!
+//! It is a calendar queue (Brown 1988; the bounded priority queue of Paul
+//! 2007 used by DynamO): time is cut into buckets of equal width, a ring of
+//! them covers the near future, and each bucket is a doubly linked list of
+//! the discs whose events fall in it. Setting an event unlinks the disc from
+//! one list and links it into another, in O(1) whatever n; the earliest
+//! event is the earliest in the first non-empty bucket, found by walking
+//! forward from the current bucket. Events past the ring wait in an
+//! overflow list, moved into the ring whenever the current bucket has gone
+//! half-way round. The width is chosen from the events queued (about two
+//! per bucket near the front) and chosen again when that drifts.
+//!
+//! Order is by time, then owner, exactly as a heap would give, so results
+//! do not depend on the bucket width.
 
 /// An event owned by one disc.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -15,179 +27,307 @@ pub(super) struct Event<K> {
     pub kind: K,
 }
 
-const ABSENT: u32 = u32::MAX;
+/// End of a list, or no list.
+const NIL: u32 = u32::MAX;
+/// The disc's event waits in the overflow list.
+const OVERFLOW: u32 = u32::MAX - 1;
+/// Events per bucket aimed at, near the front of the queue.
+const PER_BUCKET: f64 = 2.0;
+/// Ring buckets per disc (rounded up to a power of two).
+const BUCKETS_PER_DISC: usize = 2;
 
-/// Children per heap node.
-const ARITY: usize = 4;
+/// A disc's place in the queue.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    /// Its event's time, copied here so list walks stay in one array.
+    time: f64,
+    next: u32,
+    prev: u32,
+    /// Ring slot, [`OVERFLOW`], or [`NIL`] when it has no event.
+    bucket: u32,
+}
 
-/// Indexed 4-ary min-heap of events, ordered by time then owner. The heap
-/// keeps each entry's time beside its owner so comparisons stay in one array.
+const FREE: Node = Node {
+    time: f64::INFINITY,
+    next: NIL,
+    prev: NIL,
+    bucket: NIL,
+};
+
+/// Calendar queue of at most one event per disc.
 pub(super) struct EventQueue<K> {
-    heap: Vec<(f64, u32)>,
-    slot: Vec<u32>,
     events: Vec<Option<Event<K>>>,
+    nodes: Vec<Node>,
+    /// First disc of each ring slot's list.
+    heads: Vec<u32>,
+    /// First disc of the overflow list.
+    overflow: u32,
+    /// Discs in the ring, and in all.
+    in_ring: usize,
+    len: usize,
+    /// Buckets per unit of time.
+    per_second: f64,
+    /// Added to every time before bucketing, so that shifting the clock's
+    /// zero (between steps) moves no event.
+    offset: f64,
+    /// The bucket being looked at (absolute number); no event lies before it.
+    cursor: u64,
+    /// The ring covers buckets `base .. base + ring size`.
+    base: u64,
 }
 
 impl<K: Copy> EventQueue<K> {
     /// An empty queue for `n` discs.
     pub fn new(n: usize) -> Self {
+        let slots = (BUCKETS_PER_DISC * n).next_power_of_two().max(16);
         EventQueue {
-            heap: Vec::with_capacity(n),
-            slot: vec![ABSENT; n],
             events: vec![None; n],
+            nodes: vec![FREE; n],
+            heads: vec![NIL; slots],
+            overflow: NIL,
+            in_ring: 0,
+            len: 0,
+            per_second: 1.0,
+            offset: 0.0,
+            cursor: 0,
+            base: 0,
         }
     }
 
-    /// Event times are finite (the method queues no other), so plain
-    /// comparisons order them.
+    /// The absolute bucket of time `t`, never before the cursor.
     #[inline]
-    fn before(a: (f64, u32), b: (f64, u32)) -> bool {
-        a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
+    fn bucket_number(&self, t: f64) -> u64 {
+        let b = (t + self.offset) * self.per_second;
+        if b.is_nan() || b <= self.cursor as f64 {
+            self.cursor
+        } else if b >= 1.8e19 {
+            u64::MAX
+        } else {
+            b as u64 // positive, so the cast is the floor
+        }
+    }
+
+    #[inline]
+    fn ring_size(&self) -> u64 {
+        self.heads.len() as u64
     }
 
     /// Sets disc `owner`'s event (replacing any), or clears it with `None`.
     pub fn set(&mut self, owner: u32, event: Option<Event<K>>) {
-        let o = owner as usize;
-        self.events[o] = event;
-        let at = self.slot[o];
-        let time = event.map_or(f64::INFINITY, |e| e.time);
-        match (at == ABSENT, event.is_some()) {
-            (true, true) => {
-                self.slot[o] = self.heap.len() as u32;
-                self.heap.push((time, owner));
-                self.sift_up(self.heap.len() - 1);
+        self.unlink(owner);
+        self.events[owner as usize] = event;
+        if let Some(e) = event {
+            self.link(owner, e.time);
+        }
+    }
+
+    fn link(&mut self, owner: u32, time: f64) {
+        let number = self.bucket_number(time);
+        let bucket = if number - self.base < self.ring_size() {
+            self.in_ring += 1;
+            (number & (self.ring_size() - 1)) as u32
+        } else {
+            OVERFLOW
+        };
+        let head = if bucket == OVERFLOW {
+            &mut self.overflow
+        } else {
+            &mut self.heads[bucket as usize]
+        };
+        let next = *head;
+        *head = owner;
+        if next != NIL {
+            self.nodes[next as usize].prev = owner;
+        }
+        self.nodes[owner as usize] = Node {
+            time,
+            next,
+            prev: NIL,
+            bucket,
+        };
+        self.len += 1;
+    }
+
+    fn unlink(&mut self, owner: u32) {
+        let node = self.nodes[owner as usize];
+        if node.bucket == NIL {
+            return;
+        }
+        if node.prev != NIL {
+            self.nodes[node.prev as usize].next = node.next;
+        } else if node.bucket == OVERFLOW {
+            self.overflow = node.next;
+        } else {
+            self.heads[node.bucket as usize] = node.next;
+        }
+        if node.next != NIL {
+            self.nodes[node.next as usize].prev = node.prev;
+        }
+        if node.bucket != OVERFLOW {
+            self.in_ring -= 1;
+        }
+        self.len -= 1;
+        self.nodes[owner as usize] = FREE;
+    }
+
+    /// The earliest of the list starting at `first` (by time, then owner).
+    fn earliest_in(&self, first: u32) -> Option<u32> {
+        let mut best: Option<(f64, u32)> = None;
+        let mut k = first;
+        while k != NIL {
+            let node = &self.nodes[k as usize];
+            if best.is_none_or(|b| (node.time, k) < b) {
+                best = Some((node.time, k));
             }
-            (false, true) => {
-                let at = at as usize;
-                self.heap[at].0 = time;
-                self.sift_up(at);
-                self.sift_down(self.slot[o] as usize);
+            k = node.next;
+        }
+        best.map(|(_, k)| k)
+    }
+
+    /// The owner of the earliest event; moves the cursor to its bucket.
+    fn front(&mut self) -> Option<u32> {
+        if self.len == 0 {
+            return None;
+        }
+        loop {
+            if self.in_ring == 0 {
+                // Only far events: jump to the earliest and refill the ring.
+                let first = self.earliest_in(self.overflow)?;
+                let t = self.nodes[first as usize].time;
+                let b = ((t + self.offset) * self.per_second).floor();
+                self.cursor = if b.is_finite() && b > self.cursor as f64 {
+                    (b as u64).min(u64::MAX / 2)
+                } else {
+                    self.cursor
+                };
+                self.refill();
+                continue;
             }
-            (false, false) => self.remove_at(at as usize),
-            (true, false) => {}
+            if self.cursor - self.base >= self.ring_size() / 2 {
+                self.refill();
+            }
+            let slot = (self.cursor & (self.ring_size() - 1)) as usize;
+            if let Some(k) = self.earliest_in(self.heads[slot]) {
+                return Some(k);
+            }
+            self.cursor += 1;
+        }
+    }
+
+    /// Moves the ring's start to the cursor and the overflow events that
+    /// now fall within it into it; chooses the width again first if the
+    /// events have drifted away from it.
+    fn refill(&mut self) {
+        self.base = self.cursor;
+        let mut k = self.overflow;
+        self.overflow = NIL;
+        let mut moved = Vec::new();
+        while k != NIL {
+            let node = self.nodes[k as usize];
+            moved.push((k, node.time));
+            k = node.next;
+        }
+        if moved.len() > self.len / 4 {
+            return self.retune();
+        }
+        for (owner, time) in moved {
+            self.nodes[owner as usize] = FREE;
+            self.len -= 1;
+            self.link(owner, time);
+        }
+    }
+
+    /// Chooses the bucket width from the queued events (about
+    /// [`PER_BUCKET`] events per bucket at the front) and re-buckets them.
+    pub fn retune(&mut self) {
+        let mut queued: Vec<(u32, f64)> = self
+            .events
+            .iter()
+            .enumerate()
+            .filter_map(|(k, e)| e.map(|e| (k as u32, e.time)))
+            .collect();
+        self.heads.fill(NIL);
+        self.nodes.fill(FREE);
+        self.overflow = NIL;
+        self.in_ring = 0;
+        self.len = 0;
+        if queued.len() >= 2 {
+            // The earliest quarter of the events spans this much time.
+            let quarter = (queued.len() / 4).max(1);
+            let mut times: Vec<f64> = queued.iter().map(|&(_, t)| t).collect();
+            let (_, &mut lo, _) = times.select_nth_unstable_by(0, f64::total_cmp);
+            let (_, &mut q, _) = times.select_nth_unstable_by(quarter, f64::total_cmp);
+            let span = q - lo;
+            if span > 0.0 && span.is_finite() {
+                self.per_second = quarter as f64 / (PER_BUCKET * span);
+            }
+            self.offset = -lo;
+        }
+        self.cursor = 0;
+        self.base = 0;
+        queued.sort_unstable_by_key(|&(k, _)| k);
+        for (owner, time) in queued {
+            self.link(owner, time);
         }
     }
 
     /// The earliest event, left in the queue.
-    pub fn peek(&self) -> Option<Event<K>> {
-        let &(_, top) = self.heap.first()?;
-        self.events[top as usize]
+    pub fn peek(&mut self) -> Option<Event<K>> {
+        let k = self.front()?;
+        self.events[k as usize]
     }
 
-    /// Moves the clock's zero to `shift`: every time drops by it. Rounding
-    /// is monotonic, so time order is kept (two times can become equal,
-    /// which only changes which of two simultaneous events goes first).
-    pub fn shift_times(&mut self, shift: f64) {
-        for entry in &mut self.heap {
-            entry.0 -= shift;
+    /// Whether an event other than the earliest (`top`'s) comes at or
+    /// before `t`, a time in the current bucket.
+    pub fn another_by(&self, top: u32, t: f64) -> bool {
+        let slot = (self.cursor & (self.ring_size() - 1)) as usize;
+        let mut k = self.heads[slot];
+        while k != NIL {
+            let node = &self.nodes[k as usize];
+            if k != top && node.time <= t {
+                return true;
+            }
+            k = node.next;
         }
+        false
+    }
+
+    /// Moves the clock's zero to `shift`: every time drops by it. Buckets
+    /// stay as they are (the offset takes the shift).
+    pub fn shift_times(&mut self, shift: f64) {
         for event in self.events.iter_mut().flatten() {
             event.time -= shift;
         }
+        let mut moved = 0;
+        for node in &mut self.nodes {
+            if node.bucket != NIL {
+                node.time -= shift;
+                moved += 1;
+            }
+        }
+        debug_assert_eq!(moved, self.len);
+        self.offset += shift;
     }
 
     /// The earliest event, removed from the queue.
-    ///
-    /// Bottom-up: the hole left at the root moves down along the smallest
-    /// children to a leaf, and the last entry is sifted up from there, which
-    /// takes about half the comparisons of sifting the last entry down.
+    #[cfg(test)]
     pub fn pop(&mut self) -> Option<Event<K>> {
-        let &(_, top) = self.heap.first()?;
-        let event = self.events[top as usize].take();
-        self.slot[top as usize] = ABSENT;
-        let last = self.heap.pop().expect("non-empty");
-        let len = self.heap.len();
-        if len == 0 {
-            return event;
-        }
-        let mut hole = 0;
-        loop {
-            let first_child = ARITY * hole + 1;
-            if first_child >= len {
-                break;
-            }
-            let child = self.smallest_child(first_child, len);
-            self.heap[hole] = self.heap[child];
-            self.slot[self.heap[hole].1 as usize] = hole as u32;
-            hole = child;
-        }
-        self.heap[hole] = last;
-        self.slot[last.1 as usize] = hole as u32;
-        self.sift_up(hole);
+        let k = self.front()?;
+        let event = self.events[k as usize];
+        self.set(k, None);
         event
     }
 
     /// Empties the queue.
     pub fn clear(&mut self) {
-        for &(_, owner) in &self.heap {
-            self.slot[owner as usize] = ABSENT;
-            self.events[owner as usize] = None;
-        }
-        self.heap.clear();
-    }
-
-    fn remove_at(&mut self, at: usize) {
-        let (_, owner) = self.heap[at];
-        self.slot[owner as usize] = ABSENT;
-        let last = self.heap.pop();
-        if let Some(last) = last {
-            if at < self.heap.len() {
-                self.heap[at] = last;
-                self.slot[last.1 as usize] = at as u32;
-                self.sift_up(at);
-                self.sift_down(self.slot[last.1 as usize] as usize);
-            }
-        }
-    }
-
-    /// The earliest of the up to `ARITY` children starting at `first`.
-    #[inline]
-    fn smallest_child(&self, first: usize, len: usize) -> usize {
-        let end = (first + ARITY).min(len);
-        let mut best = first;
-        let mut best_key = self.heap[first];
-        for c in first + 1..end {
-            let key = self.heap[c];
-            if Self::before(key, best_key) {
-                best = c;
-                best_key = key;
-            }
-        }
-        best
-    }
-
-    fn swap(&mut self, a: usize, b: usize) {
-        self.heap.swap(a, b);
-        self.slot[self.heap[a].1 as usize] = a as u32;
-        self.slot[self.heap[b].1 as usize] = b as u32;
-    }
-
-    fn sift_up(&mut self, mut at: usize) {
-        while at > 0 {
-            let parent = (at - 1) / ARITY;
-            if Self::before(self.heap[at], self.heap[parent]) {
-                self.swap(at, parent);
-                at = parent;
-            } else {
-                break;
-            }
-        }
-    }
-
-    fn sift_down(&mut self, mut at: usize) {
-        let len = self.heap.len();
-        loop {
-            let first_child = ARITY * at + 1;
-            if first_child >= len {
-                break;
-            }
-            let child = self.smallest_child(first_child, len);
-            if !Self::before(self.heap[child], self.heap[at]) {
-                break;
-            }
-            self.swap(at, child);
-            at = child;
-        }
+        self.events.fill(None);
+        self.nodes.fill(FREE);
+        self.heads.fill(NIL);
+        self.overflow = NIL;
+        self.in_ring = 0;
+        self.len = 0;
+        self.cursor = 0;
+        self.base = 0;
     }
 }
 
@@ -218,26 +358,63 @@ mod tests {
     }
 
     #[test]
-    fn a_thousand_random_updates_pop_sorted() {
+    fn a_thousand_random_updates_pop_sorted_whatever_the_width() {
         let n = 1000u32;
+        for retune in [false, true] {
+            let mut q = EventQueue::new(n as usize);
+            let time = |k: u32| f64::from((k * 7919) % 1009);
+            for k in 0..n {
+                q.set(k, ev(time(k), k));
+            }
+            if retune {
+                q.retune();
+            }
+            for k in (0..n).step_by(3) {
+                q.set(k, ev(time(k) * 0.5 + 3.0, k));
+            }
+            for k in (0..n).step_by(7) {
+                q.set(k, None);
+            }
+            let popped: Vec<(f64, u32)> = std::iter::from_fn(|| q.pop())
+                .map(|e| (e.time, e.owner))
+                .collect();
+            assert_eq!(popped.len(), (0..n).filter(|k| k % 7 != 0).count());
+            assert!(popped
+                .windows(2)
+                .all(|w| (w[0].0, w[0].1) <= (w[1].0, w[1].1)));
+        }
+    }
+
+    #[test]
+    fn interleaved_pops_and_pushes_keep_order_across_far_times_and_shifts() {
+        // Like the method: take the earliest, re-queue its owner later
+        // (sometimes much later, into the overflow), now and then shift the
+        // clock's zero, and check that times never go backwards.
+        let n = 500u32;
         let mut q = EventQueue::new(n as usize);
-        let time = |k: u32| f64::from((k * 7919) % 1009);
+        let mut x: u64 = 12345;
+        let mut rand = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % 1_000_000) as f64 / 1_000_000.0
+        };
         for k in 0..n {
-            q.set(k, ev(time(k), k));
+            q.set(k, ev(rand(), k));
         }
-        for k in (0..n).step_by(3) {
-            q.set(k, ev(time(k) * 0.5 + 3.0, k));
+        q.retune();
+        let mut last = f64::NEG_INFINITY;
+        for step in 0..20_000 {
+            let Some(e) = q.peek() else { break };
+            assert!(e.time >= last, "step {step}: {} after {last}", e.time);
+            last = e.time;
+            let later = if step % 97 == 0 { 1e3 * rand() } else { rand() };
+            q.set(e.owner, ev(e.time + later, e.owner));
+            if step % 1000 == 999 {
+                q.shift_times(e.time);
+                last -= e.time;
+            }
         }
-        for k in (0..n).step_by(7) {
-            q.set(k, None);
-        }
-        let popped: Vec<(f64, u32)> = std::iter::from_fn(|| q.pop())
-            .map(|e| (e.time, e.owner))
-            .collect();
-        assert_eq!(popped.len(), (0..n).filter(|k| k % 7 != 0).count());
-        assert!(popped
-            .windows(2)
-            .all(|w| (w[0].0, w[0].1) <= (w[1].0, w[1].1)));
     }
 
     #[test]
@@ -248,5 +425,18 @@ mod tests {
         }
         let order: Vec<u32> = std::iter::from_fn(|| q.pop()).map(|e| e.owner).collect();
         assert_eq!(order, vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn another_event_at_the_same_instant_is_seen() {
+        let mut q = EventQueue::new(3);
+        q.set(0, ev(1.0, 0));
+        q.set(1, ev(1.0, 1));
+        q.set(2, ev(2.0, 2));
+        let top = q.peek().map(|e| e.owner);
+        assert_eq!(top, Some(0));
+        assert!(q.another_by(0, 1.0));
+        q.set(1, ev(1.5, 1));
+        assert!(!q.another_by(0, 1.0));
     }
 }

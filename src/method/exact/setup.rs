@@ -4,6 +4,7 @@
 //! edited.
 
 use super::grid::Grid;
+use super::predict::PairGuess;
 use super::queue::EventQueue;
 use super::{
     Body, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, SEPARATION_SWEEPS, TC_FRACTION,
@@ -25,6 +26,7 @@ impl Sim {
             order: Vec::with_capacity(n),
             grid: Grid::new(particles, laws),
             queue: EventQueue::new(n),
+            guesses: vec![PairGuess::NONE; n],
             cap: EVENTS_PER_DISC
                 .saturating_mul(n)
                 .saturating_add(EVENTS_BASE),
@@ -94,7 +96,7 @@ impl Sim {
                 let cell = self.bodies[i as usize].cell;
                 let mut partners: Vec<u32> = Vec::new();
                 self.grid.for_each_neighbour(cell, |c, _| {
-                    partners.extend(self.grid.cells[c].iter().filter(|&&j| j > i));
+                    partners.extend(self.grid.members(c).filter(|&j| j > i));
                 });
                 for j in partners {
                     moved |= self.push_apart(i, j);
@@ -171,6 +173,9 @@ impl Sim {
             b.last_hit -= shift;
         }
         self.queue.shift_times(shift);
+        for guess in &mut self.guesses {
+            guess.time -= shift;
+        }
         self.laws = *laws; // restitutions may have changed
         self.now = 0.0;
         self.end = dt;

@@ -1,0 +1,252 @@
+//! Predicting a disc's next event: the earliest of its collisions with the
+//! discs in the 3×3 cells around it, its wall hits, and its crossing into
+//! the next cell.
+//!
+//! The earliest pair collision found is kept per disc ([`PairGuess`]). A
+//! cell crossing leaves the disc's trajectory as it was, so after one the
+//! guess still holds unless its partner has changed course since, and only
+//! the three cells that have just come into reach need scanning: a third of
+//! a full prediction, for the commonest event of a gas.
+
+use super::grid::NIL;
+use super::kinematics::{first_crossing, pair_time};
+use super::queue::Event;
+use super::{Body, Kind, Sim};
+use crate::boundary::Boundary;
+use glam::DVec2;
+
+/// No partner.
+const NOBODY: u32 = NIL;
+
+/// A disc's earliest pair collision, as last predicted.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PairGuess {
+    /// When, on the step's clock; infinite when there is none.
+    pub time: f64,
+    /// With whom ([`NOBODY`] when there is none).
+    pub partner: u32,
+    /// The partner's generation when it was predicted.
+    pub gen: u32,
+}
+
+impl PairGuess {
+    pub const NONE: PairGuess = PairGuess {
+        time: f64::INFINITY,
+        partner: NOBODY,
+        gen: 0,
+    };
+}
+
+/// Which cells a pair scan visits.
+#[derive(Clone, Copy)]
+enum Reach {
+    /// All nine around the disc.
+    Around,
+    /// The three that came into reach with a crossing along `axis`.
+    New { axis: usize, upper: bool },
+}
+
+impl Sim {
+    /// Queues disc `i`'s earliest event after scanning all nine cells
+    /// around it (`i` must be at the current time). Events past the step
+    /// stay queued for the steps after.
+    pub(super) fn predict(&mut self, i: u32) {
+        self.guesses[i as usize] = self.scan(i, PairGuess::NONE, Reach::Around);
+        self.schedule(i);
+    }
+
+    /// Queues disc `i`'s earliest event after it crossed into its present
+    /// cell along `axis`: its pair guess holds if its partner kept its
+    /// course, and then only the cells new in reach are scanned.
+    pub(super) fn predict_after_crossing(&mut self, i: u32, axis: usize, upper: bool) {
+        let guess = self.guesses[i as usize];
+        let holds = guess.partner == NOBODY || self.bodies[guess.partner as usize].gen == guess.gen;
+        if !holds || !self.grid.images_by_cell() {
+            return self.predict(i);
+        }
+        self.guesses[i as usize] = self.scan(i, guess, Reach::New { axis, upper });
+        self.schedule(i);
+    }
+
+    /// Queues the earliest of disc `i`'s pair guess, wall hits and cell
+    /// crossings.
+    fn schedule(&mut self, i: u32) {
+        let me = &self.bodies[i as usize];
+        let guess = self.guesses[i as usize];
+        let mut best = (
+            guess.time,
+            Kind::Pair {
+                partner: guess.partner,
+                gen: guess.gen,
+            },
+        );
+        let exit = if self.laws.gravity == DVec2::ZERO {
+            self.straight_exit(me)
+        } else {
+            self.curved_exit(me)
+        };
+        if let Some((tau, kind)) = exit {
+            if self.now + tau < best.0 {
+                best = (self.now + tau, kind);
+            }
+        }
+        let event = best.0.is_finite().then_some(Event {
+            time: best.0,
+            owner: i,
+            kind: best.1,
+        });
+        self.queue.set(i, event);
+    }
+
+    /// `guess` improved by the discs in the cells of `reach`, specialised
+    /// on whether there is gravity and whether a neighbour's periodic image
+    /// follows from its cell, since this loop is where the method spends
+    /// its time.
+    fn scan(&self, i: u32, guess: PairGuess, reach: Reach) -> PairGuess {
+        let me = &self.bodies[i as usize];
+        match (self.laws.gravity == DVec2::ZERO, self.grid.images_by_cell()) {
+            (true, true) => self.scan_with::<false, true>(i, me, guess, reach),
+            (false, true) => self.scan_with::<true, true>(i, me, guess, reach),
+            (true, false) => self.scan_with::<false, false>(i, me, guess, reach),
+            (false, false) => self.scan_with::<true, false>(i, me, guess, reach),
+        }
+    }
+
+    #[inline]
+    fn scan_with<const GRAVITY: bool, const IMAGES_BY_CELL: bool>(
+        &self,
+        i: u32,
+        me: &Body,
+        mut guess: PairGuess,
+        reach: Reach,
+    ) -> PairGuess {
+        let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
+        let g = laws.gravity;
+        let visit = |cell: usize, shift: DVec2| {
+            let mut next = self.grid.first(cell);
+            while next != NIL {
+                let j = next;
+                next = self.grid.after(j);
+                if j == i {
+                    continue;
+                }
+                let other = &bodies[j as usize];
+                let tau = now - other.time;
+                let (pj, vj) = if GRAVITY {
+                    (
+                        other.pos + other.vel * tau + 0.5 * g * tau * tau,
+                        other.vel + g * tau,
+                    )
+                } else {
+                    (other.pos + other.vel * tau, other.vel)
+                };
+                let d = if IMAGES_BY_CELL {
+                    pj + shift - me.pos
+                } else {
+                    laws.boundary.separation(me.pos, pj, laws.size)
+                };
+                let t = now + pair_time(d, vj - me.vel, me.radius + other.radius);
+                if t < guess.time {
+                    guess = PairGuess {
+                        time: t,
+                        partner: j,
+                        gen: other.gen,
+                    };
+                }
+            }
+        };
+        match reach {
+            Reach::Around => self.grid.for_each_neighbour(me.cell, visit),
+            Reach::New { axis, upper } => {
+                self.grid.for_each_new_in_reach(me.cell, axis, upper, visit)
+            }
+        }
+        guess
+    }
+
+    /// Without gravity: the first wall hit or cell crossing (time from now
+    /// and kind). Along each axis only the side the disc moves towards can
+    /// come, and in a box the wall comes first only from the edge cell
+    /// (cells are at least a diameter wide).
+    fn straight_exit(&self, me: &Body) -> Option<(f64, Kind)> {
+        let x = self.straight_exit_along(me, 0, me.pos.x, me.vel.x);
+        let y = self.straight_exit_along(me, 1, me.pos.y, me.vel.y);
+        match (x, y) {
+            (Some(a), Some(b)) => Some(if b.0 < a.0 { b } else { a }),
+            (a, b) => a.or(b),
+        }
+    }
+
+    #[inline]
+    fn straight_exit_along(&self, me: &Body, axis: usize, p: f64, v: f64) -> Option<(f64, Kind)> {
+        if v == 0.0 {
+            return None;
+        }
+        let upper = v > 0.0;
+        let a = axis as u8;
+        let cell = me.cell[axis];
+        let edge = if upper { self.grid.dims[axis] - 1 } else { 0 };
+        let (target, kind) = match (cell == edge, self.laws.boundary) {
+            (true, Boundary::Box) => {
+                let wall = if upper {
+                    self.laws.size[axis] - me.radius
+                } else {
+                    me.radius
+                };
+                (wall, Kind::Wall { axis: a, upper })
+            }
+            (true, Boundary::Open) => (self.grid.border(cell, axis, upper), Kind::Leave),
+            _ => (
+                self.grid.border(cell, axis, upper),
+                Kind::Cell { axis: a, upper },
+            ),
+        };
+        Some((((target - p) / v).max(0.0), kind))
+    }
+
+    /// Under gravity: the first wall hit or cell crossing along parabolas.
+    fn curved_exit(&self, me: &Body) -> Option<(f64, Kind)> {
+        let g = self.laws.gravity;
+        let mut best: Option<(f64, Kind)> = None;
+        let mut consider = |tau: Option<f64>, kind: Kind| {
+            if let Some(tau) = tau {
+                if best.is_none_or(|(b, _)| tau < b) {
+                    best = Some((tau, kind));
+                }
+            }
+        };
+        for axis in 0..2 {
+            let (p, v, ga) = (me.pos[axis], me.vel[axis], g[axis]);
+            let a = axis as u8;
+            if self.laws.boundary == Boundary::Box {
+                let hi = self.laws.size[axis] - me.radius;
+                let lower = Kind::Wall {
+                    axis: a,
+                    upper: false,
+                };
+                let upper = Kind::Wall {
+                    axis: a,
+                    upper: true,
+                };
+                consider(first_crossing(p, v, ga, me.radius, -1.0), lower);
+                consider(first_crossing(p, v, ga, hi, 1.0), upper);
+            }
+            let (lo, hi) = self.grid.bounds(me.cell, axis);
+            let last = self.grid.dims[axis] - 1;
+            for (upper, bound, sign) in [(false, lo, -1.0), (true, hi, 1.0)] {
+                let at_edge = if upper {
+                    me.cell[axis] == last
+                } else {
+                    me.cell[axis] == 0
+                };
+                let kind = match (at_edge, self.laws.boundary) {
+                    (true, Boundary::Box) => continue, // the wall comes first
+                    (true, Boundary::Open) => Kind::Leave,
+                    _ => Kind::Cell { axis: a, upper },
+                };
+                consider(first_crossing(p, v, ga, bound, sign), kind);
+            }
+        }
+        best
+    }
+}
