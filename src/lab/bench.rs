@@ -103,24 +103,30 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     }
     bar.finish_and_clear();
     let crossovers = crossovers(batch_seconds);
-    let throughput_sizes: &[usize] = if args.quick {
-        &[10_000]
+    // (discs, collisions to run): the full run takes 10⁷ collisions at 10⁴
+    // discs, where the energy target is set.
+    let throughput_runs: &[(usize, usize)] = if args.quick {
+        &[(10_000, 100_000)]
     } else {
-        &[10_000, 100_000]
+        &[(10_000, 10_000_000), (100_000, 1_000_000)]
     };
-    let throughput: Vec<Throughput> = throughput_sizes
+    let throughput: Vec<Throughput> = throughput_runs
         .iter()
-        .map(|&n| exact_throughput(n))
+        .map(|&(n, collisions)| exact_throughput(n, collisions))
         .collect();
     std::fs::create_dir_all(&args.out)?;
     let mut table = table(&rows, &skipped);
-    let _ = writeln!(table, "\n| exact, long steps (dt = {EXACT_DT} s) | n | collisions per wall-clock second | events per collision | relative energy change |");
-    let _ = writeln!(table, "|---|---:|---:|---:|---:|");
+    let _ = writeln!(table, "\n| exact, long steps (dt = {EXACT_DT} s) | n | collisions | collisions per wall-clock second (median step) | events per collision | relative energy change |");
+    let _ = writeln!(table, "|---|---:|---:|---:|---:|---:|");
     for t in &throughput {
         let _ = writeln!(
             table,
-            "| exact | {} | {:.3e} | {:.2} | {:.1e} |",
-            t.n, t.collisions_per_second, t.events_per_collision, t.energy_change
+            "| exact | {} | {:.1e} | {:.3e} | {:.2} | {:.1e} |",
+            t.n,
+            t.collisions as f64,
+            t.collisions_per_second,
+            t.events_per_collision,
+            t.energy_change
         );
     }
     table.push_str(&crossovers);
@@ -257,7 +263,9 @@ pub const EXACT_DT: f64 = 2.0;
 pub struct Throughput {
     /// Discs.
     pub n: usize,
-    /// Pair collisions per wall-clock second (median of 3 steps).
+    /// Pair collisions timed.
+    pub collisions: usize,
+    /// Pair collisions per wall-clock second (median over the steps).
     pub collisions_per_second: f64,
     /// Events processed per pair collision.
     pub events_per_collision: f64,
@@ -265,8 +273,9 @@ pub struct Throughput {
     pub energy_change: f64,
 }
 
-/// Measures `exact` on the gas with long steps.
-pub fn exact_throughput(n: usize) -> Throughput {
+/// Measures `exact` on the gas with long steps, for at least `collisions`
+/// pair collisions (and at least three steps).
+pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
     let mut world = Gas {
         count: n,
         ..Gas::default()
@@ -275,16 +284,23 @@ pub fn exact_throughput(n: usize) -> Throughput {
     world.method = Setting::Fixed(Method::Exact);
     world.step(EXACT_DT);
     let ke0 = world.metrics().kinetic_energy;
+    let target = collisions;
+    let bar = progress::bar(target as u64, &format!("exact, {n} discs"));
     let (mut rates, mut events, mut collisions) = (Vec::new(), 0usize, 0usize);
-    for _ in 0..3 {
+    // A gas that stopped colliding would never reach the target: give up
+    // after a step without collisions.
+    while rates.len() < 3 || (collisions < target && rates.last() != Some(&0.0)) {
         let t = Instant::now();
         let stats = world.step(EXACT_DT);
         rates.push(stats.pair_collisions as f64 / t.elapsed().as_secs_f64());
         events += stats.events;
         collisions += stats.pair_collisions;
+        bar.set_position(collisions.min(target) as u64);
     }
+    bar.finish_and_clear();
     Throughput {
         n,
+        collisions,
         collisions_per_second: median(&mut rates),
         events_per_collision: events as f64 / collisions.max(1) as f64,
         energy_change: (world.metrics().kinetic_energy - ke0).abs() / ke0,
@@ -421,8 +437,12 @@ mod tests {
                 "{row:?}"
             );
         }
-        let t = exact_throughput(300);
+        let t = exact_throughput(300, 2_000);
         assert!(t.collisions_per_second > 0.0, "{t:?}");
+        assert!(
+            t.collisions >= 2_000,
+            "runs until the collisions asked for: {t:?}"
+        );
         assert!(
             t.energy_change < 1e-12,
             "exact keeps the gas's energy: {t:?}"

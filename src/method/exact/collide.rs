@@ -32,9 +32,10 @@ impl Sim {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
         if (b.vel - a.vel).dot(normal) < 0.0 {
-            let rapid = self.now - a.last_hit < self.t_c || self.now - b.last_hit < self.t_c;
+            let (ia, ib) = (self.inert[i as usize], self.inert[j as usize]);
+            let rapid = self.now - ia.last_hit < self.t_c || self.now - ib.last_hit < self.t_c;
             let e = if rapid { 1.0 } else { self.laws.restitution };
-            let (va, vb) = collision_velocities(a.mass, b.mass, a.vel, b.vel, normal, e);
+            let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             if self.record {
                 self.collided.push(Collision {
                     time: self.now,
@@ -43,7 +44,7 @@ impl Sim {
                         self.order[j as usize] as usize,
                     ],
                     normal,
-                    masses: [a.mass, b.mass],
+                    masses: [ia.mass, ib.mass],
                     before: [a.vel, b.vel],
                     after: [va, vb],
                 });
@@ -52,7 +53,7 @@ impl Sim {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
                 body.gen += 1;
-                body.last_hit = self.now;
+                self.inert[k as usize].last_hit = self.now;
             }
             self.collisions += 1;
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
@@ -101,11 +102,11 @@ impl Sim {
         ids.sort_unstable();
         ids.dedup();
         let slot = |k: u32| ids.binary_search(&k).unwrap_or(0);
-        let masses: Vec<f64> = ids.iter().map(|&k| self.bodies[k as usize].mass).collect();
+        let masses: Vec<f64> = ids.iter().map(|&k| self.inert[k as usize].mass).collect();
         let velocities: Vec<DVec2> = ids.iter().map(|&k| self.bodies[k as usize].vel).collect();
         let rapid = ids
             .iter()
-            .any(|&k| self.now - self.bodies[k as usize].last_hit < self.t_c);
+            .any(|&k| self.now - self.inert[k as usize].last_hit < self.t_c);
         let e = if rapid { 1.0 } else { self.laws.restitution };
         let list: Vec<simultaneous::Touch> = touches
             .iter()
@@ -135,7 +136,7 @@ impl Sim {
             let body = &mut self.bodies[k as usize];
             body.vel = v;
             body.gen += 1;
-            body.last_hit = self.now;
+            self.inert[k as usize].last_hit = self.now;
         }
         self.collisions += touches.len();
         for &k in &ids {
@@ -145,7 +146,7 @@ impl Sim {
 
     pub(super) fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
         self.advance_to(i, self.now);
-        let rapid = self.now - self.bodies[i as usize].last_hit < self.t_c;
+        let rapid = self.now - self.inert[i as usize].last_hit < self.t_c;
         let e = if rapid {
             1.0
         } else {
@@ -160,10 +161,11 @@ impl Sim {
         };
         b.pos[axis] = if upper { size - b.radius } else { b.radius };
         if into_wall {
-            self.wall_impulse += b.mass * (1.0 + e) * b.vel[axis].abs();
+            let inert = &mut self.inert[i as usize];
+            self.wall_impulse += inert.mass * (1.0 + e) * b.vel[axis].abs();
             b.vel[axis] *= -e;
             b.gen += 1;
-            b.last_hit = self.now;
+            inert.last_hit = self.now;
             self.wall_hits += 1;
         }
         self.predict(i);

@@ -150,21 +150,28 @@ enum Kind {
     Leave,
 }
 
-/// A disc during a step: its state at its own local time.
+/// A disc during a step: its state at its own local time. What predicting
+/// reads, and no more, in one cache line per disc; the rest is in [`Inert`].
 #[derive(Clone, Copy, Debug)]
+#[repr(align(64))]
 struct Body {
     pos: DVec2,
     vel: DVec2,
     /// The time `pos` and `vel` refer to.
     time: f64,
     radius: f64,
-    mass: f64,
-    /// When it last collided (for the TC rule).
-    last_hit: f64,
     /// Bumped whenever its trajectory changes.
     gen: u32,
     /// Its grid cell.
     cell: [i32; 2],
+}
+
+/// What only a collision reads of a disc.
+#[derive(Clone, Copy, Debug)]
+struct Inert {
+    mass: f64,
+    /// When it last collided (for the TC rule).
+    last_hit: f64,
 }
 
 struct Sim {
@@ -174,6 +181,7 @@ struct Sim {
     t_c: f64,
     /// The discs in cell order; `order[k]` is body k's index in the caller's slice.
     bodies: Vec<Body>,
+    inert: Vec<Inert>,
     order: Vec<u32>,
     grid: Grid,
     queue: EventQueue<Kind>,
@@ -252,7 +260,8 @@ impl Sim {
         let as_particles: Vec<Particle> = self
             .bodies
             .iter()
-            .map(|b| Particle::new(b.pos, b.vel, b.mass, b.radius, crate::Color::rgb(0, 0, 0)))
+            .zip(&self.inert)
+            .map(|(b, c)| Particle::new(b.pos, b.vel, c.mass, b.radius, crate::Color::rgb(0, 0, 0)))
             .collect();
         self.grid = Grid::new(&as_particles, &self.laws);
         for (k, b) in self.bodies.iter_mut().enumerate() {

@@ -7,7 +7,8 @@ use super::grid::Grid;
 use super::predict::PairGuess;
 use super::queue::EventQueue;
 use super::{
-    Body, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, SEPARATION_SWEEPS, TC_FRACTION,
+    Body, Inert, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, SEPARATION_SWEEPS,
+    TC_FRACTION,
 };
 use crate::boundary::Boundary;
 use crate::particle::Particle;
@@ -23,6 +24,7 @@ impl Sim {
             now: 0.0,
             t_c: TC_FRACTION * dt,
             bodies: Vec::with_capacity(n),
+            inert: Vec::with_capacity(n),
             order: Vec::with_capacity(n),
             grid: Grid::new(particles, laws),
             queue: EventQueue::new(n),
@@ -70,10 +72,12 @@ impl Sim {
                 vel: p.vel,
                 time: 0.0,
                 radius: p.radius,
-                mass: p.mass,
-                last_hit: f64::NEG_INFINITY,
                 gen: 0,
                 cell,
+            });
+            sim.inert.push(Inert {
+                mass: p.mass,
+                last_hit: f64::NEG_INFINITY,
             });
             sim.order.push(i);
             sim.grid.insert(k as u32, cell);
@@ -140,9 +144,10 @@ impl Sim {
         } else {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
-        let total = a.mass + b.mass;
-        self.bodies[i as usize].pos -= normal * (depth * b.mass / total);
-        self.bodies[j as usize].pos += normal * (depth * a.mass / total);
+        let (ma, mb) = (self.inert[i as usize].mass, self.inert[j as usize].mass);
+        let total = ma + mb;
+        self.bodies[i as usize].pos -= normal * (depth * mb / total);
+        self.bodies[j as usize].pos += normal * (depth * ma / total);
         true
     }
 
@@ -155,22 +160,28 @@ impl Sim {
         same_geometry
             && !self.overlapping
             && particles.len() == self.bodies.len()
-            && self.order.iter().zip(&self.bodies).all(|(&i, b)| {
-                let p = &particles[i as usize];
-                p.pos == self.written_pos(b)
-                    && p.vel == b.vel
-                    && p.mass == b.mass
-                    && p.radius == b.radius
-            })
+            && self
+                .order
+                .iter()
+                .zip(self.bodies.iter().zip(&self.inert))
+                .all(|(&i, (b, c))| {
+                    let p = &particles[i as usize];
+                    p.pos == self.written_pos(b)
+                        && p.vel == b.vel
+                        && p.mass == c.mass
+                        && p.radius == b.radius
+                })
     }
 
     /// Starts a new step of `dt` from where the last one ended: every disc is
     /// at the end time, which becomes time zero.
     pub(super) fn restart(&mut self, laws: &Laws, dt: f64) {
         let shift = self.finished_at;
+        for c in &mut self.inert {
+            c.last_hit -= shift;
+        }
         for b in &mut self.bodies {
             b.time -= shift;
-            b.last_hit -= shift;
         }
         self.queue.shift_times(shift);
         for guess in &mut self.guesses {
