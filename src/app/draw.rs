@@ -32,6 +32,15 @@ impl ReadoutScope {
             ReadoutScope::All => ReadoutScope::Off,
         }
     }
+
+    /// "off", "selected" or "all".
+    pub fn name(self) -> &'static str {
+        match self {
+            ReadoutScope::Off => "off",
+            ReadoutScope::Selected => "selected",
+            ReadoutScope::All => "all",
+        }
+    }
 }
 
 /// The overlay toggles.
