@@ -6,18 +6,21 @@
 # presenting (inside next_frame: the batches rendered, the UI, the swap).
 # Needs: xvfb xdotool libgl1-mesa-dri. Usage:
 #   scripts/frame-times.sh [--bin PATH] [--out DIR] [--counts "1000 10000"] [--seconds S]
+#                          [--modes "plain overlays running"]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=target/release/impulse
 out=impulse-out/frame-times
 counts="1000 10000 100000"
 seconds=""
+modes="plain overlays running"
 while [ $# -gt 0 ]; do
     case "$1" in
         --bin) bin="$2"; shift 2 ;;
         --out) out="$2"; shift 2 ;;
         --counts) counts="$2"; shift 2 ;;
         --seconds) seconds="$2"; shift 2 ;;
+        --modes) modes="$2"; shift 2 ;;
         *) echo "unknown argument $1" >&2; exit 2 ;;
     esac
 done
@@ -39,7 +42,7 @@ median() {
 
 printf "%-8s %-9s %7s %9s %8s %8s %10s\n" discs mode frames frame_ms step_ms draw_ms present_ms
 for n in $counts; do
-    for mode in plain overlays running; do
+    for mode in $modes; do
         case "$mode" in
             plain) flags=(--paused); keys=(v); want="0,0,selected" ;;
             overlays) flags=(--paused); keys=(m i); want="1,1,all" ;;

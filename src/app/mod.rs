@@ -4,6 +4,8 @@
 
 mod camera;
 mod clock;
+mod cull;
+mod discs;
 pub mod display;
 mod draw;
 mod dump;
@@ -15,6 +17,7 @@ mod interaction;
 mod lesson;
 mod panel;
 mod plot;
+mod readouts;
 mod scenes;
 mod trails;
 
@@ -178,6 +181,8 @@ struct App {
     screenshot_request: Option<PathBuf>,
     /// Timings of the frames drawn so far.
     frame_stats: frame_stats::FrameStats,
+    /// The discs' GPU batch, made at the first frame (it needs the window).
+    disc_batch: Option<discs::DiscBatch>,
 }
 
 impl App {
@@ -220,6 +225,7 @@ impl App {
             trails: trails::Trails::default(),
             screenshot_request: None,
             frame_stats: frame_stats::FrameStats::new(options_keep_all),
+            disc_batch: None,
         }
     }
 
@@ -347,13 +353,20 @@ impl App {
         }
     }
 
-    fn draw(&self) {
+    fn draw(&mut self) {
         clear_background(Color::new(0.09, 0.10, 0.14, 1.0));
         draw::draw_boundary(&self.world, &self.camera);
         self.trails.draw(&self.camera, self.overlays.thick);
-        draw::draw_discs(&self.world, &self.camera, self.selected, &self.overlays);
+        let batch = self.disc_batch.get_or_insert_with(discs::DiscBatch::new);
+        draw::draw_discs(
+            &self.world,
+            &self.camera,
+            self.selected,
+            &self.overlays,
+            batch,
+        );
         draw::draw_arrows(&self.world, &self.camera, &self.overlays);
-        draw::draw_readouts(
+        readouts::draw_readouts(
             &self.world,
             &self.camera,
             &self.overlays,
