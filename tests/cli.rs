@@ -67,11 +67,40 @@ fn wrong_arguments_are_refused_by_the_parser() {
         vec!["--dt", "nan"],
         vec!["--size", "10x10"],
         vec!["--no-such-flag"],
+        vec!["--frame-stats"],
     ] {
         let out = impulse(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stderr(&out));
         assert!(!stderr(&out).contains("panicked"));
     }
+}
+
+#[test]
+fn gas_wants_a_disc_count_and_no_scene_file_beside_it() {
+    for (value, why) in [
+        ("0", "from 1 to 1000000"),
+        ("-5", "from 1 to 1000000"),
+        ("1000001", "from 1 to 1000000"),
+        ("many", "from 1 to 1000000"),
+        ("1e5", "from 1 to 1000000"),
+    ] {
+        let out = impulse(&[&format!("--gas={value}")]);
+        assert_eq!(out.status.code(), Some(2), "--gas {value}");
+        let err = stderr(&out);
+        assert!(err.contains(value) && err.contains(why), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let out = impulse(&["--gas", "100", &asset("default.toml")]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("cannot be used with"),
+        "{}",
+        stderr(&out)
+    );
+    // A good count gets as far as the display check.
+    let out = impulse(&["--gas", "100000", "--frame-stats", "times.csv"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("display"), "{}", stderr(&out));
 }
 
 #[test]

@@ -217,3 +217,55 @@ fn screenshot_saves_the_frame_as_a_png() {
         "the frame shows discs and text, {differing} pixels differ"
     );
 }
+
+#[test]
+fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("gas") else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let (csv, png) = (dir.path().join("times.csv"), dir.path().join("gas.png"));
+    let app = Sandbox::start(
+        &x,
+        &[
+            "--gas",
+            "10000",
+            "--paused",
+            "--frame-stats",
+            csv.to_str().unwrap(),
+            "--screenshot",
+            png.to_str().unwrap(),
+        ],
+    );
+    let s = app.wait_frames(8);
+    assert_eq!(s["metrics"]["count"], 10000);
+    assert_eq!(s["scene_name"], "Gas of 10000 discs");
+    assert_eq!(s["scene_origin"], "--gas 10000");
+    let timing = &s["timing"];
+    assert!(timing["frames"].as_u64().unwrap() >= 8, "{timing}");
+    let ms = |k: &str| timing[k].as_f64().unwrap();
+    assert!(ms("frame_ms") > 0.0 && ms("draw_ms") > 0.0 && ms("present_ms") > 0.0);
+    assert!(ms("frame_ms") >= ms("draw_ms"), "{timing}");
+    let last = app.quit();
+
+    let text = std::fs::read_to_string(&csv).expect("the frame times were written");
+    let mut rows = text.lines();
+    assert_eq!(
+        rows.next(),
+        Some("frame,discs,velocity,momentum,readouts,steps,frame_ms,step_ms,draw_ms,present_ms")
+    );
+    let rows: Vec<Vec<&str>> = rows.map(|r| r.split(',').collect()).collect();
+    assert!(rows.len() as u64 + 1 >= last["frame"].as_u64().unwrap());
+    assert!(rows.iter().all(|r| r.len() == 10 && r[1] == "10000"));
+    assert!(rows.iter().all(|r| r[5] == "0"), "paused: no physics steps");
+
+    // The discs are on screen: thousands of pixels in the palette's colours.
+    let img = image::open(&png).expect("a readable PNG").to_rgb8();
+    let palette: Vec<[u8; 3]> = (0..8)
+        .map(|i| {
+            let c = impulse::Color::palette(i);
+            [c.r, c.g, c.b]
+        })
+        .collect();
+    let coloured = img.pixels().filter(|p| palette.contains(&p.0)).count();
+    assert!(coloured > 30_000, "{coloured} pixels in disc colours");
+}

@@ -1,7 +1,11 @@
-//! Drawing the world: walls, discs, velocity and momentum arrows, per-disc
-//! readouts and the launch preview. Everything goes through the camera.
+//! Drawing the world: walls, discs (batched, [`super::discs`]), velocity and
+//! momentum arrows (only readable ones, [`super::cull`]) and the launch
+//! preview; the readouts are in [`super::readouts`]. Everything goes through
+//! the camera.
 
 use super::camera::Camera;
+use super::cull::{arrow_readable, circle_on_screen, MIN_DISC_PIXELS};
+use super::discs::{self, DiscBatch};
 use super::interaction::{launch_velocity, NewDisc};
 use glam::DVec2;
 use impulse::{Boundary, World};
@@ -9,8 +13,6 @@ use macroquad::prelude::*;
 
 /// Arrows show where a disc will be this many seconds from now.
 pub const ARROW_SECONDS: f64 = 0.5;
-/// Readouts for "all discs" stop at this many labels.
-const MAX_LABELS: usize = 250;
 
 /// Which discs carry a text readout.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,6 +32,15 @@ impl ReadoutScope {
             ReadoutScope::Off => ReadoutScope::Selected,
             ReadoutScope::Selected => ReadoutScope::All,
             ReadoutScope::All => ReadoutScope::Off,
+        }
+    }
+
+    /// "off", "selected" or "all".
+    pub fn name(self) -> &'static str {
+        match self {
+            ReadoutScope::Off => "off",
+            ReadoutScope::Selected => "selected",
+            ReadoutScope::All => "all",
         }
     }
 }
@@ -79,10 +90,6 @@ fn px(v: DVec2) -> Vec2 {
     vec2(v.x as f32, v.y as f32)
 }
 
-fn disc_color(c: impulse::Color) -> Color {
-    Color::from_rgba(c.r, c.g, c.b, 255)
-}
-
 /// The walls (solid for a box, dashed for periodic, faint for open space).
 pub fn draw_boundary(world: &World, camera: &Camera) {
     let a = px(camera.world_to_screen(DVec2::new(0.0, world.size.y)));
@@ -111,31 +118,35 @@ fn dashed_line(from: Vec2, to: Vec2, dash: f32, color: Color) {
     }
 }
 
-/// Every disc, with a ring round the selected one.
-pub fn draw_discs(world: &World, camera: &Camera, selected: Option<usize>, overlays: &Overlays) {
-    for (i, p) in world.particles.iter().enumerate() {
-        let c = px(camera.world_to_screen(p.pos));
-        let r = camera.length_in_pixels(p.radius).max(1.0) as f32;
-        if !on_screen(c, r, camera) {
-            continue;
-        }
-        let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
-        let color = if overlays.safe_palette {
+/// Every disc in one instanced draw call (see [`super::discs`]), with a ring
+/// round the selected one.
+pub fn draw_discs(
+    world: &World,
+    camera: &Camera,
+    selected: Option<usize>,
+    overlays: &Overlays,
+    batch: &mut DiscBatch,
+) {
+    let color = |i: usize| {
+        if overlays.safe_palette {
             impulse::Color::palette(i)
         } else {
-            p.color
-        };
-        draw_poly(c.x, c.y, sides, r, 0.0, disc_color(color));
-        if Some(i) == selected {
-            let width = if overlays.thick { 5.0 } else { 2.5 };
-            draw_poly_lines(c.x, c.y, sides, r + 3.0, 0.0, width, SELECTED_COLOR);
+            world.particles[i].color
         }
+    };
+    discs::instances(world, camera, color, &mut batch.instances);
+    batch.draw();
+    let Some(p) = selected.and_then(|i| world.particles.get(i)) else {
+        return;
+    };
+    let c = camera.world_to_screen(p.pos);
+    let r = camera.length_in_pixels(p.radius).max(MIN_DISC_PIXELS);
+    if circle_on_screen(c, r + 3.0, camera.viewport) {
+        let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
+        let width = if overlays.thick { 5.0 } else { 2.5 };
+        let c = px(c);
+        draw_poly_lines(c.x, c.y, sides, r as f32 + 3.0, 0.0, width, SELECTED_COLOR);
     }
-}
-
-fn on_screen(c: Vec2, r: f32, camera: &Camera) -> bool {
-    let v = px(camera.viewport);
-    c.x + r >= 0.0 && c.y + r >= 0.0 && c.x - r <= v.x && c.y - r <= v.y
 }
 
 /// An arrow between two screen points; nothing if shorter than a pixel.
@@ -153,7 +164,8 @@ pub fn arrow(from: Vec2, to: Vec2, thickness: f32, color: Color) {
     draw_triangle(to, base + side, base - side, color);
 }
 
-/// Velocity and momentum arrows, as toggled.
+/// Velocity and momentum arrows, as toggled; only those long enough to read
+/// ([`super::cull::MIN_ARROW_PIXELS`]) and crossing the screen.
 pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
     if !(overlays.velocity || overlays.momentum) || world.particles.is_empty() {
         return;
@@ -161,66 +173,20 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
     // Momentum arrows share the velocity scale for a disc of average mass.
     let mean_mass =
         world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
+    let thickness = if overlays.thick { 2.0 } else { 1.0 };
     for p in &world.particles {
         let c = camera.world_to_screen(p.pos);
-        if !on_screen(
-            px(c),
-            4.0 + camera.length_in_pixels(p.radius) as f32,
-            camera,
-        ) {
-            continue;
-        }
-        let thickness = if overlays.thick { 2.0 } else { 1.0 };
         if overlays.velocity {
             let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
-            arrow(px(c), px(tip), 2.0 * thickness, VELOCITY_COLOR);
+            if arrow_readable(c, tip, camera.viewport) {
+                arrow(px(c), px(tip), 2.0 * thickness, VELOCITY_COLOR);
+            }
         }
         if overlays.momentum {
             let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
-            arrow(px(c), px(tip), 3.0 * thickness, MOMENTUM_COLOR);
-        }
-    }
-}
-
-/// Readout lines for one disc.
-pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
-    let v = p.vel;
-    let m = p.momentum();
-    [
-        format!("v = ({:.2}, {:.2}) m/s  |v| = {:.2}", v.x, v.y, v.length()),
-        format!("p = ({:.2}, {:.2}) kg m/s", m.x, m.y),
-        format!("m = {:.3} kg  KE = {:.3} J", p.mass, p.kinetic_energy()),
-    ]
-}
-
-/// Text readouts beside the selected disc or every disc on screen.
-pub fn draw_readouts(
-    world: &World,
-    camera: &Camera,
-    overlays: &Overlays,
-    selected: Option<usize>,
-    font: f32,
-) {
-    let chosen: Box<dyn Iterator<Item = usize>> = match overlays.readouts {
-        ReadoutScope::Off => return,
-        ReadoutScope::Selected => Box::new(selected.into_iter()),
-        ReadoutScope::All => Box::new(0..world.particles.len()),
-    };
-    let mut shown = 0;
-    for i in chosen {
-        let Some(p) = world.particles.get(i) else {
-            continue;
-        };
-        let c = px(camera.world_to_screen(p.pos));
-        let r = camera.length_in_pixels(p.radius) as f32;
-        if !on_screen(c, r + 200.0, camera) {
-            continue;
-        }
-        let lines = readout_lines(p);
-        super::hud::text_panel(c.x + r + 6.0, c.y - r, &lines, font, 0.55);
-        shown += 1;
-        if shown >= MAX_LABELS {
-            break;
+            if arrow_readable(c, tip, camera.viewport) {
+                arrow(px(c), px(tip), 3.0 * thickness, MOMENTUM_COLOR);
+            }
         }
     }
 }

@@ -62,6 +62,8 @@ pub struct StateDump<'a> {
     /// Screen rectangles [x, y, width, height] (px) of the panel and of its
     /// sliders' tracks, text fields and buttons, by name; empty when hidden.
     pub panel_widgets: BTreeMap<&'static str, [f32; 4]>,
+    /// Medians of the recent frames' timings (ms).
+    pub timing: super::frame_stats::TimingSummary,
     /// World size (m).
     pub size: [f64; 2],
     /// Totals.
@@ -118,6 +120,7 @@ impl<'a> StateDump<'a> {
             gravity: world.gravity.to_array(),
             panel_visible: false,
             panel_widgets: BTreeMap::new(),
+            timing: Default::default(),
             size: world.size.to_array(),
             metrics: world.metrics(),
             particles: &world.particles,

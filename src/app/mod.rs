@@ -4,16 +4,20 @@
 
 mod camera;
 mod clock;
+mod cull;
+mod discs;
 pub mod display;
 mod draw;
 mod dump;
 mod export;
+mod frame_stats;
 mod hud;
 mod input;
 mod interaction;
 mod lesson;
 mod panel;
 mod plot;
+mod readouts;
 mod scenes;
 mod trails;
 
@@ -33,6 +37,10 @@ use std::path::PathBuf;
 pub struct WindowOptions {
     /// Scene file to open (TOML); the built-in sandbox scene when absent.
     pub scene: Option<PathBuf>,
+    /// Open a gas of N equal discs (periodic box, 30 % of the area covered)
+    /// instead of a scene file: for trying large numbers of discs.
+    #[arg(long, value_name = "N", conflicts_with = "scene", value_parser = gas_count)]
+    pub gas: Option<usize>,
     /// Start paused.
     #[arg(long)]
     pub paused: bool,
@@ -51,6 +59,10 @@ pub struct WindowOptions {
     /// Folder for saved scenes (Ctrl+S); created when first needed.
     #[arg(long, value_name = "DIR", default_value = "impulse-out")]
     pub out: PathBuf,
+    /// Write every frame's timings (frame, physics, drawing, presenting; ms)
+    /// to FILE as CSV when the window closes, and their medians on stderr.
+    #[arg(long, value_name = "FILE")]
+    pub frame_stats: Option<PathBuf>,
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = window_size)]
     pub size: (i32, i32),
@@ -68,14 +80,44 @@ fn window_size(s: &str) -> Result<(i32, i32), String> {
     }
 }
 
+/// Most discs `--gas` builds.
+pub const MAX_GAS: usize = 1_000_000;
+
+fn gas_count(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if (1..=MAX_GAS).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "{s:?} is not a number of discs from 1 to {MAX_GAS}"
+        )),
+    }
+}
+
+/// The scene `--gas N` opens: `impulse::presets::Gas` with N discs.
+fn gas_scene(count: usize) -> (Scene, String) {
+    let world = impulse::presets::Gas {
+        count,
+        ..Default::default()
+    }
+    .build();
+    let scene = Scene::from_world(
+        &world,
+        Some(format!("Gas of {count} discs")),
+        Some(format!(
+            "{count} equal discs covering 30 % of a periodic box (--gas {count})"
+        )),
+    );
+    (scene, format!("--gas {count}"))
+}
+
 /// The scene the window opens without a file: something is already moving.
 pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");
 
 /// Loads the scene, then opens the window (or explains why it cannot).
 pub fn run(options: WindowOptions) -> anyhow::Result<()> {
-    let (scene, origin) = match &options.scene {
-        Some(path) => (Scene::load(path)?, path.display().to_string()),
-        None => {
+    let (scene, origin) = match (&options.scene, options.gas) {
+        (_, Some(count)) => gas_scene(count),
+        (Some(path), None) => (Scene::load(path)?, path.display().to_string()),
+        (None, None) => {
             let origin = "built-in default scene".to_string();
             (Scene::parse(DEFAULT_SCENE, &origin)?, origin)
         }
@@ -103,6 +145,10 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     display::guard_window_start();
     macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
     Ok(())
+}
+
+fn ms_since(start: std::time::Instant, end: std::time::Instant) -> f64 {
+    end.duration_since(start).as_secs_f64() * 1e3
 }
 
 /// The window's whole state.
@@ -133,6 +179,10 @@ struct App {
     trails: trails::Trails,
     /// F12 asked for a screenshot of the next frame, to this file.
     screenshot_request: Option<PathBuf>,
+    /// Timings of the frames drawn so far.
+    frame_stats: frame_stats::FrameStats,
+    /// The discs' GPU batch, made at the first frame (it needs the window).
+    disc_batch: Option<discs::DiscBatch>,
 }
 
 impl App {
@@ -145,6 +195,7 @@ impl App {
         clock.paused = options.paused;
         let size = world.size;
         let path = options.scene.as_ref().map(|p| p.display().to_string());
+        let options_keep_all = options.frame_stats.is_some();
         App {
             options,
             scene,
@@ -173,12 +224,20 @@ impl App {
             history: impulse::history::History::default(),
             trails: trails::Trails::default(),
             screenshot_request: None,
+            frame_stats: frame_stats::FrameStats::new(options_keep_all),
+            disc_batch: None,
         }
     }
 
     async fn run(mut self) {
         prevent_quit();
+        let mut pending: Option<(std::time::Instant, frame_stats::FrameTimes)> = None;
         loop {
+            let frame_start = std::time::Instant::now();
+            if let Some((start, mut times)) = pending.take() {
+                times.frame_ms = ms_since(start, frame_start);
+                self.frame_stats.push(times);
+            }
             let viewport = DVec2::new(screen_width() as f64, screen_height() as f64);
             self.camera.viewport = viewport;
             if self.frame == 0 {
@@ -188,7 +247,9 @@ impl App {
             self.panel_ui();
             self.handle_keys();
             self.handle_mouse();
+            let step_start = std::time::Instant::now();
             self.advance_physics(get_frame_time() as f64);
+            let step_ms = ms_since(step_start, std::time::Instant::now());
             let timed_out = self
                 .options
                 .exit_after
@@ -197,9 +258,13 @@ impl App {
             let requested = self.screenshot_request.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
             let capture = wanted.then(dump::capture_frame);
+            let draw_start = std::time::Instant::now();
             self.draw();
+            let draw_ms = ms_since(draw_start, std::time::Instant::now());
             self.frame += 1;
             self.write_dump();
+            let mut times = self.frame_times(step_ms, draw_ms);
+            let present_start = std::time::Instant::now();
             if let Some(target) = capture {
                 next_frame().await; // finishes the frame, panel included
                 if closing {
@@ -211,9 +276,44 @@ impl App {
             } else if !closing {
                 next_frame().await;
             }
+            times.present_ms = ms_since(present_start, std::time::Instant::now());
+            pending = Some((frame_start, times));
             if closing {
                 break;
             }
+        }
+        self.write_frame_stats();
+    }
+
+    /// This frame's record, its frame and present times still to come.
+    fn frame_times(&self, step_ms: f64, draw_ms: f64) -> frame_stats::FrameTimes {
+        frame_stats::FrameTimes {
+            frame: self.frame,
+            discs: self.world.particles.len(),
+            velocity: self.overlays.velocity,
+            momentum: self.overlays.momentum,
+            readouts: self.overlays.readouts.name(),
+            steps: self.steps_last_frame,
+            frame_ms: 0.0,
+            step_ms,
+            draw_ms,
+            present_ms: 0.0,
+        }
+    }
+
+    /// `--frame-stats`: the CSV file and a line of medians.
+    fn write_frame_stats(&self) {
+        let Some(path) = &self.options.frame_stats else {
+            return;
+        };
+        let csv = self.frame_stats.csv();
+        match crate::files::write_atomically(path, csv.as_bytes()) {
+            Ok(()) => eprintln!(
+                "impulse: frame times in {}: {}",
+                path.display(),
+                self.frame_stats.summary_line()
+            ),
+            Err(e) => eprintln!("impulse: cannot write frame times {}: {e}", path.display()),
         }
     }
 
@@ -253,13 +353,20 @@ impl App {
         }
     }
 
-    fn draw(&self) {
+    fn draw(&mut self) {
         clear_background(Color::new(0.09, 0.10, 0.14, 1.0));
         draw::draw_boundary(&self.world, &self.camera);
         self.trails.draw(&self.camera, self.overlays.thick);
-        draw::draw_discs(&self.world, &self.camera, self.selected, &self.overlays);
+        let batch = self.disc_batch.get_or_insert_with(discs::DiscBatch::new);
+        draw::draw_discs(
+            &self.world,
+            &self.camera,
+            self.selected,
+            &self.overlays,
+            batch,
+        );
         draw::draw_arrows(&self.world, &self.camera, &self.overlays);
-        draw::draw_readouts(
+        readouts::draw_readouts(
             &self.world,
             &self.camera,
             &self.overlays,
@@ -448,6 +555,7 @@ impl App {
         state.scene_origin = self.scene_origin.clone();
         state.panel_visible = self.panel.visible;
         state.panel_widgets = self.panel.widgets.clone();
+        state.timing = self.frame_stats.recent();
         if let Err(e) = dump::write_state(path, &state) {
             eprintln!("impulse: cannot write state dump {}: {e}", path.display());
         }
