@@ -36,28 +36,31 @@ const PER_BUCKET: f64 = 2.0;
 /// Ring buckets per disc (rounded up to a power of two).
 const BUCKETS_PER_DISC: usize = 2;
 
-/// A disc's place in the queue.
+/// A disc's event and its place in the queue, together so that one memory
+/// access finds both.
 #[derive(Clone, Copy, Debug)]
-struct Node {
-    /// Its event's time, copied here so list walks stay in one array.
+struct Node<K> {
     time: f64,
     next: u32,
     prev: u32,
     /// Ring slot, [`OVERFLOW`], or [`NIL`] when it has no event.
     bucket: u32,
+    kind: Option<K>,
 }
 
-const FREE: Node = Node {
-    time: f64::INFINITY,
-    next: NIL,
-    prev: NIL,
-    bucket: NIL,
-};
+impl<K> Node<K> {
+    const FREE: Node<K> = Node {
+        time: f64::INFINITY,
+        next: NIL,
+        prev: NIL,
+        bucket: NIL,
+        kind: None,
+    };
+}
 
 /// Calendar queue of at most one event per disc.
 pub(super) struct EventQueue<K> {
-    events: Vec<Option<Event<K>>>,
-    nodes: Vec<Node>,
+    nodes: Vec<Node<K>>,
     /// First disc of each ring slot's list.
     heads: Vec<u32>,
     /// First disc of the overflow list.
@@ -81,8 +84,7 @@ impl<K: Copy> EventQueue<K> {
     pub fn new(n: usize) -> Self {
         let slots = (BUCKETS_PER_DISC * n).next_power_of_two().max(16);
         EventQueue {
-            events: vec![None; n],
-            nodes: vec![FREE; n],
+            nodes: vec![Node::FREE; n],
             heads: vec![NIL; slots],
             overflow: NIL,
             in_ring: 0,
@@ -115,13 +117,12 @@ impl<K: Copy> EventQueue<K> {
     /// Sets disc `owner`'s event (replacing any), or clears it with `None`.
     pub fn set(&mut self, owner: u32, event: Option<Event<K>>) {
         self.unlink(owner);
-        self.events[owner as usize] = event;
         if let Some(e) = event {
-            self.link(owner, e.time);
+            self.link(owner, e.time, e.kind);
         }
     }
 
-    fn link(&mut self, owner: u32, time: f64) {
+    fn link(&mut self, owner: u32, time: f64, kind: K) {
         let number = self.bucket_number(time);
         let bucket = if number - self.base < self.ring_size() {
             self.in_ring += 1;
@@ -144,6 +145,7 @@ impl<K: Copy> EventQueue<K> {
             next,
             prev: NIL,
             bucket,
+            kind: Some(kind),
         };
         self.len += 1;
     }
@@ -167,7 +169,7 @@ impl<K: Copy> EventQueue<K> {
             self.in_ring -= 1;
         }
         self.len -= 1;
-        self.nodes[owner as usize] = FREE;
+        self.nodes[owner as usize] = Node::FREE;
     }
 
     /// The earliest of the list starting at `first` (by time, then owner).
@@ -224,37 +226,40 @@ impl<K: Copy> EventQueue<K> {
         let mut moved = Vec::new();
         while k != NIL {
             let node = self.nodes[k as usize];
-            moved.push((k, node.time));
+            moved.push((k, node.time, node.kind));
             k = node.next;
         }
         if moved.len() > self.len / 4 {
             return self.retune();
         }
-        for (owner, time) in moved {
-            self.nodes[owner as usize] = FREE;
+        for (owner, time, kind) in moved {
+            self.nodes[owner as usize] = Node::FREE;
             self.len -= 1;
-            self.link(owner, time);
+            if let Some(kind) = kind {
+                self.link(owner, time, kind);
+            }
         }
     }
 
     /// Chooses the bucket width from the queued events (about
     /// [`PER_BUCKET`] events per bucket at the front) and re-buckets them.
     pub fn retune(&mut self) {
-        let mut queued: Vec<(u32, f64)> = self
-            .events
+        let queued: Vec<(u32, f64, K)> = self
+            .nodes
             .iter()
             .enumerate()
-            .filter_map(|(k, e)| e.map(|e| (k as u32, e.time)))
+            .filter(|(_, node)| node.bucket != NIL)
+            .filter_map(|(k, node)| Some((k as u32, node.time, node.kind?)))
             .collect();
         self.heads.fill(NIL);
-        self.nodes.fill(FREE);
+        self.nodes.fill(Node::FREE);
         self.overflow = NIL;
         self.in_ring = 0;
         self.len = 0;
         if queued.len() >= 2 {
             // The earliest quarter of the events spans this much time.
             let quarter = (queued.len() / 4).max(1);
-            let mut times: Vec<f64> = queued.iter().map(|&(_, t)| t).collect();
+            let mut times: Vec<f64> = queued.iter().map(|&(_, t, _)| t).collect();
             let (_, &mut lo, _) = times.select_nth_unstable_by(0, f64::total_cmp);
             let (_, &mut q, _) = times.select_nth_unstable_by(quarter, f64::total_cmp);
             let span = q - lo;
@@ -265,16 +270,20 @@ impl<K: Copy> EventQueue<K> {
         }
         self.cursor = 0;
         self.base = 0;
-        queued.sort_unstable_by_key(|&(k, _)| k);
-        for (owner, time) in queued {
-            self.link(owner, time);
+        for (owner, time, kind) in queued {
+            self.link(owner, time, kind);
         }
     }
 
     /// The earliest event, left in the queue.
     pub fn peek(&mut self) -> Option<Event<K>> {
         let k = self.front()?;
-        self.events[k as usize]
+        let node = &self.nodes[k as usize];
+        Some(Event {
+            time: node.time,
+            owner: k,
+            kind: node.kind?,
+        })
     }
 
     /// Whether an event other than the earliest (`top`'s) comes at or
@@ -295,9 +304,6 @@ impl<K: Copy> EventQueue<K> {
     /// Moves the clock's zero to `shift`: every time drops by it. Buckets
     /// stay as they are (the offset takes the shift).
     pub fn shift_times(&mut self, shift: f64) {
-        for event in self.events.iter_mut().flatten() {
-            event.time -= shift;
-        }
         let mut moved = 0;
         for node in &mut self.nodes {
             if node.bucket != NIL {
@@ -312,16 +318,14 @@ impl<K: Copy> EventQueue<K> {
     /// The earliest event, removed from the queue.
     #[cfg(test)]
     pub fn pop(&mut self) -> Option<Event<K>> {
-        let k = self.front()?;
-        let event = self.events[k as usize];
-        self.set(k, None);
-        event
+        let event = self.peek()?;
+        self.set(event.owner, None);
+        Some(event)
     }
 
     /// Empties the queue.
     pub fn clear(&mut self) {
-        self.events.fill(None);
-        self.nodes.fill(FREE);
+        self.nodes.fill(Node::FREE);
         self.heads.fill(NIL);
         self.overflow = NIL;
         self.in_ring = 0;
