@@ -28,6 +28,10 @@ pub struct RunArgs {
     /// Substeps per step (impulse, verlet), or auto [default: the scene's].
     #[arg(long)]
     pub substeps: Option<Setting<u32>>,
+    /// Threads for the large-scene stages [default: RAYON_NUM_THREADS, else
+    /// one per core]; `auto` still runs small scenes on one.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+    pub threads: Option<u16>,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
@@ -73,6 +77,11 @@ struct Summary {
 
 /// Runs the scene and prints the summary.
 pub fn run(args: &RunArgs) -> anyhow::Result<()> {
+    if let Some(threads) = args.threads {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(usize::from(threads))
+            .build_global()?;
+    }
     let scene = Scene::load(&args.scene)?;
     let origin = args.scene.display().to_string();
     let mut world = scene.build(&origin)?;
@@ -155,8 +164,13 @@ fn summary_text(s: &Summary) -> String {
     );
     println!("kinetic energy   {:.9} J", s.kinetic_energy);
     println!("wall clock       {:.3} s", s.wall_clock_seconds);
+    let threads = if s.plan.parallel {
+        format!("{} threads", impulse::parallel::threads())
+    } else {
+        "1 thread".to_string()
+    };
     println!(
-        "method           {} / {} / {} substep(s)",
+        "method           {} / {} / {} substep(s) / {threads}",
         s.plan.method.name(),
         s.plan.broad_phase.name(),
         s.plan.substeps

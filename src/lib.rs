@@ -12,10 +12,14 @@
 //! 5. [`boundary`]: walls (reflection without creating energy), open space, or
 //!    a periodic torus.
 //!
+//! For large scenes the order-free stages run on several threads ([`parallel`]),
+//! with results that do not depend on how many.
+//!
 //! [`metrics`] measures the conserved quantities, [`stats`] what a step did and
 //! how long each stage took, and [`scene`] turns TOML scene files into worlds.
 #![warn(missing_docs)]
 
+pub mod alloc_count;
 pub mod auto;
 pub mod boundary;
 pub mod broad_phase;
@@ -25,6 +29,7 @@ pub mod ledger;
 pub mod method;
 pub mod metrics;
 pub mod narrow_phase;
+pub mod parallel;
 pub mod particle;
 pub mod presets;
 pub mod resolution;

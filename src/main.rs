@@ -9,6 +9,10 @@ mod lab;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
+/// Counts live heap bytes, for `bench`'s bytes per disc.
+#[global_allocator]
+static ALLOC: impulse::alloc_count::Counting = impulse::alloc_count::Counting;
+
 /// Impulse: a sandbox for 2D disc collisions.
 #[derive(Parser, Debug)]
 #[command(name = "impulse", version, args_conflicts_with_subcommands = true)]

@@ -4,11 +4,18 @@
 //! to the second and the overlap depth. Coincident centres have no direction
 //! of their own; they get the fixed normal +x, so the result is deterministic
 //! and never NaN.
+//!
+//! Each pair is tested on its own, so for large scenes the pairs are cut into
+//! chunks of [`PAIR_CHUNK`] that rayon tests in parallel
+//! ([`find_contacts_in_chunks`]); joined in chunk order, the contacts are the
+//! same list, in the same order, as [`find_contacts`] makes.
 
 use crate::boundary::Boundary;
 use crate::broad_phase::Pair;
+use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
+use rayon::prelude::*;
 
 /// Two overlapping discs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,6 +51,28 @@ pub fn find_contacts(
             depth,
         })
     }));
+}
+
+/// [`find_contacts`] on rayon's pool: each chunk of [`PAIR_CHUNK`] pairs
+/// into its own buffer in `chunks` (kept between calls), then the buffers
+/// joined in chunk order into `out`.
+pub fn find_contacts_in_chunks(
+    particles: &[Particle],
+    pairs: &[Pair],
+    boundary: Boundary,
+    size: DVec2,
+    chunks: &mut Vec<Vec<Contact>>,
+    out: &mut Vec<Contact>,
+) {
+    chunks.resize_with(pairs.len().div_ceil(PAIR_CHUNK), Vec::new);
+    pairs
+        .par_chunks(PAIR_CHUNK)
+        .zip(chunks.par_iter_mut())
+        .for_each(|(pairs, found)| find_contacts(particles, pairs, boundary, size, found));
+    out.clear();
+    for found in chunks.iter() {
+        out.extend_from_slice(found);
+    }
 }
 
 /// The normal and depth if discs `a` and `b` overlap (touching is not overlap).

@@ -2,12 +2,13 @@
 //! chosen collision method over the shared pipeline.
 
 use crate::auto::{self, Plan};
-use crate::boundary::Boundary;
+use crate::boundary::{Boundary, WallReport};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::ledger::{Collision, Ledger};
 use crate::method::{discrete, exact, Method, Setting};
 use crate::metrics::Metrics;
-use crate::narrow_phase::{find_contacts, Contact};
+use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
+use crate::parallel;
 use crate::particle::Particle;
 use crate::resolution::Rule;
 use crate::stats::{Lap, StepStats};
@@ -35,6 +36,10 @@ pub struct World {
     pub broad_phase: Setting<BroadPhaseKind>,
     /// Substeps per step for `impulse` and `verlet`, or `auto`.
     pub substeps: Setting<u32>,
+    /// Whether the discrete methods run their order-free stages on rayon's
+    /// pool (`auto`: for large scenes when there is more than one thread).
+    /// Results are bit-identical either way; see [`crate::parallel`].
+    pub parallel: Setting<bool>,
     /// Simulated time so far (s).
     pub time: f64,
     /// Steps taken so far.
@@ -59,6 +64,8 @@ struct PlanKey {
     method: Setting<Method>,
     broad_phase: Setting<BroadPhaseKind>,
     substeps: Setting<u32>,
+    parallel: Setting<bool>,
+    threads: usize,
     laws: [u64; 5],
     boundary: Boundary,
     particles: usize,
@@ -79,17 +86,6 @@ pub struct Laws {
     pub boundary: Boundary,
 }
 
-impl Laws {
-    /// Applies the boundary stage, adding what the walls did to `stats`.
-    pub fn apply_boundary(&self, particles: &mut [Particle], stats: &mut StepStats) {
-        let walls = self
-            .boundary
-            .apply(particles, self.size, self.gravity, self.wall_restitution);
-        stats.wall_hits += walls.hits;
-        stats.wall_impulse += walls.impulse;
-    }
-}
-
 /// Detection stages and their reusable buffers.
 pub(crate) struct Pipeline {
     kind: BroadPhaseKind,
@@ -103,6 +99,12 @@ pub(crate) struct Pipeline {
     pub(crate) resting: crate::method::resting::Scratch,
     /// The exact method's event calendar, carried from step to step.
     exact: exact::Exact,
+    /// Run the order-free stages on rayon's pool (the plan's choice).
+    pub(crate) parallel: bool,
+    /// Scratch: the narrow phase's contacts per chunk of pairs.
+    contact_chunks: Vec<Vec<Contact>>,
+    /// Scratch: what the walls did per chunk of discs.
+    walls: Vec<WallReport>,
 }
 
 impl Pipeline {
@@ -115,6 +117,9 @@ impl Pipeline {
             previous_positions: Vec::new(),
             resting: Default::default(),
             exact: exact::Exact::default(),
+            parallel: false,
+            contact_chunks: Vec::new(),
+            walls: Vec::new(),
         }
     }
 
@@ -129,19 +134,62 @@ impl Pipeline {
     /// Broad phase then narrow phase: fills `self.contacts`.
     pub(crate) fn detect(&mut self, particles: &[Particle], laws: &Laws, stats: &mut StepStats) {
         let mut lap = Lap::start();
+        self.broad_phase.set_parallel(self.parallel);
         self.broad_phase
             .candidate_pairs(particles, laws.boundary, laws.size, &mut self.pairs);
         stats.candidate_pairs += self.pairs.len();
         stats.timings.broad_phase += lap.lap();
-        find_contacts(
-            particles,
-            &self.pairs,
-            laws.boundary,
-            laws.size,
-            &mut self.contacts,
-        );
+        if self.parallel {
+            find_contacts_in_chunks(
+                particles,
+                &self.pairs,
+                laws.boundary,
+                laws.size,
+                &mut self.contact_chunks,
+                &mut self.contacts,
+            );
+        } else {
+            find_contacts(
+                particles,
+                &self.pairs,
+                laws.boundary,
+                laws.size,
+                &mut self.contacts,
+            );
+        }
         stats.contacts += self.contacts.len();
         stats.timings.narrow_phase += lap.lap();
+    }
+
+    /// The integration stage (semi-implicit Euler), chunk by chunk.
+    pub(crate) fn integrate(&self, particles: &mut [Particle], gravity: DVec2, h: f64) {
+        parallel::for_chunks_mut(self.parallel, particles, |chunk| {
+            crate::integration::integrate(chunk, gravity, h)
+        });
+    }
+
+    /// The boundary stage, adding what the walls did to `stats`. It runs
+    /// chunk by chunk, serially too, and the chunks' wall impulses are
+    /// added in chunk order, so the sum does not depend on the threads.
+    pub(crate) fn apply_boundary(
+        &mut self,
+        particles: &mut [Particle],
+        laws: &Laws,
+        stats: &mut StepStats,
+    ) {
+        let (size, gravity, e) = (laws.size, laws.gravity, laws.wall_restitution);
+        parallel::map_chunks_mut(
+            self.parallel,
+            particles,
+            |chunk| laws.boundary.apply(chunk, size, gravity, e),
+            &mut self.walls,
+        );
+        let mut impulse = 0.0;
+        for w in &self.walls {
+            stats.wall_hits += w.hits;
+            impulse += w.impulse;
+        }
+        stats.wall_impulse += impulse;
     }
 }
 
@@ -162,6 +210,7 @@ impl World {
             method: Setting::Fixed(Method::Impulse),
             broad_phase: Setting::Fixed(BroadPhaseKind::Brute),
             substeps: Setting::Fixed(1),
+            parallel: Setting::Auto,
             time: 0.0,
             steps: 0,
             total_pair_collisions: 0,
@@ -215,6 +264,8 @@ impl World {
             method: self.method,
             broad_phase: self.broad_phase,
             substeps: self.substeps,
+            parallel: self.parallel,
+            threads: parallel::threads(),
             laws: [
                 dt,
                 self.restitution,
@@ -230,11 +281,12 @@ impl World {
             self.plan = Some(auto::plan(self, dt));
             self.plan_key = Some(key);
         }
-        let (method, broad_phase, planned_substeps) = match &self.plan {
-            Some(p) => (p.method, p.broad_phase, p.substeps),
-            None => (Method::Impulse, BroadPhaseKind::Brute, 1),
+        let (method, broad_phase, planned_substeps, parallel) = match &self.plan {
+            Some(p) => (p.method, p.broad_phase, p.substeps, p.parallel),
+            None => (Method::Impulse, BroadPhaseKind::Brute, 1, false),
         };
         self.pipeline.use_kind(broad_phase);
+        self.pipeline.parallel = parallel;
         let laws = self.laws();
         let mut stats = StepStats::default();
         let mut simulated = dt;
@@ -407,6 +459,7 @@ impl Clone for World {
             method: self.method,
             broad_phase: self.broad_phase,
             substeps: self.substeps,
+            parallel: self.parallel,
             time: self.time,
             steps: self.steps,
             total_pair_collisions: self.total_pair_collisions,

@@ -571,3 +571,73 @@ fn random_gas(n: usize, phi: f64, seed: u64) -> World {
     world.particles = particles;
     world
 }
+
+/// Makes a broad phase, behind the trait as a world holds it.
+type MakePhase = fn() -> Box<dyn BroadPhase + Send>;
+
+/// The grid on rayon's pool gives exactly the pairs it gives serially, on
+/// any number of threads: on scenes large enough for several chunks of
+/// particles and bands of rows, with every boundary and radius mix, discs
+/// far outside, coincident ones, and discs with a NaN or infinite centre
+/// (which leave gaps in the gathered chunks).
+#[test]
+fn the_grid_in_parallel_finds_the_same_pairs_on_any_pool() {
+    let pools: Vec<_> = [1, 2, 3]
+        .map(|k| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .expect("a thread pool")
+        })
+        .into();
+    let mut cases = 0;
+    for boundary in Boundary::ALL {
+        for radii in 0..4 {
+            let recipe = Recipe {
+                boundary,
+                size: DVec2::new(300.0, 200.0),
+                count: 3 * impulse::parallel::CHUNK + 100,
+                radii,
+                snap: radii == 1,
+                coincident: radii == 0,
+                seed: 11 + u64::from(radii),
+            };
+            let mut particles = build(&recipe);
+            for k in [
+                5,
+                impulse::parallel::CHUNK + 3,
+                2 * impulse::parallel::CHUNK,
+            ] {
+                particles[k].pos = DVec2::new(f64::NAN, 1.0);
+                particles[k + 1].pos = DVec2::new(1.0, f64::INFINITY);
+            }
+            let kinds: [(&str, MakePhase); 2] = [
+                ("grid", || Box::<impulse::broad_phase::Grid>::default()),
+                ("skinned grid", || BroadPhaseKind::Grid.build()),
+            ];
+            for (name, make) in kinds {
+                let mut serial = make();
+                let mut want = Vec::new();
+                serial.candidate_pairs(&particles, boundary, recipe.size, &mut want);
+                assert!(!want.is_empty(), "{name} {boundary:?} radii {radii}");
+                for pool in &pools {
+                    let mut phase = make();
+                    phase.set_parallel(true);
+                    let mut got = Vec::new();
+                    pool.install(|| {
+                        phase.candidate_pairs(&particles, boundary, recipe.size, &mut got)
+                    });
+                    assert!(
+                        got == want,
+                        "{name} {boundary:?} radii {radii} on {} threads: {} pairs, serially {}",
+                        pool.current_num_threads(),
+                        got.len(),
+                        want.len()
+                    );
+                    cases += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(cases, 3 * 4 * 2 * 3);
+}

@@ -44,11 +44,23 @@
 //!   tested against every disc, so one huge disc does not make every cell
 //!   huge. Many large discs among small ones still make big cells; the
 //!   quadtree is the better choice there.
+//!
+//! **In parallel** ([`BroadPhase::set_parallel`], for large scenes) step 1
+//! runs per chunk of [`CHUNK`] particles, each chunk's discs and extent kept
+//! apart and joined in chunk order; the column sort of step 2 and the sweep
+//! of step 3 run per band of [`BAND_ROWS`] rows, each band's pairs kept apart
+//! and joined in band order. The chunks and bands are fixed by the data, so
+//! the pairs are the same on any number of threads, and the same as serially
+//! (which gathers by the same chunks, so even the mean radius is summed
+//! alike). The row scatter of step 2 and the pair sort of step 4 stay serial.
 
 use super::{pair, sort_pairs, touches, BroadPhase, BruteForce, Disc, Pair, Space};
 use crate::boundary::Boundary;
+use crate::parallel::{BAND_ROWS, CHUNK};
 use crate::particle::Particle;
 use glam::DVec2;
+use rayon::prelude::*;
+use std::ops::Range;
 
 /// Cells per gridded disc, at most (plus a few).
 const CELLS_PER_DISC: usize = 2;
@@ -68,10 +80,12 @@ pub struct Grid {
     big: Vec<u32>,
     /// Row `r` begins at `sorted[row_starts[r]]` (during the sort).
     row_starts: Vec<u32>,
-    /// Scratch: one row of discs, sorted by column.
-    row_buf: Vec<Disc>,
-    /// Scratch: where the next disc of each column of a row goes.
-    cursor: Vec<u32>,
+    /// Scratch per band of rows (one band when serial).
+    bands: Vec<Band>,
+    /// Scratch: per chunk of particles, the discs kept and what they showed.
+    gathered: Vec<(usize, Gathered, f64)>,
+    /// Run the order-free work on rayon's pool.
+    parallel: bool,
     /// Cell `c` holds `sorted[starts[c]..starts[c + 1]]`.
     starts: Vec<u32>,
     /// The gridded discs, cell by cell.
@@ -82,6 +96,17 @@ pub struct Grid {
     raw: Vec<Pair>,
     /// Scratch for the pair sort.
     ends: Vec<u32>,
+}
+
+/// Scratch for one band of [`BAND_ROWS`] grid rows.
+#[derive(Clone, Debug, Default)]
+struct Band {
+    /// One row of discs, sorted by column.
+    row_buf: Vec<Disc>,
+    /// Where the next disc of each column of a row goes.
+    cursor: Vec<u32>,
+    /// Pairs the band's sweep found.
+    raw: Vec<Pair>,
 }
 
 /// Where the cells are: cell (cx, cy) covers
@@ -132,14 +157,7 @@ impl BroadPhase for Grid {
             return;
         };
         // One pass: the candidate discs, their radii, and their extent.
-        self.discs.clear();
-        let mut stats = Gathered::default();
-        for (i, p) in particles.iter().enumerate() {
-            if let Some(d) = space.disc(i, p) {
-                stats.add(&d);
-                self.discs.push(d);
-            }
-        }
+        let stats = self.gather(particles, &mut space);
         space.finish();
         if self.discs.len() < 2 {
             return;
@@ -159,12 +177,28 @@ impl BroadPhase for Grid {
                 nx: layout.nx,
                 ny: layout.ny,
             };
-            match space.period {
-                None => cells.sweep::<OPEN>(&space, &mut self.raw),
-                Some(_) if layout.nx >= 3 && layout.ny >= 3 => {
-                    cells.sweep::<SHIFTED>(&space, &mut self.raw)
+            let mode = match space.period {
+                None => OPEN,
+                Some(_) if layout.nx >= 3 && layout.ny >= 3 => SHIFTED,
+                Some(_) => FOLDED,
+            };
+            let sweep = |rows: Range<usize>, raw: &mut Vec<Pair>| match mode {
+                OPEN => cells.sweep::<OPEN>(rows, &space, raw),
+                SHIFTED => cells.sweep::<SHIFTED>(rows, &space, raw),
+                _ => cells.sweep::<FOLDED>(rows, &space, raw),
+            };
+            if self.parallel {
+                // self.bands has one band per BAND_ROWS rows (sort_into_cells).
+                self.bands.par_iter_mut().enumerate().for_each(|(b, band)| {
+                    band.raw.clear();
+                    let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
+                    sweep(rows, &mut band.raw);
+                });
+                for band in &self.bands {
+                    self.raw.extend_from_slice(&band.raw);
                 }
-                Some(_) => cells.sweep::<FOLDED>(&space, &mut self.raw),
+            } else {
+                sweep(0..layout.ny, &mut self.raw);
             }
         }
         if !self.big.is_empty() {
@@ -175,6 +209,10 @@ impl BroadPhase for Grid {
             }
         }
         sort_pairs(&self.raw, particles.len(), &mut self.ends, out);
+    }
+
+    fn set_parallel(&mut self, parallel: bool) {
+        self.parallel = parallel;
     }
 }
 
@@ -206,6 +244,16 @@ impl Default for Gathered {
 }
 
 impl Gathered {
+    /// Adds what another chunk of discs showed (sums in call order).
+    fn merge(&mut self, o: &Gathered) {
+        self.r_sum += o.r_sum;
+        self.r_count += o.r_count;
+        self.r_max = self.r_max.max(o.r_max);
+        self.infinite |= o.infinite;
+        self.lo = self.lo.min(o.lo);
+        self.hi = self.hi.max(o.hi);
+    }
+
     /// Adds a disc (finite centre, radius not NaN). Plain selects (one
     /// `minsd`/`maxsd` each) rather than `f64::max`, which pays for NaN
     /// handling not needed here.
@@ -227,6 +275,52 @@ impl Gathered {
 }
 
 impl Grid {
+    /// Fills `discs` with the candidate discs in index order, chunk by chunk
+    /// of [`CHUNK`] particles (on the pool when parallel), and returns what
+    /// they showed, the chunks' sums added in chunk order.
+    fn gather(&mut self, particles: &[Particle], space: &mut Space) -> Gathered {
+        let base = *space;
+        let chunk = |(c, (ps, ds)): (usize, (&[Particle], &mut [Disc]))| {
+            let (mut space, mut seen, mut kept) = (base, Gathered::default(), 0);
+            for (k, p) in ps.iter().enumerate() {
+                if let Some(d) = space.disc(c * CHUNK + k, p) {
+                    seen.add(&d);
+                    ds[kept] = d;
+                    kept += 1;
+                }
+            }
+            (kept, seen, space.outside)
+        };
+        // Every slot is written before it is read: no need to clear.
+        self.discs.resize(particles.len(), Disc::default());
+        self.gathered.clear();
+        if self.parallel {
+            let chunks = particles
+                .par_chunks(CHUNK)
+                .zip(self.discs.par_chunks_mut(CHUNK));
+            chunks
+                .enumerate()
+                .map(chunk)
+                .collect_into_vec(&mut self.gathered);
+        } else {
+            let chunks = particles.chunks(CHUNK).zip(self.discs.chunks_mut(CHUNK));
+            self.gathered.extend(chunks.enumerate().map(chunk));
+        }
+        // Close the gaps left by skipped discs (rare: non-finite input).
+        let (mut stats, mut end) = (Gathered::default(), 0);
+        for (c, (kept, seen, outside)) in self.gathered.iter().enumerate() {
+            let start = c * CHUNK;
+            if start != end {
+                self.discs.copy_within(start..start + kept, end);
+            }
+            end += kept;
+            stats.merge(seen);
+            space.outside = space.outside.max(*outside);
+        }
+        self.discs.truncate(end);
+        stats
+    }
+
     /// Lists the big discs in `big` (ascending) and returns the largest
     /// radius of the others and the bounding box of their centres.
     fn split_off_big_discs(&mut self, stats: &Gathered) -> (f64, DVec2, DVec2) {
@@ -369,34 +463,27 @@ impl Grid {
             }
         }
         // Row r is sorted[row_starts[r]..row_starts[r + 1]]. Sort each by
-        // column: count into starts[c + 1], sum up from the row's start.
+        // column, band by band of rows; a row's cells end at starts[1..].
         self.starts.clear();
         self.starts.resize(nx * ny + 1, 0);
-        self.row_buf.resize(longest as usize, Disc::default());
-        self.cursor.resize(nx, 0);
-        for r in 0..ny {
-            let (first, end) = (self.row_starts[r] as usize, self.row_starts[r + 1] as usize);
-            let base = r * nx;
-            let row = &mut self.sorted[first..end];
-            for d in row.iter_mut() {
-                let cx = layout.column(d);
-                d.tag = (base + cx) as u32;
-                self.starts[base + cx + 1] += 1;
-            }
-            let mut at = 0;
-            self.starts[base] = first as u32;
-            for (cx, cursor) in self.cursor.iter_mut().enumerate() {
-                *cursor = at;
-                at += self.starts[base + cx + 1];
-                self.starts[base + cx + 1] = first as u32 + at;
-            }
-            for d in row.iter() {
-                let slot = &mut self.cursor[d.tag as usize - base];
-                self.row_buf[*slot as usize] = *d;
-                *slot += 1;
-            }
-            row.copy_from_slice(&self.row_buf[..row.len()]);
+        let bands = if self.parallel {
+            ny.div_ceil(BAND_ROWS)
+        } else {
+            1
+        };
+        self.bands.resize_with(bands, Band::default);
+        for band in &mut self.bands {
+            band.row_buf.resize(longest as usize, Disc::default());
+            band.cursor.resize(nx, 0);
         }
+        sort_rows(
+            layout,
+            0..ny,
+            &self.row_starts,
+            &mut self.sorted,
+            &mut self.starts[1..],
+            &mut self.bands,
+        );
     }
 
     /// Tests each big disc against every other disc.
@@ -411,6 +498,61 @@ impl Grid {
                 }
             }
         }
+    }
+}
+
+/// Sorts rows `rows` by column: `sorted` holds their discs (row `r` at
+/// `row_starts[r]..row_starts[r + 1]`, counted from the first row's start),
+/// `ends` gets the end of each of their cells. `bands` has one scratch per
+/// [`BAND_ROWS`] rows, or a single one for all; several are sorted in
+/// parallel (halves by `rayon::join`). Each row is sorted alike either way.
+fn sort_rows(
+    layout: &Layout,
+    rows: Range<usize>,
+    row_starts: &[u32],
+    sorted: &mut [Disc],
+    ends: &mut [u32],
+    bands: &mut [Band],
+) {
+    let nx = layout.nx;
+    if bands.len() > 1 {
+        let half = bands.len() / 2;
+        let mid = rows.start + half * BAND_ROWS;
+        let (s1, s2) = sorted.split_at_mut((row_starts[mid] - row_starts[rows.start]) as usize);
+        let (e1, e2) = ends.split_at_mut((mid - rows.start) * nx);
+        let (b1, b2) = bands.split_at_mut(half);
+        rayon::join(
+            || sort_rows(layout, rows.start..mid, row_starts, s1, e1, b1),
+            || sort_rows(layout, mid..rows.end, row_starts, s2, e2, b2),
+        );
+        return;
+    }
+    let Band {
+        row_buf, cursor, ..
+    } = &mut bands[0];
+    let offset = row_starts[rows.start];
+    for (r, ends) in rows.zip(ends.chunks_mut(nx)) {
+        let (first, end) = (row_starts[r], row_starts[r + 1]);
+        let row = &mut sorted[(first - offset) as usize..(end - offset) as usize];
+        let base = r * nx;
+        // Count into ends[c], then turn the counts into ends.
+        for d in row.iter_mut() {
+            let cx = layout.column(d);
+            d.tag = (base + cx) as u32;
+            ends[cx] += 1;
+        }
+        let mut at = 0;
+        for (end, cursor) in ends.iter_mut().zip(cursor.iter_mut()) {
+            *cursor = at;
+            at += *end;
+            *end = first + at;
+        }
+        for d in row.iter() {
+            let slot = &mut cursor[d.tag as usize - base];
+            row_buf[*slot as usize] = *d;
+            *slot += 1;
+        }
+        row.copy_from_slice(&row_buf[..row.len()]);
     }
 }
 
@@ -485,10 +627,11 @@ fn test<const MODE: u8>(a: &Disc, b: &Disc, shift: DVec2, space: &Space) -> bool
 }
 
 impl Cells<'_> {
-    /// Tests every gridded disc against the rest of its own cell and the
-    /// forward neighbours (right; up-left, up, up-right), row by row.
+    /// Tests every gridded disc of rows `rows` against the rest of its own
+    /// cell and the forward neighbours (right; up-left, up, up-right), row by
+    /// row, appending the pairs to `raw`.
     #[inline(never)]
-    fn sweep<const MODE: u8>(&self, space: &Space, raw: &mut Vec<Pair>) {
+    fn sweep<const MODE: u8>(&self, rows: Range<usize>, space: &Space, raw: &mut Vec<Pair>) {
         let (nx, ny, sorted) = (self.nx, self.ny, self.sorted);
         let start = |c: usize| self.starts[c] as usize;
         let periodic = MODE != OPEN;
@@ -507,7 +650,7 @@ impl Cells<'_> {
                 found += usize::from(test::<MODE>(a, b, shift, space));
             }
         };
-        for cy in 0..ny {
+        for cy in rows {
             let row = cy * nx;
             let (up, up_y) = if cy + 1 < ny {
                 (Some(row + nx), 0.0)

@@ -76,6 +76,11 @@ pub trait BroadPhase {
         size: DVec2,
         out: &mut Vec<Pair>,
     );
+
+    /// Lets the phase run its order-free work on rayon's pool (see
+    /// [`crate::parallel`]). The pairs it returns must not change with this
+    /// or with the number of threads. Phases that stay serial ignore it.
+    fn set_parallel(&mut self, _parallel: bool) {}
 }
 
 /// The broad phases a world can use; scene files and the CLI name them.

@@ -8,11 +8,18 @@
 //! step in between costs one pass over the discs (how far has each moved?)
 //! instead of a full broad phase. Adding, removing or resizing a disc, or
 //! changing the box, rebuilds at once.
+//!
+//! In parallel ([`BroadPhase::set_parallel`]) the check, the rebuild's copies
+//! and the copy of the list run on rayon's pool, chunk by chunk; the mean
+//! radius is summed per [`CHUNK`] and the chunk sums in order either way, so
+//! the list is the same whatever the threads.
 
 use super::{BroadPhase, Pair};
 use crate::boundary::Boundary;
+use crate::parallel::CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
+use rayon::prelude::*;
 
 /// Skin width as a fraction of the mean disc radius.
 pub const SKIN_FRACTION: f64 = 1.0;
@@ -27,6 +34,9 @@ pub struct Skinned<B> {
     inflated: Vec<Particle>,
     skin: f64,
     built_for: Option<(Boundary, [u64; 2])>,
+    parallel: bool,
+    /// Scratch: the radii summed per chunk.
+    sums: Vec<f64>,
 }
 
 impl<B: BroadPhase> Skinned<B> {
@@ -38,35 +48,65 @@ impl<B: BroadPhase> Skinned<B> {
         }
         let limit = 0.5 * self.skin;
         let limit_sq = limit * limit;
-        particles
-            .iter()
-            .zip(self.anchors.iter().zip(&self.radii))
-            .all(|(p, (anchor, &radius))| {
-                p.radius == radius
-                    && boundary.separation(*anchor, p.pos, size).length_squared() <= limit_sq
-            })
+        let near = |(p, (anchor, &radius)): (&Particle, (&DVec2, &f64))| {
+            p.radius == radius
+                && boundary.separation(*anchor, p.pos, size).length_squared() <= limit_sq
+        };
+        if self.parallel {
+            particles
+                .par_chunks(CHUNK)
+                .zip(self.anchors.par_chunks(CHUNK))
+                .zip(self.radii.par_chunks(CHUNK))
+                .all(|((ps, anchors), radii)| ps.iter().zip(anchors.iter().zip(radii)).all(near))
+        } else {
+            particles
+                .iter()
+                .zip(self.anchors.iter().zip(&self.radii))
+                .all(near)
+        }
     }
 
     fn rebuild(&mut self, particles: &[Particle], boundary: Boundary, size: DVec2) {
         let n = particles.len().max(1) as f64;
-        let mean_radius = particles
-            .iter()
-            .map(|p| p.radius)
-            .filter(|r| r.is_finite())
-            .sum::<f64>()
-            / n;
+        let radii = |chunk: &[Particle]| {
+            let finite = chunk.iter().map(|p| p.radius).filter(|r| r.is_finite());
+            finite.sum::<f64>()
+        };
+        self.sums.clear();
+        if self.parallel {
+            particles
+                .par_chunks(CHUNK)
+                .map(radii)
+                .collect_into_vec(&mut self.sums);
+        } else {
+            self.sums.extend(particles.chunks(CHUNK).map(radii));
+        }
+        let mean_radius = self.sums.iter().sum::<f64>() / n;
         self.skin = (SKIN_FRACTION * mean_radius).max(0.0);
-        self.inflated.clear();
-        self.inflated.extend(particles.iter().map(|p| Particle {
-            radius: p.radius + 0.5 * self.skin,
+        let half_skin = 0.5 * self.skin;
+        let inflate = |p: &Particle| Particle {
+            radius: p.radius + half_skin,
             ..*p
-        }));
+        };
+        self.inflated.clear();
+        self.anchors.clear();
+        self.radii.clear();
+        if self.parallel {
+            self.inflated.par_extend(particles.par_iter().map(inflate));
+        } else {
+            self.inflated.extend(particles.iter().map(inflate));
+        }
+        self.inner.set_parallel(self.parallel);
         self.inner
             .candidate_pairs(&self.inflated, boundary, size, &mut self.pairs);
-        self.anchors.clear();
-        self.anchors.extend(particles.iter().map(|p| p.pos));
-        self.radii.clear();
-        self.radii.extend(particles.iter().map(|p| p.radius));
+        if self.parallel {
+            self.anchors.par_extend(particles.par_iter().map(|p| p.pos));
+            self.radii
+                .par_extend(particles.par_iter().map(|p| p.radius));
+        } else {
+            self.anchors.extend(particles.iter().map(|p| p.pos));
+            self.radii.extend(particles.iter().map(|p| p.radius));
+        }
         self.built_for = Some((boundary, [size.x.to_bits(), size.y.to_bits()]));
     }
 }
@@ -83,6 +123,14 @@ impl<B: BroadPhase> BroadPhase for Skinned<B> {
             self.rebuild(particles, boundary, size);
         }
         out.clear();
-        out.extend_from_slice(&self.pairs);
+        if self.parallel {
+            out.par_extend(self.pairs.par_iter().copied());
+        } else {
+            out.extend_from_slice(&self.pairs);
+        }
+    }
+
+    fn set_parallel(&mut self, parallel: bool) {
+        self.parallel = parallel;
     }
 }

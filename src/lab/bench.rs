@@ -8,9 +8,19 @@
 //! particle-step (wall-clock of one step divided by n). Configurations whose
 //! estimated run time would exceed the budget (brute force at large n) are
 //! skipped and said so.
+//!
+//! Every configuration runs on a pool of one thread (so `auto` keeps it
+//! serial); the grid methods run again on `--threads` threads (default 2),
+//! where `auto` runs them in parallel from
+//! [`impulse::auto::PARALLEL_MIN_DISCS`] discs. Bytes per disc are the heap
+//! bytes the world holds after its warm-up steps (discs and every buffer of
+//! the pipeline), counted by the binary's global allocator
+//! ([`impulse::alloc_count`]). A last table measures the crossover behind
+//! `auto`'s thread rule: serial against parallel on the same pool.
 
 use super::chart::{write_chart, Chart, Series};
 use super::progress;
+use impulse::alloc_count::live_bytes;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
@@ -28,6 +38,10 @@ pub struct BenchArgs {
     /// Folder for bench.csv, bench.png and bench.svg.
     #[arg(long, default_value = "lab-out")]
     pub out: PathBuf,
+    /// Threads of the parallel runs of the grid methods (the others and the
+    /// grid's serial runs use one).
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u16).range(1..=256))]
+    pub threads: u16,
 }
 
 /// Time step of the benchmark gas (s).
@@ -40,10 +54,16 @@ pub struct Row {
     pub method: Method,
     /// Broad phase (`exact` keeps its own cells and ignores it).
     pub broad_phase: String,
+    /// Threads in the pool it ran on.
+    pub threads: usize,
+    /// Whether `auto` ran the step in parallel.
+    pub parallel: bool,
     /// Discs.
     pub n: usize,
     /// Median ns per particle-step.
     pub ns_per_particle_step: f64,
+    /// Heap bytes the world holds per disc after warming up.
+    pub bytes_per_particle: f64,
     /// Pair collisions per wall-clock second.
     pub collisions_per_second: f64,
     /// Steps timed.
@@ -51,14 +71,29 @@ pub struct Row {
 }
 
 /// The configurations: every broad phase under `impulse`, and every other
-/// method on the grid.
-fn configurations() -> Vec<(Method, BroadPhaseKind)> {
+/// method on the grid, on one thread; the grid methods again on `threads`.
+fn configurations(threads: usize) -> Vec<(Method, BroadPhaseKind, usize)> {
     let mut list: Vec<_> = BroadPhaseKind::ALL
         .iter()
-        .map(|&b| (Method::Impulse, b))
+        .map(|&b| (Method::Impulse, b, 1))
         .collect();
-    list.extend([Method::Seed, Method::Verlet, Method::Exact].map(|m| (m, BroadPhaseKind::Grid)));
+    list.extend(
+        [Method::Seed, Method::Verlet, Method::Exact].map(|m| (m, BroadPhaseKind::Grid, 1)),
+    );
+    if threads > 1 {
+        list.extend(
+            [Method::Impulse, Method::Seed, Method::Verlet]
+                .map(|m| (m, BroadPhaseKind::Grid, threads)),
+        );
+    }
     list
+}
+
+/// A rayon pool of `threads` threads.
+fn pool(threads: usize) -> anyhow::Result<rayon::ThreadPool> {
+    Ok(rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()?)
 }
 
 /// Runs the benchmark, prints the table and writes CSV and chart.
@@ -69,11 +104,13 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         &[100, 1_000, 10_000, 100_000, 1_000_000]
     };
     let (batch_seconds, budget_seconds) = if args.quick { (0.05, 5.0) } else { (0.2, 40.0) };
-    let configs = configurations();
+    let threads = usize::from(args.threads);
+    let configs = configurations(threads);
+    let pools = [pool(1)?, pool(threads)?];
     let bar = progress::bar((configs.len() * sizes.len()) as u64, "bench");
     let mut rows = Vec::new();
     let mut skipped = Vec::new();
-    for &(method, broad) in &configs {
+    for &(method, broad, k) in &configs {
         let mut last: Option<(usize, f64)> = None;
         for &n in sizes {
             bar.inc(1);
@@ -88,21 +125,30 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
                     prev_ns * 1e-9 * n as f64 * (n as f64 / prev_n as f64).powf(growth);
                 if step_seconds * 12.0 > budget_seconds {
                     skipped.push(format!(
-                        "{} / {} at n = {n}: about {step_seconds:.1} s per step",
+                        "{} / {} ({k} thread(s)) at n = {n}: about {step_seconds:.1} s per step",
                         method,
                         broad.name()
                     ));
                     continue;
                 }
             }
-            bar.set_message(format!("{method} / {} n = {n}", broad.name()));
-            let row = measure(method, broad, n, batch_seconds);
+            bar.set_message(format!("{method} / {} ×{k} n = {n}", broad.name()));
+            let pool = &pools[usize::from(k > 1)];
+            let row = pool.install(|| measure(method, broad, n, batch_seconds));
             last = Some((n, row.ns_per_particle_step));
             rows.push(row);
         }
     }
     bar.finish_and_clear();
-    let crossovers = crossovers(batch_seconds);
+    let mut crossovers = crossovers(batch_seconds);
+    if threads > 1 {
+        let sizes: &[usize] = if args.quick {
+            &[1_000, 10_000]
+        } else {
+            &[1_000, 2_000, 5_000, 10_000, 20_000, 50_000]
+        };
+        crossovers += &pools[1].install(|| thread_crossover(sizes, batch_seconds));
+    }
     // (discs, collisions to run): the full run takes 10⁷ collisions at 10⁴
     // discs, where the energy target is set.
     let throughput_runs: &[(usize, usize)] = if args.quick {
@@ -235,6 +281,36 @@ fn crossovers(batch_seconds: f64) -> String {
     out
 }
 
+/// The measurement behind `auto`'s thread rule: impulse / grid on the
+/// current pool, serial against parallel, as n grows.
+fn thread_crossover(sizes: &[usize], batch_seconds: f64) -> String {
+    let threads = rayon::current_num_threads();
+    let mut out = format!(
+        "\n| crossover: serial vs parallel (impulse / grid, {threads} threads) | n | serial ns | parallel ns | speed-up |\n|---|---:|---:|---:|---:|\n"
+    );
+    for &n in sizes {
+        let time = |parallel| {
+            let mut world = Gas {
+                count: n,
+                ..Gas::default()
+            }
+            .build();
+            world.method = Setting::Fixed(Method::Impulse);
+            world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
+            world.substeps = Setting::Fixed(1);
+            world.parallel = Setting::Fixed(parallel);
+            time_world(&mut world, batch_seconds)
+        };
+        let (serial, parallel) = (time(false), time(true));
+        let _ = writeln!(
+            out,
+            "| | {n} | {serial:.1} | {parallel:.1} | {:.2} |",
+            serial / parallel
+        );
+    }
+    out
+}
+
 /// Median ns per particle-step of `world` over a few batches.
 fn time_world(world: &mut impulse::World, batch_seconds: f64) -> f64 {
     let n = world.particles.len().max(1) as f64;
@@ -307,8 +383,10 @@ pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
     }
 }
 
-/// Times one configuration.
+/// Times one configuration on the current rayon pool (`auto` decides
+/// whether to run in parallel).
 pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f64) -> Row {
+    let before = live_bytes();
     let mut world = Gas {
         count: n,
         ..Gas::default()
@@ -322,6 +400,7 @@ pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f
         world.step(DT);
     }
     let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
+    let bytes = live_bytes().saturating_sub(before);
     let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
     let mut samples = Vec::new();
     let (mut steps, mut collisions, mut elapsed) = (0u64, 0u64, 0.0f64);
@@ -344,8 +423,11 @@ pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f
         } else {
             broad.name().into()
         },
+        threads: rayon::current_num_threads(),
+        parallel: world.plan().is_some_and(|p| p.parallel),
         n,
         ns_per_particle_step: median(&mut samples),
+        bytes_per_particle: bytes as f64 / n as f64,
         collisions_per_second: collisions as f64 / elapsed.max(1e-12),
         steps,
     }
@@ -362,23 +444,42 @@ pub fn median(values: &mut [f64]) -> f64 {
 }
 
 fn label(row: &Row) -> String {
-    format!("{} / {}", row.method, row.broad_phase)
+    if row.threads > 1 {
+        format!(
+            "{} / {}, {} threads",
+            row.method, row.broad_phase, row.threads
+        )
+    } else {
+        format!("{} / {}", row.method, row.broad_phase)
+    }
 }
 
 fn table(rows: &[Row], skipped: &[String]) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "| method / broad phase | n | ns per particle-step (median) | collisions per second |"
+        "| method / broad phase | n | ns per particle-step (median) | speed-up over 1 thread | bytes per disc | collisions per second |"
     );
-    let _ = writeln!(out, "|---|---:|---:|---:|");
+    let _ = writeln!(out, "|---|---:|---:|---:|---:|---:|");
     for r in rows {
+        let serial = rows.iter().find(|s| {
+            s.threads == 1 && s.method == r.method && s.broad_phase == r.broad_phase && s.n == r.n
+        });
+        let speed_up = match serial {
+            Some(s) if r.threads > 1 => format!(
+                "{:.2}{}",
+                s.ns_per_particle_step / r.ns_per_particle_step,
+                if r.parallel { "" } else { " (serial)" }
+            ),
+            _ => String::new(),
+        };
         let _ = writeln!(
             out,
-            "| {} | {} | {:.1} | {:.3e} |",
+            "| {} | {} | {:.1} | {speed_up} | {:.0} | {:.3e} |",
             label(r),
             r.n,
             r.ns_per_particle_step,
+            r.bytes_per_particle,
             r.collisions_per_second
         );
     }
@@ -389,13 +490,22 @@ fn table(rows: &[Row], skipped: &[String]) -> String {
 }
 
 fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
-    let mut csv =
-        String::from("method,broad_phase,n,ns_per_particle_step,collisions_per_second,steps\n");
+    let mut csv = String::from(
+        "method,broad_phase,threads,parallel,n,ns_per_particle_step,bytes_per_particle,collisions_per_second,steps\n",
+    );
     for r in rows {
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{}",
-            r.method, r.broad_phase, r.n, r.ns_per_particle_step, r.collisions_per_second, r.steps
+            "{},{},{},{},{},{},{},{},{}",
+            r.method,
+            r.broad_phase,
+            r.threads,
+            r.parallel,
+            r.n,
+            r.ns_per_particle_step,
+            r.bytes_per_particle,
+            r.collisions_per_second,
+            r.steps
         );
     }
     Ok(crate::files::write_atomically(path, csv.as_bytes())?)
@@ -430,12 +540,19 @@ mod tests {
 
     #[test]
     fn every_configuration_measures_a_positive_cost_and_the_gas_collides() {
-        for (method, broad) in configurations() {
-            let row = measure(method, broad, 200, 0.001);
+        for (method, broad, threads) in configurations(2) {
+            let row = pool(threads)
+                .expect("a pool")
+                .install(|| measure(method, broad, 200, 0.001));
             assert!(
                 row.ns_per_particle_step > 0.0 && row.ns_per_particle_step.is_finite(),
                 "{row:?}"
             );
+            assert_eq!(row.threads, threads);
+            assert!(!row.parallel, "200 discs stay serial: {row:?}");
+            // The binary counts allocations: the world holds its discs at least.
+            let disc = std::mem::size_of::<impulse::Particle>() as f64;
+            assert!(row.bytes_per_particle >= disc, "{row:?}");
         }
         let t = exact_throughput(300, 2_000);
         assert!(t.collisions_per_second > 0.0, "{t:?}");

@@ -10,13 +10,19 @@
 //! - `verlet`: integration first (position Verlet: x ← x + v·h + g·h²),
 //!   then detection, overlap projection on positions only, velocity implied
 //!   by the positions (v = Δx / h), then boundaries; K times per step.
+//!
+//! For large scenes the per-disc and per-pair stages run on rayon's pool
+//! (`pipeline.parallel`, see [`crate::parallel`]); resolution stays in
+//! ascending pair order on one thread, so the result is the same bit for bit.
 
-use crate::integration::integrate;
 use crate::ledger::Ledger;
+use crate::parallel::CHUNK;
 use crate::resolution::{resolve_contacts, Rule};
 use crate::stats::{Lap, StepStats};
 use crate::world::{Laws, Pipeline};
 use crate::Particle;
+use glam::DVec2;
+use rayon::prelude::*;
 
 /// One impulse-method substep of length `h`, starting at world time `time`
 /// (for the collision ledger).
@@ -46,9 +52,9 @@ pub(crate) fn impulse_substep(
     stats.pair_collisions += report.collisions;
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     stats.timings.resolution += lap.lap();
-    integrate(particles, laws.gravity, h);
+    pipeline.integrate(particles, laws.gravity, h);
     stats.timings.integration += lap.lap();
-    laws.apply_boundary(particles, stats);
+    pipeline.apply_boundary(particles, laws, stats);
     stats.timings.boundary += lap.lap();
 }
 
@@ -61,11 +67,14 @@ pub(crate) fn verlet_substep(
     stats: &mut StepStats,
 ) {
     let mut lap = Lap::start();
-    pipeline.previous_positions.clear();
-    pipeline
-        .previous_positions
-        .extend(particles.iter().map(|p| p.pos));
-    integrate(particles, laws.gravity, h);
+    let previous = &mut pipeline.previous_positions;
+    previous.clear();
+    if pipeline.parallel {
+        previous.par_extend(particles.par_iter().map(|p| p.pos));
+    } else {
+        previous.extend(particles.iter().map(|p| p.pos));
+    }
+    pipeline.integrate(particles, laws.gravity, h);
     stats.timings.integration += lap.lap();
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
@@ -80,10 +89,19 @@ pub(crate) fn verlet_substep(
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     // Contacts that were projected count as collisions for the statistics.
     stats.pair_collisions += pipeline.contacts.len();
-    for (p, previous) in particles.iter_mut().zip(&pipeline.previous_positions) {
-        p.vel = (p.pos - *previous) / h;
+    let implied = |(p, previous): (&mut Particle, &DVec2)| p.vel = (p.pos - *previous) / h;
+    if pipeline.parallel {
+        let chunks = particles.par_chunks_mut(CHUNK);
+        chunks
+            .zip(pipeline.previous_positions.par_chunks(CHUNK))
+            .for_each(|(ps, prev)| ps.iter_mut().zip(prev).for_each(implied));
+    } else {
+        particles
+            .iter_mut()
+            .zip(&pipeline.previous_positions)
+            .for_each(implied);
     }
     stats.timings.resolution += lap.lap();
-    laws.apply_boundary(particles, stats);
+    pipeline.apply_boundary(particles, laws, stats);
     stats.timings.boundary += lap.lap();
 }

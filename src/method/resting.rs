@@ -157,7 +157,7 @@ pub(crate) fn substep(
         p.pos += p.vel * h;
     }
     stats.timings.integration += lap.lap();
-    laws.apply_boundary(particles, stats);
+    pipeline.apply_boundary(particles, laws, stats);
     stats.timings.boundary += lap.lap();
 }
 

@@ -1,0 +1,102 @@
+//! Criterion benchmarks of `World::step` on the benchmark gas (equal discs
+//! r = 0.5 m at 30 % area fraction, periodic, dt = 0.01 s), so regressions
+//! show: the step of `impulse` / `grid` at several n, every broad phase, and
+//! the grid methods serial against parallel.
+//!
+//! `cargo bench --bench step` (about two minutes); `cargo bench --bench step
+//! -- broad_phase` for one group. Times are per step; criterion also reports
+//! discs per second (the throughput), whose inverse is the ns per
+//! particle-step that `impulse bench` reports.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use impulse::presets::Gas;
+use impulse::World;
+use std::time::Duration;
+
+const DT: f64 = 0.01;
+
+/// The gas with a fixed method, broad phase and threading, warmed up.
+fn gas(n: usize, method: Method, broad: BroadPhaseKind, parallel: bool) -> World {
+    let mut world = Gas {
+        count: n,
+        ..Gas::default()
+    }
+    .build();
+    world.method = Setting::Fixed(method);
+    world.broad_phase = Setting::Fixed(broad);
+    world.substeps = Setting::Fixed(1);
+    world.parallel = Setting::Fixed(parallel);
+    for _ in 0..3 {
+        world.step(DT);
+    }
+    world
+}
+
+/// `impulse` / `grid`, serial, as n grows.
+fn step_against_n(c: &mut Criterion) {
+    let mut group = c.benchmark_group("step_impulse_grid");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    for n in [1_000, 10_000, 100_000] {
+        let mut world = gas(n, Method::Impulse, BroadPhaseKind::Grid, false);
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| world.step(DT))
+        });
+    }
+    group.finish();
+}
+
+/// Every broad phase under `impulse` (brute force only where it is cheap).
+fn broad_phases(c: &mut Criterion) {
+    let mut group = c.benchmark_group("broad_phase");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(1));
+    for n in [1_000, 10_000] {
+        group.throughput(Throughput::Elements(n as u64));
+        for kind in BroadPhaseKind::ALL {
+            if kind == BroadPhaseKind::Brute && n > 1_000 {
+                continue;
+            }
+            let mut world = gas(n, Method::Impulse, kind, false);
+            group.bench_function(BenchmarkId::new(kind.name(), n), |b| {
+                b.iter(|| world.step(DT))
+            });
+        }
+    }
+    group.finish();
+}
+
+/// The grid methods at 10⁵ discs, serial and in parallel on two threads.
+fn threads(c: &mut Criterion) {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("a thread pool");
+    let mut group = c.benchmark_group("threads");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    let n = 100_000;
+    group.throughput(Throughput::Elements(n as u64));
+    for method in [Method::Impulse, Method::Seed, Method::Verlet] {
+        for parallel in [false, true] {
+            let mut world = gas(n, method, BroadPhaseKind::Grid, parallel);
+            let name = if parallel { "2_threads" } else { "serial" };
+            group.bench_function(BenchmarkId::new(method.name(), name), |b| {
+                pool.install(|| b.iter(|| world.step(DT)))
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, step_against_n, broad_phases, threads);
+criterion_main!(benches);

@@ -1,0 +1,47 @@
+//! Memory: what a world holds per disc, counted by a global allocator that
+//! tracks live heap bytes. A gas stepped with the grid holds a few hundred
+//! bytes per disc whatever n, so a million discs fit well under 1 GiB.
+
+use impulse::alloc_count::{live_bytes, Counting};
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use impulse::presets::Gas;
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
+
+/// Heap bytes per disc of a gas of `n` discs after a few grid steps.
+fn bytes_per_disc(n: usize, method: Method) -> f64 {
+    let before = live_bytes();
+    let mut world = Gas {
+        count: n,
+        ..Gas::default()
+    }
+    .build();
+    world.method = Setting::Fixed(method);
+    world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
+    for _ in 0..3 {
+        world.step(0.01);
+    }
+    let bytes = live_bytes() - before;
+    drop(world);
+    bytes as f64 / n as f64
+}
+
+#[test]
+fn a_disc_costs_a_few_hundred_bytes_whatever_n() {
+    let disc = std::mem::size_of::<impulse::Particle>() as f64;
+    for method in [Method::Impulse, Method::Verlet] {
+        let small = bytes_per_disc(10_000, method);
+        let large = bytes_per_disc(100_000, method);
+        // The discs themselves, plus the skin list and the grid's buffers.
+        assert!(small > 2.0 * disc && large > 2.0 * disc, "{small} {large}");
+        // 1 GiB for 10⁶ discs is 1074 bytes each: stay well under.
+        assert!(large < 600.0, "{method}: {large:.0} bytes per disc");
+        // Flat in n (no per-step garbage, no quadratic buffer).
+        assert!(
+            (large / small - 1.0).abs() < 0.3,
+            "{small:.0} against {large:.0}"
+        );
+    }
+}

@@ -1,0 +1,128 @@
+//! Results do not depend on the number of threads: a gas large enough that
+//! `auto` runs the parallel path steps bit for bit the same on one thread
+//! (serial), on one thread through the parallel code, and on two threads, for
+//! every method that uses the grid, in a periodic box and in a closed one
+//! under gravity (where `impulse` switches to resting contact).
+
+use impulse::auto::PARALLEL_MIN_DISCS;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use impulse::presets::Gas;
+use impulse::{Boundary, DVec2, World};
+
+fn pool(threads: usize) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+}
+
+/// What a run ends with: the state's hash and the totals the walls and
+/// collisions added up (sums over chunks, so they must match too).
+#[derive(Debug, PartialEq)]
+struct Outcome {
+    hash: u64,
+    collisions: u64,
+    wall_hits: u64,
+    wall_impulse: u64,
+    parallel: bool,
+}
+
+/// Steps `world` on `threads` threads with the given `parallel` setting.
+fn run(mut world: World, threads: usize, parallel: Setting<bool>, steps: usize) -> Outcome {
+    world.parallel = parallel;
+    pool(threads).install(|| {
+        for _ in 0..steps {
+            world.step(0.02);
+        }
+    });
+    Outcome {
+        hash: world.state_hash(),
+        collisions: world.total_pair_collisions,
+        wall_hits: world.total_wall_hits,
+        wall_impulse: world.total_wall_impulse.to_bits(),
+        parallel: world.plan().is_some_and(|p| p.parallel),
+    }
+}
+
+/// A gas just above the parallel threshold, in 5 chunks of discs and about
+/// ten bands of grid rows.
+fn gas(method: Method, boundary: Boundary, gravity: bool) -> World {
+    let mut world = Gas {
+        count: 2 * PARALLEL_MIN_DISCS,
+        boundary,
+        seed: 5,
+        ..Gas::default()
+    }
+    .build();
+    world.method = Setting::Fixed(method);
+    world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
+    world.substeps = Setting::Fixed(1);
+    if gravity {
+        world.gravity = DVec2::new(0.0, -9.81);
+        world.restitution = 0.5;
+    }
+    world
+}
+
+#[test]
+fn one_and_two_threads_step_bit_for_bit_alike_for_every_grid_method() {
+    let cases = [
+        (Method::Impulse, Boundary::Periodic, false),
+        (Method::Seed, Boundary::Periodic, false),
+        (Method::Verlet, Boundary::Periodic, false),
+        (Method::Impulse, Boundary::Box, true), // resting contact
+        (Method::Verlet, Boundary::Box, true),
+    ];
+    for (method, boundary, gravity) in cases {
+        let world = gas(method, boundary, gravity);
+        let start = world.state_hash();
+        // 40 steps of 0.02 s: the fastest discs cross half a skin several
+        // times, so the grid is rebuilt (in parallel) more than once.
+        let steps = 40;
+        let serial = run(world.clone(), 1, Setting::Auto, steps);
+        let one = run(world.clone(), 1, Setting::Fixed(true), steps);
+        let two = run(world.clone(), 2, Setting::Auto, steps);
+        let case = format!("{method} {boundary:?} gravity {gravity}");
+        assert!(!serial.parallel, "{case}: auto on one thread stays serial");
+        assert!(
+            one.parallel && two.parallel,
+            "{case}: the parallel path ran"
+        );
+        assert_ne!(serial.hash, start, "{case}: the world moved");
+        assert!(serial.collisions > 0, "{case}: discs collided");
+        if boundary == Boundary::Box {
+            assert!(serial.wall_hits > 0, "{case}: discs hit the walls");
+        }
+        assert_eq!(
+            one,
+            Outcome {
+                parallel: true,
+                ..serial
+            },
+            "{case}: parallel code on one thread"
+        );
+        assert_eq!(one, two, "{case}: one thread against two");
+    }
+}
+
+#[test]
+fn auto_runs_small_scenes_on_one_thread_and_says_so() {
+    let mut small = gas(Method::Impulse, Boundary::Periodic, false);
+    small.particles.truncate(PARALLEL_MIN_DISCS / 2);
+    let two = pool(2);
+    let plan_on_two = |world: &World| {
+        let world = world.clone();
+        two.install(move || world.plan_for(0.01))
+    };
+    let plan = plan_on_two(&small);
+    assert!(!plan.parallel);
+    assert!(plan.reason.contains("1 thread"), "{}", plan.reason);
+    small.particles = gas(Method::Impulse, Boundary::Periodic, false).particles;
+    let plan = plan_on_two(&small);
+    assert!(plan.parallel);
+    assert!(plan.reason.contains("2 threads"), "{}", plan.reason);
+    // Exact keeps its own calendar and never runs in parallel.
+    small.method = Setting::Fixed(Method::Exact);
+    assert!(!plan_on_two(&small).parallel);
+}
