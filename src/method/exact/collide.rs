@@ -70,7 +70,7 @@ impl Sim {
         for d in [i, j] {
             let cell = self.bodies[d as usize].cell;
             self.grid.for_each_neighbour(cell, |c, _| {
-                around.extend(self.grid.members(c).map(|k| (d, k)));
+                around.extend(self.grid.members(&self.bodies, c).map(|k| (d, k)));
             });
         }
         let mut touches = Vec::new();
@@ -189,8 +189,8 @@ impl Sim {
             }
         }
         to[axis] = to[axis].clamp(0, self.grid.dims[axis] - 1);
-        self.grid.remove(i, from);
-        self.grid.insert(i, to);
+        self.grid.remove(&mut self.bodies, i, from);
+        self.grid.insert(&mut self.bodies, i, to);
         self.bodies[i as usize].cell = to;
         self.predict_after_crossing(i, axis, upper);
     }

@@ -1,6 +1,7 @@
 //! The exact method's cell grid: cells at least one diameter wide, so a
 //! disc can only touch discs in its own and the eight neighbouring cells.
 
+use super::Body;
 use crate::boundary::Boundary;
 use crate::particle::Particle;
 use crate::world::Laws;
@@ -23,11 +24,11 @@ pub(super) struct Grid {
     cell: DVec2,
     pub(super) dims: [i32; 2],
     pub(super) periodic: bool,
-    /// Each cell's discs as a singly linked list: its first disc, and each
-    /// disc's next (4 bytes a cell and a disc, so the lists of a large grid
-    /// stay in cache; cells hold less than one disc on average).
+    /// Each cell's discs as a singly linked list: its first disc here, and
+    /// each disc's next in the disc itself ([`Body::next_in_cell`]), so that
+    /// walking a cell reads nothing but the discs it visits anyway. Cells
+    /// hold less than one disc on average.
     heads: Vec<u32>,
-    next: Vec<u32>,
 }
 
 impl Grid {
@@ -71,7 +72,6 @@ impl Grid {
             dims,
             periodic: laws.boundary == Boundary::Periodic,
             heads: vec![NIL; (dims[0] as usize) * (dims[1] as usize)],
-            next: vec![NIL; n],
         }
     }
 
@@ -205,39 +205,39 @@ impl Grid {
         self.heads[k]
     }
 
-    /// The disc after `i` in its cell, or [`NIL`].
-    #[inline]
-    pub(super) fn after(&self, i: u32) -> u32 {
-        self.next[i as usize]
-    }
-
     /// The discs of cell `k` (index).
-    pub(super) fn members(&self, k: usize) -> impl Iterator<Item = u32> + '_ {
+    pub(super) fn members<'a>(
+        &'a self,
+        bodies: &'a [Body],
+        k: usize,
+    ) -> impl Iterator<Item = u32> + 'a {
         std::iter::successors(Some(self.heads[k]).filter(|&i| i != NIL), |&i| {
-            Some(self.next[i as usize]).filter(|&j| j != NIL)
+            Some(bodies[i as usize].next_in_cell).filter(|&j| j != NIL)
         })
     }
 
-    pub(super) fn insert(&mut self, i: u32, c: [i32; 2]) {
+    /// Puts disc `i` into cell `c`.
+    pub(super) fn insert(&mut self, bodies: &mut [Body], i: u32, c: [i32; 2]) {
         let k = self.index(c);
-        self.next[i as usize] = self.heads[k];
+        bodies[i as usize].next_in_cell = self.heads[k];
         self.heads[k] = i;
     }
 
-    pub(super) fn remove(&mut self, i: u32, c: [i32; 2]) {
+    /// Takes disc `i` out of cell `c`.
+    pub(super) fn remove(&mut self, bodies: &mut [Body], i: u32, c: [i32; 2]) {
         let k = self.index(c);
-        let after = self.next[i as usize];
+        let after = bodies[i as usize].next_in_cell;
         if self.heads[k] == i {
             self.heads[k] = after;
             return;
         }
         let mut j = self.heads[k];
         while j != NIL {
-            if self.next[j as usize] == i {
-                self.next[j as usize] = after;
+            if bodies[j as usize].next_in_cell == i {
+                bodies[j as usize].next_in_cell = after;
                 return;
             }
-            j = self.next[j as usize];
+            j = bodies[j as usize].next_in_cell;
         }
     }
 }

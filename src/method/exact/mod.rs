@@ -164,7 +164,12 @@ struct Body {
     gen: u32,
     /// Its grid cell.
     cell: [i32; 2],
+    /// The next disc in its cell's list ([`grid::NIL`] at the end).
+    next_in_cell: u32,
 }
+
+// Predicting reads one cache line per neighbour.
+const _: () = assert!(std::mem::size_of::<Body>() == 64);
 
 /// What only a collision reads of a disc.
 #[derive(Clone, Copy, Debug)]
@@ -264,9 +269,10 @@ impl Sim {
             .map(|(b, c)| Particle::new(b.pos, b.vel, c.mass, b.radius, crate::Color::rgb(0, 0, 0)))
             .collect();
         self.grid = Grid::new(&as_particles, &self.laws);
-        for (k, b) in self.bodies.iter_mut().enumerate() {
-            b.cell = self.grid.cell_of(b.pos);
-            self.grid.insert(k as u32, b.cell);
+        for k in 0..self.bodies.len() {
+            let cell = self.grid.cell_of(self.bodies[k].pos);
+            self.bodies[k].cell = cell;
+            self.grid.insert(&mut self.bodies, k as u32, cell);
         }
         self.predict_all();
     }

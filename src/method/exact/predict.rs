@@ -126,11 +126,11 @@ impl Sim {
             let mut next = self.grid.first(cell);
             while next != NIL {
                 let j = next;
-                next = self.grid.after(j);
+                let other = &bodies[j as usize];
+                next = other.next_in_cell;
                 if j == i {
                     continue;
                 }
-                let other = &bodies[j as usize];
                 let tau = now - other.time;
                 let (pj, vj) = if GRAVITY {
                     (

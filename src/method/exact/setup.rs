@@ -74,13 +74,14 @@ impl Sim {
                 radius: p.radius,
                 gen: 0,
                 cell,
+                next_in_cell: super::grid::NIL,
             });
             sim.inert.push(Inert {
                 mass: p.mass,
                 last_hit: f64::NEG_INFINITY,
             });
             sim.order.push(i);
-            sim.grid.insert(k as u32, cell);
+            sim.grid.insert(&mut sim.bodies, k as u32, cell);
         }
         sim.overlapping = !sim.separate_overlaps();
         sim.predict_all();
@@ -100,7 +101,7 @@ impl Sim {
                 let cell = self.bodies[i as usize].cell;
                 let mut partners: Vec<u32> = Vec::new();
                 self.grid.for_each_neighbour(cell, |c, _| {
-                    partners.extend(self.grid.members(c).filter(|&j| j > i));
+                    partners.extend(self.grid.members(&self.bodies, c).filter(|&j| j > i));
                 });
                 for j in partners {
                     moved |= self.push_apart(i, j);
@@ -121,8 +122,8 @@ impl Sim {
                 if to != b.cell {
                     let from = b.cell;
                     b.cell = to;
-                    self.grid.remove(k, from);
-                    self.grid.insert(k, to);
+                    self.grid.remove(&mut self.bodies, k, from);
+                    self.grid.insert(&mut self.bodies, k, to);
                 }
             }
         }
