@@ -16,8 +16,8 @@
 //!   from step to step and only checks that nothing was edited and moves
 //!   every disc to the end of the step; the first step after an edit costs
 //!   about 300 ns per disc, for sorting and predicting every disc afresh),
-//!   and a collision about 2 µs (2.46 events; 4–6·10⁵ collisions per second
-//!   at 10⁴ discs). Never where discs will come to rest in contact
+//!   and a collision about 1.4 µs (2.43 events; 7–10·10⁵ collisions per
+//!   second at 10⁴ discs since the calendar queue, 4·10⁵ at 10⁵). Never where discs will come to rest in contact
 //!   (gravity with restitution below 1), because resting contact is an
 //!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
@@ -59,7 +59,7 @@ use serde::Serialize;
 /// while the world is not edited between steps (ns).
 pub const EXACT_SETUP_NS: f64 = 20.0;
 /// Measured cost of the exact method per pair collision (ns).
-pub const EXACT_COLLISION_NS: f64 = 2000.0;
+pub const EXACT_COLLISION_NS: f64 = 1400.0;
 /// Most wall-clock seconds per simulated second `auto` spends on `exact`.
 pub const EXACT_BUDGET: f64 = 0.25;
 /// Mass ratio above which accuracy needs `exact` (budget ×4).
