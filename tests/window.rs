@@ -240,6 +240,9 @@ fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
     assert_eq!(s["metrics"]["count"], 10000);
     assert_eq!(s["scene_name"], "Gas of 10000 discs");
     assert_eq!(s["scene_origin"], "--gas 10000");
+    for setting in ["method", "broad_phase", "substeps"] {
+        assert_eq!(s[setting], "auto", "a big gas must not open on brute force");
+    }
     let timing = &s["timing"];
     assert!(timing["frames"].as_u64().unwrap() >= 8, "{timing}");
     let ms = |k: &str| timing[k].as_f64().unwrap();

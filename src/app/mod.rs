@@ -94,11 +94,16 @@ fn gas_count(s: &str) -> Result<usize, String> {
 
 /// The scene `--gas N` opens: `impulse::presets::Gas` with N discs.
 fn gas_scene(count: usize) -> (Scene, String) {
-    let world = impulse::presets::Gas {
+    let mut world = impulse::presets::Gas {
         count,
         ..Default::default()
     }
     .build();
+    // Like a scene file without a [simulation] section: `auto` chooses
+    // (the preset's fixed brute force would freeze the window at 10⁵ discs).
+    world.method = impulse::method::Setting::Auto;
+    world.broad_phase = impulse::method::Setting::Auto;
+    world.substeps = impulse::method::Setting::Auto;
     let scene = Scene::from_world(
         &world,
         Some(format!("Gas of {count} discs")),
