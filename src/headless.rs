@@ -45,7 +45,7 @@ pub fn positive_seconds(s: &str) -> Result<f64, String> {
     }
 }
 
-fn non_negative_seconds(s: &str) -> Result<f64, String> {
+pub fn non_negative_seconds(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v >= 0.0 && v.is_finite() => Ok(v),
         _ => Err(format!("{s:?} is not a number of seconds (0 or more)")),

@@ -64,12 +64,24 @@ pub struct StateDump<'a> {
     pub panel_widgets: BTreeMap<&'static str, [f32; 4]>,
     /// Medians of the recent frames' timings (ms).
     pub timing: super::frame_stats::TimingSummary,
+    /// Autosave: the recovery file, saves written, the last failure, and
+    /// whether an earlier session is being offered.
+    pub recovery: RecoveryDump,
     /// World size (m).
     pub size: [f64; 2],
     /// Totals.
     pub metrics: Metrics,
     /// Every disc.
     pub particles: &'a [Particle],
+}
+
+/// Autosave in a dump.
+#[derive(Default, Serialize)]
+pub struct RecoveryDump {
+    pub file: String,
+    pub saves: u64,
+    pub error: Option<String>,
+    pub offered: bool,
 }
 
 /// The camera in a dump.
@@ -121,6 +133,7 @@ impl<'a> StateDump<'a> {
             panel_visible: false,
             panel_widgets: BTreeMap::new(),
             timing: Default::default(),
+            recovery: RecoveryDump::default(),
             size: world.size.to_array(),
             metrics: world.metrics(),
             particles: &world.particles,

@@ -78,6 +78,9 @@ impl App {
         if self.panel.typing {
             return; // the keys went into a text field of the panel
         }
+        if self.answer_recovery_offer() {
+            return;
+        }
         if is_key_pressed(KeyCode::Space) {
             self.clock.paused = !self.clock.paused;
         }

@@ -18,6 +18,7 @@ mod lesson;
 mod panel;
 mod plot;
 mod readouts;
+mod recovery;
 mod scenes;
 mod trails;
 
@@ -63,6 +64,12 @@ pub struct WindowOptions {
     /// to FILE as CSV when the window closes, and their medians on stderr.
     #[arg(long, value_name = "FILE")]
     pub frame_stats: Option<PathBuf>,
+    /// Seconds between autosaves of the sandbox to the recovery file, which
+    /// the next start offers to restore if this window does not close
+    /// normally; 0 turns autosave off.
+    #[arg(long, value_name = "SECONDS", default_value_t = recovery::DEFAULT_EVERY,
+          value_parser = crate::headless::non_negative_seconds)]
+    pub autosave: f64,
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = window_size)]
     pub size: (i32, i32),
@@ -188,6 +195,8 @@ struct App {
     frame_stats: frame_stats::FrameStats,
     /// The discs' GPU batch, made at the first frame (it needs the window).
     disc_batch: Option<discs::DiscBatch>,
+    /// Autosave, and the offer to restore an earlier session.
+    recovery: recovery::Recovery,
 }
 
 impl App {
@@ -201,7 +210,9 @@ impl App {
         let size = world.size;
         let path = options.scene.as_ref().map(|p| p.display().to_string());
         let options_keep_all = options.frame_stats.is_some();
-        App {
+        let (recovery, recovery_problem) =
+            recovery::Recovery::new(&recovery::folder(&options.out), options.autosave);
+        let mut app = App {
             options,
             scene,
             scene_origin,
@@ -231,7 +242,18 @@ impl App {
             screenshot_request: None,
             frame_stats: frame_stats::FrameStats::new(options_keep_all),
             disc_batch: None,
+            recovery,
+        };
+        if let Some(problem) = recovery_problem {
+            app.report(problem);
         }
+        if app.recovery.offered.is_some() {
+            eprintln!(
+                "impulse: an earlier session did not close normally; R restores it ({})",
+                app.recovery.path().display()
+            );
+        }
+        app
     }
 
     async fn run(mut self) {
@@ -260,6 +282,11 @@ impl App {
                 .exit_after
                 .is_some_and(|limit| get_time() >= limit);
             let closing = self.quit || is_quit_requested() || timed_out;
+            if closing {
+                self.recovery.finish();
+            } else {
+                self.autosave();
+            }
             let requested = self.screenshot_request.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
             let capture = wanted.then(dump::capture_frame);
@@ -398,7 +425,9 @@ impl App {
             hud::text_panel(10.0, 10.0, &self.hud_lines(), self.font, 0.75);
         }
         hud::draw_scale_bar(&self.camera, self.font);
-        if let Some((message, until)) = &self.toast {
+        if let Some(prompt) = self.recovery_prompt() {
+            hud::draw_toast(&prompt, viewport, self.font);
+        } else if let Some((message, until)) = &self.toast {
             if get_time() < *until {
                 hud::draw_toast(message, viewport, self.font);
             }
@@ -561,6 +590,12 @@ impl App {
         state.panel_visible = self.panel.visible;
         state.panel_widgets = self.panel.widgets.clone();
         state.timing = self.frame_stats.recent();
+        state.recovery = dump::RecoveryDump {
+            file: self.recovery.path().display().to_string(),
+            saves: self.recovery.saves,
+            error: self.recovery.error.clone(),
+            offered: self.recovery.offered.is_some(),
+        };
         if let Err(e) = dump::write_state(path, &state) {
             eprintln!("impulse: cannot write state dump {}: {e}", path.display());
         }

@@ -4,7 +4,7 @@
 
 use super::interaction::Gesture;
 use super::App;
-use crate::files::write_atomically;
+use crate::files::write_durably;
 use impulse::Scene;
 use std::path::{Path, PathBuf};
 
@@ -146,16 +146,14 @@ impl App {
     /// Returns the file written, or what was reported.
     pub(super) fn save_scene(&mut self) -> Result<PathBuf, String> {
         let name = self.scene.name.clone();
-        let mut scene =
-            Scene::from_world(&self.world, name.clone(), self.scene.description.clone());
-        scene.simulation.dt = Some(self.clock.dt);
+        let scene = self.current_scene();
         let dir = self.options.out.clone();
         let stem = slug(name.as_deref().unwrap_or("scene"));
         let result = std::fs::create_dir_all(&dir)
             .map_err(|e| format!("cannot create {}: {e}", dir.display()))
             .and_then(|()| {
                 let path = free_path(&dir, &stem);
-                write_atomically(&path, scene.to_toml().as_bytes())
+                write_durably(&path, scene.to_toml().as_bytes())
                     .map(|()| path.clone())
                     .map_err(|e| format!("cannot write {}: {e}", path.display()))
             });
@@ -171,6 +169,17 @@ impl App {
                 Err(message)
             }
         }
+    }
+
+    /// The sandbox as it is now, as a scene that reopens exactly.
+    pub(super) fn current_scene(&self) -> Scene {
+        let mut scene = Scene::from_world(
+            &self.world,
+            self.scene.name.clone(),
+            self.scene.description.clone(),
+        );
+        scene.simulation.dt = Some(self.clock.dt);
+        scene
     }
 
     /// A message for both the window and the terminal.

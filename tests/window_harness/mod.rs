@@ -112,8 +112,20 @@ pub struct Sandbox {
 }
 
 impl Sandbox {
+    /// The window with its own state folder (so its autosave is its own).
     pub fn start(x: &Xvfb, args: &[&str]) -> Sandbox {
         let dir = tempfile::tempdir().expect("temp dir");
+        let state = dir.path().to_path_buf();
+        Sandbox::start_in(x, args, &state, dir)
+    }
+
+    /// The window keeping its recovery file in `state` (`XDG_STATE_HOME`).
+    pub fn start_with_state(x: &Xvfb, args: &[&str], state: &Path) -> Sandbox {
+        let dir = tempfile::tempdir().expect("temp dir");
+        Sandbox::start_in(x, args, state, dir)
+    }
+
+    fn start_in(x: &Xvfb, args: &[&str], state: &Path, dir: tempfile::TempDir) -> Sandbox {
         let dump = dir.path().join("state.json");
         let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
             .args(args)
@@ -121,6 +133,7 @@ impl Sandbox {
             .arg(&dump)
             .args(["--exit-after", "120"])
             .env("DISPLAY", &x.display)
+            .env("XDG_STATE_HOME", state)
             .stdout(Stdio::null())
             .stderr(Stdio::inherit())
             .spawn()

@@ -1,0 +1,274 @@
+//! Never lose work: every few seconds the sandbox is written, atomically, to
+//! a recovery file; a window that closes normally removes it, so a file that
+//! is still there at the next start means the last session ended abruptly
+//! (a crash, a killed process, a power cut), and the window offers to
+//! restore it: `R` restores, `Esc` sets it aside (renamed, not deleted).
+//!
+//! The file is `recovery.toml` in `$XDG_STATE_HOME/impulse/` (else
+//! `~/.local/state/impulse/`, else the output folder). A write that fails (a
+//! full disk, a read-only folder) is reported once in the window and on the
+//! terminal, and tried again at the next interval; nothing else changes.
+
+use super::App;
+use impulse::Scene;
+use macroquad::prelude::{get_time, is_key_pressed, KeyCode};
+use std::path::{Path, PathBuf};
+
+/// Seconds between autosaves, unless `--autosave` says otherwise.
+pub const DEFAULT_EVERY: f64 = 5.0;
+/// The recovery file's name.
+pub const FILE_NAME: &str = "recovery.toml";
+/// Where a recovery the user set aside goes (the previous one is replaced).
+pub const SET_ASIDE_NAME: &str = "recovery-set-aside.toml";
+
+/// The autosave state of a window.
+pub struct Recovery {
+    path: PathBuf,
+    /// Seconds between saves; 0 turns autosave off.
+    every: f64,
+    /// When the last save was tried (window clock, s).
+    last_try: f64,
+    /// The state hash last written, to skip saves when nothing moved.
+    last_hash: Option<u64>,
+    /// Saves written this session.
+    pub saves: u64,
+    /// The last failure, reported once until it changes or a save works.
+    pub error: Option<String>,
+    /// A recovery found at start, waiting for the user's answer.
+    pub offered: Option<Scene>,
+}
+
+/// Where recovery files live: the per-user state folder, else `fallback`.
+pub fn folder(fallback: &Path) -> PathBuf {
+    let from_env = |name: &str| std::env::var_os(name).filter(|v| !v.is_empty());
+    if let Some(state) = from_env("XDG_STATE_HOME") {
+        return PathBuf::from(state).join("impulse");
+    }
+    if let Some(home) = from_env("HOME") {
+        return PathBuf::from(home).join(".local/state/impulse");
+    }
+    fallback.to_path_buf()
+}
+
+impl Recovery {
+    /// Autosave into `dir` every `every` seconds (0: never). A readable
+    /// recovery already there is offered; an unreadable one is set aside
+    /// and reported in the returned message.
+    pub fn new(dir: &Path, every: f64) -> (Recovery, Option<String>) {
+        let path = dir.join(FILE_NAME);
+        let mut recovery = Recovery {
+            path,
+            every,
+            last_try: 0.0,
+            last_hash: None,
+            saves: 0,
+            error: None,
+            offered: None,
+        };
+        let mut message = None;
+        if recovery.path.exists() {
+            match Scene::load(&recovery.path) {
+                Ok(scene) => recovery.offered = Some(scene),
+                Err(e) => {
+                    message = Some(match recovery.set_aside() {
+                        Ok(to) => format!(
+                            "An unreadable recovery file was moved to {}: {e}",
+                            to.display()
+                        ),
+                        Err(why) => {
+                            format!("An unreadable recovery file could not be moved: {why}")
+                        }
+                    });
+                }
+            }
+        }
+        (recovery, message)
+    }
+
+    /// The recovery file.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Whether a save is due at window time `now`: autosave is on, the
+    /// interval has passed and no offer waits for an answer.
+    pub fn due(&self, now: f64) -> bool {
+        self.every > 0.0 && self.offered.is_none() && now - self.last_try >= self.every
+    }
+
+    /// Whether the state `hash` differs from the one last written.
+    pub fn changed(&self, hash: u64) -> bool {
+        self.last_hash != Some(hash)
+    }
+
+    /// Nothing changed at `now`: the next look is an interval later.
+    pub fn skip(&mut self, now: f64) {
+        self.last_try = now;
+    }
+
+    /// Writes `text` (the scene at state `hash`) atomically; returns a
+    /// message when it failed with an error not reported before.
+    pub fn save(&mut self, now: f64, hash: u64, text: &str) -> Option<String> {
+        self.last_try = now;
+        let written = self
+            .path
+            .parent()
+            .map_or(Ok(()), std::fs::create_dir_all)
+            .and_then(|()| crate::files::write_durably(&self.path, text.as_bytes()));
+        match written {
+            Ok(()) => {
+                self.saves += 1;
+                self.last_hash = Some(hash);
+                self.error = None;
+                None
+            }
+            Err(e) => {
+                let message = format!("Autosave to {} failed: {e}", self.path.display());
+                let new = self.error.as_deref() != Some(message.as_str());
+                self.error = Some(message.clone());
+                new.then_some(message)
+            }
+        }
+    }
+
+    /// The user declined the offer: the file is kept under another name.
+    pub fn set_aside(&mut self) -> std::io::Result<PathBuf> {
+        self.offered = None;
+        let to = self.path.with_file_name(SET_ASIDE_NAME);
+        std::fs::rename(&self.path, &to)?;
+        Ok(to)
+    }
+
+    /// The user restored it: the scene to open. The file stays until the
+    /// next autosave replaces it.
+    pub fn take_offer(&mut self) -> Option<Scene> {
+        self.offered.take()
+    }
+
+    /// The window closes normally: nothing to recover next time.
+    pub fn finish(&mut self) {
+        if self.every > 0.0 && self.offered.is_none() {
+            let _ = std::fs::remove_file(&self.path);
+        }
+    }
+}
+
+impl App {
+    /// Writes the recovery file when a save is due and the state moved.
+    pub(super) fn autosave(&mut self) {
+        let now = get_time();
+        if !self.recovery.due(now) {
+            return;
+        }
+        let hash = self.world.state_hash();
+        if !self.recovery.changed(hash) {
+            return self.recovery.skip(now);
+        }
+        let text = self.current_scene().to_toml();
+        if let Some(problem) = self.recovery.save(now, hash, &text) {
+            self.report(problem);
+        }
+    }
+
+    /// While an earlier session is offered: `R` restores it, `Esc` sets it
+    /// aside. Returns whether one of them was pressed (and so used up).
+    pub(super) fn answer_recovery_offer(&mut self) -> bool {
+        if self.recovery.offered.is_none() {
+            return false;
+        }
+        if is_key_pressed(KeyCode::R) {
+            if let Some(scene) = self.recovery.take_offer() {
+                let origin = format!("recovered from {}", self.recovery.path().display());
+                let _ = self.open_scene(scene, origin); // a failure is reported
+            }
+            return true;
+        }
+        if is_key_pressed(KeyCode::Escape) {
+            match self.recovery.set_aside() {
+                Ok(to) => self.toast(format!("Earlier session kept in {}", to.display())),
+                Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
+            }
+            return true;
+        }
+        false
+    }
+
+    /// The line shown while an earlier session is offered.
+    pub(super) fn recovery_prompt(&self) -> Option<String> {
+        self.recovery.offered.as_ref().map(|scene| {
+            let name = scene.name.as_deref().unwrap_or("sandbox");
+            format!(
+                "The last session did not close normally: R restores its {name} ({} discs), Esc sets it aside",
+                scene.particles.len()
+            )
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SCENE: &str = "[world]\nsize = [4.0, 4.0]\n\n[[particles]]\npos = [1.0, 1.0]\nvel = [0.0, 0.0]\nmass = 1.0\nradius = 0.5\n";
+
+    #[test]
+    fn saves_when_due_offers_after_an_abrupt_end_and_clears_after_a_normal_one() {
+        let dir = tempfile::tempdir().unwrap();
+        let (mut r, message) = Recovery::new(dir.path(), 5.0);
+        assert!(message.is_none() && r.offered.is_none());
+        assert!(r.due(5.0), "first save after one interval");
+        assert!(!r.due(4.0), "not before");
+        assert_eq!(r.save(5.0, 1, SCENE), None);
+        assert_eq!(r.saves, 1);
+        assert!(!r.due(9.0) && r.due(10.0));
+        assert!(!r.changed(1), "nothing moved: no save");
+        assert!(r.changed(2));
+        // The process dies here: the next start finds the file.
+        let (mut next, _) = Recovery::new(dir.path(), 5.0);
+        let offered = next.offered.clone().expect("offered");
+        assert_eq!(offered.particles.len(), 1);
+        assert!(!next.due(100.0), "no autosave over an unanswered offer");
+        assert!(next.take_offer().is_some());
+        assert!(next.due(100.0));
+        next.finish();
+        assert!(
+            !next.path().exists(),
+            "a normal close leaves nothing to recover"
+        );
+    }
+
+    #[test]
+    fn declining_keeps_the_file_aside_and_a_broken_one_is_moved_not_lost() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join(FILE_NAME), SCENE).unwrap();
+        let (mut r, _) = Recovery::new(dir.path(), 5.0);
+        let aside = r.set_aside().unwrap();
+        assert_eq!(std::fs::read_to_string(aside).unwrap(), SCENE);
+        assert!(!r.path().exists());
+
+        std::fs::write(dir.path().join(FILE_NAME), "not [toml").unwrap();
+        let (r, message) = Recovery::new(dir.path(), 5.0);
+        assert!(r.offered.is_none());
+        assert!(message.is_some_and(|m| m.contains("unreadable")));
+        let aside = dir.path().join(SET_ASIDE_NAME);
+        assert_eq!(std::fs::read_to_string(aside).unwrap(), "not [toml");
+    }
+
+    #[test]
+    fn a_failing_write_is_reported_once_and_retried() {
+        let dir = tempfile::tempdir().unwrap();
+        let blocker = dir.path().join("a-file");
+        std::fs::write(&blocker, "").unwrap();
+        // The folder would have to be inside a file: every write fails.
+        let (mut r, _) = Recovery::new(&blocker.join("impulse"), 1.0);
+        let first = r.save(1.0, 1, SCENE);
+        assert!(first.is_some_and(|m| m.contains("Autosave")));
+        assert_eq!(
+            r.save(2.0, 2, SCENE),
+            None,
+            "the same failure is not repeated"
+        );
+        assert!(r.error.is_some() && r.saves == 0);
+        assert!(r.due(3.0) && r.changed(3), "and it is tried again");
+    }
+}

@@ -1,0 +1,133 @@
+//! Never lose work, tested as it happens: the window autosaves, is killed
+//! (as by a crash), and the next start offers the sandbox back; `R`
+//! restores it exactly, a normal close leaves nothing behind, and a folder
+//! that cannot be written gives a message while the window carries on.
+//! Under Xvfb, driven by xdotool, read back through `--dump-state`.
+
+mod window_harness;
+
+use impulse::Scene;
+use std::path::Path;
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+use window_harness::{Sandbox, Xvfb, ONE_WINDOW};
+
+/// Waits until the dump satisfies `ready`, and returns it.
+fn wait_for(
+    app: &Sandbox,
+    what: &str,
+    ready: impl Fn(&serde_json::Value) -> bool,
+) -> serde_json::Value {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        let s = app.state();
+        if ready(&s) {
+            return s;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "timed out waiting for {what}: {}",
+            s["recovery"]
+        );
+        sleep(Duration::from_millis(50));
+    }
+}
+
+fn positions(scene: &Scene) -> Vec<[f64; 2]> {
+    scene.particles.iter().map(|p| p.pos.to_array()).collect()
+}
+
+#[test]
+fn a_killed_window_is_offered_back_and_restored_exactly() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("recovery") else {
+        return;
+    };
+    let state = tempfile::tempdir().unwrap();
+    let file = state.path().join("impulse").join("recovery.toml");
+
+    // A session that autosaves every half second, then dies.
+    let mut first = Sandbox::start_with_state(&x, &["--autosave", "0.5"], state.path());
+    let s = wait_for(&first, "two autosaves", |s| {
+        s["recovery"]["saves"].as_u64() >= Some(2)
+    });
+    assert_eq!(s["recovery"]["file"], file.display().to_string());
+    assert_eq!(s["recovery"]["offered"], false);
+    first.child.kill().expect("kill");
+    first.child.wait().expect("reaped");
+    let saved = Scene::load(&file).expect("the recovery file is a readable scene");
+    let count = s["metrics"]["count"].as_u64().unwrap() as usize;
+    assert_eq!(saved.particles.len(), count);
+
+    // The next start offers it and does not overwrite it meanwhile.
+    let second = Sandbox::start_with_state(&x, &["--autosave", "0.5", "--paused"], state.path());
+    let s = second.wait_frames(10);
+    assert_eq!(s["recovery"]["offered"], true);
+    sleep(Duration::from_millis(800));
+    let s = second.wait_frames(2);
+    assert_eq!(
+        s["recovery"]["saves"], 0,
+        "no autosave over an unanswered offer"
+    );
+    assert_eq!(
+        Scene::load(&file).unwrap(),
+        saved,
+        "the offered file is untouched"
+    );
+
+    // R restores it, disc for disc.
+    second.xdo(&["key", "r"]);
+    let s = wait_for(&second, "the restore", |s| {
+        s["recovery"]["offered"] == false
+    });
+    assert!(
+        s["scene_origin"]
+            .as_str()
+            .unwrap()
+            .starts_with("recovered from"),
+        "{}",
+        s["scene_origin"]
+    );
+    let restored: Vec<[f64; 2]> = s["particles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| [p["pos"][0].as_f64().unwrap(), p["pos"][1].as_f64().unwrap()])
+        .collect();
+    assert_eq!(
+        restored,
+        positions(&saved),
+        "paused, so exactly where they were saved"
+    );
+
+    // A normal close leaves nothing to recover.
+    second.quit();
+    assert!(!file.exists(), "Ctrl+Q removes the recovery file");
+}
+
+#[test]
+fn a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on() {
+    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = Xvfb::start("recovery-fail") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    // The state folder would have to be inside a regular file.
+    let blocker = dir.path().join("not-a-folder");
+    std::fs::write(&blocker, "").unwrap();
+    let app = Sandbox::start_with_state(&x, &["--autosave", "0.3"], &blocker);
+    let s = wait_for(&app, "the failure", |s| s["recovery"]["error"].is_string());
+    assert!(s["recovery"]["error"]
+        .as_str()
+        .unwrap()
+        .contains("Autosave"));
+    assert_eq!(s["recovery"]["saves"], 0);
+    let before = s["steps"].as_u64().unwrap();
+    let s = app.wait_frames(20);
+    assert!(
+        s["steps"].as_u64().unwrap() > before,
+        "the sandbox keeps running"
+    );
+    app.quit();
+    assert!(!Path::new(&blocker).is_dir());
+}
