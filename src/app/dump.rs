@@ -57,6 +57,8 @@ pub struct StateDump<'a> {
     pub wall_restitution: f64,
     /// Gravity (m/s², y up).
     pub gravity: [f64; 2],
+    /// Edges: "box", "open" or "periodic".
+    pub boundary: String,
     /// Whether the side panel is shown.
     pub panel_visible: bool,
     /// Screen rectangles [x, y, width, height] (px) of the panel and of its
@@ -130,6 +132,7 @@ impl<'a> StateDump<'a> {
             restitution: world.restitution,
             wall_restitution: world.wall_restitution,
             gravity: world.gravity.to_array(),
+            boundary: world.boundary.name().to_string(),
             panel_visible: false,
             panel_widgets: BTreeMap::new(),
             timing: Default::default(),
