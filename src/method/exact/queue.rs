@@ -256,17 +256,20 @@ impl<K: Copy> EventQueue<K> {
         self.overflow = NIL;
         self.in_ring = 0;
         self.len = 0;
-        if queued.len() >= 2 {
+        let mut times: Vec<f64> = queued.iter().map(|&(_, t, _)| t).collect();
+        if let Some(&lo) = times.iter().min_by(|a, b| a.total_cmp(b)) {
+            // The earliest event opens the ring (bucket 0), whatever the
+            // width, so the ring is never empty after a retune.
+            self.offset = -lo;
+        }
+        if times.len() >= 2 {
             // The earliest quarter of the events spans this much time.
-            let quarter = (queued.len() / 4).max(1);
-            let mut times: Vec<f64> = queued.iter().map(|&(_, t, _)| t).collect();
-            let (_, &mut lo, _) = times.select_nth_unstable_by(0, f64::total_cmp);
+            let quarter = (times.len() / 4).max(1);
             let (_, &mut q, _) = times.select_nth_unstable_by(quarter, f64::total_cmp);
-            let span = q - lo;
+            let span = q + self.offset;
             if span > 0.0 && span.is_finite() {
                 self.per_second = quarter as f64 / (PER_BUCKET * span);
             }
-            self.offset = -lo;
         }
         self.cursor = 0;
         self.base = 0;
@@ -418,6 +421,21 @@ mod tests {
                 q.shift_times(e.time);
                 last -= e.time;
             }
+        }
+    }
+
+    #[test]
+    fn a_lone_event_far_ahead_is_found() {
+        // One slow disc: its only event lies far past the ring, and no
+        // second event gives the width (this once looped for ever).
+        for time in [100.0, 1e6, 1e12] {
+            let mut q = EventQueue::new(1);
+            q.set(0, ev(time, 0));
+            q.retune();
+            assert_eq!(q.pop().map(|e| e.time), Some(time));
+            let mut q = EventQueue::new(3);
+            q.set(0, ev(time, 0));
+            assert_eq!(q.peek().map(|e| e.time), Some(time), "without a retune");
         }
     }
 
