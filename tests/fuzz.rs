@@ -426,3 +426,46 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(cases(128))]
+
+    /// The loader's overlap check (a hash grid) finds exactly what testing
+    /// every pair finds: the first disc that overlaps an earlier one, and
+    /// the earliest such partner.
+    #[test]
+    fn the_overlap_check_agrees_with_testing_every_pair(
+        size in (2.0f64..30.0, 2.0f64..30.0),
+        discs in proptest::collection::vec((0.0f64..1.0, 0.0f64..1.0, 0.05f64..1.5), 1..60),
+        boundary in prop::sample::select(Boundary::ALL.to_vec()),
+    ) {
+        let placed: Vec<(DVec2, f64)> = discs
+            .iter()
+            .map(|&(fx, fy, r)| {
+                let r = r.min(size.0 / 2.0).min(size.1 / 2.0);
+                (DVec2::new(r + fx * (size.0 - 2.0 * r), r + fy * (size.1 - 2.0 * r)), r)
+            })
+            .collect();
+        let boundary_name = match boundary {
+            Boundary::Box => "box",
+            Boundary::Open => "open",
+            Boundary::Periodic => "periodic",
+        };
+        let mut text = format!("[world]\nsize = [{:?}, {:?}]\nboundary = \"{boundary_name}\"\n", size.0, size.1);
+        for (pos, r) in &placed {
+            text += &format!("[[particles]]\npos = [{:?}, {:?}]\nmass = 1.0\nradius = {r:?}\n", pos.x, pos.y);
+        }
+        let size = DVec2::new(size.0, size.1);
+        let expected = placed.iter().enumerate().find_map(|(k, (p, rp))| {
+            placed[..k]
+                .iter()
+                .position(|(q, rq)| boundary.separation(*q, *p, size).length() < rp + rq)
+                .map(|other| format!("particles[{k}].pos: overlaps particles[{other}]"))
+        });
+        match (impulse::Scene::parse(&text, "fuzz"), expected) {
+            (Ok(_), None) => {}
+            (Err(e), Some(wanted)) => prop_assert!(e.to_string().contains(&wanted), "{e} / {wanted}"),
+            (got, wanted) => return Err(TestCaseError::fail(format!("{got:?} but expected {wanted:?}"))),
+        }
+    }
+}
