@@ -26,7 +26,7 @@ pub struct RunArgs {
     #[arg(long)]
     pub broadphase: Option<Setting<BroadPhaseKind>>,
     /// Substeps per step (impulse, verlet), or auto [default: the scene's].
-    #[arg(long)]
+    #[arg(long, value_parser = substeps)]
     pub substeps: Option<Setting<u32>>,
     /// Threads for the large-scene stages [default: RAYON_NUM_THREADS, else
     /// one per core]; `auto` still runs small scenes on one.
@@ -42,6 +42,16 @@ pub fn positive_seconds(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
         _ => Err(format!("{s:?} is not a positive number of seconds")),
+    }
+}
+
+/// Command-line parser for substeps: `auto` or 1 to 10000, as in scene files.
+fn substeps(s: &str) -> Result<Setting<u32>, String> {
+    match s.parse::<Setting<u32>>() {
+        Ok(Setting::Fixed(k)) if !(1..=10_000).contains(&k) => {
+            Err(format!("{s:?} is not a number of substeps from 1 to 10000"))
+        }
+        other => other,
     }
 }
 

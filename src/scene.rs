@@ -47,6 +47,34 @@ use std::path::Path;
 /// Most discs a scene may ask for, so a typo cannot exhaust memory.
 pub const MAX_PARTICLES: usize = 2_000_000;
 
+/// Largest scene file read (bytes): room for the most discs a scene may list.
+pub const MAX_FILE_BYTES: u64 = 256 << 20;
+
+/// The ranges a scene's values must lie in. Inside them every product the
+/// physics forms (momentum, energy, impulses, squared distances) stays far
+/// from overflow and underflow in `f64`, so no method meets an infinity or a
+/// NaN; outside them the loader refuses the file, naming the field.
+pub mod limits {
+    /// Smallest and largest box side and disc radius (m).
+    pub const LENGTH: [f64; 2] = [1e-9, 1e9];
+    /// Largest distance of a disc's centre from the origin (m), for the open
+    /// boundary (in a box the box bounds it).
+    pub const POSITION: f64 = 1e12;
+    /// Smallest and largest disc mass (kg), and fill density (kg/m²).
+    pub const MASS: [f64; 2] = [1e-12, 1e12];
+    /// Largest speed (m/s).
+    pub const SPEED: f64 = 1e8;
+    /// Largest gravity (m/s²).
+    pub const GRAVITY: f64 = 1e6;
+    /// Shortest and longest time step (s).
+    pub const DT: [f64; 2] = [1e-9, 1e3];
+
+    /// Whether `x` lies in `[lo, hi]` (false for NaN).
+    pub fn within(x: f64, [lo, hi]: [f64; 2]) -> bool {
+        (lo..=hi).contains(&x)
+    }
+}
+
 /// A scene as written in a file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -199,9 +227,28 @@ impl Scene {
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let origin = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        let io = |source| SceneError::Io {
             origin: origin.clone(),
             source,
+        };
+        // Read at most one byte past the limit, so `/dev/zero` or a huge file
+        // is refused instead of filling memory.
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|file| {
+                use std::io::Read;
+                file.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)
+            })
+            .map_err(io)?;
+        if bytes.len() as u64 > MAX_FILE_BYTES {
+            return Err(SceneError::Syntax {
+                origin,
+                message: format!("larger than {} MiB", MAX_FILE_BYTES >> 20),
+            });
+        }
+        let text = String::from_utf8(bytes).map_err(|e| SceneError::Syntax {
+            origin: origin.clone(),
+            message: format!("not UTF-8 text: {}", e.utf8_error()),
         })?;
         Scene::parse(&text, &origin)
     }
@@ -241,8 +288,14 @@ impl Scene {
         if !(w.size.is_finite() && w.size.min_element() > 0.0) {
             return Err(bad("world.size".into(), "must be two positive numbers"));
         }
+        if !(limits::within(w.size.x, limits::LENGTH) && limits::within(w.size.y, limits::LENGTH)) {
+            return Err(bad("world.size".into(), "must be between 1e-9 and 1e9 m"));
+        }
         if !w.gravity.is_finite() {
             return Err(bad("world.gravity".into(), "must be finite"));
+        }
+        if w.gravity.length() > limits::GRAVITY {
+            return Err(bad("world.gravity".into(), "must be at most 1e6 m/s²"));
         }
         for (field, e) in [
             ("world.restitution", w.restitution),
@@ -252,6 +305,16 @@ impl Scene {
                 return Err(bad(field.into(), "must be between 0 and 1"));
             }
         }
+        // The overlap test looks at the 3×3 cells around each disc (a cell
+        // at least the widest diameter): O(n), where testing every earlier
+        // disc took a minute for 10⁵ discs (`--gas 100000` built its scene so).
+        let widest = self
+            .particles
+            .iter()
+            .map(|p| p.radius)
+            .filter(|r| *r > 0.0)
+            .fold(0.0, f64::max);
+        let mut cells = FillCells::new(w.size, 2.0 * widest, w.boundary);
         for (k, p) in self.particles.iter().enumerate() {
             let field = |name: &str| format!("particles[{k}].{name}");
             if !(p.mass > 0.0 && p.mass.is_finite()) {
@@ -266,22 +329,39 @@ impl Scene {
             if !p.pos.is_finite() {
                 return Err(bad(field("pos"), "must be finite"));
             }
+            if !limits::within(p.mass, limits::MASS) {
+                return Err(bad(field("mass"), "must be between 1e-12 and 1e12 kg"));
+            }
+            if !limits::within(p.radius, limits::LENGTH) {
+                return Err(bad(field("radius"), "must be between 1e-9 and 1e9 m"));
+            }
+            if p.vel.length() > limits::SPEED {
+                return Err(bad(field("vel"), "must be at most 1e8 m/s"));
+            }
+            if p.pos.abs().max_element() > limits::POSITION {
+                return Err(bad(field("pos"), "must be within 1e12 m of the origin"));
+            }
             if !fits(w.boundary, w.size, p.pos, p.radius) {
                 return Err(bad(field("pos"), "puts the disc outside the box"));
             }
-            for (other, q) in self.particles[..k].iter().enumerate() {
-                let gap = w.boundary.separation(q.pos, p.pos, w.size).length();
-                if gap < p.radius + q.radius {
-                    let reason = format!("overlaps particles[{other}]");
-                    return Err(bad(field("pos"), &reason));
-                }
+            let overlapped = cells
+                .near(p.pos)
+                .filter(|&other| {
+                    let q = &self.particles[other];
+                    w.boundary.separation(q.pos, p.pos, w.size).length() < p.radius + q.radius
+                })
+                .min();
+            if let Some(other) = overlapped {
+                let reason = format!("overlaps particles[{other}]");
+                return Err(bad(field("pos"), &reason));
             }
+            cells.insert(p.pos, k);
         }
         let sim = &self.simulation;
-        if sim.dt.is_some_and(|dt| !(dt > 0.0 && dt.is_finite())) {
+        if sim.dt.is_some_and(|dt| !limits::within(dt, limits::DT)) {
             return Err(bad(
                 "simulation.dt".into(),
-                "must be a positive number of seconds",
+                "must be between 1e-9 and 1000 seconds",
             ));
         }
         if let Setting::Fixed(k) = sim.substeps {
@@ -306,10 +386,19 @@ impl Scene {
                     "must be [min, max] with 0 < min ≤ max",
                 ));
             }
+            if !(limits::within(r0, limits::LENGTH) && limits::within(r1, limits::LENGTH)) {
+                return Err(bad("fill.radius".into(), "must be between 1e-9 and 1e9 m"));
+            }
             if !(f.density > 0.0 && f.density.is_finite()) {
                 return Err(bad(
                     "fill.density".into(),
                     "must be a positive finite number",
+                ));
+            }
+            if !limits::within(f.density, limits::MASS) {
+                return Err(bad(
+                    "fill.density".into(),
+                    "must be between 1e-12 and 1e12 kg/m²",
                 ));
             }
             let [s0, s1] = f.speed;
@@ -318,6 +407,9 @@ impl Scene {
                     "fill.speed".into(),
                     "must be [min, max] with 0 ≤ min ≤ max",
                 ));
+            }
+            if s1 > limits::SPEED {
+                return Err(bad("fill.speed".into(), "must be at most 1e8 m/s"));
             }
             if 2.0 * r1 > w.size.min_element() {
                 return Err(bad("fill.radius".into(), "discs wider than the box"));
@@ -446,10 +538,24 @@ pub fn line_of(text: &str, field: &str) -> Option<usize> {
 
 /// Adds `fill.count` seeded random discs that overlap nothing already there
 /// (or no more than `fill.overlap` of the smaller diameter).
+///
+/// The discs already placed are kept in a hash grid of cells at least a
+/// diameter of the largest disc wide, so each try looks at the 3×3 cells
+/// around it: placing n discs costs O(n), not O(n²). The answer of each try
+/// is the same as testing every disc, so a seed gives the same discs.
 fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
     let mut rng = ChaCha8Rng::seed_from_u64(fill.seed);
     let first = world.particles.len();
     let attempts_per_disc = 2000;
+    let largest = world
+        .particles
+        .iter()
+        .map(|p| p.radius)
+        .fold(fill.radius[1], f64::max);
+    let mut cells = FillCells::new(world.size, 2.0 * largest, world.boundary);
+    for (k, p) in world.particles.iter().enumerate() {
+        cells.insert(p.pos, k);
+    }
     for k in 0..fill.count {
         let radius = rng.random_range(fill.radius[0]..=fill.radius[1]);
         let speed = rng.random_range(fill.speed[0]..=fill.speed[1]);
@@ -459,13 +565,21 @@ fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
                 rng.random_range(radius..=world.size.x - radius),
                 rng.random_range(radius..=world.size.y - radius),
             );
+            let mut near = cells.near(pos).map(|i| &world.particles[i]);
             let free = if fill.overlap > 0.0 {
-                world.particles.iter().all(|q| {
+                near.all(|q| {
                     let allowed = fill.overlap * 2.0 * radius.min(q.radius);
                     (q.pos - pos).length() >= radius + q.radius - allowed
                 })
             } else {
-                world.is_free(pos, radius)
+                let inside = world.boundary != Boundary::Box
+                    || (pos.cmpge(DVec2::splat(radius)).all()
+                        && pos.cmple(world.size - DVec2::splat(radius)).all());
+                inside
+                    && near.all(|q| {
+                        world.boundary.separation(q.pos, pos, world.size).length()
+                            >= q.radius + radius
+                    })
             };
             free.then_some(pos)
         });
@@ -478,9 +592,116 @@ fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String> {
         let mass = fill.density * std::f64::consts::PI * radius * radius;
         let vel = speed * DVec2::from_angle(heading);
         let color = Color::palette(first + k);
+        cells.insert(pos, world.particles.len());
         world
             .particles
             .push(Particle::new(pos, vel, mass, radius, color));
     }
     Ok(())
+}
+
+/// Discs by cell, for the overlap tests of [`Scene::validate`] and
+/// [`add_fill`].
+struct FillCells {
+    /// Cell width and height (m), at least the widest diameter.
+    width: DVec2,
+    /// Cells per axis (at least 1); an axis with fewer than three is one cell.
+    count: [i64; 2],
+    /// Whether the cells wrap around (periodic boundary).
+    wrap: bool,
+    /// Disc indices by cell.
+    map: std::collections::HashMap<[i64; 2], Vec<usize>>,
+}
+
+impl FillCells {
+    /// Most cells along one axis (the map is sparse, so this only bounds the
+    /// integer arithmetic).
+    const MAX_PER_AXIS: f64 = (1u64 << 30) as f64;
+
+    fn new(size: DVec2, diameter: f64, boundary: Boundary) -> Self {
+        let per_axis = |length: f64| {
+            let n = (length / diameter).floor().clamp(1.0, Self::MAX_PER_AXIS);
+            if n < 3.0 {
+                1
+            } else {
+                n as i64
+            }
+        };
+        let count = [per_axis(size.x), per_axis(size.y)];
+        FillCells {
+            width: DVec2::new(size.x / count[0] as f64, size.y / count[1] as f64),
+            count,
+            wrap: boundary == Boundary::Periodic,
+            map: std::collections::HashMap::new(),
+        }
+    }
+
+    /// The cell of `pos`; points outside the box go to the border cells,
+    /// which are nearer to them than any other cell.
+    fn cell(&self, pos: DVec2) -> [i64; 2] {
+        let along = |x: f64, w: f64, n: i64| ((x / w).floor().clamp(0.0, (n - 1) as f64)) as i64;
+        [
+            along(pos.x, self.width.x, self.count[0]),
+            along(pos.y, self.width.y, self.count[1]),
+        ]
+    }
+
+    fn insert(&mut self, pos: DVec2, index: usize) {
+        let cell = self.cell(pos);
+        self.map.entry(cell).or_default().push(index);
+    }
+
+    /// Every disc in the 3×3 cells around `pos` (each cell once).
+    fn near(&self, pos: DVec2) -> impl Iterator<Item = usize> + '_ {
+        let [cx, cy] = self.cell(pos);
+        let axis = |c: i64, n: i64| -> Vec<i64> {
+            let mut cells: Vec<i64> = (c - 1..=c + 1)
+                .filter_map(|k| {
+                    if self.wrap {
+                        Some(k.rem_euclid(n))
+                    } else {
+                        (0..n).contains(&k).then_some(k)
+                    }
+                })
+                .collect();
+            cells.sort_unstable();
+            cells.dedup();
+            cells
+        };
+        let (xs, ys) = (axis(cx, self.count[0]), axis(cy, self.count[1]));
+        xs.into_iter()
+            .flat_map(move |x| ys.clone().into_iter().map(move |y| [x, y]))
+            .filter_map(|cell| self.map.get(&cell))
+            .flatten()
+            .copied()
+    }
+}
+
+/// What [`fuzz_scene_bytes`] made of its input.
+#[derive(Debug)]
+pub enum FuzzOutcome {
+    /// Refused while reading: not UTF-8, not TOML, or a bad value (the
+    /// one-line message).
+    Refused(String),
+    /// Read, but refused while building (the one-line message).
+    NotBuilt(String),
+    /// Read and built.
+    Built(Box<World>),
+}
+
+/// The body of the scene fuzz targets (`fuzz/fuzz_targets/scene.rs` and
+/// `tests/fuzz.rs`): any bytes as a scene file named `origin`, read and built.
+/// It must never panic, whatever the bytes.
+pub fn fuzz_scene_bytes(bytes: &[u8], origin: &str) -> FuzzOutcome {
+    let text = match std::str::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => return FuzzOutcome::Refused(format!("{origin}: not UTF-8 text: {e}")),
+    };
+    match Scene::parse(text, origin) {
+        Err(e) => FuzzOutcome::Refused(e.to_string()),
+        Ok(scene) => match scene.build(origin) {
+            Err(e) => FuzzOutcome::NotBuilt(e.to_string()),
+            Ok(world) => FuzzOutcome::Built(Box::new(world)),
+        },
+    }
 }

@@ -196,6 +196,12 @@ impl Pipeline {
 /// How often `auto` looks at the scene again (steps).
 const REPLAN_EVERY: u64 = 30;
 
+/// Shortest step taken (s). Shorter ones leave the world unchanged, like a
+/// zero step: `verlet` divides displacements by the step, and a step of
+/// 10⁻³⁰⁰ s or a subnormal one turned a start's overlap into an infinite
+/// velocity.
+pub const MIN_DT: f64 = 1e-12;
+
 impl World {
     /// An empty closed box of the given size: no gravity, elastic
     /// everywhere, the `impulse` method with one substep, brute force.
@@ -253,9 +259,10 @@ impl World {
 
     /// Advances the world by `dt` seconds with the chosen method.
     ///
-    /// A `dt` that is not a positive finite number leaves the world unchanged.
+    /// A `dt` that is not a finite number of at least [`MIN_DT`] seconds
+    /// leaves the world unchanged.
     pub fn step(&mut self, dt: f64) -> StepStats {
-        if !(dt > 0.0 && dt.is_finite()) {
+        if !(dt >= MIN_DT && dt.is_finite()) {
             return StepStats::default();
         }
         // Re-plan when anything auto looks at may have changed: the settings,

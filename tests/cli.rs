@@ -217,3 +217,125 @@ fn stress_quick_writes_table_csv_and_chart_for_every_scenario_and_method() {
     }
     assert!(rows.iter().all(|r| r[4] == "true" || r[4] == "false"));
 }
+
+/// Asserts a one-line error with `code`, no panic and no backtrace, that
+/// contains every one of `wanted`.
+fn assert_one_line(args: &[&str], code: i32, wanted: &[&str]) {
+    let out = impulse(args);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(code), "{args:?}: {err}");
+    assert_eq!(
+        err.trim_end().lines().count(),
+        1,
+        "{args:?}: not one line: {err}"
+    );
+    assert!(
+        !err.contains("panicked") && !err.contains("backtrace"),
+        "{args:?}: {err}"
+    );
+    for w in wanted {
+        assert!(err.contains(w), "{args:?}: no {w:?} in {err}");
+    }
+}
+
+#[test]
+fn missing_unreadable_and_garbage_scene_files_are_one_line_naming_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let binary = dir.path().join("binary.toml");
+    std::fs::write(&binary, [0xff, 0xfe, 0x00, 0x80, b'\n']).unwrap();
+    let empty = dir.path().join("empty.toml");
+    std::fs::write(&empty, "").unwrap();
+    let not_toml = dir.path().join("not.toml");
+    std::fs::write(&not_toml, "[world\nsize = ").unwrap();
+    let folder = dir.path().to_str().unwrap().to_string();
+    for (path, why) in [
+        ("/no/such/file.toml", "No such file"),
+        (folder.as_str(), "cannot read"),
+        (binary.to_str().unwrap(), "UTF-8"),
+        (empty.to_str().unwrap(), "world"),
+        (not_toml.to_str().unwrap(), "line 1"),
+        ("/dev/zero", "larger than"),
+    ] {
+        assert_one_line(&[path], 1, &[path, why]);
+        assert_one_line(&["run", path, "--time", "1"], 1, &[path, why]);
+    }
+}
+
+#[test]
+fn every_wrong_argument_is_one_line_with_exit_code_two() {
+    let scene = asset("default.toml");
+    for (args, wanted) in [
+        (vec!["run", &scene], "--time"),
+        (vec!["run", "--time", "1"], "SCENE"),
+        (vec!["run", &scene, "--time", "-1"], "-1"),
+        (vec!["run", &scene, "--time", "inf"], "inf"),
+        (vec!["run", &scene, "--time", "1", "--dt", "0"], "--dt"),
+        (vec!["run", &scene, "--time", "1", "--dt", "nan"], "nan"),
+        (vec!["run", &scene, "--time", "1", "--method", "rk4"], "rk4"),
+        (
+            vec!["run", &scene, "--time", "1", "--broadphase", "kd"],
+            "kd",
+        ),
+        (
+            vec!["run", &scene, "--time", "1", "--substeps", "0"],
+            "substeps",
+        ),
+        (
+            vec!["run", &scene, "--time", "1", "--substeps", "4000000000"],
+            "substeps",
+        ),
+        (
+            vec!["run", &scene, "--time", "1", "--threads", "0"],
+            "--threads",
+        ),
+        (
+            vec!["run", &scene, "--time", "1", "--json", "extra"],
+            "extra",
+        ),
+        (vec!["bench", "--threads", "0"], "--threads"),
+        (vec!["bench", "--quick", "--nope"], "--nope"),
+        (vec!["accuracy", "--out"], "--out"),
+        (vec!["stress", "surplus"], "surplus"),
+        (vec!["--dt", "nan"], "--dt"),
+        (vec!["--dt=-0.01"], "--dt"),
+        (vec!["--exit-after", "0"], "--exit-after"),
+        (vec!["--size", "10x10"], "10x10"),
+        (vec!["--size", "wide"], "wide"),
+        (vec!["--gas"], "--gas"),
+        (vec!["--no-such-flag"], "--no-such-flag"),
+        (vec!["--frame-stats"], "--frame-stats"),
+        (vec!["a.toml", "b.toml"], "b.toml"),
+    ] {
+        assert_one_line(&args, 2, &[wanted]);
+    }
+    for args in [["--help"], ["--version"]] {
+        let out = impulse(&args);
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        assert!(!out.stdout.is_empty(), "{args:?}");
+    }
+}
+
+#[test]
+fn a_run_too_long_or_a_bad_output_folder_is_refused_at_once() {
+    let scene = asset("default.toml");
+    assert_one_line(&["run", &scene, "--time", "1e300"], 1, &["steps"]);
+    assert_one_line(
+        &["run", &scene, "--time", "1e6", "--dt", "1e-9"],
+        1,
+        &["steps"],
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "not a folder").unwrap();
+    let out = file.join("out");
+    let out = out.to_str().unwrap();
+    for command in ["bench", "accuracy", "stress"] {
+        let started = std::time::Instant::now();
+        assert_one_line(&[command, "--quick", "--out", out], 1, &[out]);
+        assert!(
+            started.elapsed().as_secs_f64() < 10.0,
+            "{command}: refused only after {:?}",
+            started.elapsed()
+        );
+    }
+}

@@ -193,6 +193,8 @@ fn compare(method: Method, dt: f64, substeps: u32, got: &Outcome, reference: &Ou
 
 /// Runs the sweep, prints the table, writes CSV and one chart per error.
 pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
+    // The folder first: a bad --out is refused before minutes of measuring.
+    super::create_out_dir(&args.out)?;
     let dts: &[f64] = if args.quick {
         &[1.0 / 60.0, 1.0 / 240.0, 1.0 / 960.0]
     } else {
@@ -232,7 +234,6 @@ pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
     }
     bar.finish_and_clear();
 
-    std::fs::create_dir_all(&args.out)?;
     let table = table(&points);
     print!("{table}");
     crate::files::write_atomically(&args.out.join("accuracy.md"), table.as_bytes())?;

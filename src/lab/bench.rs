@@ -98,6 +98,8 @@ fn pool(threads: usize) -> anyhow::Result<rayon::ThreadPool> {
 
 /// Runs the benchmark, prints the table and writes CSV and chart.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    // The folder first: a bad --out is refused before minutes of measuring.
+    super::create_out_dir(&args.out)?;
     let sizes: &[usize] = if args.quick {
         &[100, 1_000, 10_000]
     } else {
@@ -160,7 +162,6 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         .iter()
         .map(|&(n, collisions)| exact_throughput(n, collisions))
         .collect();
-    std::fs::create_dir_all(&args.out)?;
     let mut table = table(&rows, &skipped);
     let _ = writeln!(table, "\n| exact, long steps (dt = {EXACT_DT} s) | n | collisions | collisions per wall-clock second (median step) | events per collision | relative energy change |");
     let _ = writeln!(table, "|---|---:|---:|---:|---:|---:|");

@@ -8,3 +8,9 @@ pub mod bench;
 pub mod chart;
 pub mod progress;
 pub mod stress;
+
+/// Creates the output folder `out` (and its parents); the error names it.
+pub fn create_out_dir(out: &std::path::Path) -> anyhow::Result<()> {
+    std::fs::create_dir_all(out)
+        .map_err(|e| anyhow::anyhow!("cannot create the output folder {}: {e}", out.display()))
+}

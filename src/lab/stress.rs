@@ -68,8 +68,7 @@ pub fn run(args: &StressArgs) -> anyhow::Result<()> {
         (Size::Full, "full")
     };
     // Before minutes of work: a folder that cannot be made is an error now.
-    std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("creating {}", args.out.display()))?;
+    super::create_out_dir(&args.out)?;
     let scenarios = stress::scenarios();
     let methods: Vec<String> = METHODS.iter().map(ToString::to_string).collect();
     let bar = progress::bar((scenarios.len() * METHODS.len()) as u64, "stress");

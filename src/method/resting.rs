@@ -143,8 +143,13 @@ pub(crate) fn substep(
         }
     }
     walls.hold(particles, stats, Hold::Resting);
+    // The shock sweep treats the lower disc as immovable, which is right
+    // only when a floor holds the stack: with open or periodic edges it
+    // changed the total momentum (a falling e = 0 cluster in an open world
+    // gained 2 kg·m/s in 300 steps), so there the contacts keep the law.
+    let shock = (laws.boundary == Boundary::Box).then_some(down);
     for c in contacts.iter() {
-        collide(particles, c, 0.0, Some(down));
+        collide(particles, c, 0.0, shock);
     }
     stats.pair_collisions += impacts.iter().filter(|&&impact| impact).count();
 
