@@ -339,3 +339,15 @@ fn a_run_too_long_or_a_bad_output_folder_is_refused_at_once() {
         );
     }
 }
+
+#[test]
+fn window_output_files_in_missing_folders_are_refused_before_a_window_opens() {
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().to_str().unwrap().to_string();
+    let missing = dir.path().join("no-such-folder").join("out.json");
+    let missing = missing.to_str().unwrap();
+    for flag in ["--dump-state", "--screenshot", "--frame-stats"] {
+        assert_one_line(&[flag, missing], 1, &[flag, "no folder"]);
+        assert_one_line(&[flag, &folder], 1, &[flag, "is a folder"]);
+    }
+}

@@ -297,7 +297,6 @@ fn values_outside_the_documented_limits_are_refused_with_the_field_named() {
 }
 
 #[test]
-#[ignore = "exact (src/method/exact/, owned elsewhere) hangs: one disc at 0.01 m/s in a 16 × 10 m box never finishes a step (0, 0.1 and 1 m/s do)"]
 fn exact_steps_a_slow_disc() {
     let (done, finished) = std::sync::mpsc::channel();
     std::thread::spawn(move || {

@@ -204,11 +204,6 @@ proptest! {
         let outcome = fuzz_scene_bytes(text.as_bytes(), "fuzz");
         check(&outcome)?;
         if let FuzzOutcome::Built(mut world) = outcome {
-            // `exact` can hang on a slow disc (see `tests/extremes.rs`,
-            // `exact_steps_a_slow_disc`): step these with `impulse` until then.
-            if world.plan_for(1.0 / 240.0).method == Method::Exact {
-                world.method = Setting::Fixed(Method::Impulse);
-            }
             for _ in 0..3 {
                 world.step(1.0 / 240.0);
             }
@@ -250,8 +245,8 @@ fn world_from(
     world
 }
 
-/// The discrete methods. `exact` (and `auto`, which often picks it) runs in
-/// the ignored twin below: it can hang on a slow disc.
+/// The discrete methods; `exact` and `auto` (which often picks it) run in
+/// the twin below.
 fn methods() -> impl Strategy<Value = Setting<Method>> {
     prop::sample::select(vec![
         Setting::Fixed(Method::Seed),
@@ -275,7 +270,6 @@ proptest! {
     }
 
     #[test]
-    #[ignore = "exact (src/method/exact/, owned elsewhere) hangs on a slow disc: one disc at 0.01 m/s in a 16 × 10 m box never finishes a step"]
     fn stepping_any_valid_scene_under_exact_and_auto(scene in scenes(exact_or_auto())) {
         step_and_check(scene)?;
     }

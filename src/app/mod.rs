@@ -126,6 +126,15 @@ pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml")
 
 /// Loads the scene, then opens the window (or explains why it cannot).
 pub fn run(options: WindowOptions) -> anyhow::Result<()> {
+    for (flag, file) in [
+        ("--dump-state", &options.dump_state),
+        ("--screenshot", &options.screenshot),
+        ("--frame-stats", &options.frame_stats),
+    ] {
+        if let Some(file) = file {
+            writable_place(flag, file)?;
+        }
+    }
     let (scene, origin) = match (&options.scene, options.gas) {
         (_, Some(count)) => gas_scene(count),
         (Some(path), None) => (Scene::load(path)?, path.display().to_string()),
@@ -156,6 +165,23 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     };
     display::guard_window_start();
     macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
+    Ok(())
+}
+
+/// Refuses, before any window opens, an output file whose folder does not
+/// exist or which is a folder itself (the window would only find out when it
+/// writes, frame after frame).
+fn writable_place(flag: &str, file: &std::path::Path) -> anyhow::Result<()> {
+    let folder = match file.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    };
+    if !folder.is_dir() {
+        anyhow::bail!("{flag} {}: no folder {}", file.display(), folder.display());
+    }
+    if file.is_dir() {
+        anyhow::bail!("{flag} {}: is a folder, not a file", file.display());
+    }
     Ok(())
 }
 
