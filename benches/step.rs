@@ -23,10 +23,7 @@ fn gas(n: usize, method: Method, broad: BroadPhaseKind, parallel: bool) -> World
         count: n,
         ..Gas::default()
     }
-    .build();
-    world.method = Setting::Fixed(method);
-    world.broad_phase = Setting::Fixed(broad);
-    world.substeps = Setting::Fixed(1);
+    .build_fixed(method, broad);
     world.parallel = Setting::Fixed(parallel);
     for _ in 0..3 {
         world.step(DT);

@@ -2,6 +2,8 @@
 //! benchmarks, the accuracy lab and the tests share.
 
 use crate::boundary::Boundary;
+use crate::broad_phase::BroadPhaseKind;
+use crate::method::{Method, Setting};
 use crate::particle::{Color, Particle};
 use crate::world::World;
 use glam::DVec2;
@@ -44,6 +46,16 @@ impl Default for Gas {
 }
 
 impl Gas {
+    /// [`Gas::build`] with the method and broad phase fixed and one
+    /// substep, as the benchmarks measure it.
+    pub fn build_fixed(&self, method: Method, broad: BroadPhaseKind) -> World {
+        let mut world = self.build();
+        world.method = Setting::Fixed(method);
+        world.broad_phase = Setting::Fixed(broad);
+        world.substeps = Setting::Fixed(1);
+        world
+    }
+
     /// The world: discs on a jittered square lattice filling a square box,
     /// so no two overlap and building a million takes a fraction of a second.
     /// Total momentum is removed, so the gas as a whole is at rest.

@@ -4,7 +4,7 @@
 
 use impulse::alloc_count::{live_bytes, Counting};
 use impulse::broad_phase::BroadPhaseKind;
-use impulse::method::{Method, Setting};
+use impulse::method::Method;
 use impulse::presets::Gas;
 
 #[global_allocator]
@@ -17,9 +17,7 @@ fn bytes_per_disc(n: usize, method: Method) -> f64 {
         count: n,
         ..Gas::default()
     }
-    .build();
-    world.method = Setting::Fixed(method);
-    world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
+    .build_fixed(method, BroadPhaseKind::Grid);
     for _ in 0..3 {
         world.step(0.01);
     }

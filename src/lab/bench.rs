@@ -392,10 +392,7 @@ pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f
         count: n,
         ..Gas::default()
     }
-    .build();
-    world.method = Setting::Fixed(method);
-    world.broad_phase = Setting::Fixed(broad);
-    world.substeps = Setting::Fixed(1);
+    .build_fixed(method, broad);
     let warm = Instant::now();
     for _ in 0..2 {
         world.step(DT);
