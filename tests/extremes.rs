@@ -200,7 +200,7 @@ fn thousands_of_discs_on_one_spot_spread_out_without_nan() {
 }
 
 #[test]
-#[ignore = "exact (src/method/exact/, not this file's owner) takes about 25–30 s (dev profile) to separate 2000 coincident discs"]
+#[ignore = "exact's set-up takes about 25–30 s (dev profile) to push 2000 coincident discs apart (scene files refuse overlapping discs)"]
 fn thousands_of_discs_on_one_spot_under_exact() {
     for boundary in [Boundary::Box, Boundary::Periodic] {
         pile_on_one_spot(2000, Method::Exact, boundary);
