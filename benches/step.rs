@@ -31,13 +31,24 @@ fn gas(n: usize, method: Method, broad: BroadPhaseKind, parallel: bool) -> World
     world
 }
 
-/// `impulse` / `grid`, serial, as n grows.
-fn step_against_n(c: &mut Criterion) {
-    let mut group = c.benchmark_group("step_impulse_grid");
+/// A group of 10 samples after half a second of warm-up, measured for
+/// `seconds`: enough to show a regression, short enough for a full run.
+fn short_group<'a>(
+    c: &'a mut Criterion,
+    name: &str,
+    seconds: u64,
+) -> criterion::BenchmarkGroup<'a, criterion::measurement::WallTime> {
+    let mut group = c.benchmark_group(name);
     group
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
+        .measurement_time(Duration::from_secs(seconds));
+    group
+}
+
+/// `impulse` / `grid`, serial, as n grows.
+fn step_against_n(c: &mut Criterion) {
+    let mut group = short_group(c, "step_impulse_grid", 2);
     for n in [1_000, 10_000, 100_000] {
         let mut world = gas(n, Method::Impulse, BroadPhaseKind::Grid, false);
         group.throughput(Throughput::Elements(n as u64));
@@ -50,11 +61,7 @@ fn step_against_n(c: &mut Criterion) {
 
 /// Every broad phase under `impulse` (brute force only where it is cheap).
 fn broad_phases(c: &mut Criterion) {
-    let mut group = c.benchmark_group("broad_phase");
-    group
-        .sample_size(10)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(1));
+    let mut group = short_group(c, "broad_phase", 1);
     for n in [1_000, 10_000] {
         group.throughput(Throughput::Elements(n as u64));
         for kind in BroadPhaseKind::ALL {
@@ -76,11 +83,7 @@ fn threads(c: &mut Criterion) {
         .num_threads(2)
         .build()
         .expect("a thread pool");
-    let mut group = c.benchmark_group("threads");
-    group
-        .sample_size(10)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
+    let mut group = short_group(c, "threads", 2);
     let n = 100_000;
     group.throughput(Throughput::Elements(n as u64));
     for method in [Method::Impulse, Method::Seed, Method::Verlet] {
