@@ -1,11 +1,11 @@
 //! `exact`: event-driven hard discs.
 //!
 //! Discs fly on exact trajectories (straight lines, or parabolas under
-//! gravity) between events. A priority queue holds each disc's earliest
+//! gravity) between events. A calendar queue holds each disc's earliest
 //! predicted event: a collision with a disc in its own or a neighbouring cell,
 //! a wall hit, or a crossing into the next cell of a grid whose cells are at
-//! least one diameter wide (so predicting an event costs O(1) and processing
-//! one O(log n)). Each step takes the earliest event, advances the discs
+//! least one diameter wide (so predicting an event costs O(1), and so does
+//! queueing it). Each step takes the earliest event, advances the discs
 //! involved to that instant, resolves it, re-predicts them, and repeats until
 //! the end of the step; then every disc is advanced to the end.
 //!
@@ -33,8 +33,9 @@
 //!   pushed apart once, by inverse mass and positions only, so nothing
 //!   starts moving and the centre of mass stays.
 //! - Speed: the discs are copied into a local array sorted by cell, so
-//!   neighbours sit close in memory, and each cell keeps its first few discs
-//!   inline; the results are written back in the caller's order. [`Exact`]
+//!   neighbours sit close in memory; a cell's list runs through its discs,
+//!   and what the pair scan reads of a disc fills one cache line; the
+//!   results are written back in the caller's order. [`Exact`]
 //!   keeps that array, the cells and the queue (with the events that lie past
 //!   the step) from one step to the next; a step first checks that every
 //!   disc is exactly where the last one left it, and only an edit (or a
