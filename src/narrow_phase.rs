@@ -3,7 +3,8 @@
 //! For each overlapping pair it records the unit normal n̂ from the first disc
 //! to the second and the overlap depth. Coincident centres have no direction
 //! of their own; they get the fixed normal +x, so the result is deterministic
-//! and never NaN.
+//! and never NaN. It also notes the horizontal band each disc is in, by which
+//! resolution cuts a large contact list into work for several threads.
 //!
 //! Each pair is tested on its own, so for large scenes the pairs are cut into
 //! chunks of [`PAIR_CHUNK`] that rayon tests in parallel
@@ -14,6 +15,7 @@ use crate::boundary::Boundary;
 use crate::broad_phase::Pair;
 use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
+use crate::resolution::band_of;
 use glam::DVec2;
 use rayon::prelude::*;
 
@@ -28,6 +30,9 @@ pub struct Contact {
     pub normal: DVec2,
     /// How far the discs overlap: r₁ + r₂ − distance (> 0).
     pub depth: f64,
+    /// The horizontal bands discs `i` and `j` are in, by which large contact
+    /// lists are resolved on several threads ([`crate::resolution::Banded`]).
+    pub bands: [u8; 2],
 }
 
 /// The normal used when two centres coincide.
@@ -49,6 +54,7 @@ pub fn find_contacts(
             j,
             normal,
             depth,
+            bands: [band_of(a.pos.y, size.y), band_of(b.pos.y, size.y)],
         })
     }));
 }

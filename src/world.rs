@@ -10,7 +10,7 @@ use crate::metrics::Metrics;
 use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
 use crate::parallel;
 use crate::particle::Particle;
-use crate::resolution::Rule;
+use crate::resolution::{ResolutionReport, Rule};
 use crate::stats::{Lap, StepStats};
 use glam::DVec2;
 use std::hash::{Hash, Hasher};
@@ -105,6 +105,8 @@ pub(crate) struct Pipeline {
     contact_chunks: Vec<Vec<Contact>>,
     /// Scratch: what the walls did per chunk of discs.
     walls: Vec<WallReport>,
+    /// Scratch: large contact lists grouped into bands for resolution.
+    banded: crate::resolution::Banded,
 }
 
 impl Pipeline {
@@ -120,6 +122,7 @@ impl Pipeline {
             parallel: false,
             contact_chunks: Vec::new(),
             walls: Vec::new(),
+            banded: Default::default(),
         }
     }
 
@@ -159,6 +162,22 @@ impl Pipeline {
         }
         stats.contacts += self.contacts.len();
         stats.timings.narrow_phase += lap.lap();
+    }
+
+    /// The resolution stage over `self.contacts`: in ascending pair order, or
+    /// band by band for large contact lists (on the pool if parallel; the
+    /// same result either way, see [`crate::resolution::Banded`]).
+    pub(crate) fn resolve(
+        &mut self,
+        particles: &mut [Particle],
+        laws: &Laws,
+        rule: Rule,
+        ledger: (&mut Ledger, f64),
+    ) -> ResolutionReport {
+        let e = laws.restitution;
+        let (contacts, parallel) = (&self.contacts, self.parallel);
+        self.banded
+            .resolve(particles, contacts, e, rule, ledger, parallel)
     }
 
     /// The integration stage (semi-implicit Euler), chunk by chunk.

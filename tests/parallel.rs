@@ -8,6 +8,7 @@ use impulse::auto::PARALLEL_MIN_DISCS;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
+use impulse::resolution::BANDED_MIN_CONTACTS;
 use impulse::{Boundary, DVec2, World};
 
 fn pool(threads: usize) -> rayon::ThreadPool {
@@ -125,4 +126,57 @@ fn auto_runs_small_scenes_on_one_thread_and_says_so() {
     // Exact keeps its own calendar and never runs in parallel.
     small.method = Setting::Fixed(Method::Exact);
     assert!(!plan_on_two(&small).parallel);
+}
+
+/// Resolution goes by bands from `BANDED_MIN_CONTACTS` contacts on, side by
+/// side when the step runs in parallel: a crowded, fast gas with that many
+/// contacts per step still steps bit for bit alike on one and two threads,
+/// and serially, and keeps its momentum.
+#[test]
+fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
+    for method in [Method::Impulse, Method::Verlet, Method::Seed] {
+        let mut world = Gas {
+            count: 4 * PARALLEL_MIN_DISCS,
+            area_fraction: 0.75,
+            speed: 40.0,
+            seed: 9,
+            ..Gas::default()
+        }
+        .build_fixed(method, BroadPhaseKind::Grid);
+        world.restitution = 0.9;
+        let mut probe = world.clone();
+        let contacts: Vec<usize> = (0..4).map(|_| probe.step(0.02).contacts).collect();
+        assert!(
+            contacts[1..].iter().all(|&c| c >= BANDED_MIN_CONTACTS),
+            "{method}: contacts per step {contacts:?}, too few to resolve by bands"
+        );
+        let before = world.metrics().momentum;
+        let steps = 4;
+        let serial = run(world.clone(), 1, Setting::Fixed(false), steps);
+        let two = run(world.clone(), 2, Setting::Fixed(true), steps);
+        assert_eq!(
+            two,
+            Outcome {
+                parallel: true,
+                ..serial
+            },
+            "{method}: serial against two threads"
+        );
+        if method == Method::Impulse {
+            let mut moved = world;
+            for _ in 0..steps {
+                moved.step(0.02);
+            }
+            let after = moved.metrics().momentum;
+            let scale: f64 = moved
+                .particles
+                .iter()
+                .map(|p| p.mass * p.vel.length())
+                .sum();
+            assert!(
+                (after - before).length() <= 1e-12 * scale,
+                "{before} -> {after}"
+            );
+        }
+    }
 }

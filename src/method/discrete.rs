@@ -12,12 +12,13 @@
 //!   by the positions (v = Δx / h), then boundaries; K times per step.
 //!
 //! For large scenes the per-disc and per-pair stages run on rayon's pool
-//! (`pipeline.parallel`, see [`crate::parallel`]); resolution stays in
-//! ascending pair order on one thread, so the result is the same bit for bit.
+//! (`pipeline.parallel`, see [`crate::parallel`]); resolution goes in
+//! ascending pair order, or for large contact lists band by band, side by
+//! side ([`crate::resolution::Banded`]); the result is the same bit for bit.
 
 use crate::ledger::Ledger;
 use crate::parallel::CHUNK;
-use crate::resolution::{resolve_contacts, Rule};
+use crate::resolution::Rule;
 use crate::stats::{Lap, StepStats};
 use crate::world::{Laws, Pipeline};
 use crate::Particle;
@@ -41,14 +42,7 @@ pub(crate) fn impulse_substep(
     }
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
-    let report = resolve_contacts(
-        particles,
-        &pipeline.contacts,
-        laws.restitution,
-        rule,
-        ledger,
-        time,
-    );
+    let report = pipeline.resolve(particles, laws, rule, (ledger, time));
     stats.pair_collisions += report.collisions;
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     stats.timings.resolution += lap.lap();
@@ -78,13 +72,12 @@ pub(crate) fn verlet_substep(
     stats.timings.integration += lap.lap();
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
-    let report = resolve_contacts(
+    // Projection changes no velocity: nothing to record.
+    let report = pipeline.resolve(
         particles,
-        &pipeline.contacts,
-        laws.restitution,
+        laws,
         Rule::PROJECTION,
-        &mut Ledger::default(), // projection changes no velocity: nothing to record
-        0.0,
+        (&mut Ledger::default(), 0.0),
     );
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     // Contacts that were projected count as collisions for the statistics.

@@ -15,6 +15,10 @@
 //! Overlap is then removed by moving the discs apart along n̂, each by a share
 //! proportional to its inverse mass, so the centre of mass does not move.
 
+mod bands;
+
+pub use bands::{band_of, Banded, BANDED_MIN_CONTACTS, BANDS};
+
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
 use crate::particle::Particle;
@@ -27,6 +31,16 @@ pub struct ResolutionReport {
     pub collisions: usize,
     /// Deepest overlap found (m).
     pub max_overlap: f64,
+}
+
+impl ResolutionReport {
+    /// Both reports together: collisions added, the deeper overlap.
+    pub fn merge(self, other: ResolutionReport) -> ResolutionReport {
+        ResolutionReport {
+            collisions: self.collisions + other.collisions,
+            max_overlap: self.max_overlap.max(other.max_overlap),
+        }
+    }
 }
 
 /// Which velocity changes a contact gets.
@@ -89,36 +103,50 @@ pub fn resolve_contacts(
     let mut report = ResolutionReport::default();
     for c in contacts {
         let (a, b) = pair_mut(particles, c.i as usize, c.j as usize);
-        let before = [a.vel, b.vel];
-        let collided = match rule.velocities {
-            Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
-            Velocities::Always => {
-                apply_collision_law(a, b, c.normal, restitution);
-                true
-            }
-            Velocities::Never => false,
-        };
-        report.collisions += usize::from(collided);
-        if collided && ledger.is_on() {
-            ledger.push(Collision {
-                time,
-                discs: [c.i as usize, c.j as usize],
-                normal: c.normal,
-                masses: [a.mass, b.mass],
-                before,
-                after: [a.vel, b.vel],
-            });
-        }
-        match rule.push_apart {
-            PushApart::InverseMass => push_apart(a, b, c.normal, c.depth),
-            PushApart::HalfEach => {
-                a.pos -= c.normal * (0.5 * c.depth);
-                b.pos += c.normal * (0.5 * c.depth);
-            }
-        }
-        report.max_overlap = report.max_overlap.max(c.depth);
+        resolve_contact(a, b, c, restitution, rule, (ledger, time), &mut report);
     }
     report
+}
+
+/// Resolves one contact between `a` (disc `c.i`) and `b` (disc `c.j`),
+/// adding to `report` and recording a collision in `ledger` at `time`.
+fn resolve_contact(
+    a: &mut Particle,
+    b: &mut Particle,
+    c: &Contact,
+    restitution: f64,
+    rule: Rule,
+    (ledger, time): (&mut Ledger, f64),
+    report: &mut ResolutionReport,
+) {
+    let before = [a.vel, b.vel];
+    let collided = match rule.velocities {
+        Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
+        Velocities::Always => {
+            apply_collision_law(a, b, c.normal, restitution);
+            true
+        }
+        Velocities::Never => false,
+    };
+    report.collisions += usize::from(collided);
+    if collided && ledger.is_on() {
+        ledger.push(Collision {
+            time,
+            discs: [c.i as usize, c.j as usize],
+            normal: c.normal,
+            masses: [a.mass, b.mass],
+            before,
+            after: [a.vel, b.vel],
+        });
+    }
+    match rule.push_apart {
+        PushApart::InverseMass => push_apart(a, b, c.normal, c.depth),
+        PushApart::HalfEach => {
+            a.pos -= c.normal * (0.5 * c.depth);
+            b.pos += c.normal * (0.5 * c.depth);
+        }
+    }
+    report.max_overlap = report.max_overlap.max(c.depth);
 }
 
 /// Applies the collision law along `normal` (from `a` to `b`) if the pair

@@ -15,11 +15,16 @@
 //! [`impulse::auto::PARALLEL_MIN_DISCS`] discs. Bytes per disc are the heap
 //! bytes the world holds after its warm-up steps (discs and every buffer of
 //! the pipeline), counted by the binary's global allocator
-//! ([`impulse::alloc_count`]). A last table measures the crossover behind
-//! `auto`'s thread rule: serial against parallel on the same pool.
+//! ([`impulse::alloc_count`]). Tables after it (`crossovers.rs`) measure the
+//! crossovers behind `auto`'s rules, among them serial against parallel on
+//! the same pool, and resolution on one thread against several in a crowded
+//! gas.
+
+mod crossovers;
 
 use super::chart::{write_chart, Chart, Series};
 use super::progress;
+use crossovers::{crossovers, crowded_resolution, thread_crossover};
 use impulse::alloc_count::live_bytes;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
@@ -150,6 +155,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             &[1_000, 2_000, 5_000, 10_000, 20_000, 50_000]
         };
         crossovers += &pools[1].install(|| thread_crossover(sizes, batch_seconds));
+        let sizes: &[usize] = if args.quick {
+            &[100_000]
+        } else {
+            &[100_000, 400_000, 1_000_000]
+        };
+        crossovers += &crowded_resolution(sizes, &pools[0], &pools[1]);
     }
     // (discs, collisions to run): the full run takes 10⁷ collisions at 10⁴
     // discs, where the energy target is set.
@@ -200,120 +211,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The measurements behind `auto`'s thresholds: brute force against the
-/// grid at small n, and the quadtree against the grid as radii spread.
-fn crossovers(batch_seconds: f64) -> String {
-    let mut out = String::from(
-        "\n| crossover: brute vs grid (impulse) | n | brute ns | grid ns |\n|---|---:|---:|---:|\n",
-    );
-    for n in [8, 16, 32, 64, 128, 256] {
-        let brute = measure(Method::Impulse, BroadPhaseKind::Brute, n, batch_seconds);
-        let grid = measure(Method::Impulse, BroadPhaseKind::Grid, n, batch_seconds);
-        let _ = writeln!(
-            out,
-            "| | {n} | {:.1} | {:.1} |",
-            brute.ns_per_particle_step, grid.ns_per_particle_step
-        );
-    }
-    out.push_str(
-        "\n| crossover: grid vs quadtree (impulse, 10,000 discs) | radii | grid ns | quadtree ns |\n|---|---|---:|---:|\n",
-    );
-    let spread = |ratio: f64| {
-        Gas {
-            count: 10_000,
-            radius_ratio: ratio,
-            ..Gas::default()
-        }
-        .build()
-    };
-    let giant = |ratio: f64| {
-        let mut world = Gas {
-            count: 10_000,
-            radius: 0.5 / ratio,
-            area_fraction: 0.3 / (ratio * ratio),
-            ..Gas::default()
-        }
-        .build();
-        world.particles[0].radius = 0.5;
-        world
-    };
-    // A dense gas of small discs with 1 % large ones (the small ones they
-    // would overlap removed): the grid's cells grow to the large diameter.
-    let bimodal = |ratio: f64, area_fraction: f64| {
-        let mut world = Gas {
-            count: 10_000,
-            radius: 0.5 / ratio,
-            area_fraction,
-            ..Gas::default()
-        }
-        .build();
-        let big: Vec<glam::DVec2> = world.particles.iter().step_by(100).map(|p| p.pos).collect();
-        world.particles.retain(|p| {
-            big.iter().all(|b| b.distance(p.pos) >= 0.5 + p.radius) || big.contains(&p.pos)
-        });
-        for p in world.particles.iter_mut().filter(|p| big.contains(&p.pos)) {
-            p.radius = 0.5;
-        }
-        world
-    };
-    let cases: [(String, impulse::World); 8] = [
-        ("log-uniform, max/min 4".into(), spread(4.0)),
-        ("log-uniform, max/min 16".into(), spread(16.0)),
-        ("log-uniform, max/min 64".into(), spread(64.0)),
-        ("one disc 4x the rest".into(), giant(4.0)),
-        ("one disc 16x the rest".into(), giant(16.0)),
-        ("one disc 64x the rest".into(), giant(64.0)),
-        (
-            "1 % of discs 8x the rest, sparse".into(),
-            bimodal(8.0, 0.3 / 64.0),
-        ),
-        ("1 % of discs 8x the rest, dense".into(), bimodal(8.0, 0.3)),
-    ];
-    for (name, world) in cases {
-        let time = |broad| {
-            let mut w = world.clone();
-            w.method = Setting::Fixed(Method::Impulse);
-            w.broad_phase = Setting::Fixed(broad);
-            time_world(&mut w, batch_seconds)
-        };
-        let (g, q) = (time(BroadPhaseKind::Grid), time(BroadPhaseKind::Quadtree));
-        let _ = writeln!(out, "| | {name} | {g:.1} | {q:.1} |");
-    }
-    out
-}
-
-/// The measurement behind `auto`'s thread rule: impulse / grid on the
-/// current pool, serial against parallel, as n grows.
-fn thread_crossover(sizes: &[usize], batch_seconds: f64) -> String {
-    let threads = rayon::current_num_threads();
-    let mut out = format!(
-        "\n| crossover: serial vs parallel (impulse / grid, {threads} threads) | n | serial ns | parallel ns | speed-up |\n|---|---:|---:|---:|---:|\n"
-    );
-    for &n in sizes {
-        let time = |parallel| {
-            let mut world = Gas {
-                count: n,
-                ..Gas::default()
-            }
-            .build();
-            world.method = Setting::Fixed(Method::Impulse);
-            world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
-            world.substeps = Setting::Fixed(1);
-            world.parallel = Setting::Fixed(parallel);
-            time_world(&mut world, batch_seconds)
-        };
-        let (serial, parallel) = (time(false), time(true));
-        let _ = writeln!(
-            out,
-            "| | {n} | {serial:.1} | {parallel:.1} | {:.2} |",
-            serial / parallel
-        );
-    }
-    out
-}
-
 /// Median ns per particle-step of `world` over a few batches.
-fn time_world(world: &mut impulse::World, batch_seconds: f64) -> f64 {
+pub(super) fn time_world(world: &mut impulse::World, batch_seconds: f64) -> f64 {
     let n = world.particles.len().max(1) as f64;
     let warm = Instant::now();
     world.step(DT);
