@@ -32,7 +32,7 @@ impl Sim {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
         if (b.vel - a.vel).dot(normal) < 0.0 {
-            let (ia, ib) = (self.inert[i as usize], self.inert[j as usize]);
+            let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
             let rapid = self.now - ia.last_hit < self.t_c || self.now - ib.last_hit < self.t_c;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
@@ -53,7 +53,7 @@ impl Sim {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
                 body.gen += 1;
-                self.inert[k as usize].last_hit = self.now;
+                self.aux[k as usize].last_hit = self.now;
             }
             self.collisions += 1;
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
@@ -102,11 +102,11 @@ impl Sim {
         ids.sort_unstable();
         ids.dedup();
         let slot = |k: u32| ids.binary_search(&k).unwrap_or(0);
-        let masses: Vec<f64> = ids.iter().map(|&k| self.inert[k as usize].mass).collect();
+        let masses: Vec<f64> = ids.iter().map(|&k| self.aux[k as usize].mass).collect();
         let velocities: Vec<DVec2> = ids.iter().map(|&k| self.bodies[k as usize].vel).collect();
         let rapid = ids
             .iter()
-            .any(|&k| self.now - self.inert[k as usize].last_hit < self.t_c);
+            .any(|&k| self.now - self.aux[k as usize].last_hit < self.t_c);
         let e = if rapid { 1.0 } else { self.laws.restitution };
         let list: Vec<simultaneous::Touch> = touches
             .iter()
@@ -136,7 +136,7 @@ impl Sim {
             let body = &mut self.bodies[k as usize];
             body.vel = v;
             body.gen += 1;
-            self.inert[k as usize].last_hit = self.now;
+            self.aux[k as usize].last_hit = self.now;
         }
         self.collisions += touches.len();
         for &k in &ids {
@@ -146,7 +146,7 @@ impl Sim {
 
     pub(super) fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
         self.advance_to(i, self.now);
-        let rapid = self.now - self.inert[i as usize].last_hit < self.t_c;
+        let rapid = self.now - self.aux[i as usize].last_hit < self.t_c;
         let e = if rapid {
             1.0
         } else {
@@ -161,11 +161,11 @@ impl Sim {
         };
         b.pos[axis] = if upper { size - b.radius } else { b.radius };
         if into_wall {
-            let inert = &mut self.inert[i as usize];
-            self.wall_impulse += inert.mass * (1.0 + e) * b.vel[axis].abs();
+            let aux = &mut self.aux[i as usize];
+            self.wall_impulse += aux.mass * (1.0 + e) * b.vel[axis].abs();
             b.vel[axis] *= -e;
             b.gen += 1;
-            inert.last_hit = self.now;
+            aux.last_hit = self.now;
             self.wall_hits += 1;
         }
         self.predict(i);

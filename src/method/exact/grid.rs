@@ -87,6 +87,17 @@ impl Grid {
         [clamp(rel.x, self.dims[0]), clamp(rel.y, self.dims[1])]
     }
 
+    /// Prefetches the list heads of the cells around cell `c` (three rows,
+    /// one cache line each, mostly).
+    pub(super) fn prefetch_around(&self, c: [i32; 2]) {
+        for dy in -1..=1 {
+            let row = c[1] + dy;
+            if row >= 0 && row < self.dims[1] && c[0] >= 0 && c[0] < self.dims[0] {
+                super::prefetch(&self.heads[self.index([c[0], row])]);
+            }
+        }
+    }
+
     pub(super) fn index(&self, c: [i32; 2]) -> usize {
         (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
     }

@@ -73,6 +73,14 @@ pub const OVERLAP_TOLERANCE: f64 = 1e-9;
 /// Two discs this close to touching (as a fraction of the two radii) when
 /// another collision happens count as colliding at the same instant.
 pub const SIMULTANEOUS_TOLERANCE: f64 = 1e-9;
+/// From this many discs, what the next events will read is prefetched while
+/// the present one is carried out. The discs then take about 150 bytes each
+/// in all, more than the 2 MB cache of a core, so a disc an event reads is
+/// usually not in it. Measured on the gas at 30 %, 10⁵ discs, runs with and
+/// without alternating, medians: 3.96 → 4.27 × 10⁵ collisions per second
+/// (20 pairs of runs), 3.52 → 3.65 (16 pairs, a busier hour). Below, the
+/// discs mostly fit the cache and the prefetches only cost instructions.
+pub const PREFETCH_MIN_DISCS: usize = 30_000;
 /// Most sweeps of push-apart per set-up; what is left waits for the next
 /// step, which starts afresh.
 pub const SEPARATION_SWEEPS: usize = 100;
@@ -139,6 +147,20 @@ impl Exact {
     }
 }
 
+/// Asks the memory for the cache line holding `value`; nothing else.
+#[inline(always)]
+fn prefetch<T>(value: &T) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch is only a hint: it reads nothing into the program
+    // and never faults, and SSE is part of every x86-64 processor.
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>((value as *const T).cast());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = value;
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Kind {
     /// Collision with `partner`, predicted when it had generation `gen`.
@@ -152,7 +174,7 @@ enum Kind {
 }
 
 /// A disc during a step: its state at its own local time. What predicting
-/// reads, and no more, in one cache line per disc; the rest is in [`Inert`].
+/// reads, and no more, in one cache line per disc; the rest is in [`Aux`].
 #[derive(Clone, Copy, Debug)]
 #[repr(align(64))]
 struct Body {
@@ -172,13 +194,20 @@ struct Body {
 // Predicting reads one cache line per neighbour.
 const _: () = assert!(std::mem::size_of::<Body>() == 64);
 
-/// What only a collision reads of a disc.
+/// What a disc's collisions and predictions read besides its [`Body`],
+/// together in half a cache line: a collision reads the masses, and the
+/// predictions right after it the pair guesses, of the same two discs.
 #[derive(Clone, Copy, Debug)]
-struct Inert {
+#[repr(align(32))]
+struct Aux {
     mass: f64,
     /// When it last collided (for the TC rule).
     last_hit: f64,
+    /// Its earliest pair collision, as last predicted.
+    guess: PairGuess,
 }
+
+const _: () = assert!(std::mem::size_of::<Aux>() == 32);
 
 struct Sim {
     laws: Laws,
@@ -187,12 +216,12 @@ struct Sim {
     t_c: f64,
     /// The discs in cell order; `order[k]` is body k's index in the caller's slice.
     bodies: Vec<Body>,
-    inert: Vec<Inert>,
+    aux: Vec<Aux>,
     order: Vec<u32>,
     grid: Grid,
     queue: EventQueue<Kind>,
-    /// Each disc's earliest pair collision, as last predicted.
-    guesses: Vec<PairGuess>,
+    /// Prefetch what coming events read ([`PREFETCH_MIN_DISCS`]).
+    prefetching: bool,
     cap: usize,
     events: usize,
     collisions: usize,
@@ -234,6 +263,9 @@ impl Sim {
             // The event stays queued while it is carried out: every branch
             // below re-predicts its owner, which replaces it.
             self.events += 1;
+            if self.prefetching {
+                self.prefetch_soon();
+            }
             let i = ev.owner;
             self.now = ev.time;
             match ev.kind {
@@ -258,6 +290,29 @@ impl Sim {
         }
     }
 
+    /// Asks the memory for what the events a bucket or three ahead will
+    /// read, so that it arrives while this one is carried out: the discs
+    /// of an event three buckets on (its body, the rest of it, its queue
+    /// node), then, one bucket on, its partner and the cell lists around it
+    /// (found through the lines fetched before).
+    #[inline]
+    fn prefetch_soon(&self) {
+        let far = self.queue.soon(3);
+        if far != queue::NIL {
+            prefetch(&self.bodies[far as usize]);
+            prefetch(&self.aux[far as usize]);
+            prefetch(self.queue.node_of(far));
+        }
+        let near = self.queue.soon(1);
+        if near != queue::NIL {
+            if let Some(Kind::Pair { partner, .. }) = self.queue.kind_of(near) {
+                prefetch(&self.bodies[partner as usize]);
+                prefetch(&self.aux[partner as usize]);
+            }
+            self.grid.prefetch_around(self.bodies[near as usize].cell);
+        }
+    }
+
     /// Open space: a disc left the grid's region; grow the grid round all.
     fn rebuild_grid(&mut self) {
         for j in 0..self.bodies.len() as u32 {
@@ -266,7 +321,7 @@ impl Sim {
         let as_particles: Vec<Particle> = self
             .bodies
             .iter()
-            .zip(&self.inert)
+            .zip(&self.aux)
             .map(|(b, c)| Particle::new(b.pos, b.vel, c.mass, b.radius, crate::Color::rgb(0, 0, 0)))
             .collect();
         self.grid = Grid::new(&as_particles, &self.laws);

@@ -51,7 +51,7 @@ impl Sim {
     /// around it (`i` must be at the current time). Events past the step
     /// stay queued for the steps after.
     pub(super) fn predict(&mut self, i: u32) {
-        self.guesses[i as usize] = self.scan(i, PairGuess::NONE, Reach::Around);
+        self.aux[i as usize].guess = self.scan(i, PairGuess::NONE, Reach::Around);
         self.schedule(i);
     }
 
@@ -59,12 +59,12 @@ impl Sim {
     /// cell along `axis`: its pair guess holds if its partner kept its
     /// course, and then only the cells new in reach are scanned.
     pub(super) fn predict_after_crossing(&mut self, i: u32, axis: usize, upper: bool) {
-        let guess = self.guesses[i as usize];
+        let guess = self.aux[i as usize].guess;
         let holds = guess.partner == NOBODY || self.bodies[guess.partner as usize].gen == guess.gen;
         if !holds || !self.grid.images_by_cell() {
             return self.predict(i);
         }
-        self.guesses[i as usize] = self.scan(i, guess, Reach::New { axis, upper });
+        self.aux[i as usize].guess = self.scan(i, guess, Reach::New { axis, upper });
         self.schedule(i);
     }
 
@@ -72,7 +72,7 @@ impl Sim {
     /// crossings.
     fn schedule(&mut self, i: u32) {
         let me = &self.bodies[i as usize];
-        let guess = self.guesses[i as usize];
+        let guess = self.aux[i as usize].guess;
         let mut best = (
             guess.time,
             Kind::Pair {

@@ -28,7 +28,7 @@ pub(super) struct Event<K> {
 }
 
 /// End of a list, or no list.
-const NIL: u32 = u32::MAX;
+pub(super) const NIL: u32 = u32::MAX;
 /// The disc's event waits in the overflow list.
 const OVERFLOW: u32 = u32::MAX - 1;
 /// Events per bucket aimed at, near the front of the queue.
@@ -276,6 +276,25 @@ impl<K: Copy> EventQueue<K> {
         for (owner, time, kind) in queued {
             self.link(owner, time, kind);
         }
+    }
+
+    /// The first disc in the bucket `ahead` buckets past the current one
+    /// ([`NIL`] if it is empty), whose event is likely to come soon.
+    #[inline]
+    pub fn soon(&self, ahead: u64) -> u32 {
+        self.heads[((self.cursor + ahead) & (self.ring_size() - 1)) as usize]
+    }
+
+    /// Disc `k`'s queue node, for prefetching it.
+    #[inline]
+    pub fn node_of(&self, k: u32) -> &impl Sized {
+        &self.nodes[k as usize]
+    }
+
+    /// What disc `k`'s event is, if it has one.
+    #[inline]
+    pub fn kind_of(&self, k: u32) -> Option<K> {
+        self.nodes[k as usize].kind
     }
 
     /// The earliest event, left in the queue.

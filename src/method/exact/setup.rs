@@ -7,8 +7,8 @@ use super::grid::Grid;
 use super::predict::PairGuess;
 use super::queue::EventQueue;
 use super::{
-    Body, Inert, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, SEPARATION_SWEEPS,
-    TC_FRACTION,
+    Aux, Body, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, PREFETCH_MIN_DISCS,
+    SEPARATION_SWEEPS, TC_FRACTION,
 };
 use crate::boundary::Boundary;
 use crate::particle::Particle;
@@ -24,11 +24,11 @@ impl Sim {
             now: 0.0,
             t_c: TC_FRACTION * dt,
             bodies: Vec::with_capacity(n),
-            inert: Vec::with_capacity(n),
+            aux: Vec::with_capacity(n),
             order: Vec::with_capacity(n),
             grid: Grid::new(particles, laws),
             queue: EventQueue::new(n),
-            guesses: vec![PairGuess::NONE; n],
+            prefetching: n >= PREFETCH_MIN_DISCS,
             cap: EVENTS_PER_DISC
                 .saturating_mul(n)
                 .saturating_add(EVENTS_BASE),
@@ -76,9 +76,10 @@ impl Sim {
                 cell,
                 next_in_cell: super::grid::NIL,
             });
-            sim.inert.push(Inert {
+            sim.aux.push(Aux {
                 mass: p.mass,
                 last_hit: f64::NEG_INFINITY,
+                guess: PairGuess::NONE,
             });
             sim.order.push(i);
             sim.grid.insert(&mut sim.bodies, k as u32, cell);
@@ -145,7 +146,7 @@ impl Sim {
         } else {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
-        let (ma, mb) = (self.inert[i as usize].mass, self.inert[j as usize].mass);
+        let (ma, mb) = (self.aux[i as usize].mass, self.aux[j as usize].mass);
         let total = ma + mb;
         self.bodies[i as usize].pos -= normal * (depth * mb / total);
         self.bodies[j as usize].pos += normal * (depth * ma / total);
@@ -164,7 +165,7 @@ impl Sim {
             && self
                 .order
                 .iter()
-                .zip(self.bodies.iter().zip(&self.inert))
+                .zip(self.bodies.iter().zip(&self.aux))
                 .all(|(&i, (b, c))| {
                     let p = &particles[i as usize];
                     p.pos == self.written_pos(b)
@@ -178,16 +179,14 @@ impl Sim {
     /// at the end time, which becomes time zero.
     pub(super) fn restart(&mut self, laws: &Laws, dt: f64) {
         let shift = self.finished_at;
-        for c in &mut self.inert {
-            c.last_hit -= shift;
+        for a in &mut self.aux {
+            a.last_hit -= shift;
+            a.guess.time -= shift;
         }
         for b in &mut self.bodies {
             b.time -= shift;
         }
         self.queue.shift_times(shift);
-        for guess in &mut self.guesses {
-            guess.time -= shift;
-        }
         self.laws = *laws; // restitutions may have changed
         self.now = 0.0;
         self.end = dt;
