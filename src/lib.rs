@@ -4,10 +4,12 @@
 //! of the physics can be tested headlessly. One call to [`World::step`] runs the
 //! pipeline, one module per stage:
 //!
-//! 1. [`broad_phase`]: which pairs *might* touch (O(n²) brute force for now);
+//! 1. [`broad_phase`]: which pairs *might* touch (brute force, grid, sort and
+//!    sweep, or quadtree);
 //! 2. [`narrow_phase`]: which of them overlap, with normal and depth;
 //! 3. [`resolution`]: elastic/inelastic impulses for approaching pairs, then an
-//!    inverse-mass push-apart that leaves the centre of mass where it was;
+//!    inverse-mass push-apart that leaves the centre of mass where it was
+//!    (large contact lists band by band, on several threads);
 //! 4. [`integration`]: semi-implicit Euler under gravity;
 //! 5. [`boundary`]: walls (reflection without creating energy), open space, or
 //!    a periodic torus.
@@ -15,7 +17,10 @@
 //! For large scenes the order-free stages run on several threads ([`parallel`]),
 //! with results that do not depend on how many.
 //!
-//! [`metrics`] measures the conserved quantities, [`stats`] what a step did and
+//! [`method`] holds the methods that run these stages (`seed`, `impulse`,
+//! `verlet`) and the event-driven `exact`, which keeps its own cells and
+//! event calendar; [`auto`] chooses among them. [`metrics`] measures the
+//! conserved quantities, [`stats`] what a step did and
 //! how long each stage took, and [`scene`] turns TOML scene files into worlds.
 #![warn(missing_docs)]
 
