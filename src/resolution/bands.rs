@@ -64,8 +64,9 @@ const APART: usize = BANDS;
 /// Resolution by bands, with its reusable scratch: the contacts grouped by band.
 #[derive(Clone, Debug)]
 pub struct Banded {
-    /// From this many contacts on, resolve by bands ([`BANDED_MIN_CONTACTS`]).
-    pub min_contacts: usize,
+    /// From this many contacts on, resolve by bands ([`BANDED_MIN_CONTACTS`];
+    /// the tests lower it).
+    min_contacts: usize,
     /// Per contact, its band, or [`APART`].
     keys: Vec<u8>,
     /// Per disc, the band it was claimed in while grouping.
@@ -90,7 +91,7 @@ impl Default for Banded {
 
 impl Banded {
     /// Resolves `contacts` like [`super::resolve_contacts`] does, but from
-    /// `min_contacts` contacts on band by band (see the module doc): side by
+    /// [`BANDED_MIN_CONTACTS`] contacts on band by band (see the module doc): side by
     /// side on rayon's pool if `parallel` and the ledger is off, otherwise on
     /// this thread in the same order (so the ledger records collisions in the
     /// order they were resolved). Either way the result is the same.

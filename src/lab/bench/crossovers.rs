@@ -104,10 +104,7 @@ pub(super) fn thread_crossover(sizes: &[usize], batch_seconds: f64) -> String {
                 count: n,
                 ..Gas::default()
             }
-            .build();
-            world.method = Setting::Fixed(Method::Impulse);
-            world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
-            world.substeps = Setting::Fixed(1);
+            .build_fixed(Method::Impulse, BroadPhaseKind::Grid);
             world.parallel = Setting::Fixed(parallel);
             time_world(&mut world, batch_seconds)
         };
