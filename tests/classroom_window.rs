@@ -13,7 +13,6 @@ use std::time::Duration;
 
 #[test]
 fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("presets") else {
         return;
     };
@@ -69,7 +68,6 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
 
 #[test]
 fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("panel") else {
         return;
     };
@@ -174,7 +172,6 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
 
 #[test]
 fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("lesson") else {
         return;
     };
@@ -247,7 +244,6 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
 
 #[test]
 fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("aim") else {
         return;
     };

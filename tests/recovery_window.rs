@@ -10,7 +10,7 @@ use impulse::Scene;
 use std::path::Path;
 use std::thread::sleep;
 use std::time::{Duration, Instant};
-use window_harness::{Sandbox, Xvfb, ONE_WINDOW};
+use window_harness::{Sandbox, Xvfb};
 
 /// Waits until the dump satisfies `ready`, and returns it.
 fn wait_for(
@@ -39,7 +39,6 @@ fn positions(scene: &Scene) -> Vec<[f64; 2]> {
 
 #[test]
 fn a_killed_window_is_offered_back_and_restored_exactly() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("recovery") else {
         return;
     };
@@ -107,7 +106,6 @@ fn a_killed_window_is_offered_back_and_restored_exactly() {
 
 #[test]
 fn a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("recovery-fail") else {
         return;
     };

@@ -16,7 +16,6 @@ use std::time::Duration;
 
 #[test]
 fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("launch") else {
         return;
     };
@@ -75,7 +74,6 @@ fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
 
 #[test]
 fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("zoom") else { return };
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_file(
@@ -146,7 +144,6 @@ fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
 
 #[test]
 fn space_pauses_n_steps_once_and_y_switches_the_method() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("pause") else {
         return;
     };
@@ -195,7 +192,6 @@ fn space_pauses_n_steps_once_and_y_switches_the_method() {
 
 #[test]
 fn screenshot_saves_the_frame_as_a_png() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("screenshot") else {
         return;
     };
@@ -220,7 +216,6 @@ fn screenshot_saves_the_frame_as_a_png() {
 
 #[test]
 fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
-    let _one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
     let Some(x) = Xvfb::start("gas") else { return };
     let dir = tempfile::tempdir().unwrap();
     let (csv, png) = (dir.path().join("times.csv"), dir.path().join("gas.png"));

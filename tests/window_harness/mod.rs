@@ -1,18 +1,19 @@
 //! What the window tests share: a private Xvfb, the `impulse` binary on it
 //! with a state dump, xdotool to drive it, and the camera maths to aim at
-//! world points. Two test binaries use it (`window.rs`, `classroom_window.rs`),
-//! each a part of it, hence the `dead_code` allowance.
+//! world points. The four window test binaries use it (`window.rs`,
+//! `classroom_window.rs`, `abuse_window.rs`, `recovery_window.rs`), each a
+//! part of it, hence the `dead_code` allowance.
 #![allow(dead_code)]
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
-use std::sync::Mutex;
+use std::sync::{Mutex, MutexGuard};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
 /// One window at a time: two cores cannot render several at a usable rate.
-pub static ONE_WINDOW: Mutex<()> = Mutex::new(());
+static ONE_WINDOW: Mutex<()> = Mutex::new(());
 
 pub fn have(program: &str) -> bool {
     Command::new("sh")
@@ -22,15 +23,20 @@ pub fn have(program: &str) -> bool {
         .is_ok_and(|s| s.success())
 }
 
-/// A private X server; killed when dropped.
+/// A private X server; killed when dropped. While it lives, its test holds
+/// [`ONE_WINDOW`], so the window tests of one binary run one at a time.
 pub struct Xvfb {
     pub child: Child,
     pub display: String,
+    _one: MutexGuard<'static, ()>,
 }
 
 impl Xvfb {
     /// Starts one, or returns `None` (after saying why) when it cannot here.
     pub fn start(test: &str) -> Option<Xvfb> {
+        // A test that failed while holding the lock poisoned it; the next
+        // one still runs.
+        let one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
         let missing: Vec<&str> = ["Xvfb", "xdotool"]
             .into_iter()
             .filter(|p| !have(p))
@@ -89,7 +95,11 @@ impl Xvfb {
             );
             sleep(Duration::from_millis(100));
         }
-        Some(Xvfb { child, display })
+        Some(Xvfb {
+            child,
+            display,
+            _one: one,
+        })
     }
 }
 
