@@ -25,12 +25,7 @@ while [ $# -gt 0 ]; do
     esac
 done
 mkdir -p "$out"
-display=":$((300 + RANDOM % 300))"
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill $xvfb 2>/dev/null' EXIT
-sleep 1
-export DISPLAY="$display"
+source scripts/xvfb.sh
 
 # Median of column $2 over the CSV rows of file $1 that match the overlay
 # state $3 (velocity,momentum,readouts), after skipping the first 10 of them.

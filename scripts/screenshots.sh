@@ -5,12 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
 bin=target/release/impulse
-display=":$((300 + RANDOM % 300))"
-Xvfb "$display" -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill $xvfb 2>/dev/null' EXIT
-sleep 1
-export DISPLAY="$display"
+source scripts/xvfb.sh
 
 # 1. The default scene with momentum arrows and the heavy disc selected
 #    (it starts at world (3, 5), which is pixel (270, 400) in the fitted view).
