@@ -98,6 +98,13 @@ impl Grid {
         }
     }
 
+    /// Whether cell `c` has neighbours on all sides without wrapping.
+    #[inline]
+    fn is_inner(&self, c: [i32; 2]) -> bool {
+        c[0] > 0 && c[0] < self.dims[0] - 1 && c[1] > 0 && c[1] < self.dims[1] - 1
+    }
+
+    #[inline]
     pub(super) fn index(&self, c: [i32; 2]) -> usize {
         (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
     }
@@ -148,6 +155,17 @@ impl Grid {
     /// when [`Grid::images_by_cell`]).
     #[inline]
     pub(super) fn for_each_neighbour(&self, c: [i32; 2], mut visit: impl FnMut(usize, DVec2)) {
+        if self.is_inner(c) {
+            // The common case: nine cells in three runs of three, unwrapped.
+            let row = self.dims[0] as usize;
+            let centre = self.index(c);
+            for middle in [centre - row, centre, centre + row] {
+                visit(middle - 1, DVec2::ZERO);
+                visit(middle, DVec2::ZERO);
+                visit(middle + 1, DVec2::ZERO);
+            }
+            return;
+        }
         let (xs, x_wraps, nx) = self.around(c[0], self.dims[0]);
         let (ys, y_wraps, ny) = self.around(c[1], self.dims[1]);
         let row = self.dims[0] as usize;
@@ -182,6 +200,21 @@ impl Grid {
             ahead = ahead.rem_euclid(n);
         }
         let across = 1 - axis;
+        if wrap == 0.0 && c[across] > 0 && c[across] < self.dims[across] - 1 {
+            // The common case: three neighbouring cells, unwrapped.
+            let mut cell = c;
+            cell[axis] = ahead;
+            let middle = self.index(cell);
+            let step = if across == 0 {
+                1
+            } else {
+                self.dims[0] as usize
+            };
+            for k in [middle - step, middle, middle + step] {
+                visit(k, DVec2::ZERO);
+            }
+            return;
+        }
         let (others, other_wraps, count) = self.around(c[across], self.dims[across]);
         for (&other, &other_wrap) in others[..count].iter().zip(&other_wraps) {
             let mut cell = [0; 2];
