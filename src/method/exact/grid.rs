@@ -155,7 +155,10 @@ impl Grid {
     /// when [`Grid::images_by_cell`]).
     #[inline]
     pub(super) fn for_each_neighbour(&self, c: [i32; 2], mut visit: impl FnMut(usize, DVec2)) {
-        if self.is_inner(c) {
+        if !self.is_inner(c) {
+            return self.for_each_neighbour_at_edge(c, visit);
+        }
+        {
             // The common case: nine cells in three runs of three, unwrapped.
             let row = self.dims[0] as usize;
             let centre = self.index(c);
@@ -164,8 +167,12 @@ impl Grid {
                 visit(middle, DVec2::ZERO);
                 visit(middle + 1, DVec2::ZERO);
             }
-            return;
         }
+    }
+
+    /// [`Grid::for_each_neighbour`] for any cell, wrapping or clipping at
+    /// the grid's edges.
+    fn for_each_neighbour_at_edge(&self, c: [i32; 2], mut visit: impl FnMut(usize, DVec2)) {
         let (xs, x_wraps, nx) = self.around(c[0], self.dims[0]);
         let (ys, y_wraps, ny) = self.around(c[1], self.dims[1]);
         let row = self.dims[0] as usize;
@@ -189,6 +196,37 @@ impl Grid {
         upper: bool,
         mut visit: impl FnMut(usize, DVec2),
     ) {
+        let ahead = c[axis] + if upper { 1 } else { -1 };
+        let across = 1 - axis;
+        let inner = (0..self.dims[axis]).contains(&ahead)
+            && c[across] > 0
+            && c[across] < self.dims[across] - 1;
+        if !inner {
+            return self.for_each_new_in_reach_at_edge(c, axis, upper, visit);
+        }
+        // The common case: three neighbouring cells, unwrapped.
+        let mut cell = c;
+        cell[axis] = ahead;
+        let middle = self.index(cell);
+        let step = if across == 0 {
+            1
+        } else {
+            self.dims[0] as usize
+        };
+        for k in [middle - step, middle, middle + step] {
+            visit(k, DVec2::ZERO);
+        }
+    }
+
+    /// [`Grid::for_each_new_in_reach`] for any cell, wrapping or clipping
+    /// at the grid's edges.
+    fn for_each_new_in_reach_at_edge(
+        &self,
+        c: [i32; 2],
+        axis: usize,
+        upper: bool,
+        mut visit: impl FnMut(usize, DVec2),
+    ) {
         let n = self.dims[axis];
         let mut ahead = c[axis] + if upper { 1 } else { -1 };
         let mut wrap = 0.0;
@@ -200,21 +238,6 @@ impl Grid {
             ahead = ahead.rem_euclid(n);
         }
         let across = 1 - axis;
-        if wrap == 0.0 && c[across] > 0 && c[across] < self.dims[across] - 1 {
-            // The common case: three neighbouring cells, unwrapped.
-            let mut cell = c;
-            cell[axis] = ahead;
-            let middle = self.index(cell);
-            let step = if across == 0 {
-                1
-            } else {
-                self.dims[0] as usize
-            };
-            for k in [middle - step, middle, middle + step] {
-                visit(k, DVec2::ZERO);
-            }
-            return;
-        }
         let (others, other_wraps, count) = self.around(c[across], self.dims[across]);
         for (&other, &other_wrap) in others[..count].iter().zip(&other_wraps) {
             let mut cell = [0; 2];
@@ -283,5 +306,79 @@ impl Grid {
             }
             j = bodies[j as usize].next_in_cell;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::particle::Color;
+
+    /// A grid of `dims` cells one metre wide (discs of radius 0.5).
+    fn grid(dims: [i32; 2], boundary: Boundary) -> Grid {
+        let size = DVec2::new(f64::from(dims[0]), f64::from(dims[1]));
+        let disc = Particle::new(
+            DVec2::splat(0.5),
+            DVec2::ZERO,
+            1.0,
+            0.5,
+            Color::rgb(0, 0, 0),
+        );
+        let laws = Laws {
+            size,
+            gravity: DVec2::ZERO,
+            restitution: 1.0,
+            wall_restitution: 1.0,
+            boundary,
+        };
+        let g = Grid::new(&vec![disc; (dims[0] * dims[1]) as usize], &laws);
+        assert_eq!(g.dims, dims);
+        g
+    }
+
+    fn cells(g: &Grid) -> impl Iterator<Item = [i32; 2]> + '_ {
+        (0..g.dims[1]).flat_map(move |y| (0..g.dims[0]).map(move |x| [x, y]))
+    }
+
+    #[test]
+    fn inner_cells_visit_what_the_edge_walk_visits_in_its_order() {
+        let mut inner = 0;
+        for boundary in [Boundary::Box, Boundary::Periodic] {
+            for dims in [[3, 3], [4, 3], [5, 6], [7, 4]] {
+                let g = grid(dims, boundary);
+                for c in cells(&g) {
+                    let (mut fast, mut general) = (Vec::new(), Vec::new());
+                    g.for_each_neighbour(c, |k, s| fast.push((k, s)));
+                    g.for_each_neighbour_at_edge(c, |k, s| general.push((k, s)));
+                    assert_eq!(fast, general, "{boundary:?} {dims:?} cell {c:?}");
+                    inner += usize::from(g.is_inner(c));
+                    for axis in 0..2 {
+                        for upper in [false, true] {
+                            let (mut fast, mut general) = (Vec::new(), Vec::new());
+                            g.for_each_new_in_reach(c, axis, upper, |k, s| fast.push((k, s)));
+                            g.for_each_new_in_reach_at_edge(c, axis, upper, |k, s| {
+                                general.push((k, s))
+                            });
+                            assert_eq!(fast, general, "{boundary:?} {dims:?} {c:?} {axis} {upper}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(inner > 20, "the inner path ran {inner} times");
+    }
+
+    #[test]
+    fn an_inner_cell_has_its_nine_neighbours_unshifted() {
+        let g = grid([5, 6], Boundary::Periodic);
+        let mut seen = Vec::new();
+        g.for_each_neighbour([2, 3], |k, s| {
+            assert_eq!(s, DVec2::ZERO);
+            seen.push(k);
+        });
+        let expected: Vec<usize> = (2..=4)
+            .flat_map(|y| (1..=3).map(move |x| y * 5 + x))
+            .collect();
+        assert_eq!(seen, expected);
     }
 }
