@@ -292,26 +292,56 @@ impl Sim {
     }
 
     /// Asks the memory for what the events a bucket or three ahead will
-    /// read, so that it arrives while this one is carried out: the discs
-    /// of an event three buckets on (its body, the rest of it, its queue
-    /// node), then, one bucket on, its partner and the cell lists around it
-    /// (found through the lines fetched before).
+    /// read, so that it arrives while this one is carried out. A bucket
+    /// holds about two events, a list linked through the queue nodes, so
+    /// each bucket is fetched one disc per event as it draws near, each
+    /// found through the node fetched the event before: the first disc
+    /// three buckets on (its body, the rest of it, its queue node), the
+    /// second two buckets on, the third one bucket on; and for the first
+    /// one bucket on, its partner and the cell lists around it.
     #[inline]
     fn prefetch_soon(&self) {
         let far = self.queue.soon(3);
         if far != queue::NIL {
-            prefetch(&self.bodies[far as usize]);
-            prefetch(&self.aux[far as usize]);
-            prefetch(self.queue.node_of(far));
+            self.prefetch_disc(far);
+        }
+        let first = self.queue.soon(2);
+        if first != queue::NIL {
+            let second = self.queue.next_of(first);
+            if second != queue::NIL {
+                self.prefetch_disc(second);
+            }
         }
         let near = self.queue.soon(1);
         if near != queue::NIL {
-            if let Some(Kind::Pair { partner, .. }) = self.queue.kind_of(near) {
-                prefetch(&self.bodies[partner as usize]);
-                prefetch(&self.aux[partner as usize]);
+            self.prefetch_surroundings(near);
+            let second = self.queue.next_of(near);
+            if second != queue::NIL {
+                let third = self.queue.next_of(second);
+                if third != queue::NIL {
+                    self.prefetch_disc(third);
+                }
             }
-            self.grid.prefetch_around(self.bodies[near as usize].cell);
         }
+    }
+
+    /// Prefetches disc `k`'s body, the rest of it and its queue node.
+    #[inline]
+    fn prefetch_disc(&self, k: u32) {
+        prefetch(&self.bodies[k as usize]);
+        prefetch(&self.aux[k as usize]);
+        prefetch(self.queue.node_of(k));
+    }
+
+    /// Prefetches the partner of disc `k`'s event and the cell lists
+    /// around `k`.
+    #[inline]
+    fn prefetch_surroundings(&self, k: u32) {
+        if let Some(Kind::Pair { partner, .. }) = self.queue.kind_of(k) {
+            prefetch(&self.bodies[partner as usize]);
+            prefetch(&self.aux[partner as usize]);
+        }
+        self.grid.prefetch_around(self.bodies[k as usize].cell);
     }
 
     /// Open space: a disc left the grid's region; grow the grid round all.

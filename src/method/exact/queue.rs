@@ -287,6 +287,12 @@ impl<K: Copy> EventQueue<K> {
         self.heads[((self.cursor + ahead) & (self.ring_size() - 1)) as usize]
     }
 
+    /// The disc after `k` in its bucket's list ([`NIL`] at the end).
+    #[inline]
+    pub fn next_of(&self, k: u32) -> u32 {
+        self.nodes[k as usize].next
+    }
+
     /// Disc `k`'s queue node, for prefetching it.
     #[inline]
     pub fn node_of(&self, k: u32) -> &impl Sized {
