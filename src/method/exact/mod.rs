@@ -338,8 +338,7 @@ impl Sim {
     #[inline]
     fn prefetch_surroundings(&self, k: u32) {
         if let Some(Kind::Pair { partner, .. }) = self.queue.kind_of(k) {
-            prefetch(&self.bodies[partner as usize]);
-            prefetch(&self.aux[partner as usize]);
+            self.prefetch_disc(partner);
         }
         self.grid.prefetch_around(self.bodies[k as usize].cell);
     }
