@@ -54,9 +54,13 @@ impl Xvfb {
         }
         // Xvfb picks a free display itself and writes its number on stdout
         // once it accepts connections (-displayfd), so stale lock files of
-        // killed servers and parallel runs cannot collide.
+        // killed servers and parallel runs cannot collide. By default an X
+        // server resets when its last client leaves, and a window opened
+        // during the reset fails (XOpenDisplay): -noreset, since a test may
+        // close its window and open another on the same server.
         let mut child = Command::new("Xvfb")
             .args([
+                "-noreset",
                 "-displayfd",
                 "1",
                 "-screen",
