@@ -16,8 +16,13 @@
 //!   from step to step and only checks that nothing was edited and moves
 //!   every disc to the end of the step; the first step after an edit costs
 //!   about 300 ns per disc, for sorting and predicting every disc afresh),
-//!   and a collision about 1.4 µs (2.43 events; 7–10·10⁵ collisions per
-//!   second at 10⁴ discs since the calendar queue, 4·10⁵ at 10⁵). Never where discs will come to rest in contact
+//!   and a collision 0.9–1.7 µs (2.43 events; 1.13·10⁶ collisions per
+//!   second at 10⁴ discs, whose events stay in cache, and 5.8·10⁵ at 10⁵,
+//!   in the bench run of 2026-11-22, 20:00 UTC). [`EXACT_COLLISION_NS`]
+//!   keeps 1.4 µs, between the two, as it was measured when the first
+//!   calendar queue made it 7–10·10⁵ at 10⁴ discs and 4·10⁵ at 10⁵; at
+//!   0.9 µs `auto` would choose `exact` for scenes about 1.5 times as busy.
+//!   Never where discs will come to rest in contact
 //!   (gravity with restitution below 1), because resting contact is an
 //!   endless sequence of events for an event-driven method.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
