@@ -158,15 +158,13 @@ impl Grid {
         if !self.is_inner(c) {
             return self.for_each_neighbour_at_edge(c, visit);
         }
-        {
-            // The common case: nine cells in three runs of three, unwrapped.
-            let row = self.dims[0] as usize;
-            let centre = self.index(c);
-            for middle in [centre - row, centre, centre + row] {
-                visit(middle - 1, DVec2::ZERO);
-                visit(middle, DVec2::ZERO);
-                visit(middle + 1, DVec2::ZERO);
-            }
+        // The common case: nine cells in three runs of three, unwrapped.
+        let row = self.dims[0] as usize;
+        let centre = self.index(c);
+        for middle in [centre - row, centre, centre + row] {
+            visit(middle - 1, DVec2::ZERO);
+            visit(middle, DVec2::ZERO);
+            visit(middle + 1, DVec2::ZERO);
         }
     }
 
@@ -198,10 +196,12 @@ impl Grid {
     ) {
         let ahead = c[axis] + if upper { 1 } else { -1 };
         let across = 1 - axis;
-        let inner = (0..self.dims[axis]).contains(&ahead)
+        // The row (or column) ahead exists without wrapping, and has a
+        // cell on each side of the one ahead.
+        let unwrapped_ahead = (0..self.dims[axis]).contains(&ahead)
             && c[across] > 0
             && c[across] < self.dims[across] - 1;
-        if !inner {
+        if !unwrapped_ahead {
             return self.for_each_new_in_reach_at_edge(c, axis, upper, visit);
         }
         // The common case: three neighbouring cells, unwrapped.

@@ -305,21 +305,21 @@ impl Sim {
         if far != queue::NIL {
             self.prefetch_disc(far);
         }
-        let first = self.queue.soon(2);
-        if first != queue::NIL {
-            let second = self.queue.next_of(first);
-            if second != queue::NIL {
-                self.prefetch_disc(second);
+        let middle = self.queue.soon(2);
+        if middle != queue::NIL {
+            let its_second = self.queue.next_of(middle);
+            if its_second != queue::NIL {
+                self.prefetch_disc(its_second);
             }
         }
         let near = self.queue.soon(1);
         if near != queue::NIL {
             self.prefetch_surroundings(near);
-            let second = self.queue.next_of(near);
-            if second != queue::NIL {
-                let third = self.queue.next_of(second);
-                if third != queue::NIL {
-                    self.prefetch_disc(third);
+            let its_second = self.queue.next_of(near);
+            if its_second != queue::NIL {
+                let its_third = self.queue.next_of(its_second);
+                if its_third != queue::NIL {
+                    self.prefetch_disc(its_third);
                 }
             }
         }
