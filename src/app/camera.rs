@@ -16,8 +16,11 @@ pub struct Camera {
     pub center: DVec2,
     /// Zoom: pixels per metre.
     pub scale: f64,
-    /// Viewport size (px).
+    /// Size of the world's rectangle on screen (px): the part of the window
+    /// the docked panels leave free.
     pub viewport: DVec2,
+    /// Top-left corner of that rectangle in the window (px).
+    pub origin: DVec2,
 }
 
 impl Camera {
@@ -28,6 +31,7 @@ impl Camera {
             center: DVec2::ZERO,
             scale: 1.0,
             viewport,
+            origin: DVec2::ZERO,
         };
         camera.fit(size, margin);
         camera
@@ -42,27 +46,32 @@ impl Camera {
         self.center = 0.5 * size;
     }
 
-    /// Shows the whole box in the viewport less `right` pixels on its right
-    /// (where a panel covers it), centred in what is left.
-    pub fn fit_left_of(&mut self, size: DVec2, margin: f64, right: f64) {
-        let full = self.viewport;
-        let right = right.clamp(0.0, (full.x - 1.0).max(0.0));
-        self.viewport.x = full.x - right;
-        self.fit(size, margin);
-        self.viewport = full;
-        // The viewport's centre is `right / 2` pixels right of the free area's.
-        self.center.x += 0.5 * right / self.scale;
+    /// Moves the world's rectangle to `origin` with size `size` (px),
+    /// keeping the world point at its centre.
+    pub fn set_rect(&mut self, origin: DVec2, size: DVec2) {
+        self.origin = origin;
+        self.viewport = size.max(DVec2::ONE);
+    }
+
+    /// The world's rectangle on screen: top-left and bottom-right corners (px).
+    pub fn screen_rect(&self) -> (DVec2, DVec2) {
+        (self.origin, self.origin + self.viewport)
+    }
+
+    /// The centre of the world's rectangle on screen (px).
+    pub fn screen_center(&self) -> DVec2 {
+        self.origin + 0.5 * self.viewport
     }
 
     /// Screen pixel of a world point.
     pub fn world_to_screen(&self, world: DVec2) -> DVec2 {
         let d = (world - self.center) * self.scale;
-        0.5 * self.viewport + DVec2::new(d.x, -d.y)
+        self.screen_center() + DVec2::new(d.x, -d.y)
     }
 
     /// World point under a screen pixel.
     pub fn screen_to_world(&self, screen: DVec2) -> DVec2 {
-        let d = screen - 0.5 * self.viewport;
+        let d = screen - self.screen_center();
         self.center + DVec2::new(d.x, -d.y) / self.scale
     }
 
@@ -120,22 +129,21 @@ mod tests {
     }
 
     #[test]
-    fn fit_beside_a_panel_centres_the_box_in_the_free_part() {
+    fn a_world_rectangle_inside_the_window_is_fitted_and_mapped() {
         let mut c = camera();
-        c.fit_left_of(DVec2::new(16.0, 10.0), 30.0, 300.0);
+        c.set_rect(DVec2::new(0.0, 40.0), DVec2::new(960.0, 560.0));
+        c.fit(DVec2::new(16.0, 10.0), 30.0);
         let (a, b) = (
-            c.world_to_screen(DVec2::ZERO),
-            c.world_to_screen(DVec2::new(16.0, 10.0)),
+            c.world_to_screen(DVec2::new(0.0, 10.0)),
+            c.world_to_screen(DVec2::new(16.0, 0.0)),
         );
-        assert!((a.x - 30.0).abs() < 1e-9, "{a}");
-        assert!(
-            (b.x - 950.0).abs() < 1e-9,
-            "{b}: stops 30 px short of the panel"
-        );
-        assert!(a.y <= 770.0 + 1e-9 && b.y >= 30.0 - 1e-9);
-        let mut plain = camera();
-        plain.fit_left_of(DVec2::new(16.0, 10.0), 40.0, 0.0);
-        assert_eq!(plain, camera(), "no panel: the plain fit");
+        // 500 px of height for 10 m: 50 px/m, so 800 px for 16 m, centred.
+        assert!((c.scale - 50.0).abs() < 1e-9, "{}", c.scale);
+        assert!((a.y - 70.0).abs() < 1e-9 && (b.y - 570.0).abs() < 1e-9, "{a} {b}");
+        assert!((a.x - 80.0).abs() < 1e-9 && (b.x - 880.0).abs() < 1e-9, "{a} {b}");
+        let p = DVec2::new(123.0, 456.0);
+        assert!((c.world_to_screen(c.screen_to_world(p)) - p).length() < 1e-9);
+        assert_eq!(c.screen_rect(), (DVec2::new(0.0, 40.0), DVec2::new(960.0, 600.0)));
     }
 
     #[test]

@@ -4,6 +4,11 @@
 //! steps by the same `dt`. An accumulator carries the remainder between
 //! frames, and a cap on catch-up steps keeps a slow frame from triggering an
 //! ever-growing backlog (the simulation slows down instead of freezing).
+//!
+//! The frame budget: physics may take no more of a frame than the rest of
+//! the previous frame took (drawing, presenting, the panels), so it gets at
+//! most half of each frame; steps beyond the budget are dropped, not owed,
+//! and [`RealtimeMeter`] measures how fast simulated time then goes.
 
 /// Time-scale presets, slowest first.
 pub const TIME_SCALES: [f64; 9] = [0.01, 0.03, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0];
@@ -91,6 +96,52 @@ impl FixedStepClock {
     }
 }
 
+/// The wall-clock time (s) the physics of a frame may take: what the rest of
+/// the previous frame took. A frame always runs at least one due step.
+pub fn physics_budget(previous_frame: f64, previous_physics: f64) -> f64 {
+    (previous_frame - previous_physics).max(0.0)
+}
+
+/// Seconds of running frames the ratio of simulated to real time covers.
+const METER_WINDOW: f64 = 2.0;
+
+/// Simulated seconds per real second over the last two seconds of running
+/// (frames that were paused, rewound or jumped back are left out).
+#[derive(Clone, Debug, Default)]
+pub struct RealtimeMeter {
+    frames: std::collections::VecDeque<(f64, f64)>,
+    real: f64,
+    simulated: f64,
+}
+
+impl RealtimeMeter {
+    /// Adds a frame that lasted `real` seconds and advanced the simulation
+    /// by `simulated` seconds; `running` is false for a paused frame.
+    pub fn push(&mut self, real: f64, simulated: f64, running: bool) {
+        if !running || !(real > 0.0 && real.is_finite()) || !(simulated >= 0.0) {
+            return;
+        }
+        self.frames.push_back((real, simulated));
+        self.real += real;
+        self.simulated += simulated;
+        while self.real > METER_WINDOW {
+            let Some((r, s)) = self.frames.pop_front() else { break };
+            self.real -= r;
+            self.simulated -= s;
+        }
+    }
+
+    /// Forgets the past (the time scale changed, a scene opened).
+    pub fn clear(&mut self) {
+        *self = RealtimeMeter::default();
+    }
+
+    /// The ratio, once half a second of running frames has been seen.
+    pub fn ratio(&self) -> Option<f64> {
+        (self.real >= 0.5).then(|| self.simulated / self.real)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -119,6 +170,31 @@ mod tests {
             "no backlog carried over"
         );
         assert_eq!(clock.advance(f64::NAN), 0);
+    }
+
+    #[test]
+    fn the_budget_is_the_rest_of_the_previous_frame() {
+        assert_eq!(physics_budget(0.5, 0.3), 0.2);
+        assert_eq!(physics_budget(0.1, 0.2), 0.0);
+    }
+
+    #[test]
+    fn the_meter_gives_simulated_over_real_time_of_running_frames() {
+        let mut meter = RealtimeMeter::default();
+        assert_eq!(meter.ratio(), None);
+        for _ in 0..30 {
+            meter.push(0.1, 0.03, true);
+            meter.push(0.1, 0.0, false); // paused: not counted
+        }
+        assert!((meter.ratio().unwrap() - 0.3).abs() < 1e-9);
+        for _ in 0..30 {
+            meter.push(0.1, 0.1, true);
+        }
+        assert!((meter.ratio().unwrap() - 1.0).abs() < 1e-9, "only the last two seconds count");
+        meter.push(0.1, -5.0, true); // a jump back: left out
+        assert!((meter.ratio().unwrap() - 1.0).abs() < 1e-9);
+        meter.clear();
+        assert_eq!(meter.ratio(), None);
     }
 
     #[test]

@@ -38,7 +38,7 @@ pub fn instances(
     for (i, p) in world.particles.iter().enumerate() {
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius).max(MIN_DISC_PIXELS);
-        if !circle_on_screen(c, r, camera.viewport) {
+        if !circle_on_screen(c, r, camera.screen_rect()) {
             continue;
         }
         let k = color(i);

@@ -7,6 +7,7 @@ use super::camera::Camera;
 use super::cull::{arrow_readable, circle_on_screen, MIN_DISC_PIXELS};
 use super::discs::{self, DiscBatch};
 use super::interaction::{launch_velocity, NewDisc};
+use super::ui::theme::WorldColors;
 use glam::DVec2;
 use impulse::{Boundary, World};
 use macroquad::prelude::*;
@@ -54,14 +55,6 @@ pub struct Overlays {
     pub momentum: bool,
     /// Text readouts.
     pub readouts: ReadoutScope,
-    /// The totals panel.
-    pub hud: bool,
-    /// The key list.
-    pub help: bool,
-    /// The preset menu.
-    pub presets: bool,
-    /// Projector mode: thick lines (the fonts grow too).
-    pub thick: bool,
     /// Colour discs by the colour-blind-safe palette, not the scene's colours.
     pub safe_palette: bool,
 }
@@ -72,49 +65,54 @@ impl Default for Overlays {
             velocity: true,
             momentum: false,
             readouts: ReadoutScope::Selected,
-            hud: true,
-            help: false,
-            presets: false,
-            thick: false,
             safe_palette: false,
         }
     }
 }
 
-pub const VELOCITY_COLOR: Color = Color::new(1.0, 1.0, 1.0, 0.9);
-pub const MOMENTUM_COLOR: Color = Color::new(1.0, 0.35, 0.75, 0.95);
-const WALL_COLOR: Color = Color::new(0.85, 0.88, 0.95, 1.0);
-const SELECTED_COLOR: Color = Color::new(1.0, 1.0, 1.0, 1.0);
+/// How the world is drawn this frame: the theme's colours and the UI scale
+/// (line widths and text grow with it).
+#[derive(Clone, Copy, Debug)]
+pub struct Look {
+    pub colors: WorldColors,
+    pub scale: f32,
+}
+
+/// A theme colour as macroquad's.
+pub fn color(c: [f32; 4]) -> Color {
+    Color::new(c[0], c[1], c[2], c[3])
+}
 
 fn px(v: DVec2) -> Vec2 {
     vec2(v.x as f32, v.y as f32)
 }
 
 /// The walls (solid for a box, dashed for periodic, faint for open space).
-pub fn draw_boundary(world: &World, camera: &Camera) {
+pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
     let a = px(camera.world_to_screen(DVec2::new(0.0, world.size.y)));
     let b = px(camera.world_to_screen(DVec2::new(world.size.x, 0.0)));
     let (w, h) = (b.x - a.x, b.y - a.y);
-    draw_rectangle(a.x, a.y, w, h, Color::new(1.0, 1.0, 1.0, 0.03));
+    draw_rectangle(a.x, a.y, w, h, color(look.colors.inside));
+    let wall = color(look.colors.wall);
     match world.boundary {
-        Boundary::Box => draw_rectangle_lines(a.x, a.y, w, h, 3.0, WALL_COLOR),
+        Boundary::Box => draw_rectangle_lines(a.x, a.y, w, h, 3.0 * look.scale, wall),
         Boundary::Periodic | Boundary::Open => {
-            let color = Color::new(0.85, 0.88, 0.95, 0.35);
+            let faint = Color { a: 0.45, ..wall };
             let corners = [a, vec2(b.x, a.y), b, vec2(a.x, b.y), a];
             for edge in corners.windows(2) {
-                dashed_line(edge[0], edge[1], 12.0, color);
+                dashed_line(edge[0], edge[1], 12.0, 2.0 * look.scale, faint);
             }
         }
     }
 }
 
-fn dashed_line(from: Vec2, to: Vec2, dash: f32, color: Color) {
+fn dashed_line(from: Vec2, to: Vec2, dash: f32, width: f32, color: Color) {
     let length = from.distance(to);
     let dashes = ((length / dash) as usize).min(2000);
     for k in (0..dashes).step_by(2) {
         let s = from.lerp(to, k as f32 / dashes as f32);
         let e = from.lerp(to, (k + 1) as f32 / dashes as f32);
-        draw_line(s.x, s.y, e.x, e.y, 2.0, color);
+        draw_line(s.x, s.y, e.x, e.y, width, color);
     }
 }
 
@@ -126,26 +124,27 @@ pub fn draw_discs(
     selected: Option<usize>,
     overlays: &Overlays,
     batch: &mut DiscBatch,
+    look: Look,
 ) {
-    let color = |i: usize| {
+    let disc_color = |i: usize| {
         if overlays.safe_palette {
             impulse::Color::palette(i)
         } else {
             world.particles[i].color
         }
     };
-    discs::instances(world, camera, color, &mut batch.instances);
+    discs::instances(world, camera, disc_color, &mut batch.instances);
     batch.draw();
     let Some(p) = selected.and_then(|i| world.particles.get(i)) else {
         return;
     };
     let c = camera.world_to_screen(p.pos);
     let r = camera.length_in_pixels(p.radius).max(MIN_DISC_PIXELS);
-    if circle_on_screen(c, r + 3.0, camera.viewport) {
+    if circle_on_screen(c, r + 3.0, camera.screen_rect()) {
         let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
-        let width = if overlays.thick { 5.0 } else { 2.5 };
+        let width = 2.5 * look.scale;
         let c = px(c);
-        draw_poly_lines(c.x, c.y, sides, r as f32 + 3.0, 0.0, width, SELECTED_COLOR);
+        draw_poly_lines(c.x, c.y, sides, r as f32 + 3.0, 0.0, width, color(look.colors.selected));
     }
 }
 
@@ -164,31 +163,84 @@ pub fn arrow(from: Vec2, to: Vec2, thickness: f32, color: Color) {
     draw_triangle(to, base + side, base - side, color);
 }
 
+/// The outline of a wide arrow between two screen points (a shaft
+/// `2 × half_width` wide and a head), drawn hollow so that a thin arrow
+/// drawn along it stays visible: the momentum arrow under the velocity arrow
+/// of a disc of average mass, where the two coincide exactly.
+pub fn hollow_arrow(from: Vec2, to: Vec2, half_width: f32, line: f32, color: Color) {
+    let d = to - from;
+    let len = d.length();
+    if len < 1.0 {
+        return;
+    }
+    let dir = d / len;
+    let side = vec2(-dir.y, dir.x);
+    let head = (5.0 * half_width).min(0.6 * len);
+    let base = to - dir * head;
+    let outline = [
+        from + side * half_width,
+        base + side * half_width,
+        base + side * 2.4 * half_width,
+        to,
+        base - side * 2.4 * half_width,
+        base - side * half_width,
+        from - side * half_width,
+        from + side * half_width,
+    ];
+    for edge in outline.windows(2) {
+        draw_line(edge[0].x, edge[0].y, edge[1].x, edge[1].y, line, color);
+    }
+}
+
 /// Velocity and momentum arrows, as toggled; only those long enough to read
-/// ([`super::cull::MIN_ARROW_PIXELS`]) and crossing the screen.
-pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays) {
+/// ([`super::cull::MIN_ARROW_PIXELS`]) and crossing the world's rectangle.
+/// Momentum arrows are wide and hollow and drawn first, so a velocity arrow
+/// lying along one shows inside it.
+pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Look) {
     if !(overlays.velocity || overlays.momentum) || world.particles.is_empty() {
         return;
     }
     // Momentum arrows share the velocity scale for a disc of average mass.
     let mean_mass =
         world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
-    let thickness = if overlays.thick { 2.0 } else { 1.0 };
-    for p in &world.particles {
-        let c = camera.world_to_screen(p.pos);
-        if overlays.velocity {
-            let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
-            if arrow_readable(c, tip, camera.viewport) {
-                arrow(px(c), px(tip), 2.0 * thickness, VELOCITY_COLOR);
-            }
-        }
-        if overlays.momentum {
+    let s = look.scale;
+    let rect = camera.screen_rect();
+    if overlays.momentum {
+        let pink = color(look.colors.momentum);
+        for p in &world.particles {
+            let c = camera.world_to_screen(p.pos);
             let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
-            if arrow_readable(c, tip, camera.viewport) {
-                arrow(px(c), px(tip), 3.0 * thickness, MOMENTUM_COLOR);
+            if arrow_readable(c, tip, rect) {
+                hollow_arrow(px(c), px(tip), 4.0 * s, 2.0 * s, pink);
             }
         }
     }
+    if overlays.velocity {
+        let white = color(look.colors.velocity);
+        for p in &world.particles {
+            let c = camera.world_to_screen(p.pos);
+            let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
+            if arrow_readable(c, tip, rect) {
+                arrow(px(c), px(tip), 2.0 * s, white);
+            }
+        }
+    }
+}
+
+/// The centre of mass as a cross in a circle, with its velocity arrow.
+pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64, scale: f32) {
+    if world.particles.is_empty() {
+        return;
+    }
+    const COM_COLOR: Color = Color::new(0.94, 0.89, 0.26, 1.0); // yellow
+    let m = world.metrics();
+    let c = camera.world_to_screen(m.center_of_mass);
+    let (x, y, s) = (c.x as f32, c.y as f32, scale);
+    draw_circle_lines(x, y, 9.0 * s, 2.0 * s, COM_COLOR);
+    draw_line(x - 12.0 * s, y, x + 12.0 * s, y, 2.0 * s, COM_COLOR);
+    draw_line(x, y - 12.0 * s, x, y + 12.0 * s, 2.0 * s, COM_COLOR);
+    let tip = c + camera.vector_to_screen(m.center_of_mass_velocity * arrow_seconds);
+    arrow(vec2(x, y), px(tip), 3.0 * s, COM_COLOR);
 }
 
 /// The disc about to be launched, its arrow and speed.
@@ -198,7 +250,8 @@ pub fn draw_launch_preview(
     start: DVec2,
     cursor: DVec2,
     new_disc: NewDisc,
-    font: f32,
+    look: Look,
+    text: &super::readouts::WorldText,
 ) {
     let spot = world.free_spot_near(start, new_disc.radius);
     let at = px(camera.world_to_screen(spot.unwrap_or(start)));
@@ -211,10 +264,10 @@ pub fn draw_launch_preview(
     draw_poly(at.x, at.y, 40, r, 0.0, ghost);
     let velocity = launch_velocity(start, cursor);
     let tip = camera.world_to_screen(start) + camera.vector_to_screen(velocity * ARROW_SECONDS);
-    arrow(at, px(tip), 3.0, Color::new(1.0, 0.9, 0.3, 1.0));
+    arrow(at, px(tip), 3.0 * look.scale, Color::new(1.0, 0.75, 0.0, 1.0));
     let label = match spot {
-        Some(_) => format!("{:.2} m/s", velocity.length()),
+        Some(_) => super::ui::numbers::with_unit(velocity.length(), 2, "m/s"),
         None => "no room here".to_string(),
     };
-    draw_text(&label, tip.x as f32 + 8.0, tip.y as f32 - 8.0, font, WHITE);
+    super::readouts::launch_label(text, &label, px(tip), look);
 }

@@ -4,10 +4,7 @@
 use super::camera::Camera;
 use crate::files::write_atomically;
 use impulse::{Metrics, Particle, World};
-use macroquad::prelude::{
-    render_target_msaa, screen_height, screen_width, set_camera, set_default_camera, Camera2D,
-    Rect, RenderTarget,
-};
+use macroquad::prelude::get_screen_data;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -59,11 +56,17 @@ pub struct StateDump<'a> {
     pub gravity: [f64; 2],
     /// Edges: "box", "open" or "periodic".
     pub boundary: String,
-    /// Whether the side panel is shown.
+    /// Whether the side dock (the controls) is shown.
     pub panel_visible: bool,
-    /// Screen rectangles [x, y, width, height] (px) of the panel and of its
-    /// sliders' tracks, text fields and buttons, by name; empty when hidden.
-    pub panel_widgets: BTreeMap<&'static str, [f32; 4]>,
+    /// Screen rectangles [x, y, width, height] (px) of named widgets drawn
+    /// this frame: sliders, text fields, buttons, tabs, table cells.
+    pub panel_widgets: BTreeMap<String, [f32; 4]>,
+    /// Where the world and every panel went, and the smallest text drawn.
+    pub layout: super::ui::Layout,
+    /// Which panels, tabs and popups are open; messages shown.
+    pub ui: UiDump,
+    /// How fast simulated time goes, and what the top bar says about it.
+    pub realtime: RealtimeDump,
     /// Medians of the recent frames' timings (ms).
     pub timing: super::frame_stats::TimingSummary,
     /// Autosave: the recovery file, saves written, the last failure, and
@@ -75,6 +78,36 @@ pub struct StateDump<'a> {
     pub metrics: Metrics,
     /// Every disc.
     pub particles: &'a [Particle],
+}
+
+/// The panels in a dump.
+#[derive(Default, Serialize)]
+pub struct UiDump {
+    pub docks_open: bool,
+    pub side_open: bool,
+    pub dock_expanded: bool,
+    pub tab: String,
+    pub help_open: bool,
+    pub presets_open: bool,
+    pub theme: String,
+    /// A text field has the keyboard.
+    pub typing: bool,
+    /// The Discs table's last message.
+    pub table_note: Option<String>,
+    /// The message in the strip under the world, while shown.
+    pub message: Option<String>,
+}
+
+/// The frame budget in a dump.
+#[derive(Default, Serialize)]
+pub struct RealtimeDump {
+    /// Simulated seconds per real second over the last two seconds running.
+    pub ratio: Option<f64>,
+    /// What the top bar says ("running at 0.31× real time"), if anything.
+    pub shown: Option<String>,
+    pub steps_last_frame: u32,
+    /// Steps due last frame that the frame budget dropped.
+    pub steps_dropped: u32,
 }
 
 /// Autosave in a dump.
@@ -89,12 +122,14 @@ pub struct RecoveryDump {
 /// The camera in a dump.
 #[derive(Serialize)]
 pub struct CameraDump {
-    /// World point at the viewport centre.
+    /// World point at the centre of the world's rectangle.
     pub center: [f64; 2],
     /// Pixels per metre.
     pub scale: f64,
-    /// Viewport (px).
+    /// Size of the world's rectangle (px).
     pub viewport: [f64; 2],
+    /// Its top-left corner in the window (px).
+    pub origin: [f64; 2],
 }
 
 impl From<&Camera> for CameraDump {
@@ -103,6 +138,7 @@ impl From<&Camera> for CameraDump {
             center: c.center.to_array(),
             scale: c.scale,
             viewport: c.viewport.to_array(),
+            origin: c.origin.to_array(),
         }
     }
 }
@@ -135,6 +171,9 @@ impl<'a> StateDump<'a> {
             boundary: world.boundary.name().to_string(),
             panel_visible: false,
             panel_widgets: BTreeMap::new(),
+            layout: Default::default(),
+            ui: UiDump::default(),
+            realtime: RealtimeDump::default(),
             timing: Default::default(),
             recovery: RecoveryDump::default(),
             size: world.size.to_array(),
@@ -150,26 +189,13 @@ pub fn write_state(path: &Path, dump: &StateDump) -> std::io::Result<()> {
     write_atomically(path, &json)
 }
 
-/// Sends the rest of this frame to an off-screen target of the window's
-/// size, so that once the frame is finished it can be read back whole:
-/// macroquad's UI (the side panel) is drawn at the very end of a frame, after
-/// the program's code, so reading the screen from the code would miss it.
-/// The window shows nothing for that frame; [`finished_frame`] reads it once
-/// the next frame has begun.
-pub fn capture_frame() -> RenderTarget {
-    let (w, h) = (screen_width(), screen_height());
-    let target = render_target_msaa(w as u32, h as u32);
-    set_camera(&Camera2D {
-        render_target: Some(target.clone()),
-        ..Camera2D::from_display_rect(Rect::new(0.0, 0.0, w, h))
-    });
-    target
-}
+/// A frame read back: width, height and RGBA rows bottom-up.
+pub type ScreenImage = (u32, u32, Vec<u8>);
 
-/// What [`capture_frame`] caught: width, height and RGBA rows bottom-up.
-pub fn finished_frame(target: &RenderTarget) -> (u32, u32, Vec<u8>) {
-    set_default_camera();
-    let image = target.texture.get_texture_data();
+/// The window's frame as drawn so far (world and panels), read back from
+/// the framebuffer; call it after the panels are drawn.
+pub fn screen_image() -> ScreenImage {
+    let image = get_screen_data();
     (u32::from(image.width), u32::from(image.height), image.bytes)
 }
 

@@ -75,8 +75,8 @@ impl App {
             self.quit = true;
             return;
         }
-        if self.panel.typing {
-            return; // the keys went into a text field of the panel
+        if self.ui.typing {
+            return; // the keys went into a text field
         }
         if self.answer_recovery_offer() {
             return;
@@ -125,21 +125,23 @@ impl App {
             return;
         }
         if let Some(k) = DIGITS.iter().position(|&key| is_key_pressed(key)) {
-            self.overlays.presets = false;
+            self.ui.presets_open = false;
             self.open_preset(k);
         }
         if is_key_pressed(KeyCode::P) {
-            self.overlays.presets = !self.overlays.presets;
+            self.ui.presets_open = !self.ui.presets_open;
         }
     }
 
     fn handle_view_keys(&mut self) {
-        let centre = 0.5 * self.camera.viewport;
+        let centre = self.camera.screen_center();
         if is_key_pressed(KeyCode::Equal) || is_key_pressed(KeyCode::KpAdd) {
             self.camera.zoom_at(centre, ZOOM_STEP);
+            self.camera_fitted = false;
         }
         if is_key_pressed(KeyCode::Minus) || is_key_pressed(KeyCode::KpSubtract) {
             self.camera.zoom_at(centre, 1.0 / ZOOM_STEP);
+            self.camera_fitted = false;
         }
         if is_key_pressed(KeyCode::F) {
             self.fit_camera();
@@ -157,11 +159,16 @@ impl App {
         }
         if pan != DVec2::ZERO {
             self.camera.pan_pixels(pan);
+            self.camera_fitted = false;
         }
         if is_key_pressed(KeyCode::F11) {
-            self.fullscreen = !self.fullscreen;
-            set_fullscreen(self.fullscreen);
+            self.toggle_fullscreen();
         }
+    }
+
+    pub(super) fn toggle_fullscreen(&mut self) {
+        self.fullscreen = !self.fullscreen;
+        set_fullscreen(self.fullscreen);
     }
 
     fn handle_overlay_keys(&mut self) {
@@ -175,20 +182,21 @@ impl App {
         if is_key_pressed(KeyCode::I) {
             o.readouts = o.readouts.next();
         }
+        let ui = &mut self.ui;
         if is_key_pressed(KeyCode::Tab) {
-            o.hud = !o.hud;
+            ui.docks_open = !ui.docks_open;
         }
         if is_key_pressed(KeyCode::H) || is_key_pressed(KeyCode::F1) {
-            o.help = !o.help;
+            ui.help_open = !ui.help_open;
         }
         if is_key_pressed(KeyCode::L) {
-            self.panel.visible = !self.panel.visible;
+            ui.side_open = !ui.side_open;
         }
         if is_key_pressed(KeyCode::Escape) {
-            if o.presets {
-                o.presets = false;
-            } else if o.help {
-                o.help = false;
+            if ui.presets_open {
+                ui.presets_open = false;
+            } else if ui.help_open {
+                ui.help_open = false;
             } else {
                 self.selected = None;
                 self.gesture = Default::default();
@@ -226,7 +234,7 @@ impl App {
             } else {
                 DVec2::ZERO
             };
-            self.toast(format!("Gravity {:.2} m/s^2", self.world.gravity.length()));
+            self.toast(format!("Gravity {:.2} m/s²", self.world.gravity.length()));
         }
         if is_key_pressed(KeyCode::PageUp) || is_key_pressed(KeyCode::PageDown) {
             let factor = if is_key_pressed(KeyCode::PageUp) {
@@ -251,30 +259,34 @@ impl App {
             self.delete_selected();
         }
         if is_key_pressed(KeyCode::C) && !ctrl() {
-            self.world.particles.clear();
-            self.forget_past();
-            self.selected = None;
-            self.gesture = Default::default();
-            self.toast("Cleared: drag on empty space to launch discs");
+            self.clear_discs();
         }
         if is_key_pressed(KeyCode::R) {
             self.reset_scene();
         }
     }
 
-    pub(super) fn handle_mouse(&mut self) {
-        let (mx, my) = mouse_position();
-        let mouse = DVec2::new(mx as f64, my as f64);
+    /// Removes every disc.
+    pub(super) fn clear_discs(&mut self) {
+        self.world.particles.clear();
+        self.forget_past();
+        self.selected = None;
+        self.gesture = Default::default();
+        self.toast("Cleared: drag on empty space to launch discs");
+    }
+
+    pub(super) fn handle_mouse(&mut self, mouse: DVec2) {
         let at = self.camera.screen_to_world(mouse);
         let now = get_time();
-        // Over the side panel the mouse belongs to the panel's widgets: no
-        // zoom, pan or new gesture there (one begun in the world finishes).
-        let on_panel = self.panel.covers(mouse);
+        // Over a panel or popup the mouse belongs to its widgets: no zoom,
+        // pan or new gesture there (one begun in the world finishes).
+        let on_panel = self.ui.pointer_on_ui;
 
         let (_, wheel) = mouse_wheel();
         if wheel != 0.0 && !on_panel {
             let notches = f64::from(wheel.clamp(-5.0, 5.0)).signum();
             self.camera.zoom_at(mouse, ZOOM_STEP.powf(notches));
+            self.camera_fitted = false;
         }
         let panning =
             is_mouse_button_down(MouseButton::Right) || is_mouse_button_down(MouseButton::Middle);
@@ -282,11 +294,11 @@ impl App {
             || is_mouse_button_pressed(MouseButton::Middle);
         if panning && !just_started && !on_panel {
             self.camera.pan_pixels(mouse - self.last_mouse);
+            self.camera_fitted = false;
         }
 
         if is_mouse_button_pressed(MouseButton::Left) {
             if !on_panel {
-                macroquad::ui::root_ui().clear_input_focus(); // leave any text field
                 let slop = CLICK_SLOP_PIXELS / self.camera.scale;
                 let tip = self
                     .selected

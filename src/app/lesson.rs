@@ -1,14 +1,15 @@
-//! The classroom layer over the sandbox: conservation shown (totals plot,
-//! centre of mass, momentum diagram, centre-of-mass frame), the collision
-//! ledger with "run to the next collision", rewind, and data export.
+//! The classroom layer over the sandbox: conservation shown (the centre of
+//! mass, the centre-of-mass frame; the plots are in the bottom dock), the
+//! collision ledger with "run to the next collision" and the contact's
+//! normal and tangent drawn at the instant of impact, rewind, and export.
 //!
-//! Keys: T totals plot, O centre of mass, D momentum diagram, U ledger,
-//! Z centre-of-mass frame, J run to the next collision, `,` / `.` rewind
-//! and forward (Shift: ten times as far), X export CSV files, A trails,
-//! F2 projector mode, F3 colour-blind-safe palette, F4 speed histogram,
+//! Keys: T / U / D / F4 open the dock's Totals, Collisions, Momenta and
+//! Speeds tabs, O centre of mass, Z centre-of-mass frame, J run to the next
+//! collision, `,` / `.` rewind and forward (Shift: ten times as far),
+//! X export CSV files, A trails, F2 text size, F3 colour-blind-safe palette,
 //! F12 screenshot into the output folder.
 
-use super::hud::{screen_text, text_panel};
+use super::ui::{theme, DockTab};
 use super::{export, plot, scenes, App};
 use glam::DVec2;
 use impulse::ledger::Collision;
@@ -16,42 +17,34 @@ use macroquad::prelude::*;
 
 /// Collisions the window keeps in the ledger.
 pub const LEDGER_KEEP: usize = 50;
-/// Collisions the ledger panel lists.
-const LEDGER_LINES: usize = 6;
 /// How far "run to the next collision" looks ahead (simulated seconds).
 const NEXT_COLLISION_LIMIT: f64 = 60.0;
 
-/// Which classroom overlays are on.
+/// Which classroom overlays are on in the world.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LessonOverlays {
-    /// The live plot of the totals.
-    pub totals: bool,
     /// The centre of mass and its velocity.
     pub center_of_mass: bool,
-    /// The momentum diagram.
-    pub diagram: bool,
-    /// The collision ledger.
-    pub ledger: bool,
-    /// The speed histogram against Maxwell–Boltzmann.
-    pub histogram: bool,
+    /// The contact's normal and tangent at the instant of impact.
+    pub contact: bool,
 }
 
 impl App {
     /// Keys of the classroom layer (after the typing guard).
     pub(super) fn handle_lesson_keys(&mut self) {
         let shift = is_key_down(KeyCode::LeftShift) || is_key_down(KeyCode::RightShift);
-        let l = &mut self.lesson;
-        if is_key_pressed(KeyCode::T) {
-            l.totals = !l.totals;
+        for (key, tab) in [
+            (KeyCode::T, DockTab::Totals),
+            (KeyCode::U, DockTab::Collisions),
+            (KeyCode::D, DockTab::Momenta),
+            (KeyCode::F4, DockTab::Speeds),
+        ] {
+            if is_key_pressed(key) {
+                self.show_tab(tab);
+            }
         }
         if is_key_pressed(KeyCode::O) {
-            l.center_of_mass = !l.center_of_mass;
-        }
-        if is_key_pressed(KeyCode::D) {
-            l.diagram = !l.diagram;
-        }
-        if is_key_pressed(KeyCode::U) {
-            l.ledger = !l.ledger;
+            self.lesson.center_of_mass = !self.lesson.center_of_mass;
         }
         if is_key_pressed(KeyCode::Z) {
             self.center_of_mass_frame();
@@ -73,10 +66,8 @@ impl App {
             self.trails.on = !self.trails.on;
         }
         if is_key_pressed(KeyCode::F2) {
-            self.overlays.thick = !self.overlays.thick;
-            self.font = if self.overlays.thick { 30.0 } else { 20.0 };
-            let mode = if self.overlays.thick { "on" } else { "off" };
-            self.toast(format!("Projector mode {mode}"));
+            self.ui.set_scale(theme::next_scale(self.ui.scale));
+            self.toast(format!("Text size ×{}", self.ui.scale));
         }
         if is_key_pressed(KeyCode::F3) {
             self.overlays.safe_palette = !self.overlays.safe_palette;
@@ -87,13 +78,27 @@ impl App {
             };
             self.toast(format!("Discs in {which}"));
         }
-        if is_key_pressed(KeyCode::F4) {
-            self.lesson.histogram = !self.lesson.histogram;
-        }
         if is_key_pressed(KeyCode::F12) {
-            let stem = scenes::slug(self.scene.name.as_deref().unwrap_or("scene"));
-            self.screenshot_request = Some(scenes::free_file(&self.options.out, &stem, "png"));
+            self.request_screenshot();
         }
+    }
+
+    /// Opens the bottom dock on `tab`; the same key again folds it.
+    pub(super) fn show_tab(&mut self, tab: DockTab) {
+        let ui = &mut self.ui;
+        if ui.docks_open && ui.dock_expanded && ui.tab == tab {
+            ui.dock_expanded = false;
+        } else {
+            ui.docks_open = true;
+            ui.dock_expanded = true;
+            ui.tab = tab;
+        }
+    }
+
+    /// Saves the next frame as a PNG in the output folder (F12).
+    pub(super) fn request_screenshot(&mut self) {
+        let stem = scenes::slug(self.scene.name.as_deref().unwrap_or("scene"));
+        self.screenshot_request = Some(scenes::free_file(&self.options.out, &stem, "png"));
     }
 
     /// After the frame's steps: keep the ledger on, sample the totals and
@@ -137,19 +142,26 @@ impl App {
     }
 
     /// Runs to the next pair collision and pauses there, the ledger open.
-    fn run_to_next_collision(&mut self) {
+    pub(super) fn run_to_next_collision(&mut self) {
         self.clock.paused = true;
         let found = self
             .world
             .run_to_next_collision(self.clock.dt, NEXT_COLLISION_LIMIT);
         self.history.record(&self.world);
-        self.lesson.ledger = true;
+        self.lesson.contact = true;
+        self.ui.docks_open = true;
+        self.ui.dock_expanded = true;
+        self.ui.tab = DockTab::Collisions;
         match found {
             Some(c) => {
                 let (dp, dke) = c.total_change();
                 self.toast(format!(
-                    "Collision of discs {} and {} at t = {:.4} s: change of total p = ({:+.1e}, {:+.1e}), KE {:+.4} J",
-                    c.discs[0], c.discs[1], c.time, dp.x, dp.y, dke
+                    "Collision of discs {} and {} at t = {}: total momentum changed by {}, kinetic energy by {}",
+                    c.discs[0],
+                    c.discs[1],
+                    super::ui::numbers::with_unit(c.time, 4, "s"),
+                    super::ui::numbers::vector(dp, 3, "kg·m/s"),
+                    super::ui::numbers::with_unit(dke, 3, "J")
                 ));
             }
             None => self.toast(format!("No collision within {NEXT_COLLISION_LIMIT:.0} s")),
@@ -157,7 +169,7 @@ impl App {
     }
 
     /// Shows an earlier (or later) recorded moment; pauses.
-    fn scrub(&mut self, delta: isize) {
+    pub(super) fn scrub(&mut self, delta: isize) {
         self.clock.paused = true;
         self.gesture = Default::default();
         match self.history.scrub(&mut self.world, delta) {
@@ -165,7 +177,7 @@ impl App {
                 self.world.ledger.clear();
                 let (oldest, newest) = self.history.span().unwrap_or((t, t));
                 self.toast(format!(
-                    "Rewind: t = {t:.3} s of {oldest:.3} to {newest:.3} s; Space resumes from here"
+                    "Rewound to t = {t:.3} s (recorded: {oldest:.3} to {newest:.3} s); Space resumes from here"
                 ));
             }
             None => self.toast("Nothing recorded yet"),
@@ -173,7 +185,7 @@ impl App {
     }
 
     /// Writes the totals, the discs and the ledger as CSV files.
-    fn export_data(&mut self) {
+    pub(super) fn export_data(&mut self) {
         let stem = scenes::slug(self.scene.name.as_deref().unwrap_or("scene"));
         let samples: Vec<plot::Sample> = self.totals.samples().copied().collect();
         let dir = self.options.out.clone();
@@ -193,91 +205,26 @@ impl App {
         }
     }
 
-    /// The classroom overlays, in the part of the window left of the panel.
-    pub(super) fn draw_lesson(&self, free: Vec2) {
-        let font = self.font * 0.8;
+    /// The classroom overlays in the world: the centre of mass, and at the
+    /// instant of impact the contact's normal and tangent.
+    pub(super) fn draw_lesson(&self) {
+        let scale = self.ui.scale;
         if self.lesson.center_of_mass {
-            plot::draw_center_of_mass(&self.world, &self.camera, super::draw::ARROW_SECONDS);
+            super::draw::draw_center_of_mass(&self.world, &self.camera, super::draw::ARROW_SECONDS, scale);
         }
-        if self.lesson.ledger {
+        if self.lesson.contact {
             if let Some(c) = self.world.ledger.last() {
                 if (self.world.time - c.time).abs() < 1e-9 {
-                    draw_contact(c, &self.world, &self.camera);
+                    draw_contact(c, &self.world, &self.camera, scale);
                 }
             }
-            let lines = ledger_lines(&self.world);
-            // Bottom left, above the scale bar and the caption.
-            let height = 1.15 * font * lines.len() as f32 + 0.8 * font;
-            text_panel(10.0, free.y - height - 3.5 * font, &lines, font, 0.8);
-        }
-        let (w, h) = (340.0f32.min(free.x * 0.45), 150.0f32);
-        if self.lesson.totals {
-            let rect = Rect::new(free.x - w - 10.0, free.y - h - 3.0 * font, w, h);
-            plot::draw_totals(&self.totals, rect, font);
-        }
-        if self.lesson.histogram {
-            let rect = Rect::new(free.x - w - 10.0, free.y - 2.0 * h - 4.0 * font, w, h);
-            plot::draw_speed_histogram(&self.world, rect, font);
-        }
-        if self.lesson.diagram {
-            let side = 220.0f32.min(free.y * 0.4);
-            let rect = Rect::new(free.x - side - 10.0, 10.0, side, side);
-            plot::draw_momentum_diagram(&self.world, rect, font);
-        }
-        if let (Some(k), Some((oldest, newest))) = (self.history.cursor(), self.history.span()) {
-            let line = format!(
-                "REWIND  t = {:.3} s  [{oldest:.2} .. {newest:.2} s]  snapshot {} of {}  (, . scrub, Space resumes)",
-                self.world.time,
-                k + 1,
-                self.history.len()
-            );
-            let width = measure_text(&line, None, font as u16, 1.0).width;
-            text_panel(
-                ((free.x - width) * 0.5).max(10.0),
-                free.y - 5.0 * font,
-                &[line],
-                font,
-                0.9,
-            );
         }
     }
-}
-
-/// The ledger as text: the newest collisions, then the newest one in full.
-fn ledger_lines(world: &impulse::World) -> Vec<String> {
-    let mut lines = vec![format!(
-        "Collision ledger ({} so far)   J: run to the next",
-        world.ledger.recorded
-    )];
-    let recent: Vec<&Collision> = world.ledger.entries().rev().take(LEDGER_LINES).collect();
-    for c in &recent {
-        let (dp, dke) = c.total_change();
-        lines.push(format!(
-            "t {:8.3} s  discs {}-{}  dp ({:+.1e}, {:+.1e})  dKE {:+.4} J",
-            c.time, c.discs[0], c.discs[1], dp.x, dp.y, dke
-        ));
-    }
-    if let Some(c) = recent.first() {
-        lines.push(String::new());
-        for k in 0..2 {
-            let (p0, p1) = c.momentum(k);
-            let (e0, e1) = c.kinetic_energy(k);
-            let ((n0, t0), (n1, t1)) = c.components(k);
-            lines.push(format!(
-                "disc {}: p ({:+.3}, {:+.3}) -> ({:+.3}, {:+.3})  KE {:.3} -> {:.3} J",
-                c.discs[k], p0.x, p0.y, p1.x, p1.y, e0, e1
-            ));
-            lines.push(format!(
-                "        v normal {n0:+.3} -> {n1:+.3}   v tangent {t0:+.3} -> {t1:+.3} m/s"
-            ));
-        }
-    }
-    lines.into_iter().map(|l| screen_text(&l)).collect()
 }
 
 /// At the instant of impact: the normal (orange) and tangent (blue) lines
 /// through the contact point.
-fn draw_contact(c: &Collision, world: &impulse::World, camera: &super::camera::Camera) {
+fn draw_contact(c: &Collision, world: &impulse::World, camera: &super::camera::Camera, scale: f32) {
     let (Some(a), Some(b)) = (
         world.particles.get(c.discs[0]),
         world.particles.get(c.discs[1]),
@@ -291,7 +238,7 @@ fn draw_contact(c: &Collision, world: &impulse::World, camera: &super::camera::C
             camera.world_to_screen(contact - dir * reach),
             camera.world_to_screen(contact + dir * reach),
         );
-        draw_line(p.x as f32, p.y as f32, q.x as f32, q.y as f32, 3.0, color);
+        draw_line(p.x as f32, p.y as f32, q.x as f32, q.y as f32, 3.0 * scale, color);
     };
     line(c.normal, Color::new(0.84, 0.37, 0.0, 1.0));
     line(c.normal.perp(), Color::new(0.34, 0.71, 0.91, 1.0));

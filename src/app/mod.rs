@@ -1,5 +1,6 @@
 //! The sandbox window: a fixed-step loop around a [`World`], with a camera,
-//! mouse gestures and overlays. Everything here is presentation; the physics
+//! mouse gestures and overlays in the world (macroquad) and docked panels
+//! around it (egui, [`ui`]). Everything here is presentation; the physics
 //! lives in the `impulse` library.
 
 mod camera;
@@ -11,20 +12,19 @@ mod draw;
 mod dump;
 mod export;
 mod frame_stats;
-mod hud;
 mod input;
 mod interaction;
 mod lesson;
-mod panel;
 mod plot;
 mod readouts;
 mod recovery;
 mod scenes;
 mod trails;
+mod ui;
 
 use camera::Camera;
-use clock::FixedStepClock;
-use draw::Overlays;
+use clock::{FixedStepClock, RealtimeMeter};
+use draw::{Look, Overlays};
 use glam::DVec2;
 use impulse::{Scene, World};
 use interaction::{Gesture, NewDisc};
@@ -73,6 +73,20 @@ pub struct WindowOptions {
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = window_size)]
     pub size: (i32, i32),
+    /// Size of every text and line, 1 to 2.5 (F2 cycles 1, 1.5 and 2; 2 is
+    /// for a projector).
+    #[arg(long, value_name = "SCALE", default_value_t = 1.0, value_parser = ui_scale)]
+    pub ui_scale: f32,
+    /// Start in the light theme (for a projector in a bright room).
+    #[arg(long)]
+    pub light: bool,
+}
+
+fn ui_scale(s: &str) -> Result<f32, String> {
+    match s.parse::<f32>() {
+        Ok(v) if (1.0..=2.5).contains(&v) => Ok(v),
+        _ => Err(format!("{s:?} is not a UI scale from 1 to 2.5")),
+    }
 }
 
 fn window_size(s: &str) -> Result<(i32, i32), String> {
@@ -196,21 +210,27 @@ struct App {
     scene_origin: String,
     world: World,
     camera: Camera,
+    /// The view shows the whole box: it is fitted again when the world's
+    /// rectangle changes (until the user zooms or pans).
+    camera_fitted: bool,
     clock: FixedStepClock,
     gesture: Gesture,
     overlays: Overlays,
     selected: Option<usize>,
     new_disc: NewDisc,
     toast: Option<(String, f64)>,
-    /// Recent per-step wall-clock times (µs) for the HUD.
+    /// Recent per-step wall-clock times (µs) for the Details section.
     step_micros: VecDeque<f64>,
     steps_last_frame: u32,
+    /// Steps the clock asked for last frame that the frame budget dropped.
+    steps_dropped: u32,
+    /// Simulated seconds per real second, lately.
+    realtime: RealtimeMeter,
     frame: u64,
     last_mouse: DVec2,
     fullscreen: bool,
-    font: f32,
     quit: bool,
-    panel: panel::Panel,
+    ui: ui::UiState,
     lesson: lesson::LessonOverlays,
     totals: plot::Totals,
     history: impulse::history::History,
@@ -221,6 +241,8 @@ struct App {
     frame_stats: frame_stats::FrameStats,
     /// The discs' GPU batch, made at the first frame (it needs the window).
     disc_batch: Option<discs::DiscBatch>,
+    /// The world's font, loaded at the first frame.
+    world_text: Option<readouts::WorldText>,
     /// Autosave, and the offer to restore an earlier session.
     recovery: recovery::Recovery,
 }
@@ -238,11 +260,17 @@ impl App {
         let options_keep_all = options.frame_stats.is_some();
         let (recovery, recovery_problem) =
             recovery::Recovery::new(&recovery::folder(&options.out), options.autosave);
+        let mut ui = ui::UiState::new(path.unwrap_or_default());
+        ui.set_scale(options.ui_scale);
+        if options.light {
+            ui.theme = ui::theme::Theme::Light;
+        }
         let mut app = App {
             options,
             scene,
             scene_origin,
             camera: Camera::fitting(size, DVec2::new(1280.0, 800.0), 30.0),
+            camera_fitted: true,
             world,
             clock,
             gesture: Gesture::Idle,
@@ -255,12 +283,13 @@ impl App {
             toast: None,
             step_micros: VecDeque::new(),
             steps_last_frame: 0,
+            steps_dropped: 0,
+            realtime: RealtimeMeter::default(),
             frame: 0,
             last_mouse: DVec2::ZERO,
             fullscreen: false,
-            font: 20.0,
             quit: false,
-            panel: panel::Panel::new(path.unwrap_or_default()),
+            ui,
             lesson: lesson::LessonOverlays::default(),
             totals: plot::Totals::default(),
             history: impulse::history::History::default(),
@@ -268,6 +297,7 @@ impl App {
             screenshot_request: None,
             frame_stats: frame_stats::FrameStats::new(options_keep_all),
             disc_batch: None,
+            world_text: None,
             recovery,
         };
         if let Some(problem) = recovery_problem {
@@ -285,24 +315,36 @@ impl App {
     async fn run(mut self) {
         prevent_quit();
         let mut pending: Option<(std::time::Instant, frame_stats::FrameTimes)> = None;
+        let mut previous = (0.0, 0.0); // the last frame's time and its physics (s)
+        let mut time_scale = self.clock.time_scale();
         loop {
+            if self.clock.time_scale() != time_scale {
+                time_scale = self.clock.time_scale();
+                self.realtime.clear(); // measured against the scale asked for
+            }
             let frame_start = std::time::Instant::now();
             if let Some((start, mut times)) = pending.take() {
                 times.frame_ms = ms_since(start, frame_start);
+                previous = (times.frame_ms / 1e3, times.step_ms / 1e3);
                 self.frame_stats.push(times);
             }
-            let viewport = DVec2::new(screen_width() as f64, screen_height() as f64);
-            self.camera.viewport = viewport;
+            let (mx, my) = mouse_position();
+            let mouse = DVec2::new(mx as f64, my as f64);
+            self.ui_pass(mouse);
             if self.frame == 0 {
                 self.fit_camera();
                 display::mark_open();
             }
-            self.panel_ui();
             self.handle_keys();
-            self.handle_mouse();
+            self.handle_mouse(mouse);
             let step_start = std::time::Instant::now();
-            self.advance_physics(get_frame_time() as f64);
+            let budget = clock::physics_budget(previous.0, previous.1);
+            let time_before = self.world.time;
+            let running = !self.clock.paused;
+            self.advance_physics(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, std::time::Instant::now());
+            let frame_seconds = if self.frame == 0 { 0.0 } else { previous.0 };
+            self.realtime.push(frame_seconds, self.world.time - time_before, running && !self.clock.paused);
             let timed_out = self
                 .options
                 .exit_after
@@ -315,23 +357,25 @@ impl App {
             }
             let requested = self.screenshot_request.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
-            let capture = wanted.then(dump::capture_frame);
             let draw_start = std::time::Instant::now();
             self.draw();
+            egui_macroquad::draw();
+            // The whole frame, panels included, read back before it is shown.
+            let capture = wanted.then(dump::screen_image);
             let draw_ms = ms_since(draw_start, std::time::Instant::now());
             self.frame += 1;
             self.write_dump();
             let mut times = self.frame_times(step_ms, draw_ms);
             let present_start = std::time::Instant::now();
-            if let Some(target) = capture {
-                next_frame().await; // finishes the frame, panel included
+            if let Some(image) = capture {
                 if closing {
-                    self.save_screenshot(&target);
+                    self.save_screenshot(&image);
                 }
                 if let Some(path) = requested {
-                    self.save_screenshot_key(&target, &path);
+                    self.save_screenshot_key(&image, &path);
                 }
-            } else if !closing {
+            }
+            if !closing {
                 next_frame().await;
             }
             times.present_ms = ms_since(present_start, std::time::Instant::now());
@@ -375,10 +419,18 @@ impl App {
         }
     }
 
-    fn advance_physics(&mut self, frame_seconds: f64) {
-        let steps = self.clock.advance(frame_seconds);
-        self.steps_last_frame = steps;
-        for _ in 0..steps {
+    /// Runs the steps the clock asks for, as long as they fit in `budget`
+    /// seconds of wall clock (at least one); the rest are dropped, so a
+    /// machine that cannot keep up runs the simulation slower instead of
+    /// dropping frames.
+    fn advance_physics(&mut self, frame_seconds: f64, budget: f64) {
+        let due = self.clock.advance(frame_seconds);
+        let start = std::time::Instant::now();
+        let mut steps = 0;
+        while steps < due {
+            if steps > 0 && start.elapsed().as_secs_f64() >= budget {
+                break;
+            }
             let stats = self.world.step(self.clock.dt);
             self.gesture.pin_held(&mut self.world);
             self.step_micros
@@ -386,12 +438,31 @@ impl App {
             if self.step_micros.len() > 240 {
                 self.step_micros.pop_front();
             }
+            steps += 1;
         }
+        self.steps_last_frame = steps;
+        self.steps_dropped = due - steps;
         self.after_steps(steps);
     }
 
+    /// Simulated seconds per real second lately, while running.
+    fn sim_rate(&self) -> Option<f64> {
+        self.realtime.ratio()
+    }
+
+    /// "running at 0.31× real time" when the simulation goes more than 10 %
+    /// slower than the time scale asks.
+    fn slow_note(&self) -> Option<String> {
+        let rate = self.sim_rate()?;
+        if self.clock.paused || rate >= 0.9 * self.clock.time_scale() {
+            return None;
+        }
+        let digits = if rate < 0.1 { 3 } else { 2 };
+        Some(format!("running at {}× real time", ui::numbers::plain(rate, digits)))
+    }
+
     fn toast(&mut self, message: impl Into<String>) {
-        self.toast_for(message, 3.0);
+        self.toast_for(message, 4.0);
     }
 
     fn toast_for(&mut self, message: impl Into<String>, seconds: f64) {
@@ -411,10 +482,21 @@ impl App {
         }
     }
 
+    /// The theme's colours and the UI scale, for the world's drawing.
+    fn look(&self) -> Look {
+        Look {
+            colors: self.ui.theme.world(),
+            scale: self.ui.scale,
+        }
+    }
+
     fn draw(&mut self) {
-        clear_background(Color::new(0.09, 0.10, 0.14, 1.0));
-        draw::draw_boundary(&self.world, &self.camera);
-        self.trails.draw(&self.camera, self.overlays.thick);
+        let look = self.look();
+        clear_background(draw::color(look.colors.background));
+        let text = self.world_text.get_or_insert_with(readouts::WorldText::new);
+        text.begin_frame();
+        draw::draw_boundary(&self.world, &self.camera, look);
+        self.trails.draw(&self.camera, look.scale);
         let batch = self.disc_batch.get_or_insert_with(discs::DiscBatch::new);
         draw::draw_discs(
             &self.world,
@@ -422,14 +504,20 @@ impl App {
             self.selected,
             &self.overlays,
             batch,
+            look,
         );
-        draw::draw_arrows(&self.world, &self.camera, &self.overlays);
+        draw::draw_arrows(&self.world, &self.camera, &self.overlays, look);
+        self.draw_lesson();
+        let Some(text) = self.world_text.as_ref() else {
+            return;
+        };
         readouts::draw_readouts(
             &self.world,
             &self.camera,
             &self.overlays,
             self.selected,
-            self.font * 0.8,
+            look,
+            text,
         );
         if let Gesture::Launching { start, .. } = self.gesture {
             let cursor = self.camera.screen_to_world(self.last_mouse);
@@ -439,116 +527,13 @@ impl App {
                 start,
                 cursor,
                 self.new_disc,
-                self.font,
+                look,
+                text,
             );
         }
-        // Messages and menus centre on the part the side panel leaves free.
-        let viewport = vec2(
-            self.camera.viewport.x as f32 - self.panel.width_on_screen(),
-            self.camera.viewport.y as f32,
-        );
-        if self.overlays.hud {
-            hud::text_panel(10.0, 10.0, &self.hud_lines(), self.font, 0.75);
-        }
-        hud::draw_scale_bar(&self.camera, self.font);
-        if let Some(prompt) = self.recovery_prompt() {
-            hud::draw_toast(&prompt, viewport, self.font);
-        } else if let Some((message, until)) = &self.toast {
-            if get_time() < *until {
-                hud::draw_toast(message, viewport, self.font);
-            }
-        }
-        if let Some(description) = &self.scene.description {
-            if self.overlays.hud {
-                hud::draw_caption(description, viewport, self.font);
-            }
-        }
-        if self.overlays.presets {
-            let entries: Vec<(String, String, String)> = scenes::PRESETS
-                .iter()
-                .map(|p| {
-                    let scene = Scene::parse(p.text, p.path).ok();
-                    let name = scene.as_ref().and_then(|s| s.name.clone());
-                    let description = scene.and_then(|s| s.description);
-                    (
-                        p.key.to_string(),
-                        name.unwrap_or_else(|| p.path.to_string()),
-                        description.unwrap_or_default(),
-                    )
-                })
-                .collect();
-            hud::draw_preset_menu(viewport, self.font * 0.8, &entries);
-        }
-        self.draw_lesson(viewport);
-        if self.overlays.help {
-            hud::draw_help(viewport, self.font);
-        }
     }
 
-    fn hud_lines(&self) -> Vec<String> {
-        let m = self.world.metrics();
-        let status = if self.clock.paused {
-            "PAUSED".to_string()
-        } else {
-            format!("speed x{}", self.clock.time_scale())
-        };
-        let mut micros: Vec<f64> = self.step_micros.iter().copied().collect();
-        micros.sort_by(f64::total_cmp);
-        let median_step = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
-        let name = self.scene.name.as_deref().unwrap_or("Sandbox");
-        let mut lines = vec![
-            format!("Impulse - {name}"),
-            format!(
-                "{} discs   t = {:.2} s   {status}",
-                m.count, self.world.time
-            ),
-            format!(
-                "p = ({:+.3}, {:+.3}) kg m/s   |p| = {:.3}",
-                m.momentum.x,
-                m.momentum.y,
-                m.momentum.length()
-            ),
-            format!("KE = {:.3} J", m.kinetic_energy),
-            format!(
-                "collisions: {} disc-disc + {} wall = {}",
-                self.world.total_pair_collisions,
-                self.world.total_wall_hits,
-                self.world.total_pair_collisions + self.world.total_wall_hits
-            ),
-            format!(
-                "e = {:.2}   wall e = {:.2}   g = {:.2} m/s^2   {}",
-                self.world.restitution,
-                self.world.wall_restitution,
-                self.world.gravity.length(),
-                self.world.boundary.name()
-            ),
-            format!(
-                "FPS {}   step {:.1} us x{}   dt = {:.2} ms",
-                get_fps(),
-                median_step,
-                self.steps_last_frame,
-                self.clock.dt * 1e3
-            ),
-            self.method_line(),
-            format!(
-                "new disc: r = {:.2} m  m = {:.2} kg   H: help",
-                self.new_disc.radius, self.new_disc.mass
-            ),
-        ];
-        let arrows = match (self.overlays.velocity, self.overlays.momentum) {
-            (true, true) => Some("white v, pink p / mean mass"),
-            (true, false) => Some("white v"),
-            (false, true) => Some("pink p / mean mass"),
-            (false, false) => None,
-        };
-        if let Some(arrows) = arrows {
-            let secs = draw::ARROW_SECONDS;
-            lines.push(format!("arrows: {arrows}, x {secs} s"));
-        }
-        lines
-    }
-
-    /// "impulse x4 / grid (auto: ...)": what the steps use, and why.
+    /// "impulse ×4 / grid (auto: ...)": what the steps use, and why.
     fn method_line(&self) -> String {
         let plan = self
             .world
@@ -556,7 +541,7 @@ impl App {
             .cloned()
             .unwrap_or_else(|| self.world.plan_for(self.clock.dt));
         let substeps = if plan.method.uses_substeps() {
-            format!(" x{}", plan.substeps)
+            format!(" ×{}", plan.substeps)
         } else {
             String::new()
         };
@@ -565,29 +550,29 @@ impl App {
         } else {
             plan.broad_phase.name()
         };
-        let mut line = format!("method {}{substeps} / {broad}", plan.method.name());
+        let mut line = format!("in use: {}{substeps} / {broad}", plan.method.name());
         if !plan.reason.is_empty() {
-            line.push_str(&format!("   auto: {}", plan.reason));
+            line.push_str(&format!(" (auto: {})", plan.reason));
         }
         line
     }
 
-    fn save_screenshot(&self, target: &RenderTarget) {
+    fn save_screenshot(&self, image: &dump::ScreenImage) {
         let Some(path) = &self.options.screenshot else {
             return;
         };
-        let (w, h, rgba) = dump::finished_frame(target);
-        match dump::write_png(path, w, h, &rgba) {
+        let (w, h, rgba) = image;
+        match dump::write_png(path, *w, *h, rgba) {
             Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
             Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
         }
     }
 
     /// Saves the frame F12 asked for and says where.
-    fn save_screenshot_key(&mut self, target: &RenderTarget, path: &std::path::Path) {
-        let (w, h, rgba) = dump::finished_frame(target);
+    fn save_screenshot_key(&mut self, image: &dump::ScreenImage, path: &std::path::Path) {
+        let (w, h, rgba) = image;
         let saved = std::fs::create_dir_all(&self.options.out)
-            .and_then(|()| dump::write_png(path, w, h, &rgba));
+            .and_then(|()| dump::write_png(path, *w, *h, rgba));
         match saved {
             Ok(()) => {
                 eprintln!("impulse: screenshot saved to {}", path.display());
@@ -613,9 +598,36 @@ impl App {
         state.held = self.gesture.held();
         state.scene_name = self.scene.name.clone();
         state.scene_origin = self.scene_origin.clone();
-        state.panel_visible = self.panel.visible;
-        state.panel_widgets = self.panel.widgets.clone();
+        state.panel_visible = self.ui.docks_open && self.ui.side_open;
+        state.panel_widgets = self.ui.widgets.clone();
         state.timing = self.frame_stats.recent();
+        let mut layout = self.ui.layout.clone();
+        if let Some(world_px) = self.world_text.as_ref().and_then(|t| t.smallest()) {
+            layout.min_text_px = layout.min_text_px.min(world_px);
+        }
+        state.layout = layout;
+        state.ui = dump::UiDump {
+            docks_open: self.ui.docks_open,
+            side_open: self.ui.side_open,
+            dock_expanded: self.ui.dock_expanded,
+            tab: self.ui.tab.title().to_string(),
+            help_open: self.ui.help_open,
+            presets_open: self.ui.presets_open,
+            theme: self.ui.theme.name().to_string(),
+            typing: self.ui.typing,
+            table_note: self.ui.table.note.as_ref().map(|n| n.text.clone()),
+            message: self
+                .toast
+                .as_ref()
+                .filter(|(_, until)| get_time() < *until)
+                .map(|(m, _)| m.clone()),
+        };
+        state.realtime = dump::RealtimeDump {
+            ratio: self.sim_rate(),
+            shown: self.slow_note(),
+            steps_last_frame: self.steps_last_frame,
+            steps_dropped: self.steps_dropped,
+        };
         state.recovery = dump::RecoveryDump {
             file: self.recovery.path().display().to_string(),
             saves: self.recovery.saves,

@@ -1,13 +1,9 @@
-//! Conservation, shown: a live plot of the totals (momentum components and
-//! kinetic energy) against time with their drift, the centre of mass with
-//! its velocity, and a momentum diagram (every disc's momentum tip to tail,
-//! and their sum) like PhET's.
+//! The data behind the bottom dock's plots, kept apart from drawing: the
+//! recent totals (momentum components and kinetic energy against time, with
+//! their drift) and the speed histogram against Maxwell–Boltzmann.
 
-use super::camera::Camera;
-use super::hud::screen_text;
 use glam::DVec2;
 use impulse::{Metrics, World};
-use macroquad::prelude::*;
 use std::collections::VecDeque;
 
 /// Samples the plot keeps (one per frame: about 10 s at 60 fps).
@@ -88,254 +84,55 @@ impl Totals {
     }
 }
 
-/// A plotted total: its label, colour and value.
-type Series = (&'static str, Color, fn(&Sample) -> f64);
-
-/// The dark backdrop every plot here sits on.
-fn backdrop(rect: Rect) {
-    draw_rectangle(
-        rect.x,
-        rect.y,
-        rect.w,
-        rect.h,
-        Color::new(0.05, 0.06, 0.09, 0.8),
-    );
-}
-
-const PX_COLOR: Color = Color::new(0.34, 0.71, 0.91, 1.0); // sky blue
-const PY_COLOR: Color = Color::new(0.90, 0.62, 0.0, 1.0); // orange
-const KE_COLOR: Color = Color::new(0.0, 0.62, 0.45, 1.0); // bluish green
-const COM_COLOR: Color = Color::new(0.94, 0.89, 0.26, 1.0); // yellow
-
-/// The plot in `rect` (screen pixels): p_x, p_y and KE against time, each
-/// scaled to its own range (so a flat line means conserved), with the
-/// drift written underneath.
-pub fn draw_totals(totals: &Totals, rect: Rect, font: f32) {
-    backdrop(rect);
-    let samples: Vec<Sample> = totals.samples().copied().collect();
-    let title = match totals.drift() {
-        Some((dp, dke)) => format!("totals   drift: |dp| {dp:.1e}   dKE {dke:+.1e}"),
-        None => "totals".to_string(),
-    };
-    draw_text(
-        screen_text(&title),
-        rect.x + 6.0,
-        rect.y + font,
-        font,
-        WHITE,
-    );
-    if samples.len() < 2 {
-        return;
-    }
-    let plot = Rect::new(
-        rect.x + 6.0,
-        rect.y + 1.4 * font,
-        rect.w - 12.0,
-        rect.h - 2.4 * font,
-    );
-    let (t0, t1) = (samples[0].time, samples[samples.len() - 1].time);
-    let series: [Series; 3] = [
-        ("px", PX_COLOR, |s| s.momentum.x),
-        ("py", PY_COLOR, |s| s.momentum.y),
-        ("KE", KE_COLOR, |s| s.kinetic_energy),
-    ];
-    for (k, (label, color, value)) in series.iter().enumerate() {
-        let values: Vec<f64> = samples.iter().map(value).collect();
-        let (lo, hi) = values
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
-                (lo.min(v), hi.max(v))
-            });
-        // Each total gets a band of its own; a conserved one is a flat line
-        // through the band's middle.
-        let mid = 0.5 * (lo + hi);
-        let half = (0.5 * (hi - lo)).max(1e-9 * mid.abs().max(1e-12));
-        let band = plot.h / 3.0;
-        let centre = plot.y + band * (k as f32 + 0.5);
-        let to_screen = |t: f64, v: f64| {
-            let x = plot.x + ((t - t0) / (t1 - t0).max(1e-12)) as f32 * plot.w;
-            let y = centre - 0.4 * band * ((v - mid) / half) as f32;
-            vec2(x, y)
-        };
-        for pair in samples.windows(2).zip(values.windows(2)) {
-            let (s, v) = pair;
-            let (a, b) = (to_screen(s[0].time, v[0]), to_screen(s[1].time, v[1]));
-            draw_line(a.x, a.y, b.x, b.y, 2.0, *color);
-        }
-        let now = values[values.len() - 1];
-        let label = format!("{label} {now:+.3}");
-        draw_text(
-            &label,
-            rect.x + 6.0 + k as f32 * rect.w / 3.0,
-            rect.y + rect.h - 0.3 * font,
-            0.9 * font,
-            *color,
-        );
-    }
-}
-
-/// The centre of mass as a cross in a circle, with its velocity arrow.
-pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64) {
-    if world.particles.is_empty() {
-        return;
-    }
-    let m = world.metrics();
-    let c = camera.world_to_screen(m.center_of_mass);
-    let (x, y) = (c.x as f32, c.y as f32);
-    draw_circle_lines(x, y, 9.0, 2.0, COM_COLOR);
-    draw_line(x - 12.0, y, x + 12.0, y, 2.0, COM_COLOR);
-    draw_line(x, y - 12.0, x, y + 12.0, 2.0, COM_COLOR);
-    let tip = c + camera.vector_to_screen(m.center_of_mass_velocity * arrow_seconds);
-    draw_line(x, y, tip.x as f32, tip.y as f32, 3.0, COM_COLOR);
-}
-
-/// Every disc's momentum tip to tail from the corner of `rect`, and their
-/// sum from the same start: the sum's arrow ends where the chain ends.
-pub fn draw_momentum_diagram(world: &World, rect: Rect, font: f32) {
-    backdrop(rect);
-    draw_text(
-        "momentum, tip to tail",
-        rect.x + 6.0,
-        rect.y + font,
-        font,
-        WHITE,
-    );
-    let ps = &world.particles;
-    if ps.is_empty() || ps.len() > DIAGRAM_MAX_DISCS {
-        let why = if ps.is_empty() {
-            "no discs"
-        } else {
-            "too many discs to draw"
-        };
-        draw_text(why, rect.x + 6.0, rect.y + 2.2 * font, font, GRAY);
-        return;
-    }
-    // The chain's extent fixes the scale.
-    let mut at = DVec2::ZERO;
-    let (mut lo, mut hi) = (DVec2::ZERO, DVec2::ZERO);
-    for p in ps {
-        at += p.momentum();
-        lo = lo.min(at);
-        hi = hi.max(at);
-    }
-    let span = (hi - lo).max_element().max(1e-12);
-    let area = Rect::new(
-        rect.x + 10.0,
-        rect.y + 1.5 * font,
-        rect.w - 20.0,
-        rect.h - 2.0 * font,
-    );
-    let scale = f64::from(area.w.min(area.h)) / span;
-    let origin =
-        DVec2::new(f64::from(area.x), f64::from(area.y + area.h)) + DVec2::new(-lo.x, lo.y) * scale;
-    let to_screen = |v: DVec2| {
-        vec2(
-            (origin.x + v.x * scale) as f32,
-            (origin.y - v.y * scale) as f32,
-        )
-    };
-    let mut at = DVec2::ZERO;
-    for p in ps {
-        let (a, b) = (to_screen(at), to_screen(at + p.momentum()));
-        let c = p.color;
-        let color = Color::from_rgba(c.r, c.g, c.b, 255);
-        draw_line(a.x, a.y, b.x, b.y, 3.0, color);
-        draw_circle(b.x, b.y, 3.0, color);
-        at += p.momentum();
-    }
-    let (a, b) = (to_screen(DVec2::ZERO), to_screen(at));
-    draw_line(a.x, a.y, b.x, b.y, 2.0, WHITE);
-    draw_circle_lines(b.x, b.y, 5.0, 2.0, WHITE);
-    draw_text(
-        format!("sum ({:+.3}, {:+.3}) kg m/s", at.x, at.y),
-        rect.x + 6.0,
-        rect.y + rect.h - 0.3 * font,
-        0.9 * font,
-        WHITE,
-    );
+/// The discs' speeds against the 2D Maxwell–Boltzmann law at the same
+/// temperature, f(v) = (v/σ²)·exp(−v²/2σ²) with σ² = kT/m and kT = KE/N (two
+/// degrees of freedom per disc; the mean mass stands in for mixed masses).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpeedHistogram {
+    /// kT = KE/N (J).
+    pub kt: f64,
+    /// σ² = kT / mean mass (m²/s²).
+    pub sigma2: f64,
+    /// Width of a bin (m/s); the bins start at 0.
+    pub bin_width: f64,
+    /// Share of the discs per m/s in each bin: a probability density, so
+    /// the bars and the law share one axis.
+    pub density: Vec<f64>,
 }
 
 /// Speed bins of the histogram.
-const BINS: usize = 20;
+pub const BINS: usize = 20;
 
-/// The discs' speeds as a histogram against the 2D Maxwell–Boltzmann law
-/// at the same temperature, f(v) = (v/σ²)·exp(−v²/2σ²) with σ² = kT/m and
-/// kT = KE/N (two degrees of freedom per disc; the mean mass stands in for
-/// mixed masses), with the temperature written above.
-pub fn draw_speed_histogram(world: &World, rect: Rect, font: f32) {
-    backdrop(rect);
-    let n = world.particles.len();
-    if n < 2 {
-        draw_text(
-            "speed histogram: too few discs",
-            rect.x + 6.0,
-            rect.y + font,
-            font,
-            GRAY,
-        );
-        return;
-    }
-    let kt = world.metrics().kinetic_energy / n as f64;
-    let mean_mass = world.particles.iter().map(|p| p.mass).sum::<f64>() / n as f64;
-    let sigma2 = kt / mean_mass;
-    let top = 4.0 * sigma2.sqrt().max(1e-12);
-    let width = top / BINS as f64;
-    let mut counts = [0usize; BINS];
-    for p in &world.particles {
-        let k = (p.vel.length() / width) as usize;
-        if k < BINS {
-            counts[k] += 1;
+impl SpeedHistogram {
+    /// The histogram of `world`'s speeds up to 4σ, or `None` for fewer than
+    /// two discs or none moving.
+    pub fn of(world: &World) -> Option<Self> {
+        let n = world.particles.len();
+        if n < 2 {
+            return None;
         }
-    }
-    draw_text(
-        format!("speeds vs Maxwell-Boltzmann   kT = KE/N = {kt:.3} J"),
-        rect.x + 6.0,
-        rect.y + font,
-        font,
-        WHITE,
-    );
-    let area = Rect::new(
-        rect.x + 6.0,
-        rect.y + 1.4 * font,
-        rect.w - 12.0,
-        rect.h - 2.6 * font,
-    );
-    let density = |v: f64| v / sigma2 * (-v * v / (2.0 * sigma2)).exp();
-    let peak = density(sigma2.sqrt());
-    let tallest = counts
-        .iter()
-        .map(|&c| c as f64 / (n as f64 * width))
-        .fold(peak, f64::max);
-    let y_of = |d: f64| area.y + area.h * (1.0 - (d / tallest) as f32);
-    let bar = area.w / BINS as f32;
-    for (k, &c) in counts.iter().enumerate() {
-        let d = c as f64 / (n as f64 * width);
-        let y = y_of(d);
-        draw_rectangle(
-            area.x + k as f32 * bar + 1.0,
-            y,
-            bar - 2.0,
-            area.y + area.h - y,
-            PX_COLOR,
-        );
-    }
-    let mut last = None;
-    for k in 0..=100 {
-        let v = top * k as f64 / 100.0;
-        let point = vec2(area.x + area.w * k as f32 / 100.0, y_of(density(v)));
-        if let Some(a) = last {
-            let a: Vec2 = a;
-            draw_line(a.x, a.y, point.x, point.y, 2.0, PY_COLOR);
+        let kt = world.metrics().kinetic_energy / n as f64;
+        let mean_mass = world.particles.iter().map(|p| p.mass).sum::<f64>() / n as f64;
+        let sigma2 = kt / mean_mass;
+        if !(sigma2 > 0.0 && sigma2.is_finite()) {
+            return None;
         }
-        last = Some(point);
+        let bin_width = 4.0 * sigma2.sqrt() / BINS as f64;
+        let mut counts = [0usize; BINS];
+        for p in &world.particles {
+            let k = (p.vel.length() / bin_width) as usize;
+            if k < BINS {
+                counts[k] += 1;
+            }
+        }
+        let density = counts.iter().map(|&c| c as f64 / (n as f64 * bin_width)).collect();
+        Some(SpeedHistogram { kt, sigma2, bin_width, density })
     }
-    draw_text(
-        format!("0 to {top:.2} m/s; curve: the law at this temperature"),
-        rect.x + 6.0,
-        rect.y + rect.h - 0.3 * font,
-        0.9 * font,
-        GRAY,
-    );
+
+    /// The law's density at speed `v` (per m/s).
+    pub fn law(&self, v: f64) -> f64 {
+        v / self.sigma2 * (-v * v / (2.0 * self.sigma2)).exp()
+    }
 }
 
 #[cfg(test)]
@@ -363,5 +160,21 @@ mod tests {
         world.time = 0.01; // a rewind
         totals.push(&world, &world.metrics());
         assert_eq!(totals.samples().count(), 1);
+    }
+
+    #[test]
+    fn the_histogram_is_a_density_and_the_law_integrates_to_one() {
+        let world = Gas { count: 400, ..Gas::default() }.build();
+        let h = SpeedHistogram::of(&world).unwrap();
+        let n = world.particles.len() as f64;
+        let below: usize = world.particles.iter().filter(|p| p.vel.length() < 4.0 * h.sigma2.sqrt()).count();
+        let area: f64 = h.density.iter().sum::<f64>() * h.bin_width;
+        assert!((area - below as f64 / n).abs() < 1e-12, "{area}");
+        let (mut integral, dv) = (0.0, 1e-3 * h.sigma2.sqrt());
+        for k in 0..20_000 {
+            integral += h.law((k as f64 + 0.5) * dv) * dv;
+        }
+        assert!((integral - 1.0).abs() < 1e-6, "{integral}");
+        assert!((h.kt - world.metrics().kinetic_energy / n).abs() < 1e-12);
     }
 }

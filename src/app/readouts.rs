@@ -1,35 +1,121 @@
-//! Text readouts beside discs (v, |v|, p, m, KE): the selected disc's
-//! always, every disc's only where readable: beside a disc big enough to
-//! point at, on screen, overlapping no other readout. Backgrounds first,
-//! then all text, so the labels cost two draw calls, not two each.
+//! Text in the world: the per-disc readouts (v, |v|, p, m, KE) and the
+//! launch preview's speed, in the bundled DejaVu Sans (it has π, °, ² and
+//! the middle dot of kg·m/s). A readout goes where it covers no disc, no
+//! arrow and no other readout ([`super::cull::place_label`]): the selected
+//! disc's always (moved out on a leader line when crowded), every other
+//! disc's only where there is room. Backgrounds first, then all text.
 
 use super::camera::Camera;
-use super::cull::{circle_on_screen, LabelPlacer, MIN_LABEL_DISC_PIXELS};
-use super::draw::{Overlays, ReadoutScope};
-use super::hud::screen_text;
+use super::cull::{circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS};
+use super::draw::{color, Look, Overlays, ReadoutScope, ARROW_SECONDS};
+use super::ui::numbers::{vector, with_unit};
+use super::ui::theme::MIN_TEXT_POINTS;
 use glam::DVec2;
 use impulse::World;
 use macroquad::prelude::*;
+use std::cell::Cell;
 
-/// Readouts for "all discs" stop at this many labels.
+/// Readouts for "every disc" stop at this many labels.
 const MAX_LABELS: usize = 250;
+/// Obstacles are collected for at most this many discs on screen; beyond,
+/// "every disc" shows no labels (they could not be read anyway).
+const MAX_OBSTACLE_DISCS: usize = 20_000;
+
+/// The world's font and the smallest size drawn with it this frame.
+pub struct WorldText {
+    font: Font,
+    smallest: Cell<f32>,
+}
+
+impl WorldText {
+    /// Loads the bundled font (needs the window).
+    pub fn new() -> Self {
+        let font = load_ttf_font_from_bytes(include_bytes!("../../assets/fonts/DejaVuSans.ttf"))
+            .expect("the bundled DejaVu Sans loads");
+        WorldText {
+            font,
+            smallest: Cell::new(f32::INFINITY),
+        }
+    }
+
+    /// Starts a frame's count of the smallest text.
+    pub fn begin_frame(&self) {
+        self.smallest.set(f32::INFINITY);
+    }
+
+    /// The smallest font size drawn since [`Self::begin_frame`] (px), if any.
+    pub fn smallest(&self) -> Option<f32> {
+        let s = self.smallest.get();
+        s.is_finite().then_some(s)
+    }
+
+    /// Width and height of `text` at `size` px.
+    pub fn measure(&self, text: &str, size: f32) -> Vec2 {
+        let d = measure_text(text, Some(&self.font), size.round() as u16, 1.0);
+        vec2(d.width, size * 1.25)
+    }
+
+    /// Draws `text` with its top-left corner at `at`.
+    pub fn draw(&self, text: &str, at: Vec2, size: f32, c: Color) {
+        let size = size.round();
+        self.smallest.set(self.smallest.get().min(size));
+        draw_text_ex(
+            text,
+            at.x,
+            at.y + 0.95 * size,
+            TextParams {
+                font: Some(&self.font),
+                font_size: size as u16,
+                color: c,
+                ..Default::default()
+            },
+        );
+    }
+}
 
 /// Readout lines for one disc.
 pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
     let v = p.vel;
-    let m = p.momentum();
     [
-        format!("v = ({:.2}, {:.2}) m/s  |v| = {:.2}", v.x, v.y, v.length()),
-        format!("p = ({:.2}, {:.2}) kg m/s", m.x, m.y),
-        format!("m = {:.3} kg  KE = {:.3} J", p.mass, p.kinetic_energy()),
+        format!("v = {}   |v| = {}", vector(v, 2, "m/s"), with_unit(v.length(), 2, "m/s")),
+        format!("p = {}", vector(p.momentum(), 2, "kg·m/s")),
+        format!("m = {}   KE = {}", with_unit(p.mass, 3, "kg"), with_unit(p.kinetic_energy(), 3, "J")),
     ]
 }
 
-/// One label: top-left corner, size and lines.
+/// One placed label.
 struct Label {
-    at: Vec2,
-    size: Vec2,
-    lines: Vec<String>,
+    rect: [f64; 4],
+    leader: Option<(DVec2, DVec2)>,
+    lines: [String; 3],
+}
+
+/// What labels must keep clear of: every disc on screen and every arrow drawn.
+fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, look: Look, cell: f64) -> Option<Obstacles> {
+    let rect = camera.screen_rect();
+    let mut o = Obstacles::new(cell);
+    let mean_mass = world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64;
+    let mut on_screen = 0;
+    let half = f64::from(4.0 * look.scale) * 2.4;
+    for p in &world.particles {
+        let c = camera.world_to_screen(p.pos);
+        let r = camera.length_in_pixels(p.radius).max(1.0);
+        if !circle_on_screen(c, r, rect) {
+            continue;
+        }
+        on_screen += 1;
+        if on_screen > MAX_OBSTACLE_DISCS {
+            return None;
+        }
+        o.add_circle(c, r + 2.0);
+        for (on, v) in [(overlays.velocity, p.vel), (overlays.momentum, p.momentum() / mean_mass)] {
+            let tip = c + camera.vector_to_screen(v * ARROW_SECONDS);
+            if on && c.distance(tip) >= MIN_ARROW_PIXELS {
+                o.add_segment(c, tip, half);
+            }
+        }
+    }
+    Some(o)
 }
 
 /// Text readouts beside the selected disc or every readable disc.
@@ -38,17 +124,27 @@ pub fn draw_readouts(
     camera: &Camera,
     overlays: &Overlays,
     selected: Option<usize>,
-    font: f32,
+    look: Look,
+    text: &WorldText,
 ) {
     let all = match overlays.readouts {
         ReadoutScope::Off => return,
         ReadoutScope::Selected => false,
         ReadoutScope::All => true,
     };
-    let pad = 0.4 * font;
-    let line_height = 1.15 * font;
-    let height = 3.0 * line_height + 2.0 * pad;
-    let mut placer = LabelPlacer::new(DVec2::new(20.0 * font as f64, height as f64));
+    if world.particles.is_empty() {
+        return;
+    }
+    let size = MIN_TEXT_POINTS * look.scale;
+    let pad = 0.35 * size;
+    let line_height = 1.25 * size;
+    let height = f64::from(3.0 * line_height + 2.0 * pad);
+    let typical = DVec2::new(f64::from(22.0 * size), height);
+    let Some(obstacles) = obstacles(world, camera, overlays, look, typical.y) else {
+        return;
+    };
+    let mut placer = LabelPlacer::new(typical);
+    let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.scale));
     let mut labels = Vec::new();
     // The selected disc first, so its label is never crowded out.
     let others = (0..world.particles.len()).filter(|&i| all && Some(i) != selected);
@@ -62,29 +158,47 @@ pub fn draw_readouts(
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius);
         let chosen = Some(i) == selected;
-        if !circle_on_screen(c, r, camera.viewport) || !(chosen || r >= MIN_LABEL_DISC_PIXELS) {
+        if !circle_on_screen(c, r, camera.screen_rect()) || !(chosen || r >= MIN_LABEL_DISC_PIXELS) {
             continue;
         }
-        let lines: Vec<String> = readout_lines(p).iter().map(|l| screen_text(l)).collect();
-        let width = lines
-            .iter()
-            .map(|l| measure_text(l, None, font as u16, 1.0).width)
-            .fold(0.0, f32::max);
-        let at = vec2((c.x + r) as f32 + 6.0, (c.y - r) as f32);
-        let size = vec2(width + 2.0 * pad, height);
-        let rect = [at.x as f64, at.y as f64, size.x as f64, size.y as f64];
-        if placer.try_place(rect) || chosen {
-            labels.push(Label { at, size, lines });
+        let lines = readout_lines(p);
+        let width = lines.iter().map(|l| text.measure(l, size).x).fold(0.0, f32::max);
+        let label_size = DVec2::new(f64::from(width + 2.0 * pad), height);
+        let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
+        if let Some(at) = place_label(c, r, label_size, gaps, camera.screen_rect(), &obstacles, &placer) {
+            placer.try_place(at.rect);
+            labels.push(Label {
+                rect: at.rect,
+                leader: at.leader,
+                lines,
+            });
         }
     }
-    let background = Color::new(0.05, 0.06, 0.09, 0.55);
+    let background = color(look.colors.label_background);
+    let leader = color(look.colors.leader);
     for l in &labels {
-        draw_rectangle(l.at.x, l.at.y, l.size.x, l.size.y, background);
+        if let Some((a, b)) = l.leader {
+            draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, 1.5 * look.scale, leader);
+        }
+        let r = l.rect.map(|v| v as f32);
+        draw_rectangle(r[0], r[1], r[2], r[3], background);
     }
+    let ink = color(look.colors.text);
     for l in &labels {
         for (k, line) in l.lines.iter().enumerate() {
-            let baseline = l.at.y + pad + line_height * (k as f32 + 0.8);
-            draw_text(line, l.at.x + pad, baseline, font, WHITE);
+            let at = vec2(l.rect[0] as f32 + pad, l.rect[1] as f32 + pad + line_height * k as f32);
+            text.draw(line, at, size, ink);
         }
     }
 }
+
+/// The launch preview's label: the speed, or that there is no room.
+pub fn launch_label(text: &WorldText, label: &str, tip: Vec2, look: Look) {
+    let size = MIN_TEXT_POINTS * look.scale;
+    let extent = text.measure(label, size);
+    let at = tip + vec2(8.0, -8.0 - extent.y);
+    draw_rectangle(at.x - 4.0, at.y, extent.x + 8.0, extent.y, color(look.colors.label_background));
+    text.draw(label, at, size, color(look.colors.text));
+}
+
+

@@ -177,20 +177,33 @@ impl App {
             return false;
         }
         if is_key_pressed(KeyCode::R) {
-            if let Some(scene) = self.recovery.take_offer() {
-                let origin = format!("recovered from {}", self.recovery.path().display());
-                let _ = self.open_scene(scene, origin); // a failure is reported
-            }
+            self.restore_recovery();
             return true;
         }
         if is_key_pressed(KeyCode::Escape) {
-            match self.recovery.set_aside() {
-                Ok(to) => self.toast(format!("Earlier session kept in {}", to.display())),
-                Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
-            }
+            self.set_recovery_aside();
             return true;
         }
         false
+    }
+
+    /// Opens the session that was offered (its Restore button, or `R`).
+    pub(super) fn restore_recovery(&mut self) {
+        if let Some(scene) = self.recovery.take_offer() {
+            let origin = format!("recovered from {}", self.recovery.path().display());
+            let _ = self.open_scene(scene, origin); // a failure is reported
+        }
+    }
+
+    /// Moves the offered session's file aside (its button, or `Esc`).
+    pub(super) fn set_recovery_aside(&mut self) {
+        if self.recovery.offered.is_none() {
+            return;
+        }
+        match self.recovery.set_aside() {
+            Ok(to) => self.toast(format!("Earlier session kept in {}", to.display())),
+            Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
+        }
     }
 
     /// The line shown while an earlier session is offered.
@@ -198,7 +211,7 @@ impl App {
         self.recovery.offered.as_ref().map(|scene| {
             let name = scene.name.as_deref().unwrap_or("sandbox");
             format!(
-                "The last session did not close normally: R restores its {name} ({} discs), Esc sets it aside",
+                "The last session did not close normally. Restore its {name} ({} discs), or set it aside?",
                 scene.particles.len()
             )
         })

@@ -3,6 +3,7 @@
 //! scene file that reopens exactly.
 
 use super::interaction::Gesture;
+use super::ui::Note;
 use super::App;
 use crate::files::write_durably;
 use impulse::Scene;
@@ -54,10 +55,16 @@ pub fn preset_labels() -> &'static [String] {
                     .ok()
                     .and_then(|s| s.name)
                     .unwrap_or_else(|| p.path.to_string());
-                format!("{}  {}", p.key, super::hud::screen_text(&name))
+                format!("{}   {}", p.key, name)
             })
             .collect()
     })
+}
+
+/// The one-line description of preset `index`, if its file has one.
+pub fn preset_description(index: usize) -> Option<String> {
+    let p = PRESETS.get(index)?;
+    Scene::parse(p.text, p.path).ok()?.description
 }
 
 /// A file name for saving a scene called `name` (ASCII letters and digits
@@ -102,7 +109,9 @@ impl App {
             return;
         };
         // The gas preset is about the speed distribution: show it.
-        self.lesson.histogram = preset.path.contains("gas");
+        if preset.path.contains("gas") {
+            self.ui.tab = super::ui::DockTab::Speeds;
+        }
         match Scene::parse(preset.text, preset.path) {
             Ok(scene) => {
                 let _ = self.open_scene(scene, preset.path.to_string()); // reported
@@ -119,6 +128,7 @@ impl App {
             Ok(world) => {
                 self.world = world;
                 self.forget_past();
+                self.realtime.clear();
                 self.clock.dt = self
                     .options
                     .dt
@@ -180,6 +190,46 @@ impl App {
         );
         scene.simulation.dt = Some(self.clock.dt);
         scene
+    }
+
+    /// Opens the file named in the path field; a bad file is reported and
+    /// the current scene stays.
+    pub(super) fn open_from_panel(&mut self) {
+        let path = self.ui.path.trim().to_string();
+        if path.is_empty() {
+            self.ui.scene_note = Some(Note::error("Type the path of a scene file first"));
+            return;
+        }
+        let result = match Scene::load(Path::new(&path)) {
+            Ok(scene) => self.open_scene(scene, path.clone()),
+            Err(e) => {
+                let message = format!("{e} (kept the current scene)");
+                self.report(message.clone());
+                Err(message)
+            }
+        };
+        self.ui.scene_note = Some(match result {
+            Ok(()) => Note::ok(format!("Opened {path}")),
+            Err(e) => Note::error(e),
+        });
+    }
+
+    /// Saves the scene and says where it went, or what went wrong.
+    pub(super) fn save_from_panel(&mut self) {
+        self.ui.scene_note = Some(match self.save_scene() {
+            Ok(path) => Note::ok(format!("Saved {}", path.display())),
+            Err(e) => Note::error(e),
+        });
+    }
+
+    /// Deletes the selected disc (its button and the Delete key).
+    pub(super) fn delete_selected(&mut self) {
+        if let Some(i) = self.selected.take() {
+            if i < self.world.particles.len() {
+                self.world.particles.remove(i);
+                self.gesture.on_removed(i);
+            }
+        }
     }
 
     /// A message for both the window and the terminal.

@@ -53,11 +53,11 @@ impl Trails {
     }
 
     /// Fading lines, oldest faintest.
-    pub fn draw(&self, camera: &Camera, thick: bool) {
+    pub fn draw(&self, camera: &Camera, scale: f32) {
         if !self.on {
             return;
         }
-        let width = if thick { 3.0 } else { 1.5 };
+        let width = 1.5 * scale;
         for (color, path) in &self.paths {
             let n = path.len();
             for (k, pair) in path.iter().zip(path.iter().skip(1)).enumerate() {

@@ -1,0 +1,111 @@
+//! Numbers as the screen shows them: a fixed number of decimals, never in
+//! e-notation, never "-0.000" (a value below display precision is 0.000),
+//! with its unit.
+
+use glam::DVec2;
+
+/// `v` with `decimals` decimals, in plain digits; a value that rounds to
+/// zero has no sign, and a value that is not finite says so in words.
+pub fn plain(v: f64, decimals: usize) -> String {
+    if v.is_nan() {
+        return "not a number".into();
+    }
+    if v.is_infinite() {
+        return if v > 0.0 { "∞" } else { "−∞" }.into();
+    }
+    let text = format!("{v:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        Some(rest) => format!("−{rest}"),
+        None => text,
+    }
+}
+
+/// `v` and its unit: "2.000 J".
+pub fn with_unit(v: f64, decimals: usize, unit: &str) -> String {
+    format!("{} {unit}", plain(v, decimals))
+}
+
+/// A vector and its unit: "(2.000, 0.000) kg·m/s".
+pub fn vector(v: DVec2, decimals: usize, unit: &str) -> String {
+    format!("({}, {}) {unit}", plain(v.x, decimals), plain(v.y, decimals))
+}
+
+/// `v` with enough decimals to show three significant digits of a small
+/// quantity (a mass of 0.00125 kg), at most six, at least `min_decimals`.
+pub fn adaptive(v: f64, min_decimals: usize) -> String {
+    let magnitude = v.abs();
+    let decimals = if magnitude > 0.0 && magnitude < 1.0 && magnitude.is_finite() {
+        ((2.0 - magnitude.log10().floor()) as usize).clamp(min_decimals, 6)
+    } else {
+        min_decimals
+    };
+    plain(v, decimals)
+}
+
+/// A number as a text field offers it for editing: up to six decimals, no
+/// trailing zeros, never in e-notation, so what is typed over it is what the
+/// user sees.
+pub fn field(v: f64) -> String {
+    let text = plain(v, 6).replace('−', "-");
+    if !text.contains('.') {
+        return text;
+    }
+    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
+    if trimmed == "-0" || trimmed.is_empty() {
+        "0".into()
+    } else {
+        trimmed.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_values_print_as_zero_without_a_sign_or_an_exponent() {
+        assert_eq!(plain(-8.9e-16, 3), "0.000");
+        assert_eq!(plain(8.9e-16, 3), "0.000");
+        assert_eq!(plain(-0.0, 2), "0.00");
+        assert_eq!(plain(-0.0004, 3), "0.000");
+        assert_eq!(plain(-0.0006, 3), "−0.001");
+        assert_eq!(plain(2.0, 3), "2.000");
+        assert_eq!(plain(1.5e12, 1), "1500000000000.0");
+        assert_eq!(plain(f64::NAN, 3), "not a number");
+        for v in [1e-300, -1e-20, 3.7e15, -2.5e-7] {
+            for d in 0..6 {
+                assert!(!plain(v, d).contains('e'), "{v} with {d} decimals");
+            }
+        }
+    }
+
+    #[test]
+    fn units_and_vectors() {
+        assert_eq!(with_unit(2.0, 3, "J"), "2.000 J");
+        assert_eq!(
+            vector(DVec2::new(2.0, -1e-17), 3, "kg·m/s"),
+            "(2.000, 0.000) kg·m/s"
+        );
+    }
+
+    #[test]
+    fn small_quantities_keep_three_significant_digits() {
+        assert_eq!(adaptive(0.00125, 2), "0.00125");
+        assert_eq!(adaptive(0.5, 2), "0.500");
+        assert_eq!(adaptive(12.0, 2), "12.00");
+        assert_eq!(adaptive(1e-9, 2), "0.000000");
+    }
+
+    #[test]
+    fn fields_read_back_and_have_no_exponent() {
+        assert_eq!(field(1.0), "1");
+        assert_eq!(field(0.1 + 0.2), "0.3");
+        assert_eq!(field(-2.345678), "-2.345678");
+        assert_eq!(field(-1e-9), "0");
+        assert_eq!(field(2.5e9), "2500000000");
+        for v in [1.0, 0.3, -2.5, 0.001, 2.5e9] {
+            assert_eq!(field(v).parse::<f64>().unwrap(), v);
+        }
+    }
+}

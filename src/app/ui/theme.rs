@@ -1,0 +1,173 @@
+//! How the screen looks: one UI scale for every text and line (F2 cycles
+//! 1.0, 1.5, 2.0, for the back row of a classroom), one table of text sizes,
+//! and a dark and a light (bright-room) theme, for egui's panels and for the
+//! world macroquad draws alike.
+
+use egui::{Color32, FontFamily, FontId, TextStyle};
+
+/// The scales F2 cycles through; 2.0 is the projector's.
+pub const UI_SCALES: [f32; 3] = [1.0, 1.5, 2.0];
+/// The range of the scale slider.
+pub const UI_SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.5;
+/// The smallest text anywhere on screen at scale 1, in points (= pixels at
+/// scale 1): 16, so scale 1.5 gives 24 px and the projector's 2.0 gives 32.
+pub const MIN_TEXT_POINTS: f32 = 16.0;
+
+/// Text sizes (points) by egui's text styles; nothing on screen is drawn in
+/// any other size but the world's labels, which use [`MIN_TEXT_POINTS`] and up.
+pub fn text_sizes() -> [(TextStyle, f32); 5] {
+    [
+        (TextStyle::Small, MIN_TEXT_POINTS),
+        (TextStyle::Body, 17.0),
+        (TextStyle::Button, 17.0),
+        (TextStyle::Monospace, MIN_TEXT_POINTS),
+        (TextStyle::Heading, 21.0),
+    ]
+}
+
+/// The next of [`UI_SCALES`] after `scale` (back to the first after the last).
+pub fn next_scale(scale: f32) -> f32 {
+    UI_SCALES
+        .iter()
+        .copied()
+        .find(|&s| s > scale + 1e-3)
+        .unwrap_or(UI_SCALES[0])
+}
+
+/// Dark (the default, for a screen) or light (for a projector in a bright room).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Theme {
+    Dark,
+    Light,
+}
+
+impl Theme {
+    /// "dark" or "light".
+    pub fn name(self) -> &'static str {
+        match self {
+            Theme::Dark => "dark",
+            Theme::Light => "light",
+        }
+    }
+}
+
+/// What the world is drawn in, per theme (RGBA, 0–1).
+#[derive(Clone, Copy, Debug)]
+pub struct WorldColors {
+    pub background: [f32; 4],
+    pub inside: [f32; 4],
+    pub wall: [f32; 4],
+    pub velocity: [f32; 4],
+    pub momentum: [f32; 4],
+    pub selected: [f32; 4],
+    pub text: [f32; 4],
+    pub label_background: [f32; 4],
+    pub leader: [f32; 4],
+}
+
+impl Theme {
+    /// The world's colours in this theme.
+    pub fn world(self) -> WorldColors {
+        match self {
+            Theme::Dark => WorldColors {
+                background: [0.09, 0.10, 0.14, 1.0],
+                inside: [1.0, 1.0, 1.0, 0.03],
+                wall: [0.85, 0.88, 0.95, 1.0],
+                velocity: [1.0, 1.0, 1.0, 0.95],
+                momentum: [1.0, 0.35, 0.75, 1.0],
+                selected: [1.0, 1.0, 1.0, 1.0],
+                text: [1.0, 1.0, 1.0, 1.0],
+                label_background: [0.03, 0.04, 0.07, 0.88],
+                leader: [0.85, 0.88, 0.95, 0.8],
+            },
+            Theme::Light => WorldColors {
+                background: [0.97, 0.97, 0.95, 1.0],
+                inside: [1.0, 1.0, 1.0, 1.0],
+                wall: [0.10, 0.10, 0.12, 1.0],
+                velocity: [0.05, 0.05, 0.08, 1.0],
+                momentum: [0.75, 0.0, 0.45, 1.0],
+                selected: [0.0, 0.0, 0.0, 1.0],
+                text: [0.0, 0.0, 0.0, 1.0],
+                label_background: [1.0, 1.0, 1.0, 0.92],
+                leader: [0.15, 0.15, 0.2, 0.8],
+            },
+        }
+    }
+}
+
+/// Sets egui's scale, text sizes and colours.
+pub fn apply(ctx: &egui::Context, scale: f32, theme: Theme) {
+    ctx.set_zoom_factor(scale);
+    let (preference, mut visuals) = match theme {
+        Theme::Dark => (egui::Theme::Dark, egui::Visuals::dark()),
+        Theme::Light => (egui::Theme::Light, egui::Visuals::light()),
+    };
+    // High contrast: full white on dark, full black on light; no dim text.
+    visuals.override_text_color = Some(match theme {
+        Theme::Dark => Color32::from_gray(245),
+        Theme::Light => Color32::BLACK,
+    });
+    if theme == Theme::Light {
+        visuals.panel_fill = Color32::from_gray(250);
+        visuals.widgets.noninteractive.bg_stroke.color = Color32::from_gray(120);
+    }
+    ctx.set_theme(preference);
+    let mut style = (*ctx.style_of(preference)).clone();
+    style.visuals = visuals;
+    style.text_styles = text_sizes()
+        .into_iter()
+        .map(|(text_style, size)| {
+            let family = if text_style == TextStyle::Monospace {
+                FontFamily::Monospace
+            } else {
+                FontFamily::Proportional
+            };
+            (text_style, FontId::new(size, family))
+        })
+        .collect();
+    style.spacing.interact_size.y = 24.0;
+    style.spacing.item_spacing = egui::vec2(8.0, 5.0);
+    style.spacing.slider_width = 130.0;
+    ctx.set_style_of(preference, style);
+}
+
+/// The smallest text size egui draws with now, in physical pixels.
+pub fn min_text_px(ctx: &egui::Context) -> f32 {
+    let smallest = ctx.style().text_styles.values().map(|f| f.size).fold(f32::INFINITY, f32::min);
+    smallest * ctx.pixels_per_point()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn f2_cycles_the_three_scales() {
+        assert_eq!(next_scale(1.0), 1.5);
+        assert_eq!(next_scale(1.5), 2.0);
+        assert_eq!(next_scale(2.0), 1.0);
+        assert_eq!(next_scale(1.2), 1.5, "from the slider's in-between value");
+        assert_eq!(next_scale(2.5), 1.0);
+    }
+
+    #[test]
+    fn no_text_style_is_below_the_minimum_and_the_projector_reaches_24_px() {
+        for (style, size) in text_sizes() {
+            assert!(size >= MIN_TEXT_POINTS, "{style:?}");
+        }
+        assert!(MIN_TEXT_POINTS >= 14.0);
+        assert!(MIN_TEXT_POINTS * UI_SCALES[1] >= 24.0);
+    }
+
+    #[test]
+    fn egui_takes_the_sizes_and_the_scale() {
+        let ctx = egui::Context::default();
+        for scale in UI_SCALES {
+            for theme in [Theme::Dark, Theme::Light] {
+                apply(&ctx, scale, theme);
+                let _ = ctx.run(Default::default(), |_| {});
+                assert_eq!(min_text_px(&ctx), MIN_TEXT_POINTS * scale, "{scale} {theme:?}");
+            }
+        }
+    }
+}

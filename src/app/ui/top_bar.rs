@@ -1,0 +1,62 @@
+//! The top bar: what a class reads from the back row. The scene's name, the
+//! simulated time, RUNNING or PAUSED (never hidden, not even by Tab), the
+//! total momentum and kinetic energy with their units, the collision count,
+//! and, when it applies, that the simulation runs slower than asked or that
+//! the view is a rewound moment.
+
+use super::numbers::{plain, vector, with_unit};
+use crate::app::App;
+use egui::{Color32, RichText};
+
+impl App {
+    /// Draws the top bar; returns its rectangle (points).
+    pub(super) fn top_bar(&mut self, ctx: &egui::Context) -> egui::Rect {
+        let m = self.world.metrics();
+        let dark = ctx.style().visuals.dark_mode;
+        let (running, paused) = if dark {
+            (Color32::from_rgb(120, 230, 140), Color32::from_rgb(255, 200, 60))
+        } else {
+            (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
+        };
+        let name = self.scene.name.clone().unwrap_or_else(|| "Sandbox".into());
+        let panel = egui::TopBottomPanel::top("top_bar").show(ctx, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                ui.spacing_mut().item_spacing.x = 18.0;
+                // Each item stays whole; a narrow window moves it to the next line.
+                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+                ui.label(RichText::new(name).strong());
+                ui.label(format!("t = {}", with_unit(self.world.time, 2, "s")));
+                let state = if self.history.cursor().is_some() {
+                    RichText::new("⏸ REWOUND").color(paused)
+                } else if self.clock.paused {
+                    RichText::new("⏸ PAUSED").color(paused)
+                } else {
+                    RichText::new(format!("▶ RUNNING ×{}", self.clock.time_scale())).color(running)
+                };
+                let state = ui.label(state.strong());
+                self.ui.note_widget("run_state", state.rect, ctx.pixels_per_point());
+                if let Some(slow) = self.slow_note() {
+                    ui.label(RichText::new(slow).color(paused));
+                }
+                ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
+                ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
+                ui.label(format!(
+                    "collisions: {}",
+                    self.world.total_pair_collisions + self.world.total_wall_hits
+                ));
+                if let (Some(k), Some((oldest, newest))) =
+                    (self.history.cursor(), self.history.span())
+                {
+                    ui.label(format!(
+                        "rewound to snapshot {} of {} ({} to {} s): Space resumes",
+                        k + 1,
+                        self.history.len(),
+                        plain(oldest, 2),
+                        plain(newest, 2)
+                    ));
+                }
+            });
+        });
+        panel.response.rect
+    }
+}
