@@ -139,11 +139,20 @@ mod tests {
         );
         // 500 px of height for 10 m: 50 px/m, so 800 px for 16 m, centred.
         assert!((c.scale - 50.0).abs() < 1e-9, "{}", c.scale);
-        assert!((a.y - 70.0).abs() < 1e-9 && (b.y - 570.0).abs() < 1e-9, "{a} {b}");
-        assert!((a.x - 80.0).abs() < 1e-9 && (b.x - 880.0).abs() < 1e-9, "{a} {b}");
+        assert!(
+            (a.y - 70.0).abs() < 1e-9 && (b.y - 570.0).abs() < 1e-9,
+            "{a} {b}"
+        );
+        assert!(
+            (a.x - 80.0).abs() < 1e-9 && (b.x - 880.0).abs() < 1e-9,
+            "{a} {b}"
+        );
         let p = DVec2::new(123.0, 456.0);
         assert!((c.world_to_screen(c.screen_to_world(p)) - p).length() < 1e-9);
-        assert_eq!(c.screen_rect(), (DVec2::new(0.0, 40.0), DVec2::new(960.0, 600.0)));
+        assert_eq!(
+            c.screen_rect(),
+            (DVec2::new(0.0, 40.0), DVec2::new(960.0, 600.0))
+        );
     }
 
     #[test]

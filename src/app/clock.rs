@@ -102,43 +102,45 @@ pub fn physics_budget(previous_frame: f64, previous_physics: f64) -> f64 {
     (previous_frame - previous_physics).max(0.0)
 }
 
-/// Seconds of running frames the ratio of simulated to real time covers.
-const METER_WINDOW: f64 = 2.0;
+/// Seconds of wall clock the ratio of simulated to real time covers: long
+/// enough to take in an autosave's pause (every 5 s by default).
+const METER_WINDOW: f64 = 6.0;
 
-/// Simulated seconds per real second over the last two seconds of running
-/// (frames that were paused, rewound or jumped back are left out).
+/// Simulated seconds per real second over the last six seconds of running,
+/// from the wall clock and the simulated time at the end of each frame. A
+/// pause, a rewind or a jump back in time starts the measurement afresh.
 #[derive(Clone, Debug, Default)]
 pub struct RealtimeMeter {
+    /// (wall clock, simulated time) at the end of recent frames.
     frames: std::collections::VecDeque<(f64, f64)>,
-    real: f64,
-    simulated: f64,
 }
 
 impl RealtimeMeter {
-    /// Adds a frame that lasted `real` seconds and advanced the simulation
-    /// by `simulated` seconds; `running` is false for a paused frame.
-    pub fn push(&mut self, real: f64, simulated: f64, running: bool) {
-        if !running || !(real > 0.0 && real.is_finite()) || !(simulated >= 0.0) {
-            return;
+    /// Adds the end of a frame: the wall clock `now` and the simulated time
+    /// (s); `running` is false for a paused frame.
+    pub fn push(&mut self, now: f64, simulated: f64, running: bool) {
+        let jumped_back = self.frames.back().is_some_and(|&(_, s)| simulated < s);
+        if !running || jumped_back || !(now.is_finite() && simulated.is_finite()) {
+            self.frames.clear();
+            if !running {
+                return;
+            }
         }
-        self.frames.push_back((real, simulated));
-        self.real += real;
-        self.simulated += simulated;
-        while self.real > METER_WINDOW {
-            let Some((r, s)) = self.frames.pop_front() else { break };
-            self.real -= r;
-            self.simulated -= s;
+        self.frames.push_back((now, simulated));
+        while self.frames.len() > 2 && now - self.frames[1].0 >= METER_WINDOW {
+            self.frames.pop_front();
         }
     }
 
     /// Forgets the past (the time scale changed, a scene opened).
     pub fn clear(&mut self) {
-        *self = RealtimeMeter::default();
+        self.frames.clear();
     }
 
-    /// The ratio, once half a second of running frames has been seen.
+    /// The ratio, once half a second of running has been seen.
     pub fn ratio(&self) -> Option<f64> {
-        (self.real >= 0.5).then(|| self.simulated / self.real)
+        let (&(t0, s0), &(t1, s1)) = (self.frames.front()?, self.frames.back()?);
+        (t1 - t0 >= 0.5).then(|| (s1 - s0) / (t1 - t0))
     }
 }
 
@@ -182,17 +184,28 @@ mod tests {
     fn the_meter_gives_simulated_over_real_time_of_running_frames() {
         let mut meter = RealtimeMeter::default();
         assert_eq!(meter.ratio(), None);
+        let (mut now, mut sim) = (0.0, 0.0);
         for _ in 0..30 {
-            meter.push(0.1, 0.03, true);
-            meter.push(0.1, 0.0, false); // paused: not counted
+            now += 0.1;
+            sim += 0.03;
+            meter.push(now, sim, true);
         }
         assert!((meter.ratio().unwrap() - 0.3).abs() < 1e-9);
-        for _ in 0..30 {
-            meter.push(0.1, 0.1, true);
+        for _ in 0..70 {
+            now += 0.1;
+            sim += 0.1;
+            meter.push(now, sim, true);
         }
-        assert!((meter.ratio().unwrap() - 1.0).abs() < 1e-9, "only the last two seconds count");
-        meter.push(0.1, -5.0, true); // a jump back: left out
-        assert!((meter.ratio().unwrap() - 1.0).abs() < 1e-9);
+        assert!(
+            (meter.ratio().unwrap() - 1.0).abs() < 1e-9,
+            "only the last six seconds count"
+        );
+        meter.push(now + 0.1, sim, false); // a pause starts afresh
+        assert_eq!(meter.ratio(), None);
+        for k in 1..=10 {
+            meter.push(now + 0.1 * f64::from(k), 5.0 - f64::from(k), true); // going back
+        }
+        assert_eq!(meter.ratio(), None, "a jump back starts afresh");
         meter.clear();
         assert_eq!(meter.ratio(), None);
     }

@@ -69,7 +69,11 @@ impl LabelPlacer {
         let overlaps = |q: &[f64; 4]| {
             r[0] < q[0] + q[2] && q[0] < r[0] + r[2] && r[1] < q[1] + q[3] && q[1] < r[1] + r[3]
         };
-        self.cells(r).all(|c| self.placed.get(&c).is_none_or(|list| !list.iter().any(overlaps)))
+        self.cells(r).all(|c| {
+            self.placed
+                .get(&c)
+                .is_none_or(|list| !list.iter().any(overlaps))
+        })
     }
 
     /// Places the rectangle [x, y, width, height] if it overlaps nothing
@@ -101,11 +105,14 @@ impl LabelPlacer {
 pub struct Obstacles {
     cell: f64,
     circles: std::collections::HashMap<(i64, i64), Vec<(DVec2, f64)>>,
-    segments: std::collections::HashMap<(i64, i64), Vec<(DVec2, DVec2, f64)>>,
+    segments: std::collections::HashMap<(i64, i64), Vec<Segment>>,
     /// Obstacles too big for the grid (a disc zoomed to fill the screen).
     big_circles: Vec<(DVec2, f64)>,
-    big_segments: Vec<(DVec2, DVec2, f64)>,
+    big_segments: Vec<Segment>,
 }
+
+/// An arrow as an obstacle: its ends and half its width (px).
+type Segment = (DVec2, DVec2, f64);
 
 /// An obstacle covering more cells than this is checked against every label.
 const MAX_OBSTACLE_CELLS: i64 = 64;
@@ -119,12 +126,19 @@ fn cells_of(cell: f64, lo: DVec2, hi: DVec2) -> Option<Vec<(i64, i64)>> {
     if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_OBSTACLE_CELLS {
         return None;
     }
-    Some((x0..=x1).flat_map(|x| (y0..=y1).map(move |y| (x, y))).collect())
+    Some(
+        (x0..=x1)
+            .flat_map(|x| (y0..=y1).map(move |y| (x, y)))
+            .collect(),
+    )
 }
 
 /// Whether the rectangle [x, y, w, h] and the circle overlap.
 pub fn rect_hits_circle(r: [f64; 4], center: DVec2, radius: f64) -> bool {
-    let nearest = DVec2::new(center.x.clamp(r[0], r[0] + r[2]), center.y.clamp(r[1], r[1] + r[3]));
+    let nearest = DVec2::new(
+        center.x.clamp(r[0], r[0] + r[2]),
+        center.y.clamp(r[1], r[1] + r[3]),
+    );
     nearest.distance_squared(center) < radius * radius
 }
 
@@ -178,7 +192,9 @@ impl Obstacles {
     pub fn add_circle(&mut self, center: DVec2, radius: f64) {
         let reach = DVec2::splat(radius);
         match cells_of(self.cell, center - reach, center + reach) {
-            Some(cells) => cells.into_iter().for_each(|c| self.circles.entry(c).or_default().push((center, radius))),
+            Some(cells) => cells
+                .into_iter()
+                .for_each(|c| self.circles.entry(c).or_default().push((center, radius))),
             None => self.big_circles.push((center, radius)),
         }
     }
@@ -187,7 +203,9 @@ impl Obstacles {
     pub fn add_segment(&mut self, a: DVec2, b: DVec2, half_width: f64) {
         let pad = DVec2::splat(half_width);
         match cells_of(self.cell, a.min(b) - pad, a.max(b) + pad) {
-            Some(cells) => cells.into_iter().for_each(|c| self.segments.entry(c).or_default().push((a, b, half_width))),
+            Some(cells) => cells
+                .into_iter()
+                .for_each(|c| self.segments.entry(c).or_default().push((a, b, half_width))),
             None => self.big_segments.push((a, b, half_width)),
         }
     }
@@ -195,7 +213,7 @@ impl Obstacles {
     /// Whether the rectangle [x, y, w, h] covers any obstacle.
     pub fn hits(&self, r: [f64; 4]) -> bool {
         let circle = |&(c, radius): &(DVec2, f64)| rect_hits_circle(r, c, radius);
-        let segment = |&(a, b, pad): &(DVec2, DVec2, f64)| rect_hits_segment(r, a, b, pad);
+        let segment = |&(a, b, pad): &Segment| rect_hits_segment(r, a, b, pad);
         if self.big_circles.iter().any(circle) || self.big_segments.iter().any(segment) {
             return true;
         }
@@ -226,6 +244,9 @@ pub struct Placement {
     pub leader: Option<(DVec2, DVec2)>,
 }
 
+/// The diagonal's component, 1/√2.
+const D: f64 = std::f64::consts::FRAC_1_SQRT_2;
+
 /// The directions a label is tried in, the free side first: right, left,
 /// above, below, then the diagonals (screen y down).
 const DIRECTIONS: [(f64, f64); 8] = [
@@ -233,10 +254,10 @@ const DIRECTIONS: [(f64, f64); 8] = [
     (-1.0, 0.0),
     (0.0, -1.0),
     (0.0, 1.0),
-    (0.7071, -0.7071),
-    (-0.7071, -0.7071),
-    (0.7071, 0.7071),
-    (-0.7071, 0.7071),
+    (D, -D),
+    (-D, -D),
+    (D, D),
+    (-D, D),
 ];
 
 /// Places a label of `size` beside the disc at `center` (radius `radius`),
@@ -277,7 +298,8 @@ pub fn place_label(
                 continue;
             }
             let leader = (k > 0).then(|| {
-                let nearest = DVec2::new(center.x.clamp(x, x + size.x), center.y.clamp(y, y + size.y));
+                let nearest =
+                    DVec2::new(center.x.clamp(x, x + size.x), center.y.clamp(y, y + size.y));
                 let dir = (nearest - center).normalize_or_zero();
                 (center + dir * radius, nearest)
             });
@@ -298,7 +320,11 @@ mod tests {
         let rect = (DVec2::new(100.0, 50.0), DVec2::new(500.0, 450.0));
         assert!(!circle_on_screen(DVec2::new(90.0, 200.0), 5.0, rect));
         assert!(circle_on_screen(DVec2::new(96.0, 200.0), 5.0, rect));
-        assert!(!arrow_readable(DVec2::new(10.0, 10.0), DVec2::new(60.0, 40.0), rect));
+        assert!(!arrow_readable(
+            DVec2::new(10.0, 10.0),
+            DVec2::new(60.0, 40.0),
+            rect
+        ));
     }
 
     #[test]
@@ -331,10 +357,22 @@ mod tests {
         let r = [10.0, 10.0, 20.0, 10.0];
         assert!(rect_hits_circle(r, DVec2::new(5.0, 15.0), 6.0));
         assert!(!rect_hits_circle(r, DVec2::new(5.0, 15.0), 4.0));
-        assert!(rect_hits_segment(r, DVec2::new(0.0, 0.0), DVec2::new(40.0, 40.0), 0.0), "crosses");
-        assert!(!rect_hits_segment(r, DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0), 0.0), "above");
-        assert!(rect_hits_segment(r, DVec2::new(0.0, 8.0), DVec2::new(40.0, 8.0), 3.0), "within the width");
-        assert!(rect_hits_segment(r, DVec2::new(15.0, 12.0), DVec2::new(16.0, 13.0), 0.0), "inside");
+        assert!(
+            rect_hits_segment(r, DVec2::new(0.0, 0.0), DVec2::new(40.0, 40.0), 0.0),
+            "crosses"
+        );
+        assert!(
+            !rect_hits_segment(r, DVec2::new(0.0, 0.0), DVec2::new(40.0, 0.0), 0.0),
+            "above"
+        );
+        assert!(
+            rect_hits_segment(r, DVec2::new(0.0, 8.0), DVec2::new(40.0, 8.0), 3.0),
+            "within the width"
+        );
+        assert!(
+            rect_hits_segment(r, DVec2::new(15.0, 12.0), DVec2::new(16.0, 13.0), 0.0),
+            "inside"
+        );
     }
 
     #[test]
@@ -347,14 +385,26 @@ mod tests {
         obstacles.add_circle(a, r);
         obstacles.add_circle(b, r);
         obstacles.add_segment(a, a + DVec2::new(200.0, 0.0), 4.0);
-        obstacles.add_segment(b, b + DVec2::new(-200.0, 0.0), 4.0);
+        obstacles.add_segment(b, b + DVec2::new(-100.0, 0.0), 4.0);
         let size = DVec2::new(220.0, 60.0);
         let placed = LabelPlacer::new(size);
         let p = place_label(a, r, size, &[6.0, 40.0], world, &obstacles, &placed).unwrap();
         assert!(!obstacles.hits(rect_of(&p)));
-        assert!(!rect_hits_circle(p.rect, b, r), "{p:?} covers the other disc");
-        assert!(!rect_hits_segment(p.rect, a, a + DVec2::new(200.0, 0.0), 4.0), "{p:?} covers its arrow");
-        assert!(p.rect[0] + p.rect[2] <= a.x + 1e-9, "the free side is the left: {p:?}");
+        assert!(
+            !rect_hits_circle(p.rect, b, r),
+            "{p:?} covers the other disc"
+        );
+        assert!(
+            !rect_hits_segment(p.rect, a, a + DVec2::new(200.0, 0.0), 4.0),
+            "{p:?} covers its arrow"
+        );
+        assert_eq!(p.leader, None, "room right beside the disc: no leader line");
+        // With the sides above and below taken too, the left is what is free.
+        let mut crowded = obstacles;
+        crowded.add_circle(a + DVec2::new(0.0, -100.0), 60.0);
+        crowded.add_circle(a + DVec2::new(0.0, 100.0), 60.0);
+        let p = place_label(a, r, size, &[6.0, 40.0], world, &crowded, &placed).unwrap();
+        assert!(p.rect[0] + p.rect[2] <= a.x - r, "{p:?}");
     }
 
     #[test]
@@ -371,11 +421,17 @@ mod tests {
         let placed = LabelPlacer::new(size);
         let p = place_label(c, 20.0, size, &[6.0, 60.0], world, &obstacles, &placed).unwrap();
         let (from, to) = p.leader.expect("away from the disc: a leader line");
-        assert!((from.distance(c) - 20.0).abs() < 1e-9, "starts at the disc's edge");
+        assert!(
+            (from.distance(c) - 20.0).abs() < 1e-9,
+            "starts at the disc's edge"
+        );
         assert!(to.x >= p.rect[0] - 1e-9 && to.x <= p.rect[0] + p.rect[2] + 1e-9);
         assert!(place_label(c, 20.0, size, &[6.0], world, &obstacles, &placed).is_none());
         let tiny = (DVec2::new(150.0, 150.0), DVec2::new(250.0, 250.0));
-        assert!(place_label(c, 20.0, size, &[6.0, 60.0], tiny, &obstacles, &placed).is_none(), "outside the world");
+        assert!(
+            place_label(c, 20.0, size, &[6.0, 60.0], tiny, &obstacles, &placed).is_none(),
+            "outside the world"
+        );
     }
 
     #[test]

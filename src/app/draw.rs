@@ -144,7 +144,15 @@ pub fn draw_discs(
         let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
         let width = 2.5 * look.scale;
         let c = px(c);
-        draw_poly_lines(c.x, c.y, sides, r as f32 + 3.0, 0.0, width, color(look.colors.selected));
+        draw_poly_lines(
+            c.x,
+            c.y,
+            sides,
+            r as f32 + 3.0,
+            0.0,
+            width,
+            color(look.colors.selected),
+        );
     }
 }
 
@@ -264,7 +272,12 @@ pub fn draw_launch_preview(
     draw_poly(at.x, at.y, 40, r, 0.0, ghost);
     let velocity = launch_velocity(start, cursor);
     let tip = camera.world_to_screen(start) + camera.vector_to_screen(velocity * ARROW_SECONDS);
-    arrow(at, px(tip), 3.0 * look.scale, Color::new(1.0, 0.75, 0.0, 1.0));
+    arrow(
+        at,
+        px(tip),
+        3.0 * look.scale,
+        Color::new(1.0, 0.75, 0.0, 1.0),
+    );
     let label = match spot {
         Some(_) => super::ui::numbers::with_unit(velocity.length(), 2, "m/s"),
         None => "no room here".to_string(),

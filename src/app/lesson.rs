@@ -210,7 +210,12 @@ impl App {
     pub(super) fn draw_lesson(&self) {
         let scale = self.ui.scale;
         if self.lesson.center_of_mass {
-            super::draw::draw_center_of_mass(&self.world, &self.camera, super::draw::ARROW_SECONDS, scale);
+            super::draw::draw_center_of_mass(
+                &self.world,
+                &self.camera,
+                super::draw::ARROW_SECONDS,
+                scale,
+            );
         }
         if self.lesson.contact {
             if let Some(c) = self.world.ledger.last() {
@@ -238,7 +243,14 @@ fn draw_contact(c: &Collision, world: &impulse::World, camera: &super::camera::C
             camera.world_to_screen(contact - dir * reach),
             camera.world_to_screen(contact + dir * reach),
         );
-        draw_line(p.x as f32, p.y as f32, q.x as f32, q.y as f32, 3.0 * scale, color);
+        draw_line(
+            p.x as f32,
+            p.y as f32,
+            q.x as f32,
+            q.y as f32,
+            3.0 * scale,
+            color,
+        );
     };
     line(c.normal, Color::new(0.84, 0.37, 0.0, 1.0));
     line(c.normal.perp(), Color::new(0.34, 0.71, 0.91, 1.0));

@@ -339,12 +339,11 @@ impl App {
             self.handle_mouse(mouse);
             let step_start = std::time::Instant::now();
             let budget = clock::physics_budget(previous.0, previous.1);
-            let time_before = self.world.time;
             let running = !self.clock.paused;
             self.advance_physics(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, std::time::Instant::now());
-            let frame_seconds = if self.frame == 0 { 0.0 } else { previous.0 };
-            self.realtime.push(frame_seconds, self.world.time - time_before, running && !self.clock.paused);
+            self.realtime
+                .push(get_time(), self.world.time, running && !self.clock.paused);
             let timed_out = self
                 .options
                 .exit_after
@@ -458,7 +457,10 @@ impl App {
             return None;
         }
         let digits = if rate < 0.1 { 3 } else { 2 };
-        Some(format!("running at {}× real time", ui::numbers::plain(rate, digits)))
+        Some(format!(
+            "running at {}× real time",
+            ui::numbers::plain(rate, digits)
+        ))
     }
 
     fn toast(&mut self, message: impl Into<String>) {

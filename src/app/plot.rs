@@ -125,8 +125,16 @@ impl SpeedHistogram {
                 counts[k] += 1;
             }
         }
-        let density = counts.iter().map(|&c| c as f64 / (n as f64 * bin_width)).collect();
-        Some(SpeedHistogram { kt, sigma2, bin_width, density })
+        let density = counts
+            .iter()
+            .map(|&c| c as f64 / (n as f64 * bin_width))
+            .collect();
+        Some(SpeedHistogram {
+            kt,
+            sigma2,
+            bin_width,
+            density,
+        })
     }
 
     /// The law's density at speed `v` (per m/s).
@@ -164,10 +172,18 @@ mod tests {
 
     #[test]
     fn the_histogram_is_a_density_and_the_law_integrates_to_one() {
-        let world = Gas { count: 400, ..Gas::default() }.build();
+        let world = Gas {
+            count: 400,
+            ..Gas::default()
+        }
+        .build();
         let h = SpeedHistogram::of(&world).unwrap();
         let n = world.particles.len() as f64;
-        let below: usize = world.particles.iter().filter(|p| p.vel.length() < 4.0 * h.sigma2.sqrt()).count();
+        let below: usize = world
+            .particles
+            .iter()
+            .filter(|p| p.vel.length() < 4.0 * h.sigma2.sqrt())
+            .count();
         let area: f64 = h.density.iter().sum::<f64>() * h.bin_width;
         assert!((area - below as f64 / n).abs() < 1e-12, "{area}");
         let (mut integral, dv) = (0.0, 1e-3 * h.sigma2.sqrt());

@@ -6,7 +6,9 @@
 //! disc's only where there is room. Backgrounds first, then all text.
 
 use super::camera::Camera;
-use super::cull::{circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS};
+use super::cull::{
+    circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
+};
 use super::draw::{color, Look, Overlays, ReadoutScope, ARROW_SECONDS};
 use super::ui::numbers::{vector, with_unit};
 use super::ui::theme::MIN_TEXT_POINTS;
@@ -77,9 +79,17 @@ impl WorldText {
 pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
     let v = p.vel;
     [
-        format!("v = {}   |v| = {}", vector(v, 2, "m/s"), with_unit(v.length(), 2, "m/s")),
+        format!(
+            "v = {}   |v| = {}",
+            vector(v, 2, "m/s"),
+            with_unit(v.length(), 2, "m/s")
+        ),
         format!("p = {}", vector(p.momentum(), 2, "kg·m/s")),
-        format!("m = {}   KE = {}", with_unit(p.mass, 3, "kg"), with_unit(p.kinetic_energy(), 3, "J")),
+        format!(
+            "m = {}   KE = {}",
+            with_unit(p.mass, 3, "kg"),
+            with_unit(p.kinetic_energy(), 3, "J")
+        ),
     ]
 }
 
@@ -91,10 +101,17 @@ struct Label {
 }
 
 /// What labels must keep clear of: every disc on screen and every arrow drawn.
-fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, look: Look, cell: f64) -> Option<Obstacles> {
+fn obstacles(
+    world: &World,
+    camera: &Camera,
+    overlays: &Overlays,
+    look: Look,
+    cell: f64,
+) -> Option<Obstacles> {
     let rect = camera.screen_rect();
     let mut o = Obstacles::new(cell);
-    let mean_mass = world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64;
+    let mean_mass =
+        world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64;
     let mut on_screen = 0;
     let half = f64::from(4.0 * look.scale) * 2.4;
     for p in &world.particles {
@@ -108,7 +125,10 @@ fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, look: Look, ce
             return None;
         }
         o.add_circle(c, r + 2.0);
-        for (on, v) in [(overlays.velocity, p.vel), (overlays.momentum, p.momentum() / mean_mass)] {
+        for (on, v) in [
+            (overlays.velocity, p.vel),
+            (overlays.momentum, p.momentum() / mean_mass),
+        ] {
             let tip = c + camera.vector_to_screen(v * ARROW_SECONDS);
             if on && c.distance(tip) >= MIN_ARROW_PIXELS {
                 o.add_segment(c, tip, half);
@@ -158,14 +178,26 @@ pub fn draw_readouts(
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius);
         let chosen = Some(i) == selected;
-        if !circle_on_screen(c, r, camera.screen_rect()) || !(chosen || r >= MIN_LABEL_DISC_PIXELS) {
+        if !circle_on_screen(c, r, camera.screen_rect()) || !(chosen || r >= MIN_LABEL_DISC_PIXELS)
+        {
             continue;
         }
         let lines = readout_lines(p);
-        let width = lines.iter().map(|l| text.measure(l, size).x).fold(0.0, f32::max);
+        let width = lines
+            .iter()
+            .map(|l| text.measure(l, size).x)
+            .fold(0.0, f32::max);
         let label_size = DVec2::new(f64::from(width + 2.0 * pad), height);
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
-        if let Some(at) = place_label(c, r, label_size, gaps, camera.screen_rect(), &obstacles, &placer) {
+        if let Some(at) = place_label(
+            c,
+            r,
+            label_size,
+            gaps,
+            camera.screen_rect(),
+            &obstacles,
+            &placer,
+        ) {
             placer.try_place(at.rect);
             labels.push(Label {
                 rect: at.rect,
@@ -178,7 +210,14 @@ pub fn draw_readouts(
     let leader = color(look.colors.leader);
     for l in &labels {
         if let Some((a, b)) = l.leader {
-            draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, 1.5 * look.scale, leader);
+            draw_line(
+                a.x as f32,
+                a.y as f32,
+                b.x as f32,
+                b.y as f32,
+                1.5 * look.scale,
+                leader,
+            );
         }
         let r = l.rect.map(|v| v as f32);
         draw_rectangle(r[0], r[1], r[2], r[3], background);
@@ -186,7 +225,10 @@ pub fn draw_readouts(
     let ink = color(look.colors.text);
     for l in &labels {
         for (k, line) in l.lines.iter().enumerate() {
-            let at = vec2(l.rect[0] as f32 + pad, l.rect[1] as f32 + pad + line_height * k as f32);
+            let at = vec2(
+                l.rect[0] as f32 + pad,
+                l.rect[1] as f32 + pad + line_height * k as f32,
+            );
             text.draw(line, at, size, ink);
         }
     }
@@ -197,8 +239,12 @@ pub fn launch_label(text: &WorldText, label: &str, tip: Vec2, look: Look) {
     let size = MIN_TEXT_POINTS * look.scale;
     let extent = text.measure(label, size);
     let at = tip + vec2(8.0, -8.0 - extent.y);
-    draw_rectangle(at.x - 4.0, at.y, extent.x + 8.0, extent.y, color(look.colors.label_background));
+    draw_rectangle(
+        at.x - 4.0,
+        at.y,
+        extent.x + 8.0,
+        extent.y,
+        color(look.colors.label_background),
+    );
     text.draw(label, at, size, color(look.colors.text));
 }
-
-

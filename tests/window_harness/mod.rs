@@ -65,7 +65,7 @@ impl Xvfb {
                 "1",
                 "-screen",
                 "0",
-                "1280x800x24",
+                "1920x1080x24",
                 "-nolisten",
                 "tcp",
             ])
@@ -240,7 +240,10 @@ impl Drop for Sandbox {
 pub struct View {
     pub center: [f64; 2],
     pub scale: f64,
+    /// Size of the world's rectangle (px).
     pub viewport: [f64; 2],
+    /// Its top-left corner in the window (px).
+    pub origin: [f64; 2],
 }
 
 impl View {
@@ -251,18 +254,26 @@ impl View {
             center: pair(&c["center"]),
             scale: c["scale"].as_f64().unwrap(),
             viewport: pair(&c["viewport"]),
+            origin: pair(&c["origin"]),
         }
     }
     pub fn to_screen(&self, w: [f64; 2]) -> [f64; 2] {
         [
-            self.viewport[0] / 2.0 + (w[0] - self.center[0]) * self.scale,
-            self.viewport[1] / 2.0 - (w[1] - self.center[1]) * self.scale,
+            self.origin[0] + self.viewport[0] / 2.0 + (w[0] - self.center[0]) * self.scale,
+            self.origin[1] + self.viewport[1] / 2.0 - (w[1] - self.center[1]) * self.scale,
         ]
     }
     pub fn to_world(&self, s: [f64; 2]) -> [f64; 2] {
         [
-            self.center[0] + (s[0] - self.viewport[0] / 2.0) / self.scale,
-            self.center[1] - (s[1] - self.viewport[1] / 2.0) / self.scale,
+            self.center[0] + (s[0] - self.origin[0] - self.viewport[0] / 2.0) / self.scale,
+            self.center[1] - (s[1] - self.origin[1] - self.viewport[1] / 2.0) / self.scale,
+        ]
+    }
+    /// The centre of the world's rectangle on screen.
+    pub fn world_center(&self) -> [f64; 2] {
+        [
+            self.origin[0] + self.viewport[0] / 2.0,
+            self.origin[1] + self.viewport[1] / 2.0,
         ]
     }
 }

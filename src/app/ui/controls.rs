@@ -59,7 +59,10 @@ fn setting_combo<T: Copy + PartialEq + Display>(
         .selected_text(current.to_string())
         .show_ui(ui, |ui| {
             for &item in list {
-                if ui.selectable_label(item == current, item.to_string()).clicked() {
+                if ui
+                    .selectable_label(item == current, item.to_string())
+                    .clicked()
+                {
                     chosen = Some(item);
                 }
             }
@@ -67,19 +70,54 @@ fn setting_combo<T: Copy + PartialEq + Display>(
     chosen.filter(|&c| c != current)
 }
 
-/// A slider under its label, as wide as the dock allows (its value box
-/// beside it, with the unit).
-fn slider(ui: &mut Ui, label: &str, slider: Slider) -> egui::Response {
+/// A slider under its label, as wide as the dock allows, with its value
+/// (and unit) in a box beside it that can also be dragged or typed into.
+/// Returns the track's response, so its rectangle is the track's, and
+/// whether the value changed.
+fn slider(
+    ui: &mut Ui,
+    label: &str,
+    value: &mut f64,
+    range: std::ops::RangeInclusive<f64>,
+    log: bool,
+    decimals: usize,
+    suffix: &str,
+) -> (egui::Response, bool) {
     ui.label(label);
-    let value_box = 90.0;
+    let value_box = 96.0;
     ui.spacing_mut().slider_width = (ui.available_width() - value_box).max(60.0);
-    ui.add(slider)
+    ui.horizontal(|ui| {
+        let track = ui.add(
+            Slider::new(value, range.clone())
+                .logarithmic(log)
+                .show_value(false),
+        );
+        let speed = if log {
+            0.01 * *value
+        } else {
+            0.005 * (range.end() - range.start())
+        };
+        let boxed = ui.add(
+            egui::DragValue::new(value)
+                .range(range)
+                .speed(speed)
+                .fixed_decimals(decimals)
+                .suffix(suffix),
+        );
+        let changed = track.changed() || boxed.changed();
+        (track, changed)
+    })
+    .inner
 }
 
 impl App {
     /// Draws the side dock; returns its rectangle (points).
-    pub(super) fn controls(&mut self, ctx: &egui::Context, actions: &mut Vec<Action>) -> egui::Rect {
-        let width = (ctx.screen_rect().width() * 0.27).clamp(210.0, 290.0);
+    pub(super) fn controls(
+        &mut self,
+        ctx: &egui::Context,
+        actions: &mut Vec<Action>,
+    ) -> egui::Rect {
+        let width = (ctx.screen_rect().width() * 0.26).clamp(210.0, 290.0);
         let panel = egui::SidePanel::right("controls")
             .resizable(false)
             .exact_width(width)
@@ -88,33 +126,53 @@ impl App {
                 ui.separator();
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     ui.set_width(ui.available_width());
-                    CollapsingHeader::new("Collisions").default_open(true).show(ui, |ui| self.laws_section(ui));
-                    CollapsingHeader::new("Show").default_open(true).show(ui, |ui| self.show_section(ui, actions));
-                    CollapsingHeader::new("New discs").show(ui, |ui| self.new_disc_section(ui));
+                    let r = CollapsingHeader::new("Collisions")
+                        .default_open(true)
+                        .show(ui, |ui| self.laws_section(ui));
+                    self.widget(ui, "section_collisions", &r.header_response);
+                    let r = CollapsingHeader::new("Show")
+                        .default_open(true)
+                        .show(ui, |ui| self.show_section(ui, actions));
+                    self.widget(ui, "section_show", &r.header_response);
+                    let r =
+                        CollapsingHeader::new("New discs").show(ui, |ui| self.new_disc_section(ui));
+                    self.widget(ui, "section_new_discs", &r.header_response);
                     let title = match self.selected {
                         Some(i) if i < self.world.particles.len() => format!("Selected disc ({i})"),
                         _ => "Selected disc".to_string(),
                     };
-                    CollapsingHeader::new(title)
+                    let r = CollapsingHeader::new(title)
                         .id_salt("selected")
-                        .open(self.selected.is_some().then_some(true))
                         .show(ui, |ui| self.selected_section(ui, actions));
-                    CollapsingHeader::new("Scene").show(ui, |ui| self.scene_section(ui, actions));
-                    CollapsingHeader::new("View").show(ui, |ui| self.view_section(ui, actions));
-                    CollapsingHeader::new("Details").default_open(false).show(ui, |ui| self.details_section(ui));
+                    self.widget(ui, "section_selected", &r.header_response);
+                    let r = CollapsingHeader::new("Scene")
+                        .show(ui, |ui| self.scene_section(ui, actions));
+                    self.widget(ui, "section_scene", &r.header_response);
+                    let r =
+                        CollapsingHeader::new("View").show(ui, |ui| self.view_section(ui, actions));
+                    self.widget(ui, "section_view", &r.header_response);
+                    let r = CollapsingHeader::new("Details")
+                        .default_open(false)
+                        .show(ui, |ui| self.details_section(ui));
+                    self.widget(ui, "section_details", &r.header_response);
                 });
             });
         panel.response.rect
     }
 
     fn widget(&mut self, ui: &Ui, name: &str, response: &egui::Response) {
-        self.ui.note_widget(name, response.rect, ui.ctx().pixels_per_point());
+        self.ui
+            .note_widget(name, response.rect, ui.ctx().pixels_per_point());
     }
 
     /// Play or pause, step, slower, faster, reset, presets, help, fit.
     fn transport(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
         ui.horizontal_wrapped(|ui| {
-            let play = if self.clock.paused { "▶ Play" } else { "⏸ Pause" };
+            let play = if self.clock.paused {
+                "▶ Play"
+            } else {
+                "⏸ Pause"
+            };
             let r = ui.button(play).on_hover_text("Space");
             self.widget(ui, "play", &r);
             if r.clicked() {
@@ -125,7 +183,11 @@ impl App {
             if r.clicked() {
                 self.clock.single_step();
             }
-            if ui.button("⟲ Reset").on_hover_text("R: the scene as it opened").clicked() {
+            if ui
+                .button("⟲ Reset")
+                .on_hover_text("R: the scene as it opened")
+                .clicked()
+            {
                 actions.push(Action::Reset);
             }
             if ui.button("« Slower").on_hover_text("[").clicked() {
@@ -134,7 +196,9 @@ impl App {
             if ui.button("Faster »").on_hover_text("]").clicked() {
                 self.clock.change_time_scale(1);
             }
-            let r = ui.button("Presets…").on_hover_text("P, or the keys 1 … 9, 0");
+            let r = ui
+                .button("Presets…")
+                .on_hover_text("P, or the keys 1 … 9, 0");
             self.widget(ui, "presets", &r);
             if r.clicked() {
                 self.ui.presets_open = !self.ui.presets_open;
@@ -151,34 +215,62 @@ impl App {
     fn laws_section(&mut self, ui: &mut Ui) {
         let w = &mut self.world;
         let mut e = w.restitution;
-        let r = slider(ui, "Restitution e between discs", Slider::new(&mut e, 0.0..=1.0).step_by(0.01));
-        let rect = r.rect;
-        if r.changed() {
-            w.restitution = e;
+        let (r, changed) = slider(
+            ui,
+            "Restitution e between discs (1: elastic, 0: they stick)",
+            &mut e,
+            0.0..=1.0,
+            false,
+            2,
+            "",
+        );
+        if changed {
+            w.restitution = (e * 100.0).round() / 100.0;
         }
-        let r = r.on_hover_text("E / Shift+E: ±0.1. 1 = elastic, 0 = the discs stick");
-        let _ = r;
-        self.ui.note_widget("restitution", rect, ui.ctx().pixels_per_point());
+        self.widget(ui, "restitution", &r.on_hover_text("E / Shift+E: ±0.1"));
         let w = &mut self.world;
         let mut e = w.wall_restitution;
-        let r = slider(ui, "Restitution e at the walls", Slider::new(&mut e, 0.0..=1.0).step_by(0.01));
-        if r.changed() {
-            w.wall_restitution = e;
+        let (r, changed) = slider(
+            ui,
+            "Restitution e at the walls",
+            &mut e,
+            0.0..=1.0,
+            false,
+            2,
+            "",
+        );
+        if changed {
+            w.wall_restitution = (e * 100.0).round() / 100.0;
         }
-        let rect = r.on_hover_text("W / Shift+W: ±0.1").rect;
-        self.ui.note_widget("wall_restitution", rect, ui.ctx().pixels_per_point());
+        self.widget(
+            ui,
+            "wall_restitution",
+            &r.on_hover_text("W / Shift+W: ±0.1"),
+        );
         // The slider shows |g| and sets it pointing down; a scene's sideways
         // gravity is only replaced once the slider is moved.
         let w = &mut self.world;
         let mut g = w.gravity.length();
-        let r = slider(ui, "Gravity (down)", Slider::new(&mut g, 0.0..=20.0).suffix(" m/s²"));
-        if r.changed() {
+        let (r, changed) = slider(
+            ui,
+            "Gravity, pointing down",
+            &mut g,
+            0.0..=20.0,
+            false,
+            2,
+            " m/s²",
+        );
+        if changed {
             w.gravity = DVec2::new(0.0, -snap_gravity(g));
         }
-        let rect = r.on_hover_text("G: 9.81 m/s² down, or off").rect;
-        self.ui.note_widget("gravity", rect, ui.ctx().pixels_per_point());
+        self.widget(ui, "gravity", &r.on_hover_text("G: 9.81 m/s² down, or off"));
         let w = &mut self.world;
-        if let Some(b) = setting_combo(ui, "edges", &Boundary::ALL.map(Boundary::name), w.boundary.name()) {
+        if let Some(b) = setting_combo(
+            ui,
+            "edges",
+            &Boundary::ALL.map(Boundary::name),
+            w.boundary.name(),
+        ) {
             if let Some(&k) = Boundary::ALL.iter().find(|k| k.name() == b) {
                 w.boundary = k;
             }
@@ -198,14 +290,19 @@ impl App {
 
     fn show_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
         let o = &mut self.overlays;
-        ui.checkbox(&mut o.velocity, "velocity arrows (white)").on_hover_text("V");
-        ui.checkbox(&mut o.momentum, "momentum arrows (pink)").on_hover_text("M");
+        ui.checkbox(&mut o.velocity, "velocity arrows (white)")
+            .on_hover_text("V");
+        ui.checkbox(&mut o.momentum, "momentum arrows (pink)")
+            .on_hover_text("M");
         const SCOPES: [(ReadoutScope, &str); 3] = [
             (ReadoutScope::Off, "none"),
             (ReadoutScope::Selected, "selected disc"),
             (ReadoutScope::All, "every disc"),
         ];
-        let current = SCOPES.iter().find(|(s, _)| *s == o.readouts).map_or("none", |(_, l)| l);
+        let current = SCOPES
+            .iter()
+            .find(|(s, _)| *s == o.readouts)
+            .map_or("none", |(_, l)| l);
         ComboBox::from_label("values beside")
             .selected_text(current)
             .show_ui(ui, |ui| {
@@ -215,20 +312,35 @@ impl App {
             })
             .response
             .on_hover_text("I");
-        ui.checkbox(&mut self.lesson.center_of_mass, "centre of mass").on_hover_text("O");
-        ui.checkbox(&mut self.trails.on, "trails").on_hover_text("A");
-        ui.checkbox(&mut self.overlays.safe_palette, "colour-blind-safe").on_hover_text("F3");
+        ui.checkbox(&mut self.lesson.center_of_mass, "centre of mass")
+            .on_hover_text("O");
+        ui.checkbox(&mut self.trails.on, "trails")
+            .on_hover_text("A");
+        ui.checkbox(&mut self.overlays.safe_palette, "colour-blind-safe")
+            .on_hover_text("F3");
         ui.horizontal_wrapped(|ui| {
-            if ui.button("Next collision").on_hover_text("J: run to the next collision and pause at the instant of impact").clicked() {
+            if ui
+                .button("Next collision")
+                .on_hover_text("J: run to the next collision and pause at the instant of impact")
+                .clicked()
+            {
                 actions.push(Action::NextCollision);
             }
-            if ui.button("◀ Back").on_hover_text(", (Shift: 10 steps)").clicked() {
+            if ui
+                .button("◀ Back")
+                .on_hover_text(", (Shift: 10 steps)")
+                .clicked()
+            {
                 actions.push(Action::Scrub(-1));
             }
             if ui.button("Forward ▶").on_hover_text(".").clicked() {
                 actions.push(Action::Scrub(1));
             }
-            if ui.button("Centre-of-mass frame").on_hover_text("Z: subtract the centre of mass's velocity from every disc").clicked() {
+            if ui
+                .button("Centre-of-mass frame")
+                .on_hover_text("Z: subtract the centre of mass's velocity from every disc")
+                .clicked()
+            {
                 actions.push(Action::CenterOfMassFrame);
             }
         });
@@ -238,19 +350,25 @@ impl App {
         ui.label("Drag on empty space to launch one.");
         let biggest = 0.45 * self.world.size.min_element();
         let mut r = self.new_disc.radius;
-        if slider(ui, "Radius", Slider::new(&mut r, 0.05..=2.0f64.min(biggest).max(0.06)).logarithmic(true).suffix(" m"))
-            .on_hover_text("PgUp / PgDn")
-            .changed()
-        {
+        let (track, changed) = slider(
+            ui,
+            "Radius",
+            &mut r,
+            0.05..=2.0f64.min(biggest).max(0.06),
+            true,
+            2,
+            " m",
+        );
+        if changed {
             self.new_disc.radius = r.min(biggest);
         }
+        self.widget(ui, "new_radius", &track.on_hover_text("PgUp / PgDn"));
         let mut m = self.new_disc.mass;
-        if slider(ui, "Mass", Slider::new(&mut m, 0.01..=100.0).logarithmic(true).suffix(" kg"))
-            .on_hover_text("Home / End")
-            .changed()
-        {
+        let (track, changed) = slider(ui, "Mass", &mut m, 0.01..=100.0, true, 2, " kg");
+        if changed {
             self.new_disc.mass = m;
         }
+        self.widget(ui, "new_mass", &track.on_hover_text("Home / End"));
     }
 
     fn selected_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
@@ -277,18 +395,25 @@ impl App {
             }
         }
         let mut enter = false;
-        egui::Grid::new("selected_fields").num_columns(2).show(ui, |ui| {
-            for k in 0..4 {
-                let r = ui.add(egui::TextEdit::singleline(&mut self.ui.fields.text[k]).desired_width(100.0));
-                select_all_on_focus(ui, &r, &self.ui.fields.text[k]);
-                self.ui.note_widget(FIELD_KEYS[k], r.rect, ui.ctx().pixels_per_point());
-                if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                    enter = true;
+        egui::Grid::new("selected_fields")
+            .num_columns(2)
+            .show(ui, |ui| {
+                for k in 0..4 {
+                    let r = ui.add(
+                        egui::TextEdit::singleline(&mut self.ui.fields.text[k])
+                            .desired_width(100.0),
+                    );
+                    select_all_on_focus(ui, &r, &self.ui.fields.text[k]);
+                    self.ui.note_text_field(&r);
+                    self.ui
+                        .note_widget(FIELD_KEYS[k], r.rect, ui.ctx().pixels_per_point());
+                    if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                        enter = true;
+                    }
+                    ui.label(FIELD_LABELS[k]);
+                    ui.end_row();
                 }
-                ui.label(FIELD_LABELS[k]);
-                ui.end_row();
-            }
-        });
+            });
         ui.horizontal(|ui| {
             let r = ui.button("Apply").on_hover_text("Enter in a field");
             self.widget(ui, "apply", &r);
@@ -323,6 +448,7 @@ impl App {
                 .desired_width(f32::INFINITY),
         );
         self.widget(ui, "scene_path", &r);
+        self.ui.note_text_field(&r);
         let enter = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         ui.horizontal_wrapped(|ui| {
             let r = ui.button("Open").on_hover_text("Enter in the field");
@@ -338,7 +464,11 @@ impl App {
             if ui.button("Clear discs").on_hover_text("C").clicked() {
                 actions.push(Action::Clear);
             }
-            if ui.button("Export CSV").on_hover_text("X: totals, discs and collisions").clicked() {
+            if ui
+                .button("Export CSV")
+                .on_hover_text("X: totals, discs and collisions")
+                .clicked()
+            {
                 actions.push(Action::Export);
             }
             if ui.button("Screenshot").on_hover_text("F12").clicked() {
@@ -352,14 +482,26 @@ impl App {
     }
 
     fn view_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {
-        let mut scale = self.ui.scale;
-        let r = slider(ui, "Text and line size", Slider::new(&mut scale, UI_SCALE_RANGE).step_by(0.1).suffix("×"));
+        let mut scale = f64::from(self.ui.scale);
+        let range = f64::from(*UI_SCALE_RANGE.start())..=f64::from(*UI_SCALE_RANGE.end());
+        let (r, changed) = slider(
+            ui,
+            "Size of text and lines",
+            &mut scale,
+            range,
+            false,
+            1,
+            "×",
+        );
         self.widget(ui, "ui_scale", &r);
-        if r.drag_stopped() || (r.changed() && !r.dragged()) {
-            self.ui.set_scale(scale);
+        // Applied when let go: the panel must not change size under the pointer.
+        if r.drag_stopped() || (changed && !r.dragged()) {
+            self.ui.set_scale(((scale * 10.0).round() / 10.0) as f32);
         }
         ui.horizontal_wrapped(|ui| {
-            let r = ui.button("Projector size").on_hover_text("F2: 1.0, 1.5, 2.0");
+            let r = ui
+                .button("Projector size")
+                .on_hover_text("F2: 1.0, 1.5, 2.0");
             self.widget(ui, "projector", &r);
             if r.clicked() {
                 self.ui.set_scale(next_scale(self.ui.scale));
@@ -368,13 +510,25 @@ impl App {
                 Theme::Dark => Theme::Light,
                 Theme::Light => Theme::Dark,
             };
-            let r = ui.button(format!("{} theme", if other == Theme::Light { "Light" } else { "Dark" }))
+            let r = ui
+                .button(format!(
+                    "{} theme",
+                    if other == Theme::Light {
+                        "Light"
+                    } else {
+                        "Dark"
+                    }
+                ))
                 .on_hover_text("a bright room wants the light one");
             self.widget(ui, "theme", &r);
             if r.clicked() {
                 self.ui.theme = other;
             }
-            if ui.button("Zoom +").on_hover_text("+ or the wheel").clicked() {
+            if ui
+                .button("Zoom +")
+                .on_hover_text("+ or the wheel")
+                .clicked()
+            {
                 actions.push(Action::Zoom(1.15));
             }
             if ui.button("Zoom −").on_hover_text("−").clicked() {
@@ -383,7 +537,11 @@ impl App {
             if ui.button("Full screen").on_hover_text("F11").clicked() {
                 actions.push(Action::Fullscreen);
             }
-            if ui.button("Hide panels").on_hover_text("Tab brings them back").clicked() {
+            if ui
+                .button("Hide panels")
+                .on_hover_text("Tab brings them back")
+                .clicked()
+            {
                 self.ui.docks_open = false;
             }
         });
@@ -404,12 +562,22 @@ impl App {
         let mut micros: Vec<f64> = self.step_micros.iter().copied().collect();
         micros.sort_by(f64::total_cmp);
         let median = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
-        ui.label(format!("time step dt = {}", with_unit(self.clock.dt * 1e3, 3, "ms")));
-        ui.label(format!("step time {} (median), {} steps in the last frame", with_unit(median, 1, "µs"), self.steps_last_frame));
+        ui.label(format!(
+            "time step dt = {}",
+            with_unit(self.clock.dt * 1e3, 3, "ms")
+        ));
+        ui.label(format!(
+            "step time {} (median), {} steps in the last frame",
+            with_unit(median, 1, "µs"),
+            self.steps_last_frame
+        ));
         ui.label(format!("{} frames per second", macroquad::time::get_fps()));
         ui.label(format!("{} discs", self.world.particles.len()));
         if let Some(rate) = self.sim_rate() {
-            ui.label(format!("simulated seconds per real second: {}", plain(rate, 2)));
+            ui.label(format!(
+                "simulated seconds per real second: {}",
+                plain(rate, 2)
+            ));
         }
     }
 

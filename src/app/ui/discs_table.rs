@@ -66,7 +66,10 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
             return Err(format!("{name} must be more than 0"));
         }
         if k == 1 && v > max_radius {
-            return Err(format!("radius must be at most {} m here", field(max_radius)));
+            return Err(format!(
+                "radius must be at most {} m here",
+                field(max_radius)
+            ));
         }
         values[k] = Some(v);
     }
@@ -111,8 +114,10 @@ impl App {
     pub(super) fn discs_tab(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label("Click a mass or velocity to change it; Enter applies, Esc cancels.");
-            if let Some(note) = &self.ui.table.note {
-                show_note(ui, note);
+            if let Some(note) = self.ui.table.note.clone() {
+                let r = show_note(ui, &note);
+                self.ui
+                    .note_widget("table_note", r.rect, ui.ctx().pixels_per_point());
             }
         });
         if self.world.particles.is_empty() {
@@ -130,6 +135,7 @@ impl App {
         let mut edit_text = editing.as_ref().map(|e| e.text.clone()).unwrap_or_default();
         let selected = self.selected;
         let mut select = None;
+        let mut focused = false;
         TableBuilder::new(ui)
             .id_salt("discs_table")
             .striped(true)
@@ -150,13 +156,30 @@ impl App {
                     row.set_selected(selected == Some(i));
                     row.col(|ui| {
                         let c = p.color;
-                        let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-                        ui.painter().circle_filled(rect.center(), 7.0, Color32::from_rgb(c.r, c.g, c.b));
-                        if ui.selectable_label(selected == Some(i), format!("{i}")).clicked() {
+                        let (rect, _) =
+                            ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+                        ui.painter().circle_filled(
+                            rect.center(),
+                            7.0,
+                            Color32::from_rgb(c.r, c.g, c.b),
+                        );
+                        if ui
+                            .selectable_label(selected == Some(i), format!("{i}"))
+                            .clicked()
+                        {
                             select = Some(i);
                         }
                     });
-                    let values = [p.mass, p.pos.x, p.pos.y, p.vel.x, p.vel.y, p.vel.length(), p.momentum().length(), p.kinetic_energy()];
+                    let values = [
+                        p.mass,
+                        p.pos.x,
+                        p.pos.y,
+                        p.vel.x,
+                        p.vel.y,
+                        p.vel.length(),
+                        p.momentum().length(),
+                        p.kinetic_energy(),
+                    ];
                     for (column, value) in values.into_iter().enumerate() {
                         // Editable: mass (column 0), v_x (3), v_y (4).
                         let field_index = match column {
@@ -170,26 +193,38 @@ impl App {
                                 ui.label(plain(value, 3));
                             }
                             Some(f) => {
-                                let mine = editing.as_ref().is_some_and(|e| e.disc == i && e.field == f);
+                                let mine = editing
+                                    .as_ref()
+                                    .is_some_and(|e| e.disc == i && e.field == f);
                                 let mut shown = plain(value, 3).replace('−', "-");
                                 let text = if mine { &mut edit_text } else { &mut shown };
-                                let bad = mine && self.ui.table.note.as_ref().is_some_and(|n| n.error);
+                                let bad =
+                                    mine && self.ui.table.note.as_ref().is_some_and(|n| n.error);
                                 let mut edit = egui::TextEdit::singleline(text).desired_width(84.0);
                                 if bad {
                                     edit = edit.text_color(Color32::from_rgb(220, 40, 30));
                                 }
                                 let r = ui.add(edit);
                                 select_all_on_focus(ui, &r, text);
+                                focused |= r.has_focus();
                                 let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
                                 cells.push((format!("{name}_{i}"), r.rect));
                                 if r.changed() && !mine {
-                                    start = Some(CellEdit { disc: i, field: f, text: text.clone() });
+                                    start = Some(CellEdit {
+                                        disc: i,
+                                        field: f,
+                                        text: text.clone(),
+                                    });
                                 }
                                 if r.lost_focus() {
                                     if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
                                         cancel = true;
                                     } else if mine || r.changed() {
-                                        commit = Some(CellEdit { disc: i, field: f, text: text.clone() });
+                                        commit = Some(CellEdit {
+                                            disc: i,
+                                            field: f,
+                                            text: text.clone(),
+                                        });
                                     }
                                 }
                             }
@@ -197,6 +232,7 @@ impl App {
                     }
                 });
             });
+        self.ui.text_focus |= focused;
         for (name, rect) in cells {
             self.ui.note_widget(name, rect, ppp);
         }
@@ -241,7 +277,10 @@ impl App {
                 self.totals.clear();
             }
             Err(e) => {
-                self.ui.table.note = Some(Note::error(format!("Disc {}: {e}; nothing changed", cell.disc)));
+                self.ui.table.note = Some(Note::error(format!(
+                    "Disc {}: {e}; nothing changed",
+                    cell.disc
+                )));
                 self.ui.table.editing = Some(cell);
             }
         }
@@ -268,28 +307,67 @@ mod tests {
         );
         assert!(parse_disc_edit([None; 4], 4.0).unwrap().is_empty());
         let error = |fields| parse_disc_edit(fields, 4.0).unwrap_err();
-        assert_eq!(error([Some("abc"), None, None, None]), "mass: “abc” is not a number");
-        assert_eq!(error([Some("0"), None, None, None]), "mass must be more than 0");
-        assert_eq!(error([None, Some("-1"), None, None]), "radius must be more than 0");
-        assert_eq!(error([None, Some("5"), None, None]), "radius must be at most 4 m here");
-        assert_eq!(error([None, None, Some("inf"), None]), "v_x must be a finite number");
-        assert_eq!(error([None, None, None, Some("1e999")]), "v_y must be a finite number");
-        assert_eq!(error([None, None, None, Some("NaN")]), "v_y must be a finite number");
+        assert_eq!(
+            error([Some("abc"), None, None, None]),
+            "mass: “abc” is not a number"
+        );
+        assert_eq!(
+            error([Some("0"), None, None, None]),
+            "mass must be more than 0"
+        );
+        assert_eq!(
+            error([None, Some("-1"), None, None]),
+            "radius must be more than 0"
+        );
+        assert_eq!(
+            error([None, Some("5"), None, None]),
+            "radius must be at most 4 m here"
+        );
+        assert_eq!(
+            error([None, None, Some("inf"), None]),
+            "v_x must be a finite number"
+        );
+        assert_eq!(
+            error([None, None, None, Some("1e999")]),
+            "v_y must be a finite number"
+        );
+        assert_eq!(
+            error([None, None, None, Some("NaN")]),
+            "v_y must be a finite number"
+        );
         assert_eq!(error([None, None, Some("  "), None]), "v_x: type a number");
-        assert_eq!(error([None, Some("1,5"), None, None]), "radius: “1,5” is not a number");
-        assert_eq!(parse_disc_edit([None, None, Some("−2"), None], 4.0).unwrap().vx, Some(-2.0), "a typographic minus");
+        assert_eq!(
+            error([None, Some("1,5"), None, None]),
+            "radius: “1,5” is not a number"
+        );
+        assert_eq!(
+            parse_disc_edit([None, None, Some("−2"), None], 4.0)
+                .unwrap()
+                .vx,
+            Some(-2.0),
+            "a typographic minus"
+        );
     }
 
     #[test]
     fn an_edit_changes_only_its_quantities() {
-        let mut p = Particle::new(DVec2::new(1.0, 2.0), DVec2::new(3.0, 4.0), 1.0, 0.5, DiscColor::rgb(1, 2, 3));
+        let mut p = Particle::new(
+            DVec2::new(1.0, 2.0),
+            DVec2::new(3.0, 4.0),
+            1.0,
+            0.5,
+            DiscColor::rgb(1, 2, 3),
+        );
         DiscEdit {
             radius: Some(0.25),
             vy: Some(-1.0),
             ..DiscEdit::default()
         }
         .apply(&mut p);
-        assert_eq!((p.mass, p.radius, p.vel), (1.0, 0.25, DVec2::new(3.0, -1.0)));
+        assert_eq!(
+            (p.mass, p.radius, p.vel),
+            (1.0, 0.25, DVec2::new(3.0, -1.0))
+        );
         assert_eq!(p.pos, DVec2::new(1.0, 2.0));
     }
 }

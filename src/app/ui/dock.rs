@@ -19,13 +19,17 @@ const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
 
 impl App {
     /// Draws the dock; returns its rectangle (points).
-    pub(super) fn dock(&mut self, ctx: &egui::Context, actions: &mut Vec<super::Action>) -> egui::Rect {
+    pub(super) fn dock(
+        &mut self,
+        ctx: &egui::Context,
+        actions: &mut Vec<super::Action>,
+    ) -> egui::Rect {
         let expanded = self.ui.dock_expanded;
         let screen = ctx.screen_rect();
         let panel = if expanded {
             egui::TopBottomPanel::bottom("dock")
                 .resizable(true)
-                .default_height((screen.height() * 0.24).clamp(130.0, 280.0))
+                .default_height((screen.height() * 0.22).clamp(130.0, 280.0))
                 .height_range(100.0..=(screen.height() * 0.5).max(110.0))
         } else {
             egui::TopBottomPanel::bottom("dock_folded").resizable(false)
@@ -52,7 +56,8 @@ impl App {
             for tab in DockTab::ALL {
                 let chosen = self.ui.tab == tab && self.ui.dock_expanded;
                 let r = ui.selectable_label(chosen, RichText::new(tab.title()).strong());
-                self.ui.note_widget(format!("tab_{}", tab.title().to_lowercase()), r.rect, ppp);
+                self.ui
+                    .note_widget(format!("tab_{}", tab.title().to_lowercase()), r.rect, ppp);
                 if r.clicked() {
                     if chosen {
                         self.ui.dock_expanded = false;
@@ -63,7 +68,11 @@ impl App {
                 }
             }
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                let label = if self.ui.dock_expanded { "Hide" } else { "Show" };
+                let label = if self.ui.dock_expanded {
+                    "Hide"
+                } else {
+                    "Show"
+                };
                 let r = ui.button(label);
                 self.ui.note_widget("dock_toggle", r.rect, ppp);
                 if r.clicked() {
@@ -89,7 +98,11 @@ impl App {
         let series = |value: fn(&crate::app::plot::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
         };
-        let (px, py, ke) = (series(|s| s.momentum.x), series(|s| s.momentum.y), series(|s| s.kinetic_energy));
+        let (px, py, ke) = (
+            series(|s| s.momentum.x),
+            series(|s| s.momentum.y),
+            series(|s| s.kinetic_energy),
+        );
         ui.columns(2, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
             Plot::new("momentum_plot")
@@ -103,10 +116,22 @@ impl App {
                 .allow_drag(false)
                 .allow_zoom(false)
                 .allow_boxed_zoom(false)
-                .label_formatter(|name, v| format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3)))
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
+                })
                 .show(&mut columns[0], |plot| {
-                    plot.line(Line::new(PlotPoints::from(px)).name("p_x").color(PX_COLOR).width(2.5));
-                    plot.line(Line::new(PlotPoints::from(py)).name("p_y").color(PY_COLOR).width(2.5));
+                    plot.line(
+                        Line::new(PlotPoints::from(px))
+                            .name("p_x")
+                            .color(PX_COLOR)
+                            .width(2.5),
+                    );
+                    plot.line(
+                        Line::new(PlotPoints::from(py))
+                            .name("p_y")
+                            .color(PY_COLOR)
+                            .width(2.5),
+                    );
                 });
             let (lo, hi) = padded_range(ke.iter().map(|p| p[1]));
             Plot::new("energy_plot")
@@ -120,9 +145,16 @@ impl App {
                 .allow_drag(false)
                 .allow_zoom(false)
                 .allow_boxed_zoom(false)
-                .label_formatter(|name, v| format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3)))
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
+                })
                 .show(&mut columns[1], |plot| {
-                    plot.line(Line::new(PlotPoints::from(ke)).name("KE").color(KE_COLOR).width(2.5));
+                    plot.line(
+                        Line::new(PlotPoints::from(ke))
+                            .name("KE")
+                            .color(KE_COLOR)
+                            .width(2.5),
+                    );
                 });
         });
     }
@@ -130,12 +162,20 @@ impl App {
     fn collisions_tab(&mut self, ui: &mut egui::Ui, actions: &mut Vec<super::Action>) {
         let ledger = &self.world.ledger;
         ui.horizontal_wrapped(|ui| {
-            ui.label(format!("{} collisions between discs recorded", ledger.recorded));
+            ui.label(format!(
+                "{} collisions between discs recorded",
+                ledger.recorded
+            ));
             if ui.button("Next collision").on_hover_text("J").clicked() {
                 actions.push(super::Action::NextCollision);
             }
         });
-        let recent: Vec<_> = ledger.entries().rev().take(crate::app::lesson::LEDGER_KEEP).cloned().collect();
+        let recent: Vec<_> = ledger
+            .entries()
+            .rev()
+            .take(crate::app::lesson::LEDGER_KEEP)
+            .cloned()
+            .collect();
         if recent.is_empty() {
             ui.label("None yet. Next collision (J) runs to the next one and pauses at the instant of impact.");
             return;
@@ -174,37 +214,46 @@ impl App {
                 });
             let ui = &mut columns[1];
             let c = &recent[0];
-            ui.strong(format!("Newest: discs {} and {} at t = {}", c.discs[0], c.discs[1], with_unit(c.time, 3, "s")));
-            egui::ScrollArea::vertical().id_salt("ledger_detail").show(ui, |ui| {
-                egui::Grid::new("ledger_newest").striped(true).show(ui, |ui| {
-                    for h in ["", "before", "after"] {
-                        ui.strong(h);
-                    }
-                    ui.end_row();
-                    for k in 0..2 {
-                        let (p0, p1) = c.momentum(k);
-                        let (e0, e1) = c.kinetic_energy(k);
-                        let ((n0, t0), (n1, t1)) = c.components(k);
-                        let d = c.discs[k];
-                        ui.label(format!("disc {d}: p"));
-                        ui.label(vector(p0, 3, "kg·m/s"));
-                        ui.label(vector(p1, 3, "kg·m/s"));
-                        ui.end_row();
-                        ui.label(format!("disc {d}: KE"));
-                        ui.label(with_unit(e0, 3, "J"));
-                        ui.label(with_unit(e1, 3, "J"));
-                        ui.end_row();
-                        ui.label(format!("disc {d}: v along the normal"));
-                        ui.label(with_unit(n0, 3, "m/s"));
-                        ui.label(with_unit(n1, 3, "m/s"));
-                        ui.end_row();
-                        ui.label(format!("disc {d}: v along the tangent"));
-                        ui.label(with_unit(t0, 3, "m/s"));
-                        ui.label(with_unit(t1, 3, "m/s"));
-                        ui.end_row();
-                    }
+            ui.strong(format!(
+                "Newest: discs {} and {} at t = {}",
+                c.discs[0],
+                c.discs[1],
+                with_unit(c.time, 3, "s")
+            ));
+            egui::ScrollArea::vertical()
+                .id_salt("ledger_detail")
+                .show(ui, |ui| {
+                    egui::Grid::new("ledger_newest")
+                        .striped(true)
+                        .show(ui, |ui| {
+                            for h in ["", "before", "after"] {
+                                ui.strong(h);
+                            }
+                            ui.end_row();
+                            for k in 0..2 {
+                                let (p0, p1) = c.momentum(k);
+                                let (e0, e1) = c.kinetic_energy(k);
+                                let ((n0, t0), (n1, t1)) = c.components(k);
+                                let d = c.discs[k];
+                                ui.label(format!("disc {d}: p"));
+                                ui.label(vector(p0, 3, "kg·m/s"));
+                                ui.label(vector(p1, 3, "kg·m/s"));
+                                ui.end_row();
+                                ui.label(format!("disc {d}: KE"));
+                                ui.label(with_unit(e0, 3, "J"));
+                                ui.label(with_unit(e1, 3, "J"));
+                                ui.end_row();
+                                ui.label(format!("disc {d}: v along the normal"));
+                                ui.label(with_unit(n0, 3, "m/s"));
+                                ui.label(with_unit(n1, 3, "m/s"));
+                                ui.end_row();
+                                ui.label(format!("disc {d}: v along the tangent"));
+                                ui.label(with_unit(t0, 3, "m/s"));
+                                ui.label(with_unit(t1, 3, "m/s"));
+                                ui.end_row();
+                            }
+                        });
                 });
-            });
         });
     }
 
@@ -224,7 +273,10 @@ impl App {
             .map(|(k, &d)| Bar::new((k as f64 + 0.5) * h.bin_width, d).width(h.bin_width * 0.9))
             .collect();
         let top = h.bin_width * h.density.len() as f64;
-        let law: Vec<[f64; 2]> = (0..=200).map(|k| top * k as f64 / 200.0).map(|v| [v, h.law(v)]).collect();
+        let law: Vec<[f64; 2]> = (0..=200)
+            .map(|k| top * k as f64 / 200.0)
+            .map(|v| [v, h.law(v)])
+            .collect();
         Plot::new("speeds_plot")
             .height(ui.available_height())
             .legend(Legend::default().position(Corner::RightTop))
@@ -238,7 +290,12 @@ impl App {
             .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
             .show(ui, |plot| {
                 plot.bar_chart(BarChart::new(bars).name("discs").color(PX_COLOR));
-                plot.line(Line::new(PlotPoints::from(law)).name("Maxwell–Boltzmann").color(PY_COLOR).width(3.0));
+                plot.line(
+                    Line::new(PlotPoints::from(law))
+                        .name("Maxwell–Boltzmann")
+                        .color(PY_COLOR)
+                        .width(3.0),
+                );
             });
     }
 
@@ -277,12 +334,31 @@ impl App {
             .allow_boxed_zoom(false)
             .label_formatter(|_, v| format!("({}, {}) kg·m/s", plain(v.x, 3), plain(v.y, 3)))
             .show(ui, |plot| {
-                plot.line(Line::new(PlotPoints::from(vec![[0.0, 0.0], [at.x, at.y]])).color(sum_color).width(5.0).name("sum"));
-                plot.points(Points::new(vec![[at.x, at.y]]).radius(6.0).color(sum_color).name("sum"));
+                plot.line(
+                    Line::new(PlotPoints::from(vec![[0.0, 0.0], [at.x, at.y]]))
+                        .color(sum_color)
+                        .width(5.0)
+                        .name("sum"),
+                );
+                plot.points(
+                    Points::new(vec![[at.x, at.y]])
+                        .radius(6.0)
+                        .color(sum_color)
+                        .name("sum"),
+                );
                 for (k, (a, b, c)) in chain.into_iter().enumerate() {
                     let color = Color32::from_rgb(c.r, c.g, c.b);
-                    plot.line(Line::new(PlotPoints::from(vec![[a.x, a.y], [b.x, b.y]])).color(color).width(2.5).name(format!("disc {k}")));
-                    plot.arrows(Arrows::new(vec![[a.x, a.y]], vec![[b.x, b.y]]).color(color).name(format!("disc {k}")));
+                    plot.line(
+                        Line::new(PlotPoints::from(vec![[a.x, a.y], [b.x, b.y]]))
+                            .color(color)
+                            .width(2.5)
+                            .name(format!("disc {k}")),
+                    );
+                    plot.arrows(
+                        Arrows::new(vec![[a.x, a.y]], vec![[b.x, b.y]])
+                            .color(color)
+                            .name(format!("disc {k}")),
+                    );
                 }
             });
     }
@@ -291,7 +367,9 @@ impl App {
 /// A y range that shows a conserved total as a flat line, not its rounding
 /// noise magnified: at least ±5 % of the values' size (or ±0.01) around them.
 pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
     if !(lo.is_finite() && hi.is_finite()) {
         return (-1.0, 1.0);
     }

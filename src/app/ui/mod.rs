@@ -4,7 +4,7 @@
 //! recovery question). The world is drawn by macroquad in the rectangle the
 //! panels leave free; nothing docked is ever drawn over it.
 //!
-//! Panels claim space in a fixed order (top bar, side, strip, dock) and
+//! Panels claim space in a fixed order (top bar, side, dock, strip) and
 //! the world gets what is left ([`Layout::world`]). The pass runs first in
 //! each frame, so the key and mouse bindings know whether a text field has
 //! the keyboard ([`UiState::typing`]) and whether the pointer is on a panel.
@@ -147,6 +147,8 @@ pub struct UiState {
     pub presets_open: bool,
     /// A text field has the keyboard: the shortcuts stay quiet.
     pub typing: bool,
+    /// Set during the pass by a text field that has the keyboard.
+    text_focus: bool,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// Screen rectangles of named widgets (px), for the state dump.
@@ -176,6 +178,7 @@ impl UiState {
             help_open: false,
             presets_open: false,
             typing: false,
+            text_focus: false,
             pointer_on_ui: false,
             widgets: BTreeMap::new(),
             layout: Layout::default(),
@@ -194,6 +197,12 @@ impl UiState {
             self.dock_expanded = false;
         }
         self.scale = scale;
+    }
+
+    /// Notes a text field's response: while it has the keyboard, the
+    /// shortcuts stay quiet.
+    fn note_text_field(&mut self, response: &egui::Response) {
+        self.text_focus |= response.has_focus();
     }
 
     /// Records a widget's rectangle (egui points) under `name`, in pixels.
@@ -224,28 +233,44 @@ impl App {
             }
             let ppp = ctx.pixels_per_point();
             self.ui.widgets.clear();
+            self.ui.text_focus = false;
             let mut panels = Vec::new();
             panels.push(to_px(self.top_bar(ctx), ppp));
+            if self.ui.docks_open && self.ui.side_open {
+                panels.push(to_px(self.controls(ctx, &mut actions), ppp));
+            }
             if self.ui.docks_open {
                 panels.push(to_px(self.dock(ctx, &mut actions), ppp));
             }
             panels.push(to_px(self.strip(ctx), ppp));
-            if self.ui.docks_open && self.ui.side_open {
-                panels.push(to_px(self.controls(ctx, &mut actions), ppp));
-            }
             let world = ctx.available_rect();
             self.popups(ctx, &mut actions);
-            self.ui.typing = ctx.wants_keyboard_input();
+            // Only a text field keeps the keyboard. egui moves focus to
+            // buttons on Tab and the arrow keys, which are shortcuts here
+            // (Tab hides the docks, the arrows pan), and a focused button
+            // would take Space as a click.
+            if !self.ui.text_focus {
+                if let Some(id) = ctx.memory(|m| m.focused()) {
+                    ctx.memory_mut(|m| m.surrender_focus(id));
+                }
+            }
+            self.ui.typing = self.ui.text_focus;
             let over_area = ctx.is_pointer_over_area() || ctx.is_using_pointer();
             let m = egui::pos2(mouse.x as f32 / ppp, mouse.y as f32 / ppp);
             self.ui.pointer_on_ui = over_area || !world.contains(m);
             let screen = ctx.screen_rect();
             // A panel's content may reach past the window's edge; what is
             // drawn is clipped to the window.
-            let panels = panels.into_iter().map(|[x, y, w, h]| {
-                let (right, bottom) = ((x + w).min(screen.width() * ppp), (y + h).min(screen.height() * ppp));
-                [x, y, right - x, bottom - y]
-            }).collect();
+            let panels = panels
+                .into_iter()
+                .map(|[x, y, w, h]| {
+                    let (right, bottom) = (
+                        (x + w).min(screen.width() * ppp),
+                        (y + h).min(screen.height() * ppp),
+                    );
+                    [x, y, right - x, bottom - y]
+                })
+                .collect();
             self.ui.layout = Layout {
                 window: [screen.width() * ppp, screen.height() * ppp],
                 world: to_px(world, ppp),
@@ -306,13 +331,14 @@ impl App {
 
     /// Fits the box into the world's rectangle.
     pub(super) fn fit_camera(&mut self) {
-        self.camera.fit(self.world.size, 24.0 * f64::from(self.ui.scale));
+        self.camera
+            .fit(self.world.size, 24.0 * f64::from(self.ui.scale));
         self.camera_fitted = true;
     }
 }
 
 /// A red or green line of feedback.
-fn show_note(ui: &mut egui::Ui, note: &Note) {
+fn show_note(ui: &mut egui::Ui, note: &Note) -> egui::Response {
     let color = if note.error {
         if ui.visuals().dark_mode {
             egui::Color32::from_rgb(255, 120, 110)
@@ -324,5 +350,5 @@ fn show_note(ui: &mut egui::Ui, note: &Note) {
     } else {
         egui::Color32::from_rgb(0, 110, 30)
     };
-    ui.add(egui::Label::new(egui::RichText::new(&note.text).color(color)).wrap());
+    ui.add(egui::Label::new(egui::RichText::new(&note.text).color(color)).wrap())
 }

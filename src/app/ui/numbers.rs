@@ -28,7 +28,11 @@ pub fn with_unit(v: f64, decimals: usize, unit: &str) -> String {
 
 /// A vector and its unit: "(2.000, 0.000) kg·m/s".
 pub fn vector(v: DVec2, decimals: usize, unit: &str) -> String {
-    format!("({}, {}) {unit}", plain(v.x, decimals), plain(v.y, decimals))
+    format!(
+        "({}, {}) {unit}",
+        plain(v.x, decimals),
+        plain(v.y, decimals)
+    )
 }
 
 /// `v` with enough decimals to show three significant digits of a small

@@ -9,38 +9,71 @@ use egui::{Align2, RichText};
 /// Every key, as the help lists it, with the on-screen control that does
 /// the same.
 pub const HELP: &[(&str, &str)] = &[
-    ("Left drag on empty space", "launch a new disc along the drag"),
-    ("Left drag on a disc", "grab and fling it (it keeps the mouse's velocity)"),
+    (
+        "Left drag on empty space",
+        "launch a new disc along the drag",
+    ),
+    (
+        "Left drag on a disc",
+        "grab and fling it (it keeps the mouse's velocity)",
+    ),
     ("Drag the selected disc's arrow tip", "set its velocity"),
     ("Left click", "select a disc; on empty space, deselect"),
     ("Right or middle drag, arrow keys", "pan"),
-    ("Wheel, + / −", "zoom at the cursor / at the centre (View: Zoom + / −)"),
+    (
+        "Wheel, + / −",
+        "zoom at the cursor / at the centre (View: Zoom + / −)",
+    ),
     ("F", "fit the box to the window (Fit view)"),
     ("Space", "pause / resume (Play / Pause)"),
     ("N", "one step, paused (Step)"),
     ("[ / ]", "slower / faster (« Slower, Faster »)"),
     ("V / M", "velocity / momentum arrows (Show)"),
-    ("I", "values beside: none / the selected disc / every disc (Show)"),
+    (
+        "I",
+        "values beside: none / the selected disc / every disc (Show)",
+    ),
     ("O", "centre of mass and its velocity (Show)"),
     ("A", "trails (Show)"),
     ("F3", "colour-blind-safe colours (Show)"),
     ("Z", "centre-of-mass frame: total momentum 0 (Show)"),
-    ("J", "run to the next collision and pause at impact (Show, Collisions tab)"),
-    (", / .", "back / forward through the recorded past; Shift: ×10 (◀ Back, Forward ▶)"),
+    (
+        "J",
+        "run to the next collision and pause at impact (Show, Collisions tab)",
+    ),
+    (
+        ", / .",
+        "back / forward through the recorded past; Shift: ×10 (◀ Back, Forward ▶)",
+    ),
     ("E / Shift+E", "restitution between discs ±0.1 (Collisions)"),
     ("W / Shift+W", "restitution at the walls ±0.1 (Collisions)"),
     ("G", "gravity on / off (Collisions)"),
-    ("PgUp / PgDn, Home / End", "radius / mass of new discs (New discs)"),
-    ("Delete / Backspace", "delete the selected disc (Selected disc)"),
+    (
+        "PgUp / PgDn, Home / End",
+        "radius / mass of new discs (New discs)",
+    ),
+    (
+        "Delete / Backspace",
+        "delete the selected disc (Selected disc)",
+    ),
     ("C", "clear all discs (Scene)"),
     ("R", "reset the scene (⟲ Reset)"),
-    ("1 … 9, 0, P", "open a classroom preset / the preset menu (Presets…)"),
+    (
+        "1 … 9, 0, P",
+        "open a classroom preset / the preset menu (Presets…)",
+    ),
     ("Ctrl+N", "a new empty box"),
     ("Ctrl+S", "save the scene; it reopens exactly (Scene: Save)"),
     ("X", "export totals, discs and collisions as CSV (Scene)"),
     ("F12", "screenshot into the output folder (Scene)"),
-    ("T / U / D / F4", "bottom dock: Totals / Collisions / Momenta / Speeds"),
-    ("Tab", "hide or show the panels; the top bar stays (View: Hide panels)"),
+    (
+        "T / U / D / F4",
+        "bottom dock: Totals / Collisions / Momenta / Speeds",
+    ),
+    (
+        "Tab",
+        "hide or show the panels; the top bar stays (View: Hide panels)",
+    ),
     ("L", "hide or show the controls at the side"),
     ("F2", "text size 1.0 / 1.5 / 2.0 for a projector (View)"),
     ("Y / B / K", "method / broad phase / substeps (Details)"),
@@ -64,13 +97,16 @@ impl App {
                 .collapsible(false)
                 .show(ctx, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
-                        egui::Grid::new("help_grid").striped(true).num_columns(2).show(ui, |ui| {
-                            for (keys, what) in HELP {
-                                ui.label(RichText::new(*keys).strong());
-                                ui.label(*what);
-                                ui.end_row();
-                            }
-                        });
+                        egui::Grid::new("help_grid")
+                            .striped(true)
+                            .num_columns(2)
+                            .show(ui, |ui| {
+                                for (keys, what) in HELP {
+                                    ui.label(RichText::new(*keys).strong());
+                                    ui.label(*what);
+                                    ui.end_row();
+                                }
+                            });
                     });
                 });
             self.ui.help_open = open;
@@ -85,7 +121,11 @@ impl App {
                 .show(ctx, |ui| {
                     ui.label("Press the key, or click:");
                     egui::ScrollArea::vertical().show(ui, |ui| {
-                        for (k, (preset, label)) in scenes::PRESETS.iter().zip(scenes::preset_labels()).enumerate() {
+                        for (k, (preset, label)) in scenes::PRESETS
+                            .iter()
+                            .zip(scenes::preset_labels())
+                            .enumerate()
+                        {
                             let description = scenes::preset_description(k);
                             let r = ui.button(RichText::new(label.as_str()).strong());
                             if r.clicked() {

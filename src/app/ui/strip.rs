@@ -23,13 +23,16 @@ impl App {
         let panel = egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
             ui.horizontal(|ui| {
                 let height = ui.text_style_height(&egui::TextStyle::Body);
-                let (rect, _) = ui.allocate_exact_size(egui::vec2(bar + 4.0, height), egui::Sense::hover());
+                let (rect, _) =
+                    ui.allocate_exact_size(egui::vec2(bar + 4.0, height), egui::Sense::hover());
                 let color = ui.visuals().strong_text_color();
                 let stroke = Stroke::new(2.0, color);
                 let (l, r, y) = (rect.left() + 2.0, rect.left() + 2.0 + bar, rect.center().y);
-                ui.painter().line_segment([egui::pos2(l, y), egui::pos2(r, y)], stroke);
+                ui.painter()
+                    .line_segment([egui::pos2(l, y), egui::pos2(r, y)], stroke);
                 for x in [l, r] {
-                    ui.painter().line_segment([egui::pos2(x, y - 6.0), egui::pos2(x, y + 6.0)], stroke);
+                    ui.painter()
+                        .line_segment([egui::pos2(x, y - 6.0), egui::pos2(x, y + 6.0)], stroke);
                 }
                 ui.label(format_metres(metres));
                 ui.separator();

@@ -133,7 +133,12 @@ pub fn apply(ctx: &egui::Context, scale: f32, theme: Theme) {
 
 /// The smallest text size egui draws with now, in physical pixels.
 pub fn min_text_px(ctx: &egui::Context) -> f32 {
-    let smallest = ctx.style().text_styles.values().map(|f| f.size).fold(f32::INFINITY, f32::min);
+    let smallest = ctx
+        .style()
+        .text_styles
+        .values()
+        .map(|f| f.size)
+        .fold(f32::INFINITY, f32::min);
     smallest * ctx.pixels_per_point()
 }
 
@@ -155,8 +160,8 @@ mod tests {
         for (style, size) in text_sizes() {
             assert!(size >= MIN_TEXT_POINTS, "{style:?}");
         }
-        assert!(MIN_TEXT_POINTS >= 14.0);
-        assert!(MIN_TEXT_POINTS * UI_SCALES[1] >= 24.0);
+        let (smallest, middle) = (MIN_TEXT_POINTS, MIN_TEXT_POINTS * UI_SCALES[1]);
+        assert!(smallest >= 14.0 && middle >= 24.0, "{smallest} {middle}");
     }
 
     #[test]
@@ -166,7 +171,11 @@ mod tests {
             for theme in [Theme::Dark, Theme::Light] {
                 apply(&ctx, scale, theme);
                 let _ = ctx.run(Default::default(), |_| {});
-                assert_eq!(min_text_px(&ctx), MIN_TEXT_POINTS * scale, "{scale} {theme:?}");
+                assert_eq!(
+                    min_text_px(&ctx),
+                    MIN_TEXT_POINTS * scale,
+                    "{scale} {theme:?}"
+                );
             }
         }
     }

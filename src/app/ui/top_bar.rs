@@ -14,7 +14,10 @@ impl App {
         let m = self.world.metrics();
         let dark = ctx.style().visuals.dark_mode;
         let (running, paused) = if dark {
-            (Color32::from_rgb(120, 230, 140), Color32::from_rgb(255, 200, 60))
+            (
+                Color32::from_rgb(120, 230, 140),
+                Color32::from_rgb(255, 200, 60),
+            )
         } else {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
@@ -34,7 +37,8 @@ impl App {
                     RichText::new(format!("▶ RUNNING ×{}", self.clock.time_scale())).color(running)
                 };
                 let state = ui.label(state.strong());
-                self.ui.note_widget("run_state", state.rect, ctx.pixels_per_point());
+                self.ui
+                    .note_widget("run_state", state.rect, ctx.pixels_per_point());
                 if let Some(slow) = self.slow_note() {
                     ui.label(RichText::new(slow).color(paused));
                 }

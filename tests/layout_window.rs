@@ -1,0 +1,326 @@
+//! The classroom screen under Xvfb: at 1024×768, 1280×800 and 1920×1080, at
+//! UI scales 1 and 2, with every preset, no docked panel covers the world
+//! and no text is too small to read from the back of a room; the Discs
+//! table is edited as a person would (click, select all, type, Enter); a
+//! bad number is refused with a message in view; the docks hide with Tab
+//! while PAUSED stays in the top bar; and a machine too slow for real time
+//! slows the simulation, says so, and keeps physics to half of each frame.
+
+#[path = "window_harness/mod.rs"]
+mod harness;
+
+use harness::*;
+use serde_json::Value;
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+
+/// [x, y, w, h] of a dump rectangle.
+fn rect(v: &Value) -> [f64; 4] {
+    std::array::from_fn(|k| {
+        v[k].as_f64()
+            .unwrap_or_else(|| panic!("not a rectangle: {v}"))
+    })
+}
+
+/// Whether two rectangles share any area (touching edges do not count).
+fn overlap(a: [f64; 4], b: [f64; 4]) -> bool {
+    let e = 0.5; // half a pixel: egui rounds panel edges
+    a[0] + e < b[0] + b[2]
+        && b[0] + e < a[0] + a[2]
+        && a[1] + e < b[1] + b[3]
+        && b[1] + e < a[1] + a[3]
+}
+
+/// Checks one frame's layout; `what` names it in messages.
+fn check_layout(s: &Value, what: &str, scale: f64, window: [f64; 2]) {
+    let layout = &s["layout"];
+    assert_eq!(layout["ui_scale"].as_f64(), Some(scale), "{what}: {layout}");
+    let size = [
+        layout["window"][0].as_f64().unwrap(),
+        layout["window"][1].as_f64().unwrap(),
+    ];
+    assert!(
+        (size[0] - window[0]).abs() < 1.0 && (size[1] - window[1]).abs() < 1.0,
+        "{what}: {size:?}"
+    );
+    let world = rect(&layout["world"]);
+    assert!(
+        world[2] > 100.0 && world[3] > 100.0,
+        "{what}: a world to see: {world:?}"
+    );
+    let panels = layout["panels"].as_array().unwrap();
+    assert!(
+        panels.len() >= 2,
+        "{what}: at least the top bar and the strip: {layout}"
+    );
+    for p in panels {
+        let p = rect(p);
+        assert!(
+            !overlap(p, world),
+            "{what}: panel {p:?} covers the world {world:?}"
+        );
+        assert!(
+            p[0] >= -0.5
+                && p[1] >= -0.5
+                && p[0] + p[2] <= window[0] + 0.5
+                && p[1] + p[3] <= window[1] + 0.5,
+            "{what}: {p:?} leaves the window"
+        );
+    }
+    let min_text = layout["min_text_px"].as_f64().unwrap();
+    let floor = if scale >= 2.0 { 24.0 } else { 14.0 };
+    assert!(
+        min_text >= floor,
+        "{what}: smallest text {min_text} px < {floor}"
+    );
+    if window == [1024.0, 768.0] && scale == 1.0 {
+        let share = world[2] * world[3] / (window[0] * window[1]);
+        assert!(
+            share >= 0.5,
+            "{what}: the world has {share:.2} of the window"
+        );
+    }
+    // The camera draws into that rectangle.
+    let view = View::of(s);
+    assert_eq!(
+        [
+            view.origin[0],
+            view.origin[1],
+            view.viewport[0],
+            view.viewport[1]
+        ]
+        .map(|v| v.round()),
+        world.map(|v| v.round()),
+        "{what}"
+    );
+}
+
+/// The scenes the sweep opens: the digit keys, then Ctrl+N.
+const PRESET_KEYS: [&str; 11] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "ctrl+n"];
+
+#[test]
+fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset() {
+    let Some(x) = Xvfb::start("layout") else {
+        return;
+    };
+    for (w, h) in [(1024, 768), (1280, 800), (1920, 1080)] {
+        let size = format!("{w}x{h}");
+        let app = Sandbox::start(&x, &["--paused", "--size", &size]);
+        let window = [w as f64, h as f64];
+        let s = app.wait_frames(3);
+        check_layout(&s, &format!("{size}, default scene"), 1.0, window);
+        assert_eq!(
+            s["ui"]["dock_expanded"], true,
+            "the dock is open at scale 1"
+        );
+        for scale in [1.0, 2.0] {
+            if scale == 2.0 {
+                // F2 cycles 1 → 1.5 → 2.
+                app.xdo(&["key", "F2"]);
+                let s = app.wait_frames(3);
+                check_layout(&s, &format!("{size} at 1.5"), 1.5, window);
+                app.xdo(&["key", "F2"]);
+                let s = app.wait_frames(3);
+                assert_eq!(
+                    s["ui"]["dock_expanded"], false,
+                    "{size}: at scale 2 the dock starts folded"
+                );
+            }
+            for key in PRESET_KEYS {
+                app.xdo(&["key", key]);
+                let s = app.wait_frames(3);
+                let what = format!("{size}, scale {scale}, key {key} ({})", s["scene_name"]);
+                check_layout(&s, &what, scale, window);
+                // The fitted box lies inside the world's rectangle.
+                let view = View::of(&s);
+                let world = rect(&s["layout"]["world"]);
+                let (a, b) = (view.to_screen([0.0, 0.0]), view.to_screen(vec2(&s["size"])));
+                for p in [a, b] {
+                    assert!(
+                        p[0] >= world[0] - 0.5
+                            && p[0] <= world[0] + world[2] + 0.5
+                            && p[1] >= world[1] - 0.5
+                            && p[1] <= world[1] + world[3] + 0.5,
+                        "{what}: the box corner {p:?} is outside {world:?}"
+                    );
+                }
+            }
+        }
+        app.quit();
+    }
+}
+
+#[test]
+fn tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar() {
+    let Some(x) = Xvfb::start("tab") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused"]);
+    let before = app.wait_frames(3);
+    let world_before = rect(&before["layout"]["world"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "Tab"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["docks_open"], false);
+    let world = rect(&s["layout"]["world"]);
+    assert!(
+        world[2] * world[3] > 1.3 * world_before[2] * world_before[3],
+        "{world:?} vs {world_before:?}"
+    );
+    check_layout(&s, "docks hidden", 1.0, [1280.0, 800.0]);
+    let state = rect(&s["panel_widgets"]["run_state"]);
+    assert!(
+        state[1] >= 0.0 && state[1] + state[3] <= world[1] + 0.5,
+        "PAUSED is in the top bar: {state:?}"
+    );
+    assert_eq!(s["paused"], true);
+    app.xdo(&["key", "Tab"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["docks_open"], true);
+    app.quit();
+}
+
+/// Clicks at a point as a person would: move, press, release.
+fn click(app: &Sandbox, at: [f64; 2]) {
+    app.move_to(at);
+    app.wait_frames(1);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(1);
+    app.xdo(&["mouseup", "1"]);
+    app.wait_frames(2);
+}
+
+#[test]
+fn a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view() {
+    let Some(x) = Xvfb::start("discs table") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
+    let s = app.wait_frames(3);
+    let before: Vec<f64> = s["particles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["mass"].as_f64().unwrap())
+        .collect();
+    assert_eq!(before.len(), 2);
+    click(&app, widget(&s, "tab_discs", 0.5));
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["tab"], "Discs");
+
+    // Click the first disc's mass, select all, type 5, Enter.
+    click(&app, widget(&s, "discs_mass_0", 0.5));
+    let s = app.wait_frames(2);
+    assert_eq!(s["ui"]["typing"], true, "the cell has the keyboard");
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "--delay", "40", "5"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(4);
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(5.0), "{}", s["ui"]);
+    assert_eq!(
+        s["particles"][1]["mass"].as_f64(),
+        Some(before[1]),
+        "the other disc is untouched"
+    );
+    assert_eq!(
+        s["scene_name"], "Head-on, equal masses",
+        "typing 5 opened no preset"
+    );
+    assert!(
+        s["ui"]["table_note"].as_str().unwrap().contains("mass = 5"),
+        "{}",
+        s["ui"]
+    );
+
+    // A velocity that is not a number: refused, the disc as it was, the
+    // message on screen inside the dock without scrolling.
+    let vx = s["particles"][1]["vel"][0].as_f64().unwrap();
+    click(&app, widget(&s, "discs_vx_1", 0.5));
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "--delay", "40", "fast"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(4);
+    assert_eq!(s["particles"][1]["vel"][0].as_f64(), Some(vx));
+    let note = s["ui"]["table_note"].as_str().unwrap();
+    assert!(
+        note.contains("not a number") && note.contains("nothing changed"),
+        "{note}"
+    );
+    let shown = rect(&s["panel_widgets"]["table_note"]);
+    let dock = s["layout"]["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(rect)
+        .find(|p| overlap(*p, shown))
+        .expect("the message is in a docked panel");
+    assert!(
+        shown[1] >= dock[1]
+            && shown[1] + shown[3] <= dock[1] + dock[3]
+            && shown[1] + shown[3] <= 800.0,
+        "{shown:?} in {dock:?}"
+    );
+    assert!(shown[2] > 50.0, "{shown:?}");
+    app.quit();
+}
+
+#[test]
+fn a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much() {
+    let Some(x) = Xvfb::start("frame budget") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--gas", "100000"]);
+    // Ask for eight times real time: 1,920 steps a second of 10⁵ discs,
+    // more than two cores can run.
+    app.move_to([300.0, 300.0]);
+    for _ in 0..3 {
+        app.xdo(&["key", "bracketright"]);
+        app.wait_frames(2);
+    }
+    assert_eq!(app.wait_frames(1)["time_scale"], 8.0);
+    // Let the meter fill, then measure over 12 s (two autosaves' pauses).
+    let deadline = Instant::now() + Duration::from_secs(90);
+    let first = loop {
+        let s = app.state();
+        if s["realtime"]["ratio"].is_number() && s["timing"]["frames"].as_u64().unwrap_or(0) >= 30 {
+            break s;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "no ratio measured: {}",
+            s["realtime"]
+        );
+        sleep(Duration::from_millis(200));
+    };
+    let t0 = (Instant::now(), first["time"].as_f64().unwrap());
+    sleep(Duration::from_secs(12));
+    let last = app.state();
+    let measured = (last["time"].as_f64().unwrap() - t0.1) / t0.0.elapsed().as_secs_f64();
+    let shown = last["realtime"]["shown"]
+        .as_str()
+        .unwrap_or_else(|| panic!("the top bar says nothing: {}", last["realtime"]));
+    let number: f64 = shown
+        .trim_start_matches("running at ")
+        .split('×')
+        .next()
+        .and_then(|n| n.trim().parse().ok())
+        .unwrap_or_else(|| panic!("{shown:?}"));
+    assert!(
+        measured < 0.9 * 8.0,
+        "the test needs a machine that cannot keep up: {measured}"
+    );
+    assert!(
+        (number - measured).abs() <= 0.1 * measured,
+        "shown {number}, measured {measured}"
+    );
+    let t = &last["timing"];
+    let (step, frame) = (
+        t["step_ms"].as_f64().unwrap(),
+        t["frame_ms"].as_f64().unwrap(),
+    );
+    assert!(
+        step <= 0.5 * frame * 1.05,
+        "physics {step} ms of a {frame} ms frame (medians)"
+    );
+    app.quit();
+}
