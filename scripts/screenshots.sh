@@ -1,41 +1,64 @@
 #!/usr/bin/env bash
-# Makes the README's screenshots with the real program under Xvfb.
+# Makes the README's screenshots with the real program under Xvfb, aiming
+# the mouse through the state dump (widget rectangles, the camera).
 # Needs: xvfb xdotool libgl1-mesa-dri (see README). Usage: scripts/screenshots.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
 bin=target/release/impulse
 source scripts/xvfb.sh
+dump=$(mktemp -d)/state.json
+export XDG_STATE_HOME=$(mktemp -d)
 
-# 1. The default scene with momentum arrows and the heavy disc selected
-#    (it starts at world (3, 5), which is pixel (270, 400) in the fitted view).
-$bin --paused --screenshot docs/sandbox.png --exit-after 30 &
-app=$!
-sleep 2
-xdotool mousemove 640 400 key m
-xdotool mousemove 270 400 click 1
-xdotool mousemove 640 760 key space
-sleep 2.2
-xdotool key space
-sleep 0.3
-xdotool key ctrl+q
-wait $app
+# The centre of a widget of the dump, or the screen point of disc N.
+widget() { python3 -c "import json,sys; r=json.load(open('$dump'))['panel_widgets']['$1']; print(round(r[0]+r[2]/2), round(r[1]+r[3]/2))"; }
+disc() { python3 -c "
+import json; s=json.load(open('$dump')); c=s['camera']; p=s['particles'][$1]['pos']
+print(round(c['origin'][0]+c['viewport'][0]/2+(p[0]-c['center'][0])*c['scale']), round(c['origin'][1]+c['viewport'][1]/2-(p[1]-c['center'][1])*c['scale']))"; }
+start() { "$bin" --dump-state "$dump" --exit-after 60 --autosave 0 "$@" & app=$!; sleep 2.5; }
+finish() { xdotool key ctrl+q; wait "$app"; }
+click() { xdotool mousemove $1 $2; sleep 0.3; xdotool click 1; sleep 0.4; }
 
-# 2. Launching: dragging out a new disc in the empty box, with the help open.
-$bin assets/scenes/empty.toml --screenshot docs/launch.png --exit-after 30 &
-app=$!
-sleep 2
-xdotool mousemove 300 500 mousedown 1
-for x in 340 380 420 460 500; do xdotool mousemove "$x" $((500 - (x - 300) / 2)); sleep 0.05; done
+# 1. The default scene: momentum arrows, the heavy disc selected, paused.
+start --paused --screenshot docs/sandbox.png
+xdotool mousemove 300 300 key m
+sleep 0.3; click $(disc 0); xdotool key space; sleep 1.5; xdotool key space; sleep 0.5
+finish
+
+# 2. The lesson: head-on, run to the collision (J), the Collisions tab.
+start --paused --screenshot docs/lesson.png
+xdotool mousemove 300 300 key 1; sleep 0.5; xdotool key m key j; sleep 1
+finish
+
+# 3. The Discs table beside the glancing hit.
+start --paused --screenshot docs/panel.png
+xdotool mousemove 300 300 key 4; sleep 0.5
+click $(widget tab_discs)
+click $(disc 0)
+finish
+
+# 4. A projector in a bright room: scale 2, light theme, the glancing hit.
+start --size 1280x800 --ui-scale 2 --light --screenshot docs/projector.png
+xdotool mousemove 300 300 key 4; sleep 1.2; xdotool key space; sleep 0.5
+finish
+
+# 5. Launching: dragging out a new disc in the empty box.
+start assets/scenes/empty.toml --screenshot docs/launch.png
+xdotool mousemove 250 450 mousedown 1
+for x in 290 330 370 410 450; do xdotool mousemove "$x" $((450 - (x - 250) / 2)); sleep 0.05; done
 sleep 0.5
-xdotool key ctrl+q
-wait $app
+finish
 
-$bin --screenshot docs/help.png --exit-after 30 &
-app=$!
-sleep 2
-xdotool mousemove 640 400 key h
-sleep 0.5
-xdotool key ctrl+q
-wait $app
+# 6. The key list.
+start --screenshot docs/help.png
+xdotool mousemove 300 300 key h; sleep 0.5
+finish
+
+# 7. The presets, a few seconds after opening.
+for preset in "1 head-on" "4 glancing" "6 cradle" "7 pi-blocks" "9 billiards" "0 pile"; do
+  set -- $preset
+  start --screenshot "docs/presets/$2.png"
+  xdotool mousemove 300 300 key "$1"; sleep 2.5
+  finish
+done
 echo "screenshots in docs/"

@@ -48,6 +48,12 @@ impl App {
                     "collisions: {}",
                     self.world.total_pair_collisions + self.world.total_wall_hits
                 ));
+                if !self.ui.docks_open {
+                    // Tab's on-screen twin, for a touch screen.
+                    if ui.button("Show panels").on_hover_text("Tab").clicked() {
+                        self.ui.docks_open = true;
+                    }
+                }
                 if let (Some(k), Some((oldest, newest))) =
                     (self.history.cursor(), self.history.span())
                 {
