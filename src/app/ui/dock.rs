@@ -180,15 +180,19 @@ impl App {
             ui.label("None yet. Next collision (J) runs to the next one and pauses at the instant of impact.");
             return;
         }
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         ui.columns(2, |columns| {
             let ui = &mut columns[0];
             ui.strong("Newest first");
             egui_extras::TableBuilder::new(ui)
                 .id_salt("ledger")
                 .striped(true)
-                .columns(egui_extras::Column::auto().at_least(70.0), 4)
+                .column(egui_extras::Column::auto().at_least(70.0))
+                .column(egui_extras::Column::auto().at_least(80.0))
+                .column(egui_extras::Column::auto().at_least(150.0))
+                .column(egui_extras::Column::auto().at_least(90.0))
                 .header(24.0, |mut h| {
-                    for t in ["t (s)", "discs", "change of p (kg·m/s)", "change of KE (J)"] {
+                    for t in ["t (s)", "discs", "Δp (kg·m/s)", "ΔKE (J)"] {
                         h.col(|ui| {
                             ui.strong(t);
                         });
