@@ -105,17 +105,13 @@ impl App {
         );
         ui.columns(2, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
-            Plot::new("momentum_plot")
+            still_plot("momentum_plot")
                 .height(height)
                 .legend(Legend::default().position(Corner::RightBottom))
                 .x_axis_label("time (s)")
                 .y_axis_label("p (kg·m/s)")
                 .include_y(lo)
                 .include_y(hi)
-                .allow_scroll(false)
-                .allow_drag(false)
-                .allow_zoom(false)
-                .allow_boxed_zoom(false)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
                 })
@@ -134,17 +130,13 @@ impl App {
                     );
                 });
             let (lo, hi) = padded_range(ke.iter().map(|p| p[1]));
-            Plot::new("energy_plot")
+            still_plot("energy_plot")
                 .height(height)
                 .legend(Legend::default().position(Corner::RightBottom))
                 .x_axis_label("time (s)")
                 .y_axis_label("KE (J)")
                 .include_y(lo)
                 .include_y(hi)
-                .allow_scroll(false)
-                .allow_drag(false)
-                .allow_zoom(false)
-                .allow_boxed_zoom(false)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
                 })
@@ -281,16 +273,12 @@ impl App {
             .map(|k| top * k as f64 / 200.0)
             .map(|v| [v, h.law(v)])
             .collect();
-        Plot::new("speeds_plot")
+        still_plot("speeds_plot")
             .height(ui.available_height())
             .legend(Legend::default().position(Corner::RightTop))
             .x_axis_label("speed (m/s)")
             .y_axis_label("per m/s")
             .include_y(0.0)
-            .allow_scroll(false)
-            .allow_drag(false)
-            .allow_zoom(false)
-            .allow_boxed_zoom(false)
             .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
             .show(ui, |plot| {
                 plot.bar_chart(BarChart::new(bars).name("discs").color(PX_COLOR));
@@ -324,7 +312,7 @@ impl App {
             vector(at, 3, "kg·m/s")
         ));
         let sum_color = ui.visuals().strong_text_color();
-        Plot::new("momenta_plot")
+        still_plot("momenta_plot")
             .height(ui.available_height())
             .data_aspect(1.0)
             .legend(Legend::default().position(Corner::RightBottom))
@@ -332,10 +320,6 @@ impl App {
             .y_axis_label("p_y (kg·m/s)")
             .include_x(0.0)
             .include_y(0.0)
-            .allow_scroll(false)
-            .allow_drag(false)
-            .allow_zoom(false)
-            .allow_boxed_zoom(false)
             .label_formatter(|_, v| format!("({}, {}) kg·m/s", plain(v.x, 3), plain(v.y, 3)))
             .show(ui, |plot| {
                 plot.line(
@@ -366,6 +350,16 @@ impl App {
                 }
             });
     }
+}
+
+/// A plot that holds still: no scrolling, dragging or zooming, which in a
+/// live plot would only lose the view (hover still reads values).
+fn still_plot(id: &str) -> Plot<'static> {
+    Plot::new(id)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_boxed_zoom(false)
 }
 
 /// A y range that shows a conserved total as a flat line, not its rounding
