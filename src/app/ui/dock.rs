@@ -154,10 +154,10 @@ impl App {
     fn collisions_tab(&mut self, ui: &mut egui::Ui, actions: &mut Vec<super::Action>) {
         let ledger = &self.world.ledger;
         ui.horizontal_wrapped(|ui| {
-            ui.label(format!(
-                "{} collisions between discs recorded",
-                ledger.recorded
-            ));
+            ui.label(match ledger.recorded {
+                1 => "1 collision between discs recorded".to_string(),
+                n => format!("{n} collisions between discs recorded"),
+            });
             if ui.button("Next collision").on_hover_text("J").clicked() {
                 actions.push(super::Action::NextCollision);
             }
@@ -231,22 +231,18 @@ impl App {
                                 let (e0, e1) = c.kinetic_energy(k);
                                 let ((n0, t0), (n1, t1)) = c.components(k);
                                 let d = c.discs[k];
-                                ui.label(format!("disc {d}: p"));
-                                ui.label(vector(p0, 3, "kg·m/s"));
-                                ui.label(vector(p1, 3, "kg·m/s"));
-                                ui.end_row();
-                                ui.label(format!("disc {d}: KE"));
-                                ui.label(with_unit(e0, 3, "J"));
-                                ui.label(with_unit(e1, 3, "J"));
-                                ui.end_row();
-                                ui.label(format!("disc {d}: v along the normal"));
-                                ui.label(with_unit(n0, 3, "m/s"));
-                                ui.label(with_unit(n1, 3, "m/s"));
-                                ui.end_row();
-                                ui.label(format!("disc {d}: v along the tangent"));
-                                ui.label(with_unit(t0, 3, "m/s"));
-                                ui.label(with_unit(t1, 3, "m/s"));
-                                ui.end_row();
+                                let rows = [
+                                    ("p (kg·m/s)", vector(p0, 3, ""), vector(p1, 3, "")),
+                                    ("KE (J)", plain(e0, 3), plain(e1, 3)),
+                                    ("v along the normal (m/s)", plain(n0, 3), plain(n1, 3)),
+                                    ("v along the tangent (m/s)", plain(t0, 3), plain(t1, 3)),
+                                ];
+                                for (what, before, after) in rows {
+                                    ui.label(format!("disc {d}: {what}"));
+                                    ui.label(before);
+                                    ui.label(after);
+                                    ui.end_row();
+                                }
                             }
                         });
                 });
