@@ -6,6 +6,9 @@
 //! gains out of the disc's speed along that axis: a bounce never creates
 //! energy. (A disc pushed into the floor while at rest has no speed to pay
 //! with; lifting it back costs at most m·g·depth, and it ends at rest.)
+//!
+//! A box may leave sides open ([`Walls`]): a disc crosses an open side and
+//! flies on, as in open space.
 
 use crate::particle::Particle;
 use glam::DVec2;
@@ -23,6 +26,109 @@ pub enum Boundary {
     /// A torus: a disc leaving one side re-enters on the other, and discs
     /// interact across the seam (total momentum is conserved).
     Periodic,
+}
+
+/// Which sides of a box have walls; the rest are open. All four by default.
+///
+/// In a scene file: `walls = ["left"]` (any of "left", "right", "bottom",
+/// "top"; y is up, so "bottom" is the floor).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Walls {
+    /// The side x = 0.
+    pub left: bool,
+    /// The side x = width.
+    pub right: bool,
+    /// The side y = 0 (the floor under gravity pointing down).
+    pub bottom: bool,
+    /// The side y = height.
+    pub top: bool,
+}
+
+impl Default for Walls {
+    fn default() -> Self {
+        Walls::ALL
+    }
+}
+
+impl Walls {
+    /// All four sides closed.
+    pub const ALL: Walls = Walls {
+        left: true,
+        right: true,
+        bottom: true,
+        top: true,
+    };
+    /// No walls.
+    pub const NONE: Walls = Walls {
+        left: false,
+        right: false,
+        bottom: false,
+        top: false,
+    };
+    /// The side names, in the order of [`Walls::sides`].
+    pub const NAMES: [&'static str; 4] = ["left", "right", "bottom", "top"];
+
+    /// Whether all four sides have walls.
+    pub fn all(self) -> bool {
+        self == Walls::ALL
+    }
+
+    /// Whether the wall at the lower (`upper = false`) or upper end of an
+    /// axis (0: x, 1: y) is there.
+    pub fn at(self, axis: usize, upper: bool) -> bool {
+        match (axis, upper) {
+            (0, false) => self.left,
+            (0, true) => self.right,
+            (_, false) => self.bottom,
+            (_, true) => self.top,
+        }
+    }
+
+    /// The four flags as left, right, bottom, top.
+    pub fn sides(self) -> [bool; 4] {
+        [self.left, self.right, self.bottom, self.top]
+    }
+
+    /// The walls named in `names`; an error names an unknown side.
+    pub fn from_names<S: AsRef<str>>(names: &[S]) -> Result<Walls, String> {
+        let mut w = Walls::NONE;
+        for name in names {
+            match name.as_ref() {
+                "left" => w.left = true,
+                "right" => w.right = true,
+                "bottom" => w.bottom = true,
+                "top" => w.top = true,
+                other => {
+                    return Err(format!(
+                        "{other:?} is not a side: use \"left\", \"right\", \"bottom\" or \"top\""
+                    ))
+                }
+            }
+        }
+        Ok(w)
+    }
+
+    /// The names of the sides that have walls.
+    pub fn names(self) -> Vec<&'static str> {
+        Walls::NAMES
+            .into_iter()
+            .zip(self.sides())
+            .filter_map(|(n, on)| on.then_some(n))
+            .collect()
+    }
+}
+
+impl Serialize for Walls {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.names().serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for Walls {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let names = Vec::<String>::deserialize(d)?;
+        Walls::from_names(&names).map_err(serde::de::Error::custom)
+    }
 }
 
 impl Boundary {
@@ -47,11 +153,25 @@ impl Boundary {
         }
     }
 
+    /// Whether a disc of `radius` at `pos` lies where this boundary lets
+    /// it be: inside every wall of a box (an open side lets it out).
+    pub fn admits(self, walls: Walls, size: DVec2, pos: DVec2, radius: f64) -> bool {
+        match self {
+            Boundary::Box => (0..2).all(|axis| {
+                (!walls.at(axis, false) || pos[axis] >= radius)
+                    && (!walls.at(axis, true) || pos[axis] <= size[axis] - radius)
+            }),
+            Boundary::Periodic => pos.cmpge(DVec2::ZERO).all() && pos.cmplt(size).all(),
+            Boundary::Open => true,
+        }
+    }
+
     /// Applies the boundary to every disc.
     pub fn apply(
         self,
         particles: &mut [Particle],
         size: DVec2,
+        walls: Walls,
         gravity: DVec2,
         wall_restitution: f64,
     ) -> WallReport {
@@ -77,7 +197,7 @@ impl Boundary {
                         x,
                         &mut p.vel.x,
                         p.radius,
-                        size.x,
+                        (size.x, [walls.left, walls.right]),
                         gravity.x,
                         wall_restitution,
                     ));
@@ -85,7 +205,7 @@ impl Boundary {
                         y,
                         &mut p.vel.y,
                         p.radius,
-                        size.y,
+                        (size.y, [walls.bottom, walls.top]),
                         gravity.y,
                         wall_restitution,
                     ));
@@ -130,27 +250,28 @@ fn wrap(d: f64, len: f64) -> f64 {
     }
 }
 
-/// Keeps one coordinate of a disc within `[radius, extent − radius]`.
+/// Keeps one coordinate of a disc within `[radius, extent − radius]`, at
+/// the ends that have walls (`sides`: lower, upper).
 ///
 /// Returns whether the disc bounced (was moving into the wall it touched).
 fn bounce_axis(
     pos: &mut f64,
     vel: &mut f64,
     radius: f64,
-    extent: f64,
+    (extent, [lower, upper]): (f64, [bool; 2]),
     gravity: f64,
     restitution: f64,
 ) -> bool {
     let (lo, hi) = (radius, extent - radius);
-    if lo > hi {
+    if lo > hi && lower && upper {
         // A disc wider than the box: keep it centred, at rest along this axis.
         *pos = 0.5 * extent;
         *vel = 0.0;
         return false;
     }
-    let (target, into_wall) = if *pos < lo {
+    let (target, into_wall) = if *pos < lo && lower {
         (lo, *vel < 0.0)
-    } else if *pos > hi {
+    } else if *pos > hi && upper {
         (hi, *vel > 0.0)
     } else {
         return false;
@@ -172,6 +293,7 @@ fn bounce_axis(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::particle::Color;
 
     #[test]
     fn periodic_separation_takes_the_short_way_round() {
@@ -183,13 +305,61 @@ mod tests {
     }
 
     #[test]
+    fn an_open_side_lets_a_disc_through_and_a_wall_does_not() {
+        let size = DVec2::new(10.0, 10.0);
+        let walls = Walls::from_names(&["left"]).unwrap();
+        let mut discs = [
+            Particle::new(
+                DVec2::new(9.9, 5.0),
+                DVec2::new(2.0, 0.0),
+                1.0,
+                0.5,
+                Color::palette(0),
+            ),
+            Particle::new(
+                DVec2::new(0.1, 5.0),
+                DVec2::new(-2.0, 0.0),
+                1.0,
+                0.5,
+                Color::palette(0),
+            ),
+            Particle::new(
+                DVec2::new(5.0, 0.1),
+                DVec2::new(0.0, -2.0),
+                1.0,
+                0.5,
+                Color::palette(0),
+            ),
+        ];
+        let report = Boundary::Box.apply(&mut discs, size, walls, DVec2::ZERO, 1.0);
+        assert_eq!(report.hits, 1);
+        assert_eq!(discs[0].vel.x, 2.0, "no right wall");
+        assert_eq!(discs[0].pos.x, 9.9);
+        assert_eq!(discs[1].vel.x, 2.0, "the left wall reflects");
+        assert_eq!(discs[1].pos.x, 0.5);
+        assert_eq!(discs[2].vel.y, -2.0, "no floor");
+        assert!(!Boundary::Box.admits(walls, size, DVec2::new(0.2, 5.0), 0.5));
+        assert!(Boundary::Box.admits(walls, size, DVec2::new(30.0, -4.0), 0.5));
+    }
+
+    #[test]
+    fn walls_read_and_write_as_side_names() {
+        let w = Walls::from_names(&["top", "left"]).unwrap();
+        assert_eq!(w.names(), ["left", "top"]);
+        assert!(w.at(0, false) && w.at(1, true) && !w.at(0, true) && !w.at(1, false));
+        assert_eq!(Walls::from_names(&Walls::NAMES).unwrap(), Walls::ALL);
+        let err = Walls::from_names(&["floor"]).unwrap_err();
+        assert!(err.contains("floor") && err.contains("bottom"), "{err}");
+    }
+
+    #[test]
     fn floor_bounce_under_gravity_never_gains_energy() {
         let g = -9.81;
         for depth in [0.0, 1e-6, 0.01, 0.3] {
             for v in [-3.0, -0.01, 0.0, 0.5] {
                 let (mut pos, mut vel) = (0.5 - depth, v);
                 let before = 0.5 * v * v - g * pos;
-                bounce_axis(&mut pos, &mut vel, 0.5, 10.0, g, 1.0);
+                bounce_axis(&mut pos, &mut vel, 0.5, (10.0, [true, true]), g, 1.0);
                 let after = 0.5 * vel * vel - g * pos;
                 assert!(pos >= 0.5, "disc left inside the floor");
                 // Never more than before, unless the disc had too little

@@ -75,8 +75,12 @@ struct Summary {
     steps: u64,
     sim_time: f64,
     dt: f64,
+    /// Impacts in all: between discs and with walls.
+    collisions: u64,
     pair_collisions: u64,
     wall_hits: u64,
+    /// Whether no collision can happen any more (see `World::collisions_over`).
+    collisions_over: bool,
     max_overlap: f64,
     momentum: DVec2,
     kinetic_energy: f64,
@@ -129,8 +133,10 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         steps: world.steps,
         sim_time: world.time,
         dt,
+        collisions: world.total_pair_collisions + world.total_wall_hits,
         pair_collisions: world.total_pair_collisions,
         wall_hits: world.total_wall_hits,
+        collisions_over: world.collisions_over(),
         max_overlap,
         momentum: metrics.momentum,
         kinetic_energy: metrics.kinetic_energy,

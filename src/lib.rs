@@ -43,7 +43,7 @@ pub mod stats;
 pub mod stress;
 pub mod world;
 
-pub use boundary::Boundary;
+pub use boundary::{Boundary, Walls};
 pub use glam::DVec2;
 pub use metrics::Metrics;
 pub use particle::{Color, Particle};

@@ -2,7 +2,7 @@
 //! chosen collision method over the shared pipeline.
 
 use crate::auto::{self, Plan};
-use crate::boundary::{Boundary, WallReport};
+use crate::boundary::{Boundary, WallReport, Walls};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::ledger::{Collision, Ledger};
 use crate::method::{discrete, exact, Method, Setting};
@@ -30,6 +30,8 @@ pub struct World {
     pub wall_restitution: f64,
     /// What the edges do.
     pub boundary: Boundary,
+    /// Which sides of a box have walls.
+    pub walls: Walls,
     /// Collision method, or `auto`.
     pub method: Setting<Method>,
     /// Broad phase, or `auto`.
@@ -68,6 +70,7 @@ struct PlanKey {
     threads: usize,
     laws: [u64; 5],
     boundary: Boundary,
+    walls: Walls,
     particles: usize,
 }
 
@@ -84,6 +87,8 @@ pub struct Laws {
     pub wall_restitution: f64,
     /// Edge behaviour.
     pub boundary: Boundary,
+    /// Which sides of a box have walls.
+    pub walls: Walls,
 }
 
 /// Detection stages and their reusable buffers.
@@ -200,7 +205,7 @@ impl Pipeline {
         parallel::map_chunks_mut(
             self.parallel,
             particles,
-            |chunk| laws.boundary.apply(chunk, size, gravity, e),
+            |chunk| laws.boundary.apply(chunk, size, laws.walls, gravity, e),
             &mut self.walls,
         );
         let mut impulse = 0.0;
@@ -211,6 +216,9 @@ impl Pipeline {
         stats.wall_impulse += impulse;
     }
 }
+
+/// Most discs [`World::collisions_over`] looks at (it checks every pair).
+pub const FORECAST_LIMIT: usize = 256;
 
 /// How often `auto` looks at the scene again (steps).
 const REPLAN_EVERY: u64 = 30;
@@ -232,6 +240,7 @@ impl World {
             restitution: 1.0,
             wall_restitution: 1.0,
             boundary: Boundary::Box,
+            walls: Walls::ALL,
             method: Setting::Fixed(Method::Impulse),
             broad_phase: Setting::Fixed(BroadPhaseKind::Brute),
             substeps: Setting::Fixed(1),
@@ -262,6 +271,7 @@ impl World {
             restitution: self.restitution,
             wall_restitution: self.wall_restitution,
             boundary: self.boundary,
+            walls: self.walls,
         }
     }
 
@@ -301,6 +311,7 @@ impl World {
             ]
             .map(f64::to_bits),
             boundary: self.boundary,
+            walls: self.walls,
             particles: self.particles.len(),
         };
         if self.plan.is_none() || self.plan_key != Some(key) || self.steps % REPLAN_EVERY == 0 {
@@ -399,6 +410,36 @@ impl World {
             .flatten()
     }
 
+    /// Whether no collision can ever happen again, with a wall or between
+    /// discs: no gravity, no disc moving towards a wall it could reach, and
+    /// every pair moving apart or keeping its distance. (On straight lines a
+    /// pair with d·Δv ≥ 0 never comes closer, since |d + Δv·t|² grows with t
+    /// from then on.) False when it cannot tell cheaply: gravity, periodic
+    /// edges, or more than [`FORECAST_LIMIT`] discs.
+    pub fn collisions_over(&self) -> bool {
+        let n = self.particles.len();
+        if self.gravity != DVec2::ZERO || self.boundary == Boundary::Periodic || n > FORECAST_LIMIT
+        {
+            return false;
+        }
+        let walls = match self.boundary {
+            Boundary::Box => self.walls,
+            _ => Walls::NONE,
+        };
+        let towards_a_wall = self.particles.iter().any(|p| {
+            (0..2).any(|axis| {
+                (walls.at(axis, false) && p.vel[axis] < 0.0)
+                    || (walls.at(axis, true) && p.vel[axis] > 0.0)
+            })
+        });
+        if towards_a_wall {
+            return false;
+        }
+        let ps = &self.particles;
+        (0..n)
+            .all(|i| (i + 1..n).all(|j| (ps[j].pos - ps[i].pos).dot(ps[j].vel - ps[i].vel) >= 0.0))
+    }
+
     /// What the last step did.
     pub fn last_stats(&self) -> &StepStats {
         &self.last_stats
@@ -422,9 +463,8 @@ impl World {
     /// Whether a disc of `radius` at `pos` would lie inside the walls (for a
     /// closed box) and overlap no other disc.
     pub fn is_free(&self, pos: DVec2, radius: f64) -> bool {
-        let inside = self.boundary != Boundary::Box
-            || (pos.cmpge(DVec2::splat(radius)).all()
-                && pos.cmple(self.size - DVec2::splat(radius)).all());
+        let inside = self.boundary == Boundary::Periodic
+            || self.boundary.admits(self.walls, self.size, pos, radius);
         inside
             && self.particles.iter().all(|p| {
                 self.boundary.separation(p.pos, pos, self.size).length() >= p.radius + radius
@@ -438,7 +478,14 @@ impl World {
             return None;
         }
         let start = match self.boundary {
-            Boundary::Box => wanted.clamp(DVec2::splat(radius), self.size - DVec2::splat(radius)),
+            Boundary::Box => {
+                let (lo, hi) = (DVec2::splat(radius), self.size - DVec2::splat(radius));
+                let w = self.walls;
+                DVec2::new(
+                    clamp_walled(wanted.x, lo.x, hi.x, [w.left, w.right]),
+                    clamp_walled(wanted.y, lo.y, hi.y, [w.bottom, w.top]),
+                )
+            }
             Boundary::Open | Boundary::Periodic => wanted,
         };
         if self.is_free(start, radius) {
@@ -473,6 +520,17 @@ impl World {
     }
 }
 
+/// `x` kept above `lo` if there is a lower wall and below `hi` if there is
+/// an upper one.
+fn clamp_walled(x: f64, lo: f64, hi: f64, [lower, upper]: [bool; 2]) -> f64 {
+    let x = if lower { x.max(lo) } else { x };
+    if upper {
+        x.min(hi)
+    } else {
+        x
+    }
+}
+
 impl Clone for World {
     fn clone(&self) -> Self {
         World {
@@ -482,6 +540,7 @@ impl Clone for World {
             restitution: self.restitution,
             wall_restitution: self.wall_restitution,
             boundary: self.boundary,
+            walls: self.walls,
             method: self.method,
             broad_phase: self.broad_phase,
             substeps: self.substeps,

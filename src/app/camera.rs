@@ -39,11 +39,17 @@ impl Camera {
 
     /// Shows the whole box again.
     pub fn fit(&mut self, size: DVec2, margin: f64) {
+        self.fit_rect(DVec2::ZERO, size, margin);
+    }
+
+    /// Shows the world rectangle `lo`–`hi` whole, centred.
+    pub fn fit_rect(&mut self, lo: DVec2, hi: DVec2, margin: f64) {
         let room = (self.viewport - DVec2::splat(2.0 * margin)).max(DVec2::ONE);
+        let size = (hi - lo).max(DVec2::splat(1e-9));
         self.scale = (room / size)
             .min_element()
             .clamp(SCALE_LIMITS.0, SCALE_LIMITS.1);
-        self.center = 0.5 * size;
+        self.center = 0.5 * (lo + hi);
     }
 
     /// Moves the world's rectangle to `origin` with size `size` (px),

@@ -94,14 +94,23 @@ pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
     let (w, h) = (b.x - a.x, b.y - a.y);
     draw_rectangle(a.x, a.y, w, h, color(look.colors.inside));
     let wall = color(look.colors.wall);
-    match world.boundary {
-        Boundary::Box => draw_rectangle_lines(a.x, a.y, w, h, 3.0 * look.scale, wall),
-        Boundary::Periodic | Boundary::Open => {
-            let faint = Color { a: 0.45, ..wall };
-            let corners = [a, vec2(b.x, a.y), b, vec2(a.x, b.y), a];
-            for edge in corners.windows(2) {
-                dashed_line(edge[0], edge[1], 12.0, 2.0 * look.scale, faint);
-            }
+    let faint = Color { a: 0.45, ..wall };
+    // Sides in the order left, right, bottom, top (screen y grows down).
+    let sides = [
+        (a, vec2(a.x, b.y)),
+        (vec2(b.x, a.y), b),
+        (vec2(a.x, b.y), b),
+        (a, vec2(b.x, a.y)),
+    ];
+    let walled = match world.boundary {
+        Boundary::Box => world.walls.sides(),
+        Boundary::Periodic | Boundary::Open => [false; 4],
+    };
+    for ((from, to), solid) in sides.into_iter().zip(walled) {
+        if solid {
+            draw_line(from.x, from.y, to.x, to.y, 3.0 * look.scale, wall);
+        } else {
+            dashed_line(from, to, 12.0, 2.0 * look.scale, faint);
         }
     }
 }

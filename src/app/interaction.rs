@@ -14,7 +14,7 @@
 //!   back the velocity it had, so selecting a disc to read it never stops it.
 
 use glam::DVec2;
-use impulse::{Boundary, Color, Particle, World};
+use impulse::{Boundary, Color, Particle, Walls, World};
 use std::collections::VecDeque;
 
 /// Launch speed per metre of drag (1/s): a 2 m drag launches at 3 m/s.
@@ -182,13 +182,14 @@ impl Gesture {
         else {
             return;
         };
-        let (Some(&(_, cursor)), size, boundary) = (trail.back(), world.size, world.boundary)
+        let (Some(&(_, cursor)), size, edges) =
+            (trail.back(), world.size, (world.boundary, world.walls))
         else {
             return;
         };
         let velocity = trail_velocity(trail);
         if let Some(p) = world.particles.get_mut(*index) {
-            p.pos = keep_inside(cursor + *offset, p.radius, size, boundary);
+            p.pos = keep_inside(cursor + *offset, p.radius, size, edges);
             p.vel = velocity;
         }
     }
@@ -265,12 +266,28 @@ impl Gesture {
     }
 }
 
-/// Clamps a disc centre into the box (other boundaries have no walls).
-fn keep_inside(pos: DVec2, radius: f64, size: DVec2, boundary: Boundary) -> DVec2 {
+/// Clamps a disc centre inside the box's walls (open sides and other
+/// boundaries have none).
+fn keep_inside(
+    pos: DVec2,
+    radius: f64,
+    size: DVec2,
+    (boundary, walls): (Boundary, Walls),
+) -> DVec2 {
     match boundary {
         Boundary::Box => {
             let lo = DVec2::splat(radius).min(0.5 * size);
-            pos.clamp(lo, size - lo)
+            let hi = size - lo;
+            let mut out = pos;
+            for axis in 0..2 {
+                if walls.at(axis, false) {
+                    out[axis] = out[axis].max(lo[axis]);
+                }
+                if walls.at(axis, true) {
+                    out[axis] = out[axis].min(hi[axis]);
+                }
+            }
+            out
         }
         Boundary::Periodic => pos.rem_euclid(size),
         Boundary::Open => pos,

@@ -341,6 +341,9 @@ impl App {
             let budget = clock::physics_budget(previous.0, previous.1);
             let running = !self.clock.paused;
             self.advance_physics(get_frame_time() as f64, budget);
+            if self.camera_fitted && self.follows_discs() {
+                self.fit_camera();
+            }
             let step_ms = ms_since(step_start, std::time::Instant::now());
             self.realtime
                 .push(get_time(), self.world.time, running && !self.clock.paused);

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 /// A preset: the key that opens it, and its scene file (compiled in).
 pub struct Preset {
-    /// The key's label ("1" … "9", "0", or "Ctrl+N").
+    /// The key's label ("1" … "9", "0", "Ctrl+N", or "" for the menu only).
     pub key: &'static str,
     /// Where the file lives in the repository.
     pub path: &'static str,
@@ -29,8 +29,9 @@ macro_rules! preset {
     };
 }
 
-/// The presets, in menu order.
-pub const PRESETS: [Preset; 11] = [
+/// The presets, in menu order: the digit keys' ten, the π blocks at their
+/// other mass ratios (menu only), and the empty box last (Ctrl+N).
+pub const PRESETS: [Preset; 14] = [
     preset!("1", "preset-1-head-on.toml"),
     preset!("2", "preset-2-heavy-hits-light.toml"),
     preset!("3", "preset-3-light-hits-heavy.toml"),
@@ -41,6 +42,9 @@ pub const PRESETS: [Preset; 11] = [
     preset!("8", "preset-8-gas.toml"),
     preset!("9", "preset-9-billiards.toml"),
     preset!("0", "preset-0-pile.toml"),
+    preset!("", "pi-blocks-1.toml"),
+    preset!("", "pi-blocks-10000.toml"),
+    preset!("", "pi-blocks-1000000.toml"),
     preset!("Ctrl+N", "preset-empty.toml"),
 ];
 
@@ -55,7 +59,11 @@ pub fn preset_labels() -> &'static [String] {
                     .ok()
                     .and_then(|s| s.name)
                     .unwrap_or_else(|| p.path.to_string());
-                format!("{}   {}", p.key, name)
+                if p.key.is_empty() {
+                    name
+                } else {
+                    format!("{}   {}", p.key, name)
+                }
             })
             .collect()
     })

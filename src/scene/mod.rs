@@ -10,6 +10,7 @@
 //! restitution = 1.0            # between discs, default 1
 //! wall_restitution = 1.0       # at the walls, default 1
 //! boundary = "box"             # "box", "open" or "periodic"
+//! walls = ["left"]             # a box's sides that have walls; default all four
 //!
 //! [simulation]                 # optional; every entry defaults to "auto"
 //! method = "auto"              # "seed", "impulse", "verlet", "exact"
@@ -33,7 +34,7 @@
 //! overlap = 0.0                # optional: overlap allowed, fraction of a diameter
 //! ```
 
-use crate::boundary::Boundary;
+use crate::boundary::{Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
 use crate::method::{Method, Setting};
 use crate::particle::{Color, Particle};
@@ -117,6 +118,9 @@ pub struct WorldSpec {
     /// Edge behaviour.
     #[serde(default)]
     pub boundary: Boundary,
+    /// The sides of a box that have walls (all four when absent).
+    #[serde(default, skip_serializing_if = "all_walls")]
+    pub walls: Walls,
 }
 
 /// The `[simulation]` table: method, broad phase, substeps, step.
@@ -183,6 +187,10 @@ pub struct FillSpec {
     /// deliberately dense start.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub overlap: f64,
+}
+
+fn all_walls(w: &Walls) -> bool {
+    w.all()
 }
 
 fn is_zero(x: &f64) -> bool {
@@ -342,7 +350,7 @@ impl Scene {
             if p.pos.abs().max_element() > limits::POSITION {
                 return Err(bad(field("pos"), "must be within 1e12 m of the origin"));
             }
-            if !fits(w.boundary, w.size, p.pos, p.radius) {
+            if !w.boundary.admits(w.walls, w.size, p.pos, p.radius) {
                 return Err(bad(field("pos"), "puts the disc outside the box"));
             }
             let overlapped = cells
@@ -434,6 +442,7 @@ impl Scene {
         world.restitution = w.restitution;
         world.wall_restitution = w.wall_restitution;
         world.boundary = w.boundary;
+        world.walls = w.walls;
         world.method = self.simulation.method;
         world.broad_phase = self.simulation.broad_phase;
         world.substeps = self.simulation.substeps;
@@ -467,6 +476,7 @@ impl Scene {
                 restitution: world.restitution,
                 wall_restitution: world.wall_restitution,
                 boundary: world.boundary,
+                walls: world.walls,
             },
             simulation: SimulationSpec {
                 method: world.method,
@@ -493,17 +503,6 @@ impl Scene {
     pub fn to_toml(&self) -> String {
         // Serialising plain data with finite numbers cannot fail.
         toml::to_string_pretty(self).unwrap_or_default()
-    }
-}
-
-/// Whether a disc at `pos` lies inside the world for this boundary.
-fn fits(boundary: Boundary, size: DVec2, pos: DVec2, radius: f64) -> bool {
-    match boundary {
-        Boundary::Box => {
-            pos.cmpge(DVec2::splat(radius)).all() && pos.cmple(size - DVec2::splat(radius)).all()
-        }
-        Boundary::Periodic => pos.cmpge(DVec2::ZERO).all() && pos.cmplt(size).all(),
-        Boundary::Open => true,
     }
 }
 

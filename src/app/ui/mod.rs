@@ -329,11 +329,25 @@ impl App {
         }
     }
 
-    /// Fits the box into the world's rectangle.
+    /// Fits the box into the world's rectangle; in a box with open sides,
+    /// the box and every disc that has left it.
     pub(super) fn fit_camera(&mut self) {
-        self.camera
-            .fit(self.world.size, 24.0 * f64::from(self.ui.scale));
+        let margin = 24.0 * f64::from(self.ui.scale);
+        let (mut lo, mut hi) = (glam::DVec2::ZERO, self.world.size);
+        if self.follows_discs() {
+            for p in self.world.particles.iter().filter(|p| p.pos.is_finite()) {
+                lo = lo.min(p.pos - glam::DVec2::splat(p.radius));
+                hi = hi.max(p.pos + glam::DVec2::splat(p.radius));
+            }
+        }
+        self.camera.fit_rect(lo, hi, margin);
         self.camera_fitted = true;
+    }
+
+    /// Whether a fitted view follows the discs out of the box: a box with
+    /// open sides (the π blocks leave through theirs).
+    pub(super) fn follows_discs(&self) -> bool {
+        self.world.boundary == impulse::Boundary::Box && !self.world.walls.all()
     }
 }
 

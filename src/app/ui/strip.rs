@@ -19,6 +19,7 @@ impl App {
             .as_ref()
             .filter(|(_, until)| macroquad::time::get_time() < *until)
             .map(|(m, _)| m.clone());
+        let result = crate::app::lesson::pi_result(&self.world);
         let caption = self.scene.description.clone();
         let panel = egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
             ui.horizontal(|ui| {
@@ -37,6 +38,12 @@ impl App {
                 ui.label(format_metres(metres));
                 ui.separator();
                 match (message, caption) {
+                    _ if result.is_some() => {
+                        let line = result.clone().unwrap_or_default();
+                        let r = ui.add(egui::Label::new(RichText::new(line).strong()).wrap());
+                        self.ui
+                            .note_widget("pi_result", r.rect, ctx.pixels_per_point());
+                    }
                     (Some(message), _) => {
                         let color = if ui.visuals().dark_mode {
                             Color32::from_rgb(255, 215, 120)

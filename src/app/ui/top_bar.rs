@@ -44,10 +44,13 @@ impl App {
                 }
                 ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
                 ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
-                ui.label(format!(
-                    "collisions: {}",
-                    self.world.total_pair_collisions + self.world.total_wall_hits
-                ));
+                match crate::app::lesson::pi_result(&self.world) {
+                    Some(result) => ui.label(RichText::new(result).strong()),
+                    None => ui.label(format!(
+                        "collisions: {}",
+                        self.world.total_pair_collisions + self.world.total_wall_hits
+                    )),
+                };
                 if !self.ui.docks_open {
                     // Tab's on-screen twin, for a touch screen.
                     if ui.button("Show panels").on_hover_text("Tab").clicked() {

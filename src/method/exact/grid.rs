@@ -40,7 +40,33 @@ impl Grid {
             .fold(0.0, f64::max)
             .max(1e-12);
         let (origin, extent) = match laws.boundary {
-            Boundary::Box | Boundary::Periodic => (DVec2::ZERO, laws.size),
+            Boundary::Box if laws.walls.all() => (DVec2::ZERO, laws.size),
+            Boundary::Periodic => (DVec2::ZERO, laws.size),
+            // A box with open sides: the box, and beyond each open side as far
+            // as the discs reach, with the open world's margin; a walled
+            // side stays the grid's edge, so its wall is met in an edge cell.
+            Boundary::Box => {
+                let (mut lo, mut hi) = (DVec2::ZERO, laws.size);
+                for p in particles.iter().filter(|p| p.pos.is_finite()) {
+                    lo = lo.min(p.pos);
+                    hi = hi.max(p.pos);
+                }
+                let margin = (hi - lo).max(DVec2::splat(4.0 * max_d));
+                let w = laws.walls;
+                let lo = DVec2::new(
+                    if w.left { 0.0 } else { lo.x - margin.x },
+                    if w.bottom { 0.0 } else { lo.y - margin.y },
+                );
+                let hi = DVec2::new(
+                    if w.right {
+                        laws.size.x
+                    } else {
+                        hi.x + margin.x
+                    },
+                    if w.top { laws.size.y } else { hi.y + margin.y },
+                );
+                (lo, hi - lo)
+            }
             Boundary::Open => {
                 let (mut lo, mut hi) =
                     (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
@@ -330,6 +356,7 @@ mod tests {
             restitution: 1.0,
             wall_restitution: 1.0,
             boundary,
+            walls: crate::Walls::ALL,
         };
         let g = Grid::new(&vec![disc; (dims[0] * dims[1]) as usize], &laws);
         assert_eq!(g.dims, dims);

@@ -186,8 +186,9 @@ impl Sim {
         let a = axis as u8;
         let cell = me.cell[axis];
         let edge = if upper { self.grid.dims[axis] - 1 } else { 0 };
+        let walled = self.laws.walls.at(axis, upper);
         let (target, kind) = match (cell == edge, self.laws.boundary) {
-            (true, Boundary::Box) => {
+            (true, Boundary::Box) if walled => {
                 let wall = if upper {
                     self.laws.size[axis] - me.radius
                 } else {
@@ -195,7 +196,9 @@ impl Sim {
                 };
                 (wall, Kind::Wall { axis: a, upper })
             }
-            (true, Boundary::Open) => (self.grid.border(cell, axis, upper), Kind::Leave),
+            (true, Boundary::Open | Boundary::Box) => {
+                (self.grid.border(cell, axis, upper), Kind::Leave)
+            }
             _ => (
                 self.grid.border(cell, axis, upper),
                 Kind::Cell { axis: a, upper },
@@ -228,8 +231,12 @@ impl Sim {
                     axis: a,
                     upper: true,
                 };
-                consider(first_crossing(p, v, ga, me.radius, -1.0), lower);
-                consider(first_crossing(p, v, ga, hi, 1.0), upper);
+                if self.laws.walls.at(axis, false) {
+                    consider(first_crossing(p, v, ga, me.radius, -1.0), lower);
+                }
+                if self.laws.walls.at(axis, true) {
+                    consider(first_crossing(p, v, ga, hi, 1.0), upper);
+                }
             }
             let (lo, hi) = self.grid.bounds(me.cell, axis);
             let last = self.grid.dims[axis] - 1;
@@ -239,9 +246,10 @@ impl Sim {
                 } else {
                     me.cell[axis] == 0
                 };
+                let walled = self.laws.walls.at(axis, upper);
                 let kind = match (at_edge, self.laws.boundary) {
-                    (true, Boundary::Box) => continue, // the wall comes first
-                    (true, Boundary::Open) => Kind::Leave,
+                    (true, Boundary::Box) if walled => continue, // the wall comes first
+                    (true, Boundary::Open | Boundary::Box) => Kind::Leave,
                     _ => Kind::Cell { axis: a, upper },
                 };
                 consider(first_crossing(p, v, ga, bound, sign), kind);

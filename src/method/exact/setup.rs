@@ -115,7 +115,15 @@ impl Sim {
                 let b = &mut self.bodies[k as usize];
                 if self.laws.boundary == Boundary::Box {
                     let lo = DVec2::splat(b.radius);
-                    b.pos = b.pos.clamp(lo, (self.laws.size - lo).max(lo));
+                    let hi = (self.laws.size - lo).max(lo);
+                    for axis in 0..2 {
+                        if self.laws.walls.at(axis, false) {
+                            b.pos[axis] = b.pos[axis].max(lo[axis]);
+                        }
+                        if self.laws.walls.at(axis, true) {
+                            b.pos[axis] = b.pos[axis].min(hi[axis]);
+                        }
+                    }
                 } else if self.laws.boundary == Boundary::Periodic {
                     b.pos = b.pos.rem_euclid(self.laws.size);
                 }
@@ -158,7 +166,8 @@ impl Sim {
     pub(super) fn continues(&self, particles: &[Particle], laws: &Laws) -> bool {
         let same_geometry = laws.size == self.laws.size
             && laws.gravity == self.laws.gravity
-            && laws.boundary == self.laws.boundary;
+            && laws.boundary == self.laws.boundary
+            && laws.walls == self.laws.walls;
         same_geometry
             && !self.overlapping
             && particles.len() == self.bodies.len()
