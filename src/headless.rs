@@ -86,6 +86,8 @@ struct Summary {
     kinetic_energy: f64,
     wall_clock_seconds: f64,
     plan: Plan,
+    /// What the method could not promise at the end of the run.
+    warnings: Vec<impulse::warnings::Warning>,
     particles: Vec<impulse::Particle>,
 }
 
@@ -141,6 +143,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         momentum: metrics.momentum,
         kinetic_energy: metrics.kinetic_energy,
         wall_clock_seconds: started.elapsed().as_secs_f64(),
+        warnings: impulse::warnings::warnings(&world, dt),
         plan,
         particles: world.particles,
     };
@@ -193,6 +196,9 @@ fn summary_text(s: &Summary) -> String {
     );
     if !s.plan.reason.is_empty() {
         println!("auto chose       {}", s.plan.reason);
+    }
+    for w in &s.warnings {
+        println!("warning          {}", w.text);
     }
     println!("particles        {}", s.particles.len());
     for (i, p) in s.particles.iter().enumerate().take(20) {

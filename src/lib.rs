@@ -21,7 +21,8 @@
 //! `verlet`) and the event-driven `exact`, which keeps its own cells and
 //! event calendar; [`auto`] chooses among them. [`metrics`] measures the
 //! conserved quantities, [`stats`] what a step did and
-//! how long each stage took, and [`scene`] turns TOML scene files into worlds.
+//! how long each stage took, [`warnings`] what a method cannot promise, and
+//! [`scene`] turns TOML scene files into worlds.
 #![warn(missing_docs)]
 
 pub mod alloc_count;
@@ -41,6 +42,7 @@ pub mod resolution;
 pub mod scene;
 pub mod stats;
 pub mod stress;
+pub mod warnings;
 pub mod world;
 
 pub use boundary::{Boundary, Walls};

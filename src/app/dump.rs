@@ -56,6 +56,12 @@ pub struct StateDump<'a> {
     pub gravity: [f64; 2],
     /// Edges: "box", "open" or "periodic".
     pub boundary: String,
+    /// The sides of a box that have walls.
+    pub walls: Vec<&'static str>,
+    /// What the method cannot promise right now, as the top bar says it.
+    pub warnings: Vec<impulse::warnings::Warning>,
+    /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
+    pub pi_result: Option<String>,
     /// Whether the side dock (the controls) is shown.
     pub panel_visible: bool,
     /// Screen rectangles [x, y, width, height] (px) of named widgets drawn
@@ -169,6 +175,9 @@ impl<'a> StateDump<'a> {
             wall_restitution: world.wall_restitution,
             gravity: world.gravity.to_array(),
             boundary: world.boundary.name().to_string(),
+            walls: world.walls.names(),
+            warnings: Vec::new(),
+            pi_result: None,
             panel_visible: false,
             panel_widgets: BTreeMap::new(),
             layout: Default::default(),

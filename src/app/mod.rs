@@ -596,6 +596,8 @@ impl App {
         state.paused = self.clock.paused;
         state.time_scale = self.clock.time_scale();
         state.dt = self.clock.dt;
+        state.warnings = impulse::warnings::warnings(&self.world, self.clock.dt);
+        state.pi_result = lesson::pi_result(&self.world);
         state.selected = self.selected;
         state.history_len = self.history.len();
         state.history_cursor = self.history.cursor();

@@ -1,8 +1,8 @@
 //! The top bar: what a class reads from the back row. The scene's name, the
 //! simulated time, RUNNING or PAUSED (never hidden, not even by Tab), the
 //! total momentum and kinetic energy with their units, the collision count,
-//! and, when it applies, that the simulation runs slower than asked or that
-//! the view is a rewound moment.
+//! and, when it applies, that the simulation runs slower than asked, that
+//! the view is a rewound moment, or what the method cannot promise.
 
 use super::numbers::{plain, vector, with_unit};
 use crate::app::App;
@@ -51,6 +51,14 @@ impl App {
                         self.world.total_pair_collisions + self.world.total_wall_hits
                     )),
                 };
+                for warning in impulse::warnings::warnings(&self.world, self.clock.dt) {
+                    let r = ui.label(RichText::new(format!("⚠ {}", warning.text)).color(paused));
+                    self.ui.note_widget(
+                        format!("warning_{}", warning.code),
+                        r.rect,
+                        ctx.pixels_per_point(),
+                    );
+                }
                 if !self.ui.docks_open {
                     // Tab's on-screen twin, for a touch screen.
                     if ui.button("Show panels").on_hover_text("Tab").clicked() {

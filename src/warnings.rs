@@ -1,0 +1,91 @@
+//! What the chosen method cannot promise, said in plain words while it
+//! applies: the window's top bar, its state dump and `run`'s JSON show the
+//! same list. Each warning has a stable code (for scripts and tests) and a
+//! text (for people).
+
+use crate::method::{Method, Setting};
+use crate::world::World;
+use serde::Serialize;
+
+/// One warning: a stable code and a sentence for the screen.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Warning {
+    /// Stable identifier, e.g. `"verlet_loses_energy"`.
+    pub code: &'static str,
+    /// What it means for the experiment, in plain words.
+    pub text: String,
+}
+
+/// `verlet` is in use: its collisions are position corrections, so they
+/// lose energy and ignore the restitution.
+pub const VERLET: &str = "verlet_loses_energy";
+/// `seed` is in use: one pass, no substeps, so fast discs can tunnel.
+pub const SEED: &str = "seed_tunnels";
+/// A fixed substep count lets a disc move more than its radius per substep.
+pub const SUBSTEPS: &str = "substeps_too_few";
+/// The last step was cut short: simulated time stopped advancing.
+pub const STALL: &str = "step_cut_short";
+
+/// The warnings that apply to `world` stepped at `dt` now: the method the
+/// last step used (or would use), the discs' speeds against the substep,
+/// and whether the last step was cut short.
+pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let plan = world.plan().cloned().unwrap_or_else(|| world.plan_for(dt));
+    // A method just switched to applies from the next step on.
+    let method = match world.method {
+        Setting::Fixed(m) => m,
+        Setting::Auto => plan.method,
+    };
+    let several = world.particles.len() >= 2;
+    match method {
+        Method::Verlet if several => out.push(Warning {
+            code: VERLET,
+            text: format!(
+                "verlet: collisions lose energy; the restitution e = {} is not honoured",
+                trim(world.restitution)
+            ),
+        }),
+        Method::Seed if several => out.push(Warning {
+            code: SEED,
+            text: "seed: fast discs can pass through each other".into(),
+        }),
+        _ => {}
+    }
+    if let (Setting::Fixed(k), Method::Impulse | Method::Verlet) = (world.substeps, method) {
+        let h = dt / f64::from(k.max(1));
+        let worst = world
+            .particles
+            .iter()
+            .map(|p| p.vel.length() * h / p.radius)
+            .fold(0.0, f64::max);
+        if several && worst > 1.0 {
+            out.push(Warning {
+                code: SUBSTEPS,
+                text: format!(
+                    "{k} substep{} per step: the fastest disc moves {:.1}× its radius per substep \
+                     and can pass through others",
+                    if k == 1 { "" } else { "s" },
+                    worst
+                ),
+            });
+        }
+    }
+    if world.last_stats().truncated {
+        out.push(Warning {
+            code: STALL,
+            text: format!(
+                "{}: the step was cut short and the simulation time has stopped advancing \
+                 (too many collisions at once); choose impulse",
+                method.name()
+            ),
+        });
+    }
+    out
+}
+
+/// A number without trailing zeros: 1, 0.5, 0.25.
+fn trim(x: f64) -> String {
+    let s = format!("{x:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}

@@ -1,0 +1,117 @@
+//! The warnings say what the method cannot promise, when it applies and
+//! only then, and what they say is true of the physics.
+
+use impulse::method::{Method, Setting};
+use impulse::warnings::{self, warnings, Warning};
+use impulse::{Scene, World};
+
+const DT: f64 = 1.0 / 240.0;
+
+fn preset(file: &str) -> World {
+    let path = format!("{}/assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    Scene::load(std::path::Path::new(&path))
+        .and_then(|s| s.build(&path))
+        .unwrap()
+}
+
+fn codes(w: &[Warning]) -> Vec<&'static str> {
+    w.iter().map(|w| w.code).collect()
+}
+
+fn run(world: &mut World, seconds: f64) {
+    for _ in 0..(seconds / DT).round() as usize {
+        world.step(DT);
+    }
+}
+
+#[test]
+fn verlet_is_named_while_it_runs_and_it_does_lose_the_energy_it_warns_of() {
+    for method in [Method::Impulse, Method::Exact, Method::Verlet] {
+        let mut w = preset("preset-1-head-on.toml");
+        w.method = Setting::Fixed(method);
+        let before = w.metrics().kinetic_energy;
+        run(&mut w, 4.0); // past the collision at 2.4 s
+        let lost = 1.0 - w.metrics().kinetic_energy / before;
+        let said = codes(&warnings(&w, DT));
+        if method == Method::Verlet {
+            assert_eq!(said, [warnings::VERLET]);
+            assert!(
+                lost > 0.1,
+                "verlet lost {lost:.3} of the energy: the warning would lie"
+            );
+            assert!(warnings(&w, DT)[0].text.contains("e = 1"));
+        } else {
+            assert!(said.is_empty(), "{method:?}: {said:?}");
+            assert!(lost.abs() < 1e-9, "{method:?} lost {lost}");
+        }
+    }
+}
+
+#[test]
+fn seed_is_named_and_a_lone_disc_needs_no_warning() {
+    let mut w = preset("preset-1-head-on.toml");
+    w.method = Setting::Fixed(Method::Seed);
+    assert_eq!(codes(&warnings(&w, DT)), [warnings::SEED]);
+    w.particles.truncate(1);
+    assert!(warnings(&w, DT).is_empty());
+}
+
+#[test]
+fn a_fixed_substep_count_is_named_exactly_when_a_disc_outruns_its_radius() {
+    let mut w = preset("preset-1-head-on.toml");
+    w.method = Setting::Fixed(Method::Impulse);
+    w.substeps = Setting::Fixed(1);
+    // radius 0.6 m, dt 1/240 s: the limit is 144 m/s.
+    let radius = w.particles[0].radius;
+    for (speed, warned) in [(0.9 * radius / DT, false), (1.1 * radius / DT, true)] {
+        w.particles[0].vel.x = speed;
+        assert_eq!(
+            codes(&warnings(&w, DT)).contains(&warnings::SUBSTEPS),
+            warned,
+            "{speed} m/s"
+        );
+    }
+    // Two substeps halve the distance per substep: no warning at 1.1×.
+    w.substeps = Setting::Fixed(2);
+    assert!(warnings(&w, DT).is_empty());
+    // auto picks its own substeps: no warning from this rule.
+    w.substeps = Setting::Auto;
+    w.particles[0].vel.x = 10.0 * radius / DT;
+    assert!(!codes(&warnings(&w, DT)).contains(&warnings::SUBSTEPS));
+}
+
+#[test]
+fn a_step_cut_short_is_named_from_the_steps_own_report() {
+    let mut w = preset("preset-0-pile.toml");
+    w.method = Setting::Fixed(Method::Exact);
+    let mut stalled = false;
+    for _ in 0..(3.0 / DT) as usize {
+        let t = w.time;
+        let stats = w.step(DT);
+        let said = codes(&warnings(&w, DT)).contains(&warnings::STALL);
+        assert_eq!(
+            said, stats.truncated,
+            "the warning follows the step's report"
+        );
+        if stats.truncated {
+            assert!(w.time - t < DT, "a cut step advances less than dt");
+            stalled = true;
+            break;
+        }
+    }
+    assert!(stalled, "exact on the pile stalls (part 11 is to end that)");
+    // The same pile under impulse is never cut short.
+    let mut w = preset("preset-0-pile.toml");
+    w.method = Setting::Fixed(Method::Impulse);
+    run(&mut w, 1.0);
+    assert!(!codes(&warnings(&w, DT)).contains(&warnings::STALL));
+}
+
+#[test]
+fn warnings_serialise_as_code_and_text() {
+    let mut w = preset("preset-1-head-on.toml");
+    w.method = Setting::Fixed(Method::Verlet);
+    let json = serde_json::to_value(warnings(&w, DT)).unwrap();
+    assert_eq!(json[0]["code"], "verlet_loses_energy");
+    assert!(json[0]["text"].as_str().unwrap().starts_with("verlet"));
+}
