@@ -166,14 +166,16 @@ impl Boundary {
         }
     }
 
-    /// Applies the boundary to every disc.
+    /// Applies the boundary to every disc; a bounce faster than
+    /// `impact_speed` (see [`crate::impact`]) is a hit, a slower one a
+    /// resting contact.
     pub fn apply(
         self,
         particles: &mut [Particle],
-        size: DVec2,
-        walls: Walls,
+        (size, walls): (DVec2, Walls),
         gravity: DVec2,
         wall_restitution: f64,
+        impact_speed: f64,
     ) -> WallReport {
         match self {
             Boundary::Open => WallReport::default(),
@@ -188,30 +190,45 @@ impl Boundary {
                 WallReport::default()
             }
             Boundary::Box => {
-                let mut hits = 0;
+                let (mut hits, mut resting) = (0, 0);
                 let mut impulse = 0.0;
                 for p in particles {
                     let before = p.vel;
+                    let mut count = |bounced: bool, speed: f64| {
+                        if bounced {
+                            if crate::impact::is_impact(speed.abs(), impact_speed) {
+                                hits += 1;
+                            } else {
+                                resting += 1;
+                            }
+                        }
+                    };
                     let (x, y) = (&mut p.pos.x, &mut p.pos.y);
-                    hits += usize::from(bounce_axis(
+                    let bounced = bounce_axis(
                         x,
                         &mut p.vel.x,
                         p.radius,
                         (size.x, [walls.left, walls.right]),
                         gravity.x,
                         wall_restitution,
-                    ));
-                    hits += usize::from(bounce_axis(
+                    );
+                    count(bounced, before.x);
+                    let bounced = bounce_axis(
                         y,
                         &mut p.vel.y,
                         p.radius,
                         (size.y, [walls.bottom, walls.top]),
                         gravity.y,
                         wall_restitution,
-                    ));
+                    );
+                    count(bounced, before.y);
                     impulse += p.mass * (p.vel - before).abs().element_sum();
                 }
-                WallReport { hits, impulse }
+                WallReport {
+                    hits,
+                    resting,
+                    impulse,
+                }
             }
         }
     }
@@ -220,8 +237,10 @@ impl Boundary {
 /// What the walls did in one boundary stage.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WallReport {
-    /// Discs that bounced.
+    /// Discs that hit a wall (impacts).
     pub hits: usize,
+    /// Discs that met a wall slower than an impact (resting on it).
+    pub resting: usize,
     /// Momentum the walls gave the discs, Σ m·|Δv| (kg·m/s): over time and
     /// wall length, the pressure.
     pub impulse: f64,
@@ -331,7 +350,7 @@ mod tests {
                 Color::palette(0),
             ),
         ];
-        let report = Boundary::Box.apply(&mut discs, size, walls, DVec2::ZERO, 1.0);
+        let report = Boundary::Box.apply(&mut discs, (size, walls), DVec2::ZERO, 1.0, 0.0);
         assert_eq!(report.hits, 1);
         assert_eq!(discs[0].vel.x, 2.0, "no right wall");
         assert_eq!(discs[0].pos.x, 9.9);

@@ -3,8 +3,9 @@
 //! scrubbed backwards and forwards and resumed from any moment (with
 //! different laws if the user changes them first).
 //!
-//! A snapshot holds what changes while stepping: the discs, the clock and
-//! the running totals. The laws (restitution, gravity, boundary, method)
+//! A snapshot holds what changes while stepping: the discs, the clock, the
+//! running totals and the ledger of the last collisions, so that after a
+//! rewind the counters and the ledger still agree. The laws (restitution, gravity, boundary, method)
 //! are not restored: they belong to the user, who may rewind precisely to
 //! try the same moment with another restitution.
 
@@ -29,6 +30,8 @@ pub struct Snapshot {
     pub total_wall_hits: u64,
     /// Wall impulse so far (kg·m/s).
     pub total_wall_impulse: f64,
+    /// The ledger at that moment.
+    pub ledger: crate::ledger::Ledger,
 }
 
 impl Snapshot {
@@ -41,6 +44,7 @@ impl Snapshot {
             total_pair_collisions: world.total_pair_collisions,
             total_wall_hits: world.total_wall_hits,
             total_wall_impulse: world.total_wall_impulse,
+            ledger: world.ledger.clone(),
         }
     }
 
@@ -52,10 +56,13 @@ impl Snapshot {
         world.total_pair_collisions = self.total_pair_collisions;
         world.total_wall_hits = self.total_wall_hits;
         world.total_wall_impulse = self.total_wall_impulse;
+        world.ledger.clone_from(&self.ledger);
     }
 
     fn bytes(&self) -> usize {
-        std::mem::size_of::<Snapshot>() + self.particles.len() * std::mem::size_of::<Particle>()
+        std::mem::size_of::<Snapshot>()
+            + self.particles.len() * std::mem::size_of::<Particle>()
+            + self.ledger.entries().count() * std::mem::size_of::<crate::ledger::Collision>()
     }
 }
 

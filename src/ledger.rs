@@ -63,7 +63,7 @@ impl Collision {
 }
 
 /// The last collisions, newest last.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Ledger {
     entries: VecDeque<Collision>,
     capacity: usize,

@@ -49,10 +49,14 @@ pub struct StepStats {
     pub candidate_pairs: usize,
     /// Pairs that overlapped.
     pub contacts: usize,
-    /// Approaching pairs whose velocities were resolved.
+    /// Pair impacts resolved: approaching faster than the
+    /// [`crate::impact::threshold`].
     pub pair_collisions: usize,
-    /// Discs that bounced off a wall.
+    /// Discs that hit a wall faster than the threshold.
     pub wall_hits: usize,
+    /// Resting contacts met, between discs and at walls: approaching, but
+    /// slower than the threshold (counted apart from the impacts).
+    pub resting_contacts: usize,
     /// Momentum the walls transferred, Σ m·|Δv| (kg·m/s).
     pub wall_impulse: f64,
     /// Deepest pair overlap before it was pushed apart (m).

@@ -48,8 +48,11 @@ pub struct World {
     pub steps: u64,
     /// Pair collisions resolved since the world was made.
     pub total_pair_collisions: u64,
-    /// Wall bounces since the world was made.
+    /// Wall impacts since the world was made.
     pub total_wall_hits: u64,
+    /// Resting contacts (discs on discs or on walls) in the last step; see
+    /// [`crate::impact`].
+    pub resting_contacts: usize,
     /// Momentum transferred by the walls since the world was made (kg·m/s).
     pub total_wall_impulse: f64,
     /// The last collisions, when turned on (`ledger.keep(n)`).
@@ -175,14 +178,14 @@ impl Pipeline {
     pub(crate) fn resolve(
         &mut self,
         particles: &mut [Particle],
-        laws: &Laws,
+        (laws, h): (&Laws, f64),
         rule: Rule,
         ledger: (&mut Ledger, f64),
     ) -> ResolutionReport {
-        let e = laws.restitution;
+        let law = (laws.restitution, crate::impact::threshold(laws.gravity, h));
         let (contacts, parallel) = (&self.contacts, self.parallel);
         self.banded
-            .resolve(particles, contacts, e, rule, ledger, parallel)
+            .resolve(particles, contacts, law, rule, ledger, parallel)
     }
 
     /// The integration stage (semi-implicit Euler), chunk by chunk.
@@ -192,25 +195,29 @@ impl Pipeline {
         });
     }
 
-    /// The boundary stage, adding what the walls did to `stats`. It runs
+    /// The boundary stage after a (sub)step of `h` seconds, adding what the
+    /// walls did to `stats`. It runs
     /// chunk by chunk, serially too, and the chunks' wall impulses are
     /// added in chunk order, so the sum does not depend on the threads.
     pub(crate) fn apply_boundary(
         &mut self,
         particles: &mut [Particle],
         laws: &Laws,
+        h: f64,
         stats: &mut StepStats,
     ) {
-        let (size, gravity, e) = (laws.size, laws.gravity, laws.wall_restitution);
+        let (edges, gravity, e) = ((laws.size, laws.walls), laws.gravity, laws.wall_restitution);
+        let impact_speed = crate::impact::threshold(gravity, h);
         parallel::map_chunks_mut(
             self.parallel,
             particles,
-            |chunk| laws.boundary.apply(chunk, size, laws.walls, gravity, e),
+            |chunk| laws.boundary.apply(chunk, edges, gravity, e, impact_speed),
             &mut self.walls,
         );
         let mut impulse = 0.0;
         for w in &self.walls {
             stats.wall_hits += w.hits;
+            stats.resting_contacts += w.resting;
             impulse += w.impulse;
         }
         stats.wall_impulse += impulse;
@@ -249,6 +256,7 @@ impl World {
             steps: 0,
             total_pair_collisions: 0,
             total_wall_hits: 0,
+            resting_contacts: 0,
             total_wall_impulse: 0.0,
             ledger: Ledger::default(),
             pipeline: Pipeline::new(BroadPhaseKind::Brute),
@@ -380,6 +388,7 @@ impl World {
         self.steps += 1;
         self.total_pair_collisions += stats.pair_collisions as u64;
         self.total_wall_hits += stats.wall_hits as u64;
+        self.resting_contacts = stats.resting_contacts;
         self.total_wall_impulse += stats.wall_impulse;
         self.last_stats = stats;
         stats
@@ -549,6 +558,7 @@ impl Clone for World {
             steps: self.steps,
             total_pair_collisions: self.total_pair_collisions,
             total_wall_hits: self.total_wall_hits,
+            resting_contacts: self.resting_contacts,
             total_wall_impulse: self.total_wall_impulse,
             ledger: self.ledger.clone(),
             pipeline: Pipeline::new(self.pipeline.kind),

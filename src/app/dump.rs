@@ -36,6 +36,11 @@ pub struct StateDump<'a> {
     pub history_cursor: Option<usize>,
     /// Collisions the ledger has recorded.
     pub collisions_recorded: u64,
+    /// Impacts counted: between discs, and with walls.
+    pub pair_collisions: u64,
+    pub wall_hits: u64,
+    /// Resting contacts in the last step (not counted as collisions).
+    pub resting_contacts: usize,
     /// The open scene's name.
     pub scene_name: Option<String>,
     /// Where the open scene came from (a file, a preset, the default).
@@ -165,6 +170,9 @@ impl<'a> StateDump<'a> {
             history_len: 0,
             history_cursor: None,
             collisions_recorded: 0,
+            pair_collisions: world.total_pair_collisions,
+            wall_hits: world.total_wall_hits,
+            resting_contacts: world.resting_contacts,
             scene_name: None,
             scene_origin: String::new(),
             method: world.method.to_string(),

@@ -174,7 +174,8 @@ impl App {
         self.gesture = Default::default();
         match self.history.scrub(&mut self.world, delta) {
             Some(t) => {
-                self.world.ledger.clear();
+                // The snapshot brought back its ledger and counters; the
+                // plot keeps what led up to this moment.
                 let (oldest, newest) = self.history.span().unwrap_or((t, t));
                 self.toast(format!(
                     "Rewound to t = {t:.3} s (recorded: {oldest:.3} to {newest:.3} s); Space resumes from here"

@@ -429,11 +429,20 @@ impl App {
         let due = self.clock.advance(frame_seconds);
         let start = std::time::Instant::now();
         let mut steps = 0;
+        // Small scenes: the totals just before and after each step with an
+        // impact, so the plot drops at the instant of an inelastic collision.
+        let sample_collisions = self.world.particles.len() <= plot::SAMPLE_COLLISIONS_MAX_DISCS;
         while steps < due {
             if steps > 0 && start.elapsed().as_secs_f64() >= budget {
                 break;
             }
+            let before = sample_collisions.then(|| (self.world.time, self.world.metrics()));
             let stats = self.world.step(self.clock.dt);
+            if let Some((t, m)) = before.filter(|_| stats.pair_collisions + stats.wall_hits > 0) {
+                self.totals.push_at(t, &self.world, &m);
+                let now = self.world.metrics();
+                self.totals.push(&self.world, &now);
+            }
             self.gesture.pin_held(&mut self.world);
             self.step_micros
                 .push_back(stats.timings.total().as_secs_f64() * 1e6);

@@ -6,8 +6,12 @@ use glam::DVec2;
 use impulse::{Metrics, World};
 use std::collections::VecDeque;
 
-/// Samples the plot keeps (one per frame: about 10 s at 60 fps).
+/// Samples the plot keeps (one per frame, and two per step with a
+/// collision in small scenes: about 10 s at 60 fps).
 const MAX_SAMPLES: usize = 600;
+/// Scenes up to this many discs are also sampled just before and after
+/// each step with a collision, so a loss shows as a drop at its instant.
+pub const SAMPLE_COLLISIONS_MAX_DISCS: usize = 64;
 /// The momentum diagram is drawn for at most this many discs.
 pub const DIAGRAM_MAX_DISCS: usize = 24;
 
@@ -32,14 +36,23 @@ pub struct Totals {
 }
 
 impl Totals {
-    /// Adds the world's totals now (a jump back in time starts afresh).
+    /// Adds the world's totals now. A jump back in time (a rewind) drops
+    /// the samples after it: the plot shows what led up to this moment.
     pub fn push(&mut self, world: &World, metrics: &Metrics) {
+        self.push_at(world.time, world, metrics);
+    }
+
+    /// Adds totals measured at `time` (s).
+    pub fn push_at(&mut self, time: f64, world: &World, metrics: &Metrics) {
         let sample = Sample {
-            time: world.time,
+            time,
             momentum: metrics.momentum,
             kinetic_energy: metrics.kinetic_energy,
         };
-        if self.samples.back().is_some_and(|s| s.time > sample.time) {
+        while self.samples.back().is_some_and(|s| s.time > sample.time) {
+            self.samples.pop_back();
+        }
+        if self.first.is_some_and(|f| f.time > sample.time) {
             self.clear();
         }
         if self.first.is_none() {

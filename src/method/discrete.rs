@@ -42,13 +42,14 @@ pub(crate) fn impulse_substep(
     }
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
-    let report = pipeline.resolve(particles, laws, rule, (ledger, time));
+    let report = pipeline.resolve(particles, (laws, h), rule, (ledger, time));
     stats.pair_collisions += report.collisions;
+    stats.resting_contacts += report.resting;
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     stats.timings.resolution += lap.lap();
     pipeline.integrate(particles, laws.gravity, h);
     stats.timings.integration += lap.lap();
-    pipeline.apply_boundary(particles, laws, stats);
+    pipeline.apply_boundary(particles, laws, h, stats);
     stats.timings.boundary += lap.lap();
 }
 
@@ -73,15 +74,24 @@ pub(crate) fn verlet_substep(
     pipeline.detect(particles, laws, stats);
     let mut lap = Lap::start();
     // Projection changes no velocity: nothing to record.
+    // Projection changes no velocity, so which contacts are impacts is read
+    // off the velocities the discs came in with (implied by the last substep).
+    let impact_speed = crate::impact::threshold(laws.gravity, h);
+    for c in &pipeline.contacts {
+        let closing = (particles[c.i as usize].vel - particles[c.j as usize].vel).dot(c.normal);
+        if crate::impact::is_impact(closing, impact_speed) {
+            stats.pair_collisions += 1;
+        } else if closing > 0.0 {
+            stats.resting_contacts += 1;
+        }
+    }
     let report = pipeline.resolve(
         particles,
-        laws,
+        (laws, h),
         Rule::PROJECTION,
         (&mut Ledger::default(), 0.0),
     );
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
-    // Contacts that were projected count as collisions for the statistics.
-    stats.pair_collisions += pipeline.contacts.len();
     let implied = |(p, previous): (&mut Particle, &DVec2)| p.vel = (p.pos - *previous) / h;
     if pipeline.parallel {
         let chunks = particles.par_chunks_mut(CHUNK);
@@ -95,6 +105,6 @@ pub(crate) fn verlet_substep(
             .for_each(implied);
     }
     stats.timings.resolution += lap.lap();
-    pipeline.apply_boundary(particles, laws, stats);
+    pipeline.apply_boundary(particles, laws, h, stats);
     stats.timings.boundary += lap.lap();
 }

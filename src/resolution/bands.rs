@@ -99,13 +99,13 @@ impl Banded {
         &mut self,
         particles: &mut [Particle],
         contacts: &[Contact],
-        restitution: f64,
+        law: (f64, f64),
         rule: Rule,
         (ledger, time): (&mut Ledger, f64),
         parallel: bool,
     ) -> ResolutionReport {
         if contacts.len() < self.min_contacts {
-            return super::resolve_contacts(particles, contacts, restitution, rule, ledger, time);
+            return super::resolve_contacts(particles, contacts, law, rule, ledger, time);
         }
         self.group(particles.len(), contacts);
         let mut report = ResolutionReport::default();
@@ -126,7 +126,7 @@ impl Banded {
                             // `c.i` and `c.j` while this one holds them.
                             let (a, b) = unsafe { discs.pair(c.i as usize, c.j as usize) };
                             let off = (&mut Ledger::default(), time);
-                            resolve_contact(a, b, c, restitution, rule, off, &mut report);
+                            resolve_contact(a, b, c, law, rule, off, &mut report);
                         }
                         report
                     })
@@ -138,7 +138,7 @@ impl Banded {
                         particles,
                         contacts,
                         group(band),
-                        restitution,
+                        law,
                         rule,
                         (ledger, time),
                         &mut report,
@@ -150,7 +150,7 @@ impl Banded {
             particles,
             contacts,
             group(APART),
-            restitution,
+            law,
             rule,
             (ledger, time),
             &mut report,
@@ -218,7 +218,7 @@ fn resolve_serially(
     particles: &mut [Particle],
     contacts: &[Contact],
     indices: &[u32],
-    restitution: f64,
+    law: (f64, f64),
     rule: Rule,
     (ledger, time): (&mut Ledger, f64),
     report: &mut ResolutionReport,
@@ -226,7 +226,7 @@ fn resolve_serially(
     for &k in indices {
         let c = &contacts[k as usize];
         let (a, b) = pair_mut(particles, c.i as usize, c.j as usize);
-        resolve_contact(a, b, c, restitution, rule, (&mut *ledger, time), report);
+        resolve_contact(a, b, c, law, rule, (&mut *ledger, time), report);
     }
 }
 
@@ -406,7 +406,7 @@ mod tests {
                     always_banded().resolve(
                         &mut particles,
                         &contacts,
-                        0.9,
+                        (0.9, 0.0),
                         Rule::IMPULSE,
                         ledger,
                         parallel,
@@ -420,7 +420,14 @@ mod tests {
             // The order is not ascending pair order: resolving it is a real change.
             let mut ascending = start.clone();
             let off = &mut Ledger::default();
-            super::super::resolve_contacts(&mut ascending, &contacts, 0.9, Rule::IMPULSE, off, 0.0);
+            super::super::resolve_contacts(
+                &mut ascending,
+                &contacts,
+                (0.9, 0.0),
+                Rule::IMPULSE,
+                off,
+                0.0,
+            );
             assert_ne!(bits(&ascending), serial.0);
         }
     }
@@ -443,7 +450,14 @@ mod tests {
         let mut particles = start.clone();
         let report = pool(2).install(|| {
             let ledger = (&mut Ledger::default(), 0.0);
-            always_banded().resolve(&mut particles, &contacts, 1.0, Rule::IMPULSE, ledger, true)
+            always_banded().resolve(
+                &mut particles,
+                &contacts,
+                (1.0, 0.0),
+                Rule::IMPULSE,
+                ledger,
+                true,
+            )
         });
         let (p1, c1, _) = totals(&particles);
         assert!((p1 - p0).length() <= 1e-12 * scale, "momentum {p0} -> {p1}");
@@ -465,9 +479,23 @@ mod tests {
         ledger.keep(usize::MAX);
         let (a, b) = pool(2).install(|| {
             let off = (&mut Ledger::default(), 0.0);
-            let a = always_banded().resolve(&mut quiet, &contacts, 1.0, Rule::IMPULSE, off, true);
+            let a = always_banded().resolve(
+                &mut quiet,
+                &contacts,
+                (1.0, 0.0),
+                Rule::IMPULSE,
+                off,
+                true,
+            );
             let on = (&mut ledger, 0.0);
-            let b = always_banded().resolve(&mut recorded, &contacts, 1.0, Rule::IMPULSE, on, true);
+            let b = always_banded().resolve(
+                &mut recorded,
+                &contacts,
+                (1.0, 0.0),
+                Rule::IMPULSE,
+                on,
+                true,
+            );
             (a, b)
         });
         assert_eq!(bits(&quiet), bits(&recorded));
@@ -482,11 +510,11 @@ mod tests {
         assert!(contacts.len() < BANDED_MIN_CONTACTS);
         let (mut banded, mut ascending) = (start.clone(), start.clone());
         let off = (&mut Ledger::default(), 0.0);
-        Banded::default().resolve(&mut banded, &contacts, 0.8, Rule::SEED, off, true);
+        Banded::default().resolve(&mut banded, &contacts, (0.8, 0.0), Rule::SEED, off, true);
         super::super::resolve_contacts(
             &mut ascending,
             &contacts,
-            0.8,
+            (0.8, 0.0),
             Rule::SEED,
             &mut Ledger::default(),
             0.0,

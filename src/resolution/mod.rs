@@ -27,8 +27,12 @@ use glam::DVec2;
 /// What resolving one step's contacts did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ResolutionReport {
-    /// Approaching pairs whose velocities were changed.
+    /// Impacts: pairs approaching faster than the impact speed, whose
+    /// velocities were changed.
     pub collisions: usize,
+    /// Resting contacts: approaching pairs slower than that (resolved too,
+    /// but not counted or recorded as collisions).
+    pub resting: usize,
     /// Deepest overlap found (m).
     pub max_overlap: f64,
 }
@@ -38,6 +42,7 @@ impl ResolutionReport {
     pub fn merge(self, other: ResolutionReport) -> ResolutionReport {
         ResolutionReport {
             collisions: self.collisions + other.collisions,
+            resting: self.resting + other.resting,
             max_overlap: self.max_overlap.max(other.max_overlap),
         }
     }
@@ -90,12 +95,14 @@ impl Rule {
     };
 }
 
-/// Resolves `contacts` in order with particle restitution `restitution`;
-/// each collision goes into `ledger` (if it is on) at time `time`.
+/// Resolves `contacts` in order with the law (restitution, impact speed):
+/// restitution between discs, and the closing speed above which a contact
+/// is an impact ([`crate::impact`]); each impact goes into `ledger` (if it
+/// is on) at time `time`.
 pub fn resolve_contacts(
     particles: &mut [Particle],
     contacts: &[Contact],
-    restitution: f64,
+    law: (f64, f64),
     rule: Rule,
     ledger: &mut Ledger,
     time: f64,
@@ -103,7 +110,7 @@ pub fn resolve_contacts(
     let mut report = ResolutionReport::default();
     for c in contacts {
         let (a, b) = pair_mut(particles, c.i as usize, c.j as usize);
-        resolve_contact(a, b, c, restitution, rule, (ledger, time), &mut report);
+        resolve_contact(a, b, c, law, rule, (ledger, time), &mut report);
     }
     report
 }
@@ -114,12 +121,13 @@ fn resolve_contact(
     a: &mut Particle,
     b: &mut Particle,
     c: &Contact,
-    restitution: f64,
+    (restitution, impact_speed): (f64, f64),
     rule: Rule,
     (ledger, time): (&mut Ledger, f64),
     report: &mut ResolutionReport,
 ) {
     let before = [a.vel, b.vel];
+    let closing = (a.vel - b.vel).dot(c.normal);
     let collided = match rule.velocities {
         Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
         Velocities::Always => {
@@ -128,8 +136,10 @@ fn resolve_contact(
         }
         Velocities::Never => false,
     };
-    report.collisions += usize::from(collided);
-    if collided && ledger.is_on() {
+    let impact = collided && crate::impact::is_impact(closing, impact_speed);
+    report.collisions += usize::from(impact);
+    report.resting += usize::from(collided && !impact);
+    if impact && ledger.is_on() {
         ledger.push(Collision {
             time,
             discs: [c.i as usize, c.j as usize],

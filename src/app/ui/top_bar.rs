@@ -44,6 +44,14 @@ impl App {
                 }
                 ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
                 ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
+                if self.world.gravity != glam::DVec2::ZERO {
+                    // With gravity, kinetic energy alone seems to vanish in a fall.
+                    ui.label(format!(
+                        "KE + PE = {}",
+                        with_unit(self.world.total_energy(), 3, "J")
+                    ))
+                    .on_hover_text("kinetic plus gravitational potential energy (zero at the bottom edge of the box)");
+                }
                 match crate::app::lesson::pi_result(&self.world) {
                     Some(result) => ui.label(RichText::new(result).strong()),
                     None => ui.label(format!(
@@ -51,6 +59,12 @@ impl App {
                         self.world.total_pair_collisions + self.world.total_wall_hits
                     )),
                 };
+                if self.world.resting_contacts > 0 {
+                    ui.label(format!("resting contacts: {}", self.world.resting_contacts))
+                        .on_hover_text(
+                            "discs lying on each other or on a wall: not counted as collisions",
+                        );
+                }
                 for warning in impulse::warnings::warnings(&self.world, self.clock.dt) {
                     let r = ui.label(RichText::new(format!("⚠ {}", warning.text)).color(paused));
                     self.ui.note_widget(

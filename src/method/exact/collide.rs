@@ -55,7 +55,7 @@ impl Sim {
                 body.gen += 1;
                 self.aux[k as usize].last_hit = self.now;
             }
-            self.collisions += 1;
+            self.count((a.vel - b.vel).dot(normal));
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         }
         self.predict(i);
@@ -138,7 +138,9 @@ impl Sim {
             body.gen += 1;
             self.aux[k as usize].last_hit = self.now;
         }
-        self.collisions += touches.len();
+        for t in &list {
+            self.count((velocities[t.a] - velocities[t.b]).dot(t.normal));
+        }
         for &k in &ids {
             self.predict(k);
         }
@@ -160,15 +162,30 @@ impl Sim {
             b.vel[axis] < 0.0
         };
         b.pos[axis] = if upper { size - b.radius } else { b.radius };
+        let speed = b.vel[axis].abs();
         if into_wall {
             let aux = &mut self.aux[i as usize];
             self.wall_impulse += aux.mass * (1.0 + e) * b.vel[axis].abs();
             b.vel[axis] *= -e;
             b.gen += 1;
             aux.last_hit = self.now;
-            self.wall_hits += 1;
+            if crate::impact::is_impact(speed, self.impact_speed) {
+                self.wall_hits += 1;
+            } else {
+                self.resting += 1;
+            }
         }
         self.predict(i);
+    }
+
+    /// Counts a pair collision closing at `closing` m/s: an impact or a
+    /// resting contact.
+    fn count(&mut self, closing: f64) {
+        if crate::impact::is_impact(closing, self.impact_speed) {
+            self.collisions += 1;
+        } else {
+            self.resting += 1;
+        }
     }
 
     pub(super) fn cross_cell(&mut self, i: u32, axis: usize, upper: bool) {

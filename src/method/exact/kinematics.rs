@@ -51,12 +51,28 @@ pub(super) fn first_crossing(p: f64, v: f64, g: f64, target: f64, sign: f64) -> 
     } else {
         (root_velocity - v) / g
     };
-    (tau >= 0.0 && tau.is_finite()).then_some(tau)
+    // Zero here is a disc on the line at rest, or turning there, with
+    // gravity pulling it back: it does not cross (the crossings at once
+    // were answered above). Taking it for one sent a disc at rest on a cell
+    // border to and fro between the two cells forever.
+    (tau > 0.0 && tau.is_finite()).then_some(tau)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_disc_at_rest_on_a_line_crosses_it_only_the_way_gravity_pulls() {
+        let g = -9.81;
+        // Downward crossing of the line it sits on: at once.
+        assert_eq!(first_crossing(2.0, 0.0, g, 2.0, -1.0), Some(0.0));
+        // Upward: never (it was crossed back at t = 0 and looped forever).
+        assert_eq!(first_crossing(2.0, 0.0, g, 2.0, 1.0), None);
+        // Thrown up from the line: back down through it after 2v/g.
+        let t = first_crossing(2.0, 3.0, g, 2.0, -1.0).unwrap();
+        assert!((t - 6.0 / 9.81).abs() < 1e-12, "{t}");
+    }
 
     #[test]
     pub(super) fn pair_time_matches_straight_line_contact() {

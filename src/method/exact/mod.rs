@@ -119,9 +119,13 @@ impl Exact {
         sim.stop_at_collision = self.stop_at_collision;
         sim.stopped = false;
         sim.run();
+        let impact_speed = sim.impact_speed;
         for mut c in sim.collided.drain(..) {
-            c.time += start;
-            ledger.push(c);
+            let closing = (c.before[0] - c.before[1]).dot(c.normal);
+            if crate::impact::is_impact(closing, impact_speed) {
+                c.time += start;
+                ledger.push(c);
+            }
         }
         let end = if sim.truncated || sim.stopped {
             sim.now
@@ -131,6 +135,7 @@ impl Exact {
         sim.finish(end, particles);
         stats.pair_collisions += sim.collisions;
         stats.wall_hits += sim.wall_hits;
+        stats.resting_contacts += sim.resting;
         stats.wall_impulse += sim.wall_impulse;
         stats.events += sim.events;
         stats.truncated |= sim.truncated;
@@ -227,6 +232,11 @@ struct Sim {
     events: usize,
     collisions: usize,
     wall_hits: usize,
+    /// Collisions and wall hits slower than the impact speed (resting).
+    resting: usize,
+    /// The closing speed above which a collision is an impact
+    /// ([`crate::impact::threshold`] for a step of the step's length).
+    impact_speed: f64,
     wall_impulse: f64,
     max_overlap: f64,
     truncated: bool,

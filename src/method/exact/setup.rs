@@ -35,6 +35,8 @@ impl Sim {
             events: 0,
             collisions: 0,
             wall_hits: 0,
+            resting: 0,
+            impact_speed: crate::impact::threshold(laws.gravity, dt),
             wall_impulse: 0.0,
             max_overlap: 0.0,
             truncated: false,
@@ -203,6 +205,8 @@ impl Sim {
         self.events = 0;
         self.collisions = 0;
         self.wall_hits = 0;
+        self.resting = 0;
+        self.impact_speed = crate::impact::threshold(laws.gravity, dt);
         self.wall_impulse = 0.0;
         self.max_overlap = 0.0;
         self.truncated = false;
