@@ -103,6 +103,14 @@ pub struct UiDump {
     pub theme: String,
     /// A text field has the keyboard.
     pub typing: bool,
+    /// A field was left with Enter: the panel keeps the keyboard.
+    pub panel_keyboard: bool,
+    /// Changes that can be undone and redone.
+    pub undo_levels: [usize; 2],
+    /// The scene's discs were edited since it opened.
+    pub scene_edited: bool,
+    /// The view moves with the centre of mass.
+    pub center_of_mass_view: bool,
     /// The Discs table's last message.
     pub table_note: Option<String>,
     /// The message in the strip under the world, while shown.

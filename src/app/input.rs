@@ -76,7 +76,21 @@ impl App {
             return;
         }
         if self.ui.typing {
-            return; // the keys went into a text field
+            return; // the keys went into a text field (Ctrl+Z too: its own undo)
+        }
+        if ctrl() {
+            // Letter and digit shortcuts act only while Ctrl is up.
+            self.handle_ctrl_keys();
+            return;
+        }
+        if self.ui.panel_keyboard {
+            // After Enter in a field the keyboard stays with the panel until
+            // a click in the world or Esc.
+            if is_key_pressed(KeyCode::Escape) {
+                self.ui.panel_keyboard = false;
+                self.toast("Keys act on the world again");
+            }
+            return;
         }
         if self.answer_recovery_offer() {
             return;
@@ -102,6 +116,27 @@ impl App {
         self.handle_lesson_keys();
     }
 
+    /// Ctrl+Z undo, Ctrl+Shift+Z and Ctrl+Y redo, Ctrl+S save, Ctrl+N the
+    /// empty box.
+    fn handle_ctrl_keys(&mut self) {
+        if is_key_pressed(KeyCode::Z) {
+            if shift() {
+                self.redo_change();
+            } else {
+                self.undo_change();
+            }
+        }
+        if is_key_pressed(KeyCode::Y) {
+            self.redo_change();
+        }
+        if is_key_pressed(KeyCode::S) {
+            let _ = self.save_scene(); // reported in the window and on the terminal
+        }
+        if is_key_pressed(KeyCode::N) {
+            self.open_preset(scenes::PRESETS.len() - 1);
+        }
+    }
+
     fn handle_scene_keys(&mut self) {
         const DIGITS: [KeyCode; 10] = [
             KeyCode::Key1,
@@ -115,15 +150,6 @@ impl App {
             KeyCode::Key9,
             KeyCode::Key0,
         ];
-        if ctrl() {
-            if is_key_pressed(KeyCode::S) {
-                let _ = self.save_scene(); // reported in the window and on the terminal
-            }
-            if is_key_pressed(KeyCode::N) {
-                self.open_preset(scenes::PRESETS.len() - 1);
-            }
-            return;
-        }
         if let Some(k) = DIGITS.iter().position(|&key| is_key_pressed(key)) {
             self.ui.presets_open = false;
             self.open_preset(k);
@@ -206,10 +232,12 @@ impl App {
 
     fn handle_world_keys(&mut self) {
         if is_key_pressed(KeyCode::E) {
+            self.remember("restitution");
             self.world.restitution = nudge_restitution(self.world.restitution, !shift());
             self.toast(format!("Restitution e = {:.1}", self.world.restitution));
         }
         if is_key_pressed(KeyCode::W) {
+            self.remember("wall restitution");
             self.world.wall_restitution = nudge_restitution(self.world.wall_restitution, !shift());
             self.toast(format!(
                 "Wall restitution = {:.1}",
@@ -217,18 +245,22 @@ impl App {
             ));
         }
         if is_key_pressed(KeyCode::Y) {
+            self.remember("method");
             self.world.method = cycle(&METHODS, self.world.method);
             self.toast(format!("Method: {}", self.world.method));
         }
         if is_key_pressed(KeyCode::B) {
+            self.remember("broad phase");
             self.world.broad_phase = cycle(&BROAD_PHASES, self.world.broad_phase);
             self.toast(format!("Broad phase: {}", self.world.broad_phase));
         }
         if is_key_pressed(KeyCode::K) {
+            self.remember("substeps");
             self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
             self.toast(format!("Substeps: {}", self.world.substeps));
         }
         if is_key_pressed(KeyCode::G) {
+            self.remember("gravity");
             self.world.gravity = if self.world.gravity == DVec2::ZERO {
                 DVec2::new(0.0, -EARTH_GRAVITY)
             } else {
@@ -268,6 +300,7 @@ impl App {
 
     /// Removes every disc.
     pub(super) fn clear_discs(&mut self) {
+        self.remember("clear");
         self.world.particles.clear();
         self.forget_past();
         self.selected = None;
@@ -299,6 +332,10 @@ impl App {
 
         if is_mouse_button_pressed(MouseButton::Left) {
             if !on_panel {
+                // A click in the world takes the keyboard back from a panel,
+                // and what the press may change can be undone.
+                self.ui.panel_keyboard = false;
+                self.press_moment = Some(self.moment());
                 let slop = CLICK_SLOP_PIXELS / self.camera.scale;
                 let tip = self
                     .selected
@@ -320,7 +357,19 @@ impl App {
         if is_mouse_button_released(MouseButton::Left) {
             // The cursor may have moved since the last frame: follow it first.
             self.gesture.drag(&mut self.world, at, now);
-            match self.gesture.release(&mut self.world, at, self.new_disc) {
+            let before = self.press_moment.take();
+            let released = self.gesture.release(&mut self.world, at, self.new_disc);
+            let what = match released {
+                Released::Launched(_) => Some("launch"),
+                Released::Flung(..) => Some("fling"),
+                Released::Aimed(..) => Some("set a velocity"),
+                Released::NoRoom | Released::Nothing => None,
+            };
+            if let (Some(what), Some(before)) = (what, before) {
+                self.undo.remember(|| before, what, get_time());
+                self.scene_edited = true;
+            }
+            match released {
                 Released::Launched(i) => self.selected = Some(i),
                 Released::NoRoom => self.toast("No room for a new disc here"),
                 Released::Aimed(i, v) => {

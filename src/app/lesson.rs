@@ -21,12 +21,15 @@ pub const LEDGER_KEEP: usize = 50;
 const NEXT_COLLISION_LIMIT: f64 = 60.0;
 
 /// Which classroom overlays are on in the world.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LessonOverlays {
     /// The centre of mass and its velocity.
     pub center_of_mass: bool,
     /// The contact's normal and tangent at the instant of impact.
     pub contact: bool,
+    /// The centre-of-mass view, with the camera's offset from the centre
+    /// of mass when it was turned on.
+    pub com_view: Option<DVec2>,
 }
 
 impl App {
@@ -47,7 +50,7 @@ impl App {
             self.lesson.center_of_mass = !self.lesson.center_of_mass;
         }
         if is_key_pressed(KeyCode::Z) {
-            self.center_of_mass_frame();
+            self.toggle_center_of_mass_view();
         }
         if is_key_pressed(KeyCode::J) {
             self.run_to_next_collision();
@@ -128,17 +131,34 @@ impl App {
         self.world.ledger.clear();
     }
 
-    /// Every disc's velocity less the centre of mass's: total momentum 0.
-    pub(super) fn center_of_mass_frame(&mut self) {
-        let drift = self.world.metrics().center_of_mass_velocity;
-        for p in &mut self.world.particles {
-            p.vel -= drift;
+    /// Z: the centre-of-mass view on or off. The camera moves with the
+    /// centre of mass and arrows and readouts show velocities relative to
+    /// it; the discs' velocities are never changed.
+    pub(super) fn toggle_center_of_mass_view(&mut self) {
+        if self.lesson.com_view.take().is_some() {
+            self.toast("Centre-of-mass view off: velocities as seen from the box");
+            return;
         }
-        self.totals.clear();
+        let m = self.world.metrics();
+        self.lesson.com_view = Some(self.camera.center - m.center_of_mass);
+        self.camera_fitted = false;
         self.toast(format!(
-            "Centre-of-mass frame: subtracted ({:+.3}, {:+.3}) m/s from every disc",
-            drift.x, drift.y
+            "Centre-of-mass view: moving with the centre of mass at {}; Z again to leave",
+            super::ui::numbers::vector(m.center_of_mass_velocity, 3, "m/s")
         ));
+    }
+
+    /// In the centre-of-mass view: the camera follows the centre of mass,
+    /// and the world as drawn has velocities relative to it.
+    pub(super) fn world_as_seen(&mut self) -> Option<impulse::World> {
+        let offset = self.lesson.com_view?;
+        let m = self.world.metrics();
+        self.camera.center = m.center_of_mass + offset;
+        let mut seen = self.world.clone();
+        for p in &mut seen.particles {
+            p.vel -= m.center_of_mass_velocity;
+        }
+        Some(seen)
     }
 
     /// Runs to the next pair collision and pauses there, the ledger open.

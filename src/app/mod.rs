@@ -21,6 +21,7 @@ mod recovery;
 mod scenes;
 mod trails;
 mod ui;
+mod undo;
 
 use camera::Camera;
 use clock::{FixedStepClock, RealtimeMeter};
@@ -245,6 +246,14 @@ struct App {
     world_text: Option<readouts::WorldText>,
     /// Autosave, and the offer to restore an earlier session.
     recovery: recovery::Recovery,
+    /// Undo and redo of changes to the scene.
+    undo: undo::Undo,
+    /// The scene when the left button went down in the world, remembered
+    /// for undo if the gesture changes it.
+    press_moment: Option<undo::Moment>,
+    /// The discs were edited since the scene opened: its caption may no
+    /// longer hold.
+    scene_edited: bool,
 }
 
 impl App {
@@ -299,6 +308,9 @@ impl App {
             disc_batch: None,
             world_text: None,
             recovery,
+            undo: undo::Undo::default(),
+            press_moment: None,
+            scene_edited: false,
         };
         if let Some(problem) = recovery_problem {
             app.report(problem);
@@ -486,6 +498,8 @@ impl App {
     fn reset_scene(&mut self) {
         match self.scene.build(&self.scene_origin) {
             Ok(world) => {
+                self.remember("reset");
+                self.scene_edited = self.scene.edited;
                 self.world = world;
                 self.forget_past();
                 self.selected = None;
@@ -506,27 +520,30 @@ impl App {
 
     fn draw(&mut self) {
         let look = self.look();
+        // The centre-of-mass view draws a copy with relative velocities.
+        let seen = self.world_as_seen();
+        let world = seen.as_ref().unwrap_or(&self.world);
         clear_background(draw::color(look.colors.background));
         let text = self.world_text.get_or_insert_with(readouts::WorldText::new);
         text.begin_frame();
-        draw::draw_boundary(&self.world, &self.camera, look);
+        draw::draw_boundary(world, &self.camera, look);
         self.trails.draw(&self.camera, look.scale);
         let batch = self.disc_batch.get_or_insert_with(discs::DiscBatch::new);
         draw::draw_discs(
-            &self.world,
+            world,
             &self.camera,
             self.selected,
             &self.overlays,
             batch,
             look,
         );
-        draw::draw_arrows(&self.world, &self.camera, &self.overlays, look);
+        draw::draw_arrows(world, &self.camera, &self.overlays, look);
         self.draw_lesson();
         let Some(text) = self.world_text.as_ref() else {
             return;
         };
         readouts::draw_readouts(
-            &self.world,
+            world,
             &self.camera,
             &self.overlays,
             self.selected,
@@ -631,6 +648,10 @@ impl App {
             presets_open: self.ui.presets_open,
             theme: self.ui.theme.name().to_string(),
             typing: self.ui.typing,
+            panel_keyboard: self.ui.panel_keyboard,
+            undo_levels: self.undo.levels().into(),
+            scene_edited: self.scene_edited,
+            center_of_mass_view: self.lesson.com_view.is_some(),
             table_note: self.ui.table.note.as_ref().map(|n| n.text.clone()),
             message: self
                 .toast

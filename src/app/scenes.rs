@@ -134,7 +134,9 @@ impl App {
     pub(super) fn open_scene(&mut self, scene: Scene, origin: String) -> Result<(), String> {
         match scene.build(&origin) {
             Ok(world) => {
+                self.remember("open a scene");
                 self.world = world;
+                self.scene_edited = scene.edited;
                 self.forget_past();
                 self.realtime.clear();
                 self.clock.dt = self
@@ -197,7 +199,93 @@ impl App {
             self.scene.description.clone(),
         );
         scene.simulation.dt = Some(self.clock.dt);
+        scene.edited = self.scene_edited;
         scene
+    }
+
+    /// The scene as it is now, for undo.
+    pub(super) fn moment(&self) -> super::undo::Moment {
+        super::undo::Moment {
+            world: self.world.clone(),
+            scene: self.scene.clone(),
+            origin: self.scene_origin.clone(),
+            edited: self.scene_edited,
+        }
+    }
+
+    /// Remembers the scene before a change of kind `what` (see
+    /// [`super::undo`]).
+    pub(super) fn remember(&mut self, what: &'static str) {
+        let now = macroquad::time::get_time();
+        let (world, scene, origin, edited) = (
+            &self.world,
+            &self.scene,
+            &self.scene_origin,
+            self.scene_edited,
+        );
+        self.undo.remember(
+            || super::undo::Moment {
+                world: world.clone(),
+                scene: scene.clone(),
+                origin: origin.clone(),
+                edited,
+            },
+            what,
+            now,
+        );
+    }
+
+    /// Remembers a change to the discs themselves (masses, velocities, a
+    /// disc added or removed): the scene's caption may no longer hold.
+    pub(super) fn remember_edit(&mut self, what: &'static str) {
+        self.remember(what);
+        self.scene_edited = true;
+    }
+
+    /// Ctrl+Z: the scene as it was before the last change.
+    pub(super) fn undo_change(&mut self) {
+        let present = self.moment();
+        match self.undo.undo(present) {
+            Some((moment, what)) => {
+                self.put_back(moment);
+                self.toast(format!("Undone: {what} (Ctrl+Shift+Z or Ctrl+Y redoes it)"));
+            }
+            None => self.toast("Nothing to undo"),
+        }
+    }
+
+    /// Ctrl+Shift+Z or Ctrl+Y: the change the last undo took back.
+    pub(super) fn redo_change(&mut self) {
+        let present = self.moment();
+        match self.undo.redo(present) {
+            Some((moment, what)) => {
+                self.put_back(moment);
+                self.toast(format!("Redone: {what}"));
+            }
+            None => self.toast("Nothing to redo"),
+        }
+    }
+
+    fn put_back(&mut self, moment: super::undo::Moment) {
+        let resized = moment.world.size != self.world.size;
+        self.world = moment.world;
+        self.scene = moment.scene;
+        self.scene_origin = moment.origin;
+        self.scene_edited = moment.edited;
+        // The rewind history and the plot belong to the undone timeline;
+        // the ledger came back with the world.
+        self.history.clear();
+        self.totals.clear();
+        self.gesture = Gesture::Idle;
+        if self
+            .selected
+            .is_some_and(|i| i >= self.world.particles.len())
+        {
+            self.selected = None;
+        }
+        if resized && self.camera_fitted {
+            self.fit_camera();
+        }
     }
 
     /// Opens the file named in the path field; a bad file is reported and
@@ -234,6 +322,7 @@ impl App {
     pub(super) fn delete_selected(&mut self) {
         if let Some(i) = self.selected.take() {
             if i < self.world.particles.len() {
+                self.remember("delete");
                 self.world.particles.remove(i);
                 self.gesture.on_removed(i);
             }

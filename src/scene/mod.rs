@@ -3,6 +3,8 @@
 //! ```toml
 //! name = "Head-on"                      # optional
 //! description = "Two equal discs meet"  # optional, one line
+//! edited = true                         # optional: saved after its discs were
+//!                                       # edited, so the description may not hold
 //!
 //! [world]
 //! size = [16.0, 10.0]          # metres
@@ -87,6 +89,10 @@ pub struct Scene {
     /// One-line description shown on screen.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
+    /// The discs were edited after the scene was opened, so its name and
+    /// description may no longer describe it.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub edited: bool,
     /// The world's size and laws.
     pub world: WorldSpec,
     /// How it is simulated.
@@ -187,6 +193,10 @@ pub struct FillSpec {
     /// deliberately dense start.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub overlap: f64,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 fn all_walls(w: &Walls) -> bool {
@@ -470,6 +480,7 @@ impl Scene {
         Scene {
             name,
             description,
+            edited: false,
             world: WorldSpec {
                 size: world.size,
                 gravity: world.gravity,

@@ -190,6 +190,16 @@ impl App {
             {
                 actions.push(Action::Reset);
             }
+            if ui.button("↶ Undo").on_hover_text("Ctrl+Z").clicked() {
+                actions.push(Action::Undo);
+            }
+            if ui
+                .button("Redo ↷")
+                .on_hover_text("Ctrl+Shift+Z or Ctrl+Y")
+                .clicked()
+            {
+                actions.push(Action::Redo);
+            }
             if ui.button("« Slower").on_hover_text("[").clicked() {
                 self.clock.change_time_scale(-1);
             }
@@ -336,11 +346,14 @@ impl App {
             if ui.button("Forward ▶").on_hover_text(".").clicked() {
                 actions.push(Action::Scrub(1));
             }
-            if ui
-                .button("Centre-of-mass frame")
-                .on_hover_text("Z: subtract the centre of mass's velocity from every disc")
-                .clicked()
-            {
+            let on = self.lesson.com_view.is_some();
+            let r = ui
+                .selectable_label(on, "Centre-of-mass view")
+                .on_hover_text(
+                    "Z: the view moves with the centre of mass and arrows show velocities \
+                     relative to it; the experiment is not changed",
+                );
+            if r.clicked() {
                 actions.push(Action::CenterOfMassFrame);
             }
         });
@@ -586,21 +599,25 @@ impl App {
         let Some(i) = self.selected.filter(|&i| i < self.world.particles.len()) else {
             return;
         };
-        let fields = &mut self.ui.fields;
+        let fields = &self.ui.fields;
         let changed: [Option<&str>; 4] = std::array::from_fn(|k| {
             (fields.text[k] != fields.shown[k]).then_some(fields.text[k].as_str())
         });
         let biggest = 0.45 * self.world.size.min_element();
-        fields.note = Some(match parse_disc_edit(changed, biggest) {
+        let parsed = parse_disc_edit(changed, biggest);
+        let note = match parsed {
             Ok(edit) if edit.is_empty() => Note::ok("Nothing changed: type a new value first"),
             Ok(edit) => {
+                self.remember_edit("edit a disc");
                 edit.apply(&mut self.world.particles[i]);
                 // Let every field follow the disc again.
+                let fields = &mut self.ui.fields;
                 fields.shown = fields.text.clone();
                 Note::ok(format!("Applied to disc {i}"))
             }
             Err(e) => Note::error(e),
-        });
+        };
+        self.ui.fields.note = Some(note);
         let _ = FIELDS;
     }
 }

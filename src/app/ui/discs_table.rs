@@ -256,14 +256,18 @@ impl App {
 
     /// Applies an edited cell, or keeps the disc and says what is wrong.
     fn commit_cell(&mut self, cell: CellEdit) {
-        let Some(p) = self.world.particles.get_mut(cell.disc) else {
+        if cell.disc >= self.world.particles.len() {
             self.ui.table.editing = None;
             return;
-        };
+        }
+        // Enter leaves the cell; the keyboard stays with the panel.
+        self.ui.panel_keyboard = true;
         let mut changed = [None; 4];
         changed[cell.field] = Some(cell.text.as_str());
         match parse_disc_edit(changed, f64::INFINITY) {
             Ok(edit) => {
+                self.remember_edit("edit a disc");
+                let p = &mut self.world.particles[cell.disc];
                 edit.apply(p);
                 let value = [p.mass, p.radius, p.vel.x, p.vel.y][cell.field];
                 let unit = ["kg", "m", "m/s", "m/s"][cell.field];

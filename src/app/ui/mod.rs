@@ -91,6 +91,10 @@ impl Note {
 pub enum Action {
     OpenPreset(usize),
     CenterOfMassFrame,
+    /// Undo the last change to the scene.
+    Undo,
+    /// Redo what undo took back.
+    Redo,
     NextCollision,
     Scrub(isize),
     ApplySelected,
@@ -147,6 +151,9 @@ pub struct UiState {
     pub presets_open: bool,
     /// A text field has the keyboard: the shortcuts stay quiet.
     pub typing: bool,
+    /// A text field was left with Enter: the keyboard stays with the
+    /// panel (no shortcuts) until a click in the world or Esc.
+    pub panel_keyboard: bool,
     /// Set during the pass by a text field that has the keyboard.
     text_focus: bool,
     /// The pointer is on a panel or popup: the world ignores it.
@@ -178,6 +185,7 @@ impl UiState {
             help_open: false,
             presets_open: false,
             typing: false,
+            panel_keyboard: false,
             text_focus: false,
             pointer_on_ui: false,
             widgets: BTreeMap::new(),
@@ -203,11 +211,71 @@ impl UiState {
     /// shortcuts stay quiet.
     fn note_text_field(&mut self, response: &egui::Response) {
         self.text_focus |= response.has_focus();
+        if response.lost_focus() {
+            self.panel_keyboard = true;
+        }
     }
 
     /// Records a widget's rectangle (egui points) under `name`, in pixels.
     fn note_widget(&mut self, name: impl Into<String>, rect: egui::Rect, ppp: f32) {
         self.widgets.insert(name.into(), to_px(rect, ppp));
+    }
+}
+
+/// The laws a panel can change, to notice a change and undo it.
+#[derive(Clone, Copy, PartialEq)]
+struct Laws {
+    restitution: f64,
+    wall_restitution: f64,
+    gravity: glam::DVec2,
+    boundary: impulse::Boundary,
+    walls: impulse::Walls,
+    method: impulse::method::Setting<impulse::method::Method>,
+    broad_phase: impulse::method::Setting<impulse::broad_phase::BroadPhaseKind>,
+    substeps: impulse::method::Setting<u32>,
+}
+
+impl Laws {
+    fn of(w: &impulse::World) -> Laws {
+        Laws {
+            restitution: w.restitution,
+            wall_restitution: w.wall_restitution,
+            gravity: w.gravity,
+            boundary: w.boundary,
+            walls: w.walls,
+            method: w.method,
+            broad_phase: w.broad_phase,
+            substeps: w.substeps,
+        }
+    }
+
+    fn put(self, w: &mut impulse::World) {
+        w.restitution = self.restitution;
+        w.wall_restitution = self.wall_restitution;
+        w.gravity = self.gravity;
+        w.boundary = self.boundary;
+        w.walls = self.walls;
+        w.method = self.method;
+        w.broad_phase = self.broad_phase;
+        w.substeps = self.substeps;
+    }
+
+    /// Which law `w` has changed from these, if any (for undo's message).
+    fn changed_in(self, w: &impulse::World) -> Option<&'static str> {
+        let now = Laws::of(w);
+        if now == self {
+            None
+        } else if now.restitution != self.restitution {
+            Some("restitution")
+        } else if now.wall_restitution != self.wall_restitution {
+            Some("wall restitution")
+        } else if now.gravity != self.gravity {
+            Some("gravity")
+        } else if now.boundary != self.boundary || now.walls != self.walls {
+            Some("edges")
+        } else {
+            Some("method")
+        }
     }
 }
 
@@ -226,6 +294,7 @@ impl App {
     /// Runs before the key and mouse bindings; sets the camera's rectangle.
     pub(super) fn ui_pass(&mut self, mouse: glam::DVec2) {
         let mut actions = Vec::new();
+        let laws_before = Laws::of(&self.world);
         egui_macroquad::ui(|ctx| {
             if self.ui.applied != Some((self.ui.scale, self.ui.theme)) {
                 theme::apply(ctx, self.ui.scale, self.ui.theme);
@@ -279,6 +348,14 @@ impl App {
                 ui_scale: self.ui.scale,
             };
         });
+        // A law changed on a panel (a slider, a menu) can be undone: the
+        // scene before it is the scene now with the old laws.
+        if let Some(what) = laws_before.changed_in(&self.world) {
+            let mut before = self.moment();
+            laws_before.put(&mut before.world);
+            let now = macroquad::time::get_time();
+            self.undo.remember(|| before, what, now);
+        }
         for action in actions {
             self.act(action);
         }
@@ -306,7 +383,9 @@ impl App {
                 self.ui.presets_open = false;
                 self.open_preset(k);
             }
-            Action::CenterOfMassFrame => self.center_of_mass_frame(),
+            Action::CenterOfMassFrame => self.toggle_center_of_mass_view(),
+            Action::Undo => self.undo_change(),
+            Action::Redo => self.redo_change(),
             Action::NextCollision => self.run_to_next_collision(),
             Action::Scrub(k) => self.scrub(k),
             Action::ApplySelected => self.apply_disc_fields(),

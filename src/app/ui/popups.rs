@@ -36,7 +36,10 @@ pub const HELP: &[(&str, &str)] = &[
     ("O", "centre of mass and its velocity (Show)"),
     ("A", "trails (Show)"),
     ("F3", "colour-blind-safe colours (Show)"),
-    ("Z", "centre-of-mass frame: total momentum 0 (Show)"),
+    (
+        "Z",
+        "centre-of-mass view on or off: the view moves with it (Show)",
+    ),
     (
         "J",
         "run to the next collision and pause at impact (Show, Collisions tab)",
@@ -63,6 +66,12 @@ pub const HELP: &[(&str, &str)] = &[
         "open a classroom preset / the preset menu (Presets…)",
     ),
     ("Ctrl+N", "a new empty box"),
+    ("Ctrl+Z", "undo the last change to the scene (↶ Undo)"),
+    ("Ctrl+Shift+Z, Ctrl+Y", "redo it (Redo ↷)"),
+    (
+        "Esc",
+        "after Enter in a field: keys act on the world again (or click it)",
+    ),
     ("Ctrl+S", "save the scene; it reopens exactly (Scene: Save)"),
     ("X", "export totals, discs and collisions as CSV (Scene)"),
     ("F12", "screenshot into the output folder (Scene)"),

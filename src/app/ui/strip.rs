@@ -20,7 +20,13 @@ impl App {
             .filter(|(_, until)| macroquad::time::get_time() < *until)
             .map(|(m, _)| m.clone());
         let result = crate::app::lesson::pi_result(&self.world);
-        let caption = self.scene.description.clone();
+        let caption = self.scene.description.clone().map(|d| {
+            if self.scene_edited {
+                format!("Edited since it opened, so this may no longer hold: {d}")
+            } else {
+                d
+            }
+        });
         let panel = egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
             ui.horizontal(|ui| {
                 let height = ui.text_style_height(&egui::TextStyle::Body);

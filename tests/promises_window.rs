@@ -1,0 +1,217 @@
+//! What the screen says is what happens, in the real window under Xvfb:
+//! undo brings a cleared scene back bit for bit, the centre-of-mass view
+//! changes no velocity, a rewind and replay keeps the ledger and the
+//! counters in step, a field left with Enter keeps the keyboard from the
+//! shortcuts, a method that cannot keep e = 1 says so, and the π blocks end
+//! on their count.
+
+#[path = "window_harness/mod.rs"]
+mod harness;
+
+use harness::*;
+use serde_json::Value;
+
+fn click(app: &Sandbox, at: [f64; 2]) {
+    app.move_to(at);
+    app.wait_frames(1);
+    app.xdo(&["mousedown", "1"]);
+    app.wait_frames(1);
+    app.xdo(&["mouseup", "1"]);
+    app.wait_frames(2);
+}
+
+fn key(app: &Sandbox, k: &str) -> Value {
+    app.xdo(&["key", k]);
+    app.wait_frames(3)
+}
+
+#[test]
+fn clear_then_ctrl_z_restores_every_disc_bit_for_bit_and_never_the_com_view() {
+    let Some(x) = Xvfb::start("undo") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-9-billiards.toml")]);
+    app.move_to([300.0, 300.0]);
+    let before = app.wait_frames(2);
+    assert!(before["particles"].as_array().unwrap().len() > 5);
+    let s = key(&app, "c");
+    assert_eq!(s["particles"].as_array().unwrap().len(), 0, "cleared");
+    let s = key(&app, "ctrl+z");
+    assert_eq!(
+        s["particles"], before["particles"],
+        "every disc, bit for bit"
+    );
+    assert_eq!(s["time"], before["time"]);
+    assert_eq!(s["ui"]["center_of_mass_view"], false, "Ctrl+Z is not Z");
+    // Redo clears again, and undo once more brings them back.
+    let s = key(&app, "ctrl+y");
+    assert_eq!(s["particles"].as_array().unwrap().len(), 0);
+    let s = key(&app, "ctrl+shift+z");
+    assert_eq!(s["ui"]["undo_levels"][1], 0, "nothing left to redo");
+    let s = key(&app, "ctrl+z");
+    assert_eq!(s["particles"], before["particles"]);
+    // Ctrl+Z with nothing to undo still does not turn the view on.
+    for _ in 0..3 {
+        key(&app, "ctrl+z");
+    }
+    let s = app.wait_frames(2);
+    assert_eq!(s["ui"]["center_of_mass_view"], false);
+    app.quit();
+}
+
+#[test]
+fn the_centre_of_mass_view_on_and_off_leaves_every_velocity_bit_for_bit() {
+    let Some(x) = Xvfb::start("com view") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-3-light-hits-heavy.toml")]);
+    app.move_to([300.0, 300.0]);
+    let before = app.wait_frames(2);
+    let s = key(&app, "z");
+    assert_eq!(s["ui"]["center_of_mass_view"], true);
+    assert_eq!(
+        s["particles"], before["particles"],
+        "the view rewrites nothing"
+    );
+    let s = key(&app, "z");
+    assert_eq!(s["ui"]["center_of_mass_view"], false, "Z again leaves it");
+    assert_eq!(s["particles"], before["particles"]);
+    app.quit();
+}
+
+#[test]
+fn a_rewind_and_replay_keeps_the_ledger_and_the_counters_equal() {
+    let Some(x) = Xvfb::start("rewind") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &[&asset("preset-5-inelastic.toml")]);
+    app.move_to([300.0, 300.0]);
+    let agree = |s: &Value| {
+        assert_eq!(
+            s["collisions_recorded"], s["pair_collisions"],
+            "ledger and counter at t = {}",
+            s["time"]
+        );
+    };
+    // Run past the collision, then rewind to before it and replay.
+    let mut s = app.wait_frames(2);
+    while s["pair_collisions"].as_u64() == Some(0) {
+        s = app.wait_frames(10);
+        assert!(s["time"].as_f64().unwrap() < 30.0, "no collision");
+    }
+    let s = key(&app, "space");
+    agree(&s);
+    let mut s = s;
+    for _ in 0..40 {
+        s = key(&app, "shift+comma");
+        agree(&s);
+        if s["pair_collisions"].as_u64() == Some(0) {
+            break;
+        }
+    }
+    assert_eq!(s["pair_collisions"].as_u64(), Some(0), "rewound before it");
+    let s = key(&app, "space");
+    let mut s = s;
+    while s["pair_collisions"].as_u64() == Some(0) {
+        s = app.wait_frames(10);
+        assert!(s["time"].as_f64().unwrap() < 30.0, "no collision on replay");
+    }
+    agree(&s);
+    assert_eq!(s["pair_collisions"].as_u64(), Some(1));
+    app.quit();
+}
+
+#[test]
+fn after_enter_in_a_field_digits_do_not_open_presets_until_esc() {
+    let Some(x) = Xvfb::start("panel keyboard") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
+    let s = app.wait_frames(3);
+    click(&app, widget(&s, "tab_discs", 0.5));
+    let s = app.wait_frames(2);
+    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "--delay", "40", "3"]);
+    let s = key(&app, "Return");
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(3.0));
+    assert_eq!(s["ui"]["panel_keyboard"], true);
+    assert_eq!(s["ui"]["scene_edited"], true, "a mass was edited");
+    let s = key(&app, "2");
+    assert_eq!(
+        s["scene_name"], "Head-on, equal masses",
+        "2 opened no preset"
+    );
+    let s = key(&app, "Escape");
+    assert_eq!(s["ui"]["panel_keyboard"], false);
+    let s = key(&app, "2");
+    assert_ne!(
+        s["scene_name"], "Head-on, equal masses",
+        "now 2 opens preset 2"
+    );
+    // The edit and the preset switch are both undone, in order.
+    let s = key(&app, "ctrl+z");
+    assert_eq!(s["scene_name"], "Head-on, equal masses");
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(3.0));
+    let s = key(&app, "ctrl+z");
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(1.0));
+    assert_eq!(s["ui"]["scene_edited"], false);
+    app.quit();
+}
+
+#[test]
+fn switching_to_verlet_is_said_in_the_top_bar_and_switching_away_clears_it() {
+    let Some(x) = Xvfb::start("warnings") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
+    app.move_to([300.0, 300.0]);
+    let s = app.wait_frames(2);
+    assert_eq!(
+        s["warnings"].as_array().unwrap().len(),
+        0,
+        "{}",
+        s["warnings"]
+    );
+    let mut s = s;
+    for _ in 0..3 {
+        s = key(&app, "y"); // auto → seed → impulse → verlet
+    }
+    assert_eq!(s["method"], "verlet");
+    let codes: Vec<&str> = s["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["code"].as_str().unwrap())
+        .collect();
+    assert_eq!(codes, ["verlet_loses_energy"]);
+    assert!(
+        s["panel_widgets"]["warning_verlet_loses_energy"].is_array(),
+        "drawn in the top bar"
+    );
+    let s = key(&app, "y"); // → exact
+    assert_eq!(s["warnings"].as_array().unwrap().len(), 0);
+    app.quit();
+}
+
+#[test]
+fn the_pi_blocks_end_on_their_count() {
+    let Some(x) = Xvfb::start("pi end") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &[&asset("pi-blocks-1.toml")]);
+    app.move_to([300.0, 300.0]);
+    // Equal masses: three collisions, over by about 8 s of simulated time.
+    let mut s = app.wait_frames(2);
+    while s["pi_result"].is_null() {
+        s = app.wait_frames(10);
+        assert!(s["time"].as_f64().unwrap() < 40.0, "never ended");
+    }
+    assert_eq!(s["pi_result"], "3 collisions: π ≈ 3");
+    assert_eq!(s["walls"], serde_json::json!(["left"]));
+    assert!(
+        s["panel_widgets"]["pi_result"].is_array(),
+        "shown under the world"
+    );
+    app.quit();
+}
