@@ -131,6 +131,33 @@ impl<'de> Deserialize<'de> for Walls {
     }
 }
 
+/// A one-dimensional world: discs move along one axis only; the other
+/// velocity component is held at zero in every method (`constrain = "x"`
+/// in a scene's `[world]`: motion along x, as on a track).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Axis {
+    /// Along x (the y velocity is locked at zero).
+    X,
+    /// Along y (the x velocity is locked at zero).
+    Y,
+}
+
+impl Axis {
+    /// The index of the axis discs move along (0: x, 1: y).
+    pub fn index(self) -> usize {
+        match self {
+            Axis::X => 0,
+            Axis::Y => 1,
+        }
+    }
+
+    /// The index of the locked axis.
+    pub fn locked(self) -> usize {
+        1 - self.index()
+    }
+}
+
 impl Boundary {
     /// All variants, in the order the UI cycles through them.
     pub const ALL: [Boundary; 3] = [Boundary::Box, Boundary::Open, Boundary::Periodic];

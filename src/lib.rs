@@ -46,7 +46,7 @@ pub mod stress;
 pub mod warnings;
 pub mod world;
 
-pub use boundary::{Boundary, Walls};
+pub use boundary::{Axis, Boundary, Walls};
 pub use glam::DVec2;
 pub use metrics::Metrics;
 pub use particle::{Color, Particle};

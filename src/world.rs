@@ -2,7 +2,7 @@
 //! chosen collision method over the shared pipeline.
 
 use crate::auto::{self, Plan};
-use crate::boundary::{Boundary, WallReport, Walls};
+use crate::boundary::{Axis, Boundary, WallReport, Walls};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::ledger::{Collision, Ledger};
 use crate::method::{discrete, exact, Method, Setting};
@@ -32,6 +32,8 @@ pub struct World {
     pub boundary: Boundary,
     /// Which sides of a box have walls.
     pub walls: Walls,
+    /// A one-dimensional world: the only axis discs move along.
+    pub constrain: Option<Axis>,
     /// Collision method, or `auto`.
     pub method: Setting<Method>,
     /// Broad phase, or `auto`.
@@ -248,6 +250,7 @@ impl World {
             wall_restitution: 1.0,
             boundary: Boundary::Box,
             walls: Walls::ALL,
+            constrain: None,
             method: Setting::Fixed(Method::Impulse),
             broad_phase: Setting::Fixed(BroadPhaseKind::Brute),
             substeps: Setting::Fixed(1),
@@ -271,11 +274,16 @@ impl World {
         self.broad_phase = Setting::Fixed(kind);
     }
 
-    /// The laws, as the methods see them.
+    /// The laws, as the methods see them (in one dimension, gravity
+    /// across the line is held by the line and drops out).
     pub fn laws(&self) -> Laws {
+        let mut gravity = self.gravity;
+        if let Some(axis) = self.constrain {
+            gravity[axis.locked()] = 0.0;
+        }
         Laws {
             size: self.size,
-            gravity: self.gravity,
+            gravity,
             restitution: self.restitution,
             wall_restitution: self.wall_restitution,
             boundary: self.boundary,
@@ -335,6 +343,15 @@ impl World {
         let laws = self.laws();
         let mut stats = StepStats::default();
         let mut simulated = dt;
+        // One dimension: the line holds each disc at its place across it,
+        // with no speed across it, before the step and after, whatever the
+        // method (a contact normal off the line cannot move a disc off it).
+        let across = self.constrain.map(|axis| {
+            let k = axis.locked();
+            let held: Vec<f64> = self.particles.iter().map(|p| p.pos[k]).collect();
+            lock_across(&mut self.particles, k, &held);
+            (k, held)
+        });
         match method {
             Method::Impulse | Method::Verlet | Method::Seed => {
                 let substeps = if method == Method::Seed {
@@ -383,6 +400,9 @@ impl World {
                     (&mut self.ledger, self.time),
                 );
             }
+        }
+        if let Some((k, held)) = &across {
+            lock_across(&mut self.particles, *k, held);
         }
         self.time += simulated;
         self.steps += 1;
@@ -529,6 +549,20 @@ impl World {
     }
 }
 
+/// Puts every disc back at `held` across the line (axis `k`) with no
+/// velocity across it; values already right are left as they are (bit for
+/// bit, so `exact` carries its calendar on).
+fn lock_across(particles: &mut [Particle], k: usize, held: &[f64]) {
+    for (p, &at) in particles.iter_mut().zip(held) {
+        if p.vel[k] != 0.0 {
+            p.vel[k] = 0.0;
+        }
+        if p.pos[k] != at {
+            p.pos[k] = at;
+        }
+    }
+}
+
 /// `x` kept above `lo` if there is a lower wall and below `hi` if there is
 /// an upper one.
 fn clamp_walled(x: f64, lo: f64, hi: f64, [lower, upper]: [bool; 2]) -> f64 {
@@ -550,6 +584,7 @@ impl Clone for World {
             wall_restitution: self.wall_restitution,
             boundary: self.boundary,
             walls: self.walls,
+            constrain: self.constrain,
             method: self.method,
             broad_phase: self.broad_phase,
             substeps: self.substeps,

@@ -175,8 +175,10 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
     );
     assert_eq!(s3["paused"], true);
 
-    // Out of the field, keys are shortcuts again: L hides the panel.
-    app.move_to([300.0, 300.0]);
+    // Enter in a field gave the panel the keyboard; a click in the world
+    // gives it back, and keys are shortcuts again: L hides the panel.
+    assert_eq!(s3["ui"]["panel_keyboard"], true);
+    click([300.0, 300.0]);
     app.xdo(&["key", "l"]);
     let s4 = app.wait_frames(3);
     assert_eq!(s4["panel_visible"], false);

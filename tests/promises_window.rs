@@ -215,3 +215,72 @@ fn the_pi_blocks_end_on_their_count() {
     );
     app.quit();
 }
+
+#[test]
+fn a_one_dimensional_preset_keeps_every_y_velocity_zero_through_a_collision() {
+    let Some(x) = Xvfb::start("one dimension") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &[&asset("preset-4-glancing.toml")]);
+    app.move_to([300.0, 300.0]);
+    // Key 2: heavy hits light, on a track.
+    let mut s = key(&app, "2");
+    assert_eq!(s["constrain"], "x");
+    let ys: Vec<Value> = s["particles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["pos"][1].clone())
+        .collect();
+    while s["pair_collisions"].as_u64() == Some(0) || s["time"].as_f64().unwrap() < 3.0 {
+        for (p, y) in s["particles"].as_array().unwrap().iter().zip(&ys) {
+            assert_eq!(p["vel"][1].as_f64(), Some(0.0), "t = {}", s["time"]);
+            assert_eq!(&p["pos"][1], y);
+        }
+        s = app.wait_frames(5);
+        assert!(s["time"].as_f64().unwrap() < 30.0, "no collision");
+    }
+    app.quit();
+}
+
+#[test]
+fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_overlap() {
+    let Some(x) = Xvfb::start("size follows mass") else {
+        return;
+    };
+    let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
+    let s = app.wait_frames(3);
+    // Fold the two open sections so "New discs" opens in view.
+    for section in ["section_show", "section_collisions", "section_new_discs"] {
+        let s = app.wait_frames(2);
+        click(&app, widget(&s, section, 0.5));
+    }
+    let s = app.wait_frames(2);
+    let at = widget(&s, "size_follows_mass", 0.05);
+    assert!(at[1] < 800.0, "in view: {at:?}");
+    click(&app, at);
+    let s = app.wait_frames(2);
+    assert_eq!(s["ui"]["size_follows_mass"], true);
+    click(&app, widget(&s, "tab_discs", 0.5));
+    let s = app.wait_frames(2);
+    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "--delay", "40", "4"]);
+    let s = key(&app, "Return");
+    // r = 0.4·√m: 0.8 m at 4 kg.
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(4.0));
+    let r = s["particles"][0]["radius"].as_f64().unwrap();
+    assert!((r - 0.8).abs() < 1e-12, "{r}");
+    // 100 kg would be 4 m in radius: it would cross the left wall.
+    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "--delay", "40", "100"]);
+    let s = key(&app, "Return");
+    assert_eq!(s["particles"][0]["mass"].as_f64(), Some(4.0), "refused");
+    let note = s["ui"]["table_note"].as_str().unwrap();
+    assert!(
+        note.contains("cross a wall") && note.contains("nothing changed"),
+        "{note}"
+    );
+    app.quit();
+}

@@ -53,6 +53,8 @@ pub struct Overlays {
     pub velocity: bool,
     /// Momentum arrows.
     pub momentum: bool,
+    /// For a moment after each collision, each disc's change of momentum.
+    pub delta_p: bool,
     /// Text readouts.
     pub readouts: ReadoutScope,
     /// Colour discs by the colour-blind-safe palette, not the scene's colours.
@@ -64,6 +66,7 @@ impl Default for Overlays {
         Overlays {
             velocity: true,
             momentum: false,
+            delta_p: true,
             readouts: ReadoutScope::Selected,
             safe_palette: false,
         }
@@ -106,7 +109,32 @@ pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
         Boundary::Box => world.walls.sides(),
         Boundary::Periodic | Boundary::Open => [false; 4],
     };
-    for ((from, to), solid) in sides.into_iter().zip(walled) {
+    // One dimension: a rail through the discs' line (drawn under them, like
+    // beads on a wire), and only the walls at its ends (the sides along it
+    // play no part).
+    let mut skip = [false; 4];
+    if let (Some(axis), Some(first)) = (world.constrain, world.particles.first()) {
+        let along = axis.index();
+        let at = first.pos;
+        let mut from = at;
+        from[along] = 0.0;
+        let mut to = at;
+        to[along] = world.size[along];
+        let (a, b) = (
+            px(camera.world_to_screen(from)),
+            px(camera.world_to_screen(to)),
+        );
+        draw_line(a.x, a.y, b.x, b.y, 3.0 * look.scale, wall);
+        skip = if along == 0 {
+            [false, false, true, true]
+        } else {
+            [true, true, false, false]
+        };
+    }
+    for (((from, to), solid), skipped) in sides.into_iter().zip(walled).zip(skip) {
+        if skipped {
+            continue;
+        }
         if solid {
             draw_line(from.x, from.y, to.x, to.y, 3.0 * look.scale, wall);
         } else {
@@ -232,6 +260,9 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
             }
         }
     }
+    if overlays.delta_p {
+        draw_momentum_changes(world, camera, mean_mass, look);
+    }
     if overlays.velocity {
         let white = color(look.colors.velocity);
         for p in &world.particles {
@@ -239,6 +270,35 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
             let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
             if arrow_readable(c, tip, rect) {
                 arrow(px(c), px(tip), 2.0 * s, white);
+            }
+        }
+    }
+}
+
+/// How long a collision's Δp arrows stay (simulated seconds).
+pub const DELTA_P_SECONDS: f64 = 1.0;
+
+/// For [`DELTA_P_SECONDS`] after each recorded collision, each of its two
+/// discs carries its change of momentum m·(v′ − v), fading, on the momentum
+/// arrows' scale.
+fn draw_momentum_changes(world: &World, camera: &Camera, mean_mass: f64, look: Look) {
+    let s = look.scale;
+    for c in world.ledger.entries() {
+        let age = world.time - c.time;
+        if !(0.0..=DELTA_P_SECONDS).contains(&age) {
+            continue;
+        }
+        let mut amber = color(look.colors.delta_p);
+        amber.a *= (1.0 - 0.7 * age / DELTA_P_SECONDS) as f32;
+        for k in 0..2 {
+            let Some(p) = world.particles.get(c.discs[k]) else {
+                continue;
+            };
+            let dp = c.masses[k] * (c.after[k] - c.before[k]);
+            let from = camera.world_to_screen(p.pos);
+            let tip = from + camera.vector_to_screen(dp / mean_mass * ARROW_SECONDS);
+            if from.distance(tip) >= 4.0 {
+                arrow(px(from), px(tip), 4.0 * s, amber);
             }
         }
     }

@@ -63,6 +63,8 @@ pub struct StateDump<'a> {
     pub boundary: String,
     /// The sides of a box that have walls.
     pub walls: Vec<&'static str>,
+    /// One dimension: the axis discs move along.
+    pub constrain: Option<impulse::Axis>,
     /// What the method cannot promise right now, as the top bar says it.
     pub warnings: Vec<impulse::warnings::Warning>,
     /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
@@ -111,6 +113,8 @@ pub struct UiDump {
     pub scene_edited: bool,
     /// The view moves with the centre of mass.
     pub center_of_mass_view: bool,
+    /// New discs and mass edits take the radius of one density.
+    pub size_follows_mass: bool,
     /// The Discs table's last message.
     pub table_note: Option<String>,
     /// The message in the strip under the world, while shown.
@@ -192,6 +196,7 @@ impl<'a> StateDump<'a> {
             gravity: world.gravity.to_array(),
             boundary: world.boundary.name().to_string(),
             walls: world.walls.names(),
+            constrain: world.constrain,
             warnings: Vec::new(),
             pi_result: None,
             panel_visible: false,

@@ -298,6 +298,17 @@ impl App {
         }
     }
 
+    /// The disc a launch makes now: with "size follows mass", its radius
+    /// from its mass.
+    pub(super) fn new_disc_now(&self) -> super::interaction::NewDisc {
+        let mut d = self.new_disc;
+        if self.size_follows_mass {
+            let biggest = 0.45 * self.world.size.min_element();
+            d.radius = super::interaction::radius_for_mass(d.mass).min(biggest);
+        }
+        d
+    }
+
     /// Removes every disc.
     pub(super) fn clear_discs(&mut self) {
         self.remember("clear");
@@ -358,7 +369,8 @@ impl App {
             // The cursor may have moved since the last frame: follow it first.
             self.gesture.drag(&mut self.world, at, now);
             let before = self.press_moment.take();
-            let released = self.gesture.release(&mut self.world, at, self.new_disc);
+            let new_disc = self.new_disc_now();
+            let released = self.gesture.release(&mut self.world, at, new_disc);
             let what = match released {
                 Released::Launched(_) => Some("launch"),
                 Released::Flung(..) => Some("fling"),

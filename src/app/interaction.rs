@@ -32,6 +32,13 @@ pub struct NewDisc {
     pub mass: f64,
 }
 
+/// With "size follows mass": the radius of a disc of `mass` kg at one
+/// areal density for all, 1/(π·0.4²) ≈ 1.99 kg/m², so a 1 kg disc is 0.4 m
+/// in radius and the radius grows as √m.
+pub fn radius_for_mass(mass: f64) -> f64 {
+    0.4 * mass.sqrt()
+}
+
 /// The gesture in progress.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub enum Gesture {

@@ -254,6 +254,8 @@ struct App {
     /// The discs were edited since the scene opened: its caption may no
     /// longer hold.
     scene_edited: bool,
+    /// New discs and mass edits take the radius of one density.
+    size_follows_mass: bool,
 }
 
 impl App {
@@ -311,6 +313,7 @@ impl App {
             undo: undo::Undo::default(),
             press_moment: None,
             scene_edited: false,
+            size_follows_mass: false,
         };
         if let Some(problem) = recovery_problem {
             app.report(problem);
@@ -557,7 +560,7 @@ impl App {
                 &self.camera,
                 start,
                 cursor,
-                self.new_disc,
+                self.new_disc_now(),
                 look,
                 text,
             );
@@ -652,6 +655,7 @@ impl App {
             undo_levels: self.undo.levels().into(),
             scene_edited: self.scene_edited,
             center_of_mass_view: self.lesson.com_view.is_some(),
+            size_follows_mass: self.size_follows_mass,
             table_note: self.ui.table.note.as_ref().map(|n| n.text.clone()),
             message: self
                 .toast

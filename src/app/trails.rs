@@ -1,5 +1,7 @@
 //! Trails: each disc's recent path, drawn fading, so a class can see where
-//! the discs came from and how a collision bent their paths.
+//! the discs came from and how a collision bent their paths, with a dot
+//! every [`DOT_SECONDS`] of simulated time: the spacing of the dots reads
+//! as the speed (PhET's path traces).
 
 use super::camera::Camera;
 use glam::DVec2;
@@ -7,8 +9,12 @@ use impulse::World;
 use macroquad::prelude::*;
 use std::collections::VecDeque;
 
-/// Points kept per disc (one per frame: about 1 s at 60 fps).
-const POINTS: usize = 60;
+/// Points kept per disc (one per frame: about 3 s at 60 fps).
+const POINTS: usize = 180;
+/// A dot on the path every this many simulated seconds.
+pub const DOT_SECONDS: f64 = 0.1;
+/// Dots kept per disc.
+const DOTS: usize = 40;
 /// Above this many discs trails are not drawn (they would be a blur).
 pub const MAX_DISCS: usize = 2000;
 
@@ -18,6 +24,8 @@ pub struct Trails {
     /// Whether trails are recorded and drawn.
     pub on: bool,
     paths: Vec<(impulse::Color, VecDeque<DVec2>)>,
+    /// Where each disc was at each whole multiple of [`DOT_SECONDS`].
+    dots: Vec<VecDeque<DVec2>>,
     last_time: f64,
 }
 
@@ -35,15 +43,37 @@ impl Trails {
                 .iter()
                 .map(|p| (p.color, VecDeque::with_capacity(POINTS)))
                 .collect();
+            self.dots = vec![VecDeque::with_capacity(DOTS); world.particles.len()];
         }
-        self.last_time = world.time;
-        for ((_, path), p) in self.paths.iter_mut().zip(&world.particles) {
+        let (t0, t1) = (self.last_time, world.time);
+        self.last_time = t1;
+        // The multiples of DOT_SECONDS passed since the last frame.
+        let first = (t0 / DOT_SECONDS).floor() as i64 + 1;
+        let last = (t1 / DOT_SECONDS).floor() as i64;
+        let discs = self
+            .paths
+            .iter_mut()
+            .zip(&mut self.dots)
+            .zip(&world.particles);
+        for (((_, path), dots), p) in discs {
             // A jump (a periodic wrap, a drag) breaks the line.
             if path
                 .back()
                 .is_some_and(|&q| (q - p.pos).length() > 4.0 * p.radius)
             {
                 path.clear();
+                dots.clear();
+            }
+            // A dot where the disc was at each multiple, between the last
+            // frame's position and this one (straight flight in between).
+            if let Some(&q) = path.back().filter(|_| t1 > t0) {
+                for k in first..=last.min(first + 100) {
+                    let f = (k as f64 * DOT_SECONDS - t0) / (t1 - t0);
+                    if dots.len() == DOTS {
+                        dots.pop_front();
+                    }
+                    dots.push_back(q + (p.pos - q) * f);
+                }
             }
             if path.len() == POINTS {
                 path.pop_front();
@@ -70,6 +100,19 @@ impl Trails {
                 draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, width, c);
             }
         }
+        for ((color, _), dots) in self.paths.iter().zip(&self.dots) {
+            let c = Color::from_rgba(color.r, color.g, color.b, 230);
+            for d in dots {
+                let at = camera.world_to_screen(*d);
+                draw_circle(at.x as f32, at.y as f32, 2.5 * scale, c);
+            }
+        }
+    }
+
+    /// The dots of disc `k`, oldest first.
+    #[cfg(test)]
+    pub fn dots(&self, k: usize) -> impl Iterator<Item = &DVec2> {
+        self.dots.get(k).into_iter().flatten()
     }
 }
 
@@ -96,5 +139,34 @@ mod tests {
         world.time = 0.0;
         trails.record(&world);
         assert!(trails.paths.iter().all(|(_, p)| p.len() == 1));
+    }
+
+    #[test]
+    fn dots_fall_every_tenth_of_a_second_so_their_spacing_is_the_speed() {
+        let mut world = World::new(DVec2::new(100.0, 10.0));
+        world.particles.push(impulse::Particle::new(
+            DVec2::new(1.0, 5.0),
+            DVec2::new(3.0, 0.0),
+            1.0,
+            0.5,
+            impulse::Color::palette(0),
+        ));
+        let mut trails = Trails {
+            on: true,
+            ..Default::default()
+        };
+        trails.record(&world);
+        // Frames of an awkward length, not a divisor of the dot period.
+        for _ in 0..20 {
+            world.step(0.037);
+            trails.record(&world);
+        }
+        let dots: Vec<DVec2> = trails.dots(0).copied().collect();
+        assert_eq!(dots.len(), (20.0 * 0.037 / DOT_SECONDS) as usize);
+        for pair in dots.windows(2) {
+            let gap = (pair[1] - pair[0]).length();
+            assert!((gap - 3.0 * DOT_SECONDS).abs() < 1e-9, "{gap}");
+        }
+        assert!((dots[0].x - (1.0 + 3.0 * DOT_SECONDS)).abs() < 1e-9);
     }
 }

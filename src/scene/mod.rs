@@ -13,6 +13,7 @@
 //! wall_restitution = 1.0       # at the walls, default 1
 //! boundary = "box"             # "box", "open" or "periodic"
 //! walls = ["left"]             # a box's sides that have walls; default all four
+//! constrain = "x"              # optional: one dimension, motion along x only
 //!
 //! [simulation]                 # optional; every entry defaults to "auto"
 //! method = "auto"              # "seed", "impulse", "verlet", "exact"
@@ -36,7 +37,7 @@
 //! overlap = 0.0                # optional: overlap allowed, fraction of a diameter
 //! ```
 
-use crate::boundary::{Boundary, Walls};
+use crate::boundary::{Axis, Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
 use crate::method::{Method, Setting};
 use crate::particle::{Color, Particle};
@@ -127,6 +128,9 @@ pub struct WorldSpec {
     /// The sides of a box that have walls (all four when absent).
     #[serde(default, skip_serializing_if = "all_walls")]
     pub walls: Walls,
+    /// One dimension: the axis discs move along ("x" or "y").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub constrain: Option<Axis>,
 }
 
 /// The `[simulation]` table: method, broad phase, substeps, step.
@@ -453,6 +457,7 @@ impl Scene {
         world.wall_restitution = w.wall_restitution;
         world.boundary = w.boundary;
         world.walls = w.walls;
+        world.constrain = w.constrain;
         world.method = self.simulation.method;
         world.broad_phase = self.simulation.broad_phase;
         world.substeps = self.simulation.substeps;
@@ -488,6 +493,7 @@ impl Scene {
                 wall_restitution: world.wall_restitution,
                 boundary: world.boundary,
                 walls: world.walls,
+                constrain: world.constrain,
             },
             simulation: SimulationSpec {
                 method: world.method,

@@ -190,11 +190,11 @@ impl App {
             {
                 actions.push(Action::Reset);
             }
-            if ui.button("↶ Undo").on_hover_text("Ctrl+Z").clicked() {
+            if ui.button("Undo").on_hover_text("Ctrl+Z").clicked() {
                 actions.push(Action::Undo);
             }
             if ui
-                .button("Redo ↷")
+                .button("Redo")
                 .on_hover_text("Ctrl+Shift+Z or Ctrl+Y")
                 .clicked()
             {
@@ -304,6 +304,8 @@ impl App {
             .on_hover_text("V");
         ui.checkbox(&mut o.momentum, "momentum arrows (pink)")
             .on_hover_text("M");
+        ui.checkbox(&mut o.delta_p, "Δp after a collision (amber)")
+            .on_hover_text("each disc's change of momentum, for a second after each collision");
         const SCOPES: [(ReadoutScope, &str); 3] = [
             (ReadoutScope::Off, "none"),
             (ReadoutScope::Selected, "selected disc"),
@@ -324,7 +326,7 @@ impl App {
             .on_hover_text("I");
         ui.checkbox(&mut self.lesson.center_of_mass, "centre of mass")
             .on_hover_text("O");
-        ui.checkbox(&mut self.trails.on, "trails")
+        ui.checkbox(&mut self.trails.on, "path traces, a dot every 0.1 s")
             .on_hover_text("A");
         ui.checkbox(&mut self.overlays.safe_palette, "colour-blind-safe")
             .on_hover_text("F3");
@@ -346,13 +348,11 @@ impl App {
             if ui.button("Forward ▶").on_hover_text(".").clicked() {
                 actions.push(Action::Scrub(1));
             }
-            let on = self.lesson.com_view.is_some();
-            let r = ui
-                .selectable_label(on, "Centre-of-mass view")
-                .on_hover_text(
-                    "Z: the view moves with the centre of mass and arrows show velocities \
+            let mut on = self.lesson.com_view.is_some();
+            let r = ui.checkbox(&mut on, "centre-of-mass view").on_hover_text(
+                "Z: the view moves with the centre of mass and arrows show velocities \
                      relative to it; the experiment is not changed",
-                );
+            );
             if r.clicked() {
                 actions.push(Action::CenterOfMassFrame);
             }
@@ -361,21 +361,31 @@ impl App {
 
     fn new_disc_section(&mut self, ui: &mut Ui) {
         ui.label("Drag on empty space to launch one.");
+        let r = ui
+            .checkbox(&mut self.size_follows_mass, "size follows mass (same density)")
+            .on_hover_text("a 1 kg disc is 0.4 m in radius; the radius grows as √m, for new discs and mass edits");
+        self.widget(ui, "size_follows_mass", &r);
         let biggest = 0.45 * self.world.size.min_element();
-        let mut r = self.new_disc.radius;
-        let (track, changed) = slider(
-            ui,
-            "Radius",
-            &mut r,
-            0.05..=2.0f64.min(biggest).max(0.06),
-            true,
-            2,
-            " m",
-        );
-        if changed {
-            self.new_disc.radius = r.min(biggest);
+        if self.size_follows_mass {
+            let r = crate::app::interaction::radius_for_mass(self.new_disc.mass).min(biggest);
+            self.new_disc.radius = r;
+            ui.label(format!("Radius {} (from the mass)", with_unit(r, 2, "m")));
+        } else {
+            let mut r = self.new_disc.radius;
+            let (track, changed) = slider(
+                ui,
+                "Radius",
+                &mut r,
+                0.05..=2.0f64.min(biggest).max(0.06),
+                true,
+                2,
+                " m",
+            );
+            if changed {
+                self.new_disc.radius = r.min(biggest);
+            }
+            self.widget(ui, "new_radius", &track.on_hover_text("PgUp / PgDn"));
         }
-        self.widget(ui, "new_radius", &track.on_hover_text("PgUp / PgDn"));
         let mut m = self.new_disc.mass;
         let (track, changed) = slider(ui, "Mass", &mut m, 0.01..=100.0, true, 2, " kg");
         if changed {
@@ -604,7 +614,7 @@ impl App {
             (fields.text[k] != fields.shown[k]).then_some(fields.text[k].as_str())
         });
         let biggest = 0.45 * self.world.size.min_element();
-        let parsed = parse_disc_edit(changed, biggest);
+        let parsed = parse_disc_edit(changed, biggest).and_then(|e| self.sized_edit(i, e));
         let note = match parsed {
             Ok(edit) if edit.is_empty() => Note::ok("Nothing changed: type a new value first"),
             Ok(edit) => {

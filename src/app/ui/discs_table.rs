@@ -43,6 +43,44 @@ impl DiscEdit {
     }
 }
 
+impl App {
+    /// With "size follows mass", a new mass brings its radius, refused if
+    /// the disc would then overlap another or cross a wall; otherwise the
+    /// edit as it is.
+    pub(in crate::app) fn sized_edit(
+        &self,
+        i: usize,
+        mut edit: DiscEdit,
+    ) -> Result<DiscEdit, String> {
+        let (Some(m), true) = (edit.mass, self.size_follows_mass) else {
+            return Ok(edit);
+        };
+        let r = crate::app::interaction::radius_for_mass(m);
+        let w = &self.world;
+        let Some(p) = w.particles.get(i) else {
+            return Ok(edit);
+        };
+        let size = plain(r, 2);
+        let overlapped = w.particles.iter().enumerate().find(|&(j, q)| {
+            j != i && w.boundary.separation(q.pos, p.pos, w.size).length() < r + q.radius
+        });
+        if let Some((j, _)) = overlapped {
+            return Err(format!(
+                "at {} kg the disc would be {size} m in radius (size follows mass) and overlap disc {j}",
+                plain(m, 3)
+            ));
+        }
+        if !w.boundary.admits(w.walls, w.size, p.pos, r) {
+            return Err(format!(
+                "at {} kg the disc would be {size} m in radius (size follows mass) and cross a wall",
+                plain(m, 3)
+            ));
+        }
+        edit.radius = Some(r);
+        Ok(edit)
+    }
+}
+
 /// Reads the fields the user changed (`None`: untouched, in [`FIELDS`]
 /// order). Every value must be a finite number; mass and radius positive,
 /// the radius at most `max_radius`. The error is one short line.
@@ -264,7 +302,7 @@ impl App {
         self.ui.panel_keyboard = true;
         let mut changed = [None; 4];
         changed[cell.field] = Some(cell.text.as_str());
-        match parse_disc_edit(changed, f64::INFINITY) {
+        match parse_disc_edit(changed, f64::INFINITY).and_then(|e| self.sized_edit(cell.disc, e)) {
             Ok(edit) => {
                 self.remember_edit("edit a disc");
                 let p = &mut self.world.particles[cell.disc];

@@ -211,7 +211,9 @@ impl UiState {
     /// shortcuts stay quiet.
     fn note_text_field(&mut self, response: &egui::Response) {
         self.text_focus |= response.has_focus();
-        if response.lost_focus() {
+        // Left with Enter: the keyboard stays with the panel (a digit typed
+        // next must not open a preset) until a click in the world or Esc.
+        if response.lost_focus() && response.ctx.input(|i| i.key_pressed(egui::Key::Enter)) {
             self.panel_keyboard = true;
         }
     }

@@ -34,7 +34,7 @@ pub const HELP: &[(&str, &str)] = &[
         "values beside: none / the selected disc / every disc (Show)",
     ),
     ("O", "centre of mass and its velocity (Show)"),
-    ("A", "trails (Show)"),
+    ("A", "path traces, a dot every 0.1 s (Show)"),
     ("F3", "colour-blind-safe colours (Show)"),
     (
         "Z",
@@ -66,8 +66,8 @@ pub const HELP: &[(&str, &str)] = &[
         "open a classroom preset / the preset menu (Presets…)",
     ),
     ("Ctrl+N", "a new empty box"),
-    ("Ctrl+Z", "undo the last change to the scene (↶ Undo)"),
-    ("Ctrl+Shift+Z, Ctrl+Y", "redo it (Redo ↷)"),
+    ("Ctrl+Z", "undo the last change to the scene (Undo)"),
+    ("Ctrl+Shift+Z, Ctrl+Y", "redo it (Redo)"),
     (
         "Esc",
         "after Enter in a field: keys act on the world again (or click it)",
