@@ -48,6 +48,7 @@ xdotool mousemove 250 450 mousedown 1
 for x in 290 330 370 410 450; do xdotool mousemove "$x" $((450 - (x - 250) / 2)); sleep 0.05; done
 sleep 0.5
 finish
+xdotool mouseup 1   # the drag was left held for the picture
 
 # 6. The key list.
 start --screenshot docs/help.png
@@ -61,4 +62,23 @@ for preset in "1 head-on" "4 glancing" "6 cradle" "7 pi-blocks" "9 billiards" "0
   xdotool mousemove 300 300 key "$1"; sleep 2.5
   finish
 done
+# 8. The π blocks at their end: the count and π, the view following them.
+start assets/scenes/preset-7-pi-blocks.toml --screenshot docs/pi-end.png
+xdotool mousemove 300 300 key bracketright key bracketright; sleep 5
+finish
+
+# 9. Δp arrows at the instant of the glancing hit (J), momentum arrows on.
+start --paused --screenshot docs/delta-p.png
+xdotool mousemove 300 300 key 4; sleep 0.5; xdotool key m key j; sleep 1
+finish
+
+# 10. One dimension: heavy hits light on its rail, path traces on.
+start --screenshot docs/track.png
+xdotool mousemove 300 300 key 2; sleep 0.3; xdotool key a; sleep 4
+finish
+
+# 11. Path traces of the glancing hit: the dots' spacing is the speed.
+start --screenshot docs/paths.png
+xdotool mousemove 300 300 key 4; sleep 0.3; xdotool key a; sleep 4.5
+finish
 echo "screenshots in docs/"

@@ -249,7 +249,7 @@ fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_o
         return;
     };
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
-    let s = app.wait_frames(3);
+    app.wait_frames(3);
     // Fold the two open sections so "New discs" opens in view.
     for section in ["section_show", "section_collisions", "section_new_discs"] {
         let s = app.wait_frames(2);
