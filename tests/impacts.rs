@@ -98,6 +98,13 @@ fn a_dropped_ball_counts_its_bounces_and_then_rests() {
             (fewest..=expected + 1).contains(&hits),
             "{method:?}: {hits} wall impacts, expected {expected}"
         );
+        // One disc rests on one floor: one resting contact, however many
+        // events its rest takes.
+        assert!(
+            w.resting_contacts <= 1,
+            "{method:?}: {}",
+            w.resting_contacts
+        );
         let p = &w.particles[0];
         assert!(
             // (impulse holds a resting disc within its slop of the floor)

@@ -55,7 +55,7 @@ impl Sim {
                 body.gen += 1;
                 self.aux[k as usize].last_hit = self.now;
             }
-            self.count((a.vel - b.vel).dot(normal));
+            self.count(i, (a.vel - b.vel).dot(normal));
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         }
         self.predict(i);
@@ -139,7 +139,7 @@ impl Sim {
             self.aux[k as usize].last_hit = self.now;
         }
         for t in &list {
-            self.count((velocities[t.a] - velocities[t.b]).dot(t.normal));
+            self.count(ids[t.a], (velocities[t.a] - velocities[t.b]).dot(t.normal));
         }
         for &k in &ids {
             self.predict(k);
@@ -172,18 +172,29 @@ impl Sim {
             if crate::impact::is_impact(speed, self.impact_speed) {
                 self.wall_hits += 1;
             } else {
-                self.resting += 1;
+                self.rested(i);
             }
         }
         self.predict(i);
     }
 
-    /// Counts a pair collision closing at `closing` m/s: an impact or a
-    /// resting contact.
-    fn count(&mut self, closing: f64) {
+    /// Counts a pair collision of body `i` closing at `closing` m/s: an
+    /// impact or a resting contact.
+    fn count(&mut self, i: u32, closing: f64) {
         if crate::impact::is_impact(closing, self.impact_speed) {
             self.collisions += 1;
         } else {
+            self.rested(i);
+        }
+    }
+
+    /// Counts body `i` as resting on something, once per step: a disc at
+    /// rest meets its support event after event, and the count is of discs
+    /// resting, not of those events.
+    fn rested(&mut self, i: u32) {
+        let stamp = &mut self.rest_stamps[i as usize];
+        if *stamp != self.step_id {
+            *stamp = self.step_id;
             self.resting += 1;
         }
     }

@@ -232,8 +232,13 @@ struct Sim {
     events: usize,
     collisions: usize,
     wall_hits: usize,
-    /// Collisions and wall hits slower than the impact speed (resting).
+    /// Discs in a collision or wall hit slower than the impact speed this
+    /// step (resting), each counted once.
     resting: usize,
+    /// Per body: the step it was last counted resting in.
+    rest_stamps: Vec<u64>,
+    /// This step's number, for `rest_stamps`.
+    step_id: u64,
     /// The closing speed above which a collision is an impact
     /// ([`crate::impact::threshold`] for a step of the step's length).
     impact_speed: f64,

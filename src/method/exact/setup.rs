@@ -36,6 +36,8 @@ impl Sim {
             collisions: 0,
             wall_hits: 0,
             resting: 0,
+            rest_stamps: vec![0; n],
+            step_id: 1,
             impact_speed: crate::impact::threshold(laws.gravity, dt),
             wall_impulse: 0.0,
             max_overlap: 0.0,
@@ -206,6 +208,7 @@ impl Sim {
         self.collisions = 0;
         self.wall_hits = 0;
         self.resting = 0;
+        self.step_id += 1;
         self.impact_speed = crate::impact::threshold(laws.gravity, dt);
         self.wall_impulse = 0.0;
         self.max_overlap = 0.0;
