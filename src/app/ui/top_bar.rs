@@ -44,6 +44,21 @@ impl App {
                 }
                 ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
                 ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
+                if self.lesson.com_view.is_some() {
+                    // The totals above are the box's; in the view's frame
+                    // the momentum is zero and less energy moves.
+                    let v = m.center_of_mass_velocity;
+                    let total_mass: f64 = self.world.particles.iter().map(|p| p.mass).sum();
+                    let relative_ke = m.kinetic_energy - 0.5 * total_mass * v.length_squared();
+                    ui.label(
+                        RichText::new(format!(
+                            "centre-of-mass view: p = {}, KE = {}",
+                            vector(glam::DVec2::ZERO, 3, "kg·m/s"),
+                            with_unit(relative_ke.max(0.0), 3, "J")
+                        ))
+                        .color(paused),
+                    );
+                }
                 if self.world.gravity != glam::DVec2::ZERO {
                     // With gravity, kinetic energy alone seems to vanish in a fall.
                     ui.label(format!(
