@@ -9,7 +9,7 @@ use crate::method::{Method, Setting};
 use crate::{Boundary, DVec2, Particle, World};
 
 const BULLET_PATH: &str = "assets/scenes/stress-bullet.toml";
-const BULLET_TEXT: &str = include_str!("../../assets/scenes/stress-bullet.toml");
+const BULLET_TEXT: &str = include_str!("../../../../assets/scenes/stress-bullet.toml");
 
 /// 1. Bullets.
 pub(super) const BULLET: Scenario = Scenario {
@@ -61,7 +61,7 @@ fn bullet(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
 }
 
 const PI_PATH: &str = "assets/scenes/stress-pi-blocks.toml";
-const PI_TEXT: &str = include_str!("../../assets/scenes/stress-pi-blocks.toml");
+const PI_TEXT: &str = include_str!("../../../../assets/scenes/stress-pi-blocks.toml");
 
 /// 2. The blocks that count π.
 pub(super) const PI_BLOCKS: Scenario = Scenario {
@@ -135,7 +135,7 @@ fn pi_blocks(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
 }
 
 const CRADLE_PATH: &str = "assets/scenes/stress-cradle.toml";
-const CRADLE_TEXT: &str = include_str!("../../assets/scenes/stress-cradle.toml");
+const CRADLE_TEXT: &str = include_str!("../../../../assets/scenes/stress-cradle.toml");
 
 /// 3. Newton's cradle.
 pub(super) const CRADLE: Scenario = Scenario {
@@ -175,7 +175,7 @@ fn cradle(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
 }
 
 const MASS_PATH: &str = "assets/scenes/stress-mass-ratio.toml";
-const MASS_TEXT: &str = include_str!("../../assets/scenes/stress-mass-ratio.toml");
+const MASS_TEXT: &str = include_str!("../../../../assets/scenes/stress-mass-ratio.toml");
 
 /// 6. Extreme mass ratios.
 pub(super) const MASS_RATIO: Scenario = Scenario {
@@ -249,9 +249,9 @@ fn mass_ratio(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
 }
 
 const CORNER_PATH: &str = "assets/scenes/stress-corner.toml";
-const CORNER_TEXT: &str = include_str!("../../assets/scenes/stress-corner.toml");
+const CORNER_TEXT: &str = include_str!("../../../../assets/scenes/stress-corner.toml");
 const THREE_PATH: &str = "assets/scenes/stress-three-discs.toml";
-const THREE_TEXT: &str = include_str!("../../assets/scenes/stress-three-discs.toml");
+const THREE_TEXT: &str = include_str!("../../../../assets/scenes/stress-three-discs.toml");
 
 /// 9. Corners and simultaneous hits.
 pub(super) const SYMMETRY: Scenario = Scenario {
@@ -294,7 +294,7 @@ fn symmetry(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
 }
 
 const DEGENERATE_PATH: &str = "assets/scenes/stress-degenerate.toml";
-const DEGENERATE_TEXT: &str = include_str!("../../assets/scenes/stress-degenerate.toml");
+const DEGENERATE_TEXT: &str = include_str!("../../../../assets/scenes/stress-degenerate.toml");
 
 /// 10. Degenerate input.
 pub(super) const DEGENERATE: Scenario = Scenario {

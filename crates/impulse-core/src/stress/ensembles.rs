@@ -7,7 +7,7 @@ use crate::metrics::Metrics;
 use crate::World;
 
 const PILE_PATH: &str = "assets/scenes/stress-pile.toml";
-const PILE_TEXT: &str = include_str!("../../assets/scenes/stress-pile.toml");
+const PILE_TEXT: &str = include_str!("../../../../assets/scenes/stress-pile.toml");
 
 /// 4. A pile settling under gravity.
 pub(super) const PILE: Scenario = Scenario {
@@ -51,7 +51,7 @@ fn pile(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
 }
 
 const COLLAPSE_PATH: &str = "assets/scenes/stress-collapse.toml";
-const COLLAPSE_TEXT: &str = include_str!("../../assets/scenes/stress-collapse.toml");
+const COLLAPSE_TEXT: &str = include_str!("../../../../assets/scenes/stress-collapse.toml");
 
 /// 5. Inelastic collapse.
 pub(super) const COLLAPSE: Scenario = Scenario {
@@ -94,7 +94,7 @@ fn collapse(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
 }
 
 const DENSE_PATH: &str = "assets/scenes/stress-dense-start.toml";
-const DENSE_TEXT: &str = include_str!("../../assets/scenes/stress-dense-start.toml");
+const DENSE_TEXT: &str = include_str!("../../../../assets/scenes/stress-dense-start.toml");
 
 /// 7. A dense start.
 pub(super) const DENSE_START: Scenario = Scenario {
@@ -124,7 +124,7 @@ fn dense_start(method: Setting<Method>, _size: Size) -> Result<Outcome, String> 
 }
 
 const LONG_PATH: &str = "assets/scenes/stress-long-run.toml";
-const LONG_TEXT: &str = include_str!("../../assets/scenes/stress-long-run.toml");
+const LONG_TEXT: &str = include_str!("../../../../assets/scenes/stress-long-run.toml");
 
 /// 8. A long run.
 pub(super) const LONG_RUN: Scenario = Scenario {
@@ -157,7 +157,7 @@ fn long_run(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
 }
 
 const RELAX_PATH: &str = "assets/scenes/stress-relaxation.toml";
-const RELAX_TEXT: &str = include_str!("../../assets/scenes/stress-relaxation.toml");
+const RELAX_TEXT: &str = include_str!("../../../../assets/scenes/stress-relaxation.toml");
 
 /// 11. Relaxation to Maxwell–Boltzmann.
 pub(super) const RELAXATION: Scenario = Scenario {
