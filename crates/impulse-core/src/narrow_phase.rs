@@ -17,6 +17,7 @@ use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
 use crate::resolution::band_of;
 use glam::DVec2;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Two overlapping discs.
@@ -71,10 +72,24 @@ pub fn find_contacts_in_chunks(
     out: &mut Vec<Contact>,
 ) {
     chunks.resize_with(pairs.len().div_ceil(PAIR_CHUNK), Vec::new);
-    pairs
-        .par_chunks(PAIR_CHUNK)
-        .zip(chunks.par_iter_mut())
-        .for_each(|(pairs, found)| find_contacts(particles, pairs, boundary, size, found));
+    let find = |(pairs, found): (&[Pair], &mut Vec<Contact>)| {
+        find_contacts(particles, pairs, boundary, size, found)
+    };
+    crate::parallel::pool_or_here!(
+        true,
+        {
+            pairs
+                .par_chunks(PAIR_CHUNK)
+                .zip(chunks.par_iter_mut())
+                .for_each(find);
+        },
+        {
+            pairs
+                .chunks(PAIR_CHUNK)
+                .zip(chunks.iter_mut())
+                .for_each(find);
+        }
+    );
     out.clear();
     for found in chunks.iter() {
         out.extend_from_slice(found);

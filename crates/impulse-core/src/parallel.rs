@@ -24,7 +24,45 @@
 //! runs which chunk, which changes nothing. `tests/parallel.rs` holds a
 //! 20,000-disc gas to that on one and two threads for every grid method.
 
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
+
+/// `$par` (on rayon's pool) when `$cond` holds and the crate is built with
+/// its `parallel` feature; `$serial` otherwise. Both give the same result:
+/// the parallel stages are written so that they do, bit for bit.
+macro_rules! pool_or_here {
+    ($cond:expr, $par:block, $serial:block) => {{
+        #[cfg(feature = "parallel")]
+        {
+            if $cond $par else $serial
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            let _ = $cond;
+            $serial
+        }
+    }};
+}
+pub(crate) use pool_or_here;
+
+/// `a` and `b`, side by side on rayon's pool with the `parallel` feature,
+/// one after the other without it.
+pub fn join<A, B, RA, RB>(a: A, b: B) -> (RA, RB)
+where
+    A: FnOnce() -> RA + Send,
+    B: FnOnce() -> RB + Send,
+    RA: Send,
+    RB: Send,
+{
+    #[cfg(feature = "parallel")]
+    {
+        rayon::join(a, b)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (a(), b())
+    }
+}
 
 /// Discs per chunk of the per-disc stages (integration, boundaries, the skin
 /// check). Large enough that a chunk costs far more than handing it to a
@@ -48,11 +86,15 @@ where
     F: Fn(&mut [T]) -> R + Sync + Send,
 {
     out.clear();
-    if parallel {
-        items.par_chunks_mut(CHUNK).map(f).collect_into_vec(out);
-    } else {
-        out.extend(items.chunks_mut(CHUNK).map(f));
-    }
+    pool_or_here!(
+        parallel,
+        {
+            items.par_chunks_mut(CHUNK).map(f).collect_into_vec(out);
+        },
+        {
+            out.extend(items.chunks_mut(CHUNK).map(f));
+        }
+    )
 }
 
 /// Calls `f` on each [`CHUNK`] of `items`; on rayon's pool if `parallel`.
@@ -61,21 +103,32 @@ where
     T: Send,
     F: Fn(&mut [T]) + Sync + Send,
 {
-    if parallel {
-        items.par_chunks_mut(CHUNK).for_each(f);
-    } else {
-        items.chunks_mut(CHUNK).for_each(f);
-    }
+    pool_or_here!(
+        parallel,
+        {
+            items.par_chunks_mut(CHUNK).for_each(f);
+        },
+        {
+            items.chunks_mut(CHUNK).for_each(f);
+        }
+    )
 }
 
 /// The number of threads a parallel stage would use here: rayon's current
 /// pool (inside `ThreadPool::install`, that pool; otherwise the global one,
 /// sized by `RAYON_NUM_THREADS` or the number of cores).
 pub fn threads() -> usize {
-    rayon::current_num_threads()
+    #[cfg(feature = "parallel")]
+    {
+        rayon::current_num_threads()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        1
+    }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "parallel"))]
 mod tests {
     use super::*;
 

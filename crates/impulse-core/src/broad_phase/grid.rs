@@ -59,6 +59,7 @@ use crate::boundary::Boundary;
 use crate::parallel::{BAND_ROWS, CHUNK};
 use crate::particle::Particle;
 use glam::DVec2;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 use std::ops::Range;
 
@@ -105,7 +106,8 @@ struct Band {
     row_buf: Vec<Disc>,
     /// Where the next disc of each column of a row goes.
     cursor: Vec<u32>,
-    /// Pairs the band's sweep found.
+    /// Pairs the band's sweep found (on the pool).
+    #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
     raw: Vec<Pair>,
 }
 
@@ -187,19 +189,23 @@ impl BroadPhase for Grid {
                 SHIFTED => cells.sweep::<SHIFTED>(rows, &space, raw),
                 _ => cells.sweep::<FOLDED>(rows, &space, raw),
             };
-            if self.parallel {
-                // self.bands has one band per BAND_ROWS rows (sort_into_cells).
-                self.bands.par_iter_mut().enumerate().for_each(|(b, band)| {
-                    band.raw.clear();
-                    let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
-                    sweep(rows, &mut band.raw);
-                });
-                for band in &self.bands {
-                    self.raw.extend_from_slice(&band.raw);
+            crate::parallel::pool_or_here!(
+                self.parallel,
+                {
+                    // self.bands has one band per BAND_ROWS rows (sort_into_cells).
+                    self.bands.par_iter_mut().enumerate().for_each(|(b, band)| {
+                        band.raw.clear();
+                        let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
+                        sweep(rows, &mut band.raw);
+                    });
+                    for band in &self.bands {
+                        self.raw.extend_from_slice(&band.raw);
+                    }
+                },
+                {
+                    sweep(0..layout.ny, &mut self.raw);
                 }
-            } else {
-                sweep(0..layout.ny, &mut self.raw);
-            }
+            );
         }
         if !self.big.is_empty() {
             if space.period.is_some() {
@@ -294,18 +300,22 @@ impl Grid {
         // Every slot is written before it is read: no need to clear.
         self.discs.resize(particles.len(), Disc::default());
         self.gathered.clear();
-        if self.parallel {
-            let chunks = particles
-                .par_chunks(CHUNK)
-                .zip(self.discs.par_chunks_mut(CHUNK));
-            chunks
-                .enumerate()
-                .map(chunk)
-                .collect_into_vec(&mut self.gathered);
-        } else {
-            let chunks = particles.chunks(CHUNK).zip(self.discs.chunks_mut(CHUNK));
-            self.gathered.extend(chunks.enumerate().map(chunk));
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                let chunks = particles
+                    .par_chunks(CHUNK)
+                    .zip(self.discs.par_chunks_mut(CHUNK));
+                chunks
+                    .enumerate()
+                    .map(chunk)
+                    .collect_into_vec(&mut self.gathered);
+            },
+            {
+                let chunks = particles.chunks(CHUNK).zip(self.discs.chunks_mut(CHUNK));
+                self.gathered.extend(chunks.enumerate().map(chunk));
+            }
+        );
         // Close the gaps left by skipped discs (rare: non-finite input).
         let (mut stats, mut end) = (Gathered::default(), 0);
         for (c, (kept, seen, outside)) in self.gathered.iter().enumerate() {
@@ -466,11 +476,8 @@ impl Grid {
         // column, band by band of rows; a row's cells end at starts[1..].
         self.starts.clear();
         self.starts.resize(nx * ny + 1, 0);
-        let bands = if self.parallel {
-            ny.div_ceil(BAND_ROWS)
-        } else {
-            1
-        };
+        let bands =
+            crate::parallel::pool_or_here!(self.parallel, { ny.div_ceil(BAND_ROWS) }, { 1 });
         self.bands.resize_with(bands, Band::default);
         for band in &mut self.bands {
             band.row_buf.resize(longest as usize, Disc::default());
@@ -521,7 +528,7 @@ fn sort_rows(
         let (s1, s2) = sorted.split_at_mut((row_starts[mid] - row_starts[rows.start]) as usize);
         let (e1, e2) = ends.split_at_mut((mid - rows.start) * nx);
         let (b1, b2) = bands.split_at_mut(half);
-        rayon::join(
+        crate::parallel::join(
             || sort_rows(layout, rows.start..mid, row_starts, s1, e1, b1),
             || sort_rows(layout, mid..rows.end, row_starts, s2, e2, b2),
         );

@@ -19,6 +19,7 @@ use crate::boundary::Boundary;
 use crate::parallel::CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Skin width as a fraction of the mean disc radius.
@@ -52,18 +53,24 @@ impl<B: BroadPhase> Skinned<B> {
             p.radius == radius
                 && boundary.separation(*anchor, p.pos, size).length_squared() <= limit_sq
         };
-        if self.parallel {
-            particles
-                .par_chunks(CHUNK)
-                .zip(self.anchors.par_chunks(CHUNK))
-                .zip(self.radii.par_chunks(CHUNK))
-                .all(|((ps, anchors), radii)| ps.iter().zip(anchors.iter().zip(radii)).all(near))
-        } else {
-            particles
-                .iter()
-                .zip(self.anchors.iter().zip(&self.radii))
-                .all(near)
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                particles
+                    .par_chunks(CHUNK)
+                    .zip(self.anchors.par_chunks(CHUNK))
+                    .zip(self.radii.par_chunks(CHUNK))
+                    .all(|((ps, anchors), radii)| {
+                        ps.iter().zip(anchors.iter().zip(radii)).all(near)
+                    })
+            },
+            {
+                particles
+                    .iter()
+                    .zip(self.anchors.iter().zip(&self.radii))
+                    .all(near)
+            }
+        )
     }
 
     fn rebuild(&mut self, particles: &[Particle], boundary: Boundary, size: DVec2) {
@@ -73,14 +80,18 @@ impl<B: BroadPhase> Skinned<B> {
             finite.sum::<f64>()
         };
         self.sums.clear();
-        if self.parallel {
-            particles
-                .par_chunks(CHUNK)
-                .map(radii)
-                .collect_into_vec(&mut self.sums);
-        } else {
-            self.sums.extend(particles.chunks(CHUNK).map(radii));
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                particles
+                    .par_chunks(CHUNK)
+                    .map(radii)
+                    .collect_into_vec(&mut self.sums);
+            },
+            {
+                self.sums.extend(particles.chunks(CHUNK).map(radii));
+            }
+        );
         let mean_radius = self.sums.iter().sum::<f64>() / n;
         self.skin = (SKIN_FRACTION * mean_radius).max(0.0);
         let half_skin = 0.5 * self.skin;
@@ -91,22 +102,30 @@ impl<B: BroadPhase> Skinned<B> {
         self.inflated.clear();
         self.anchors.clear();
         self.radii.clear();
-        if self.parallel {
-            self.inflated.par_extend(particles.par_iter().map(inflate));
-        } else {
-            self.inflated.extend(particles.iter().map(inflate));
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                self.inflated.par_extend(particles.par_iter().map(inflate));
+            },
+            {
+                self.inflated.extend(particles.iter().map(inflate));
+            }
+        );
         self.inner.set_parallel(self.parallel);
         self.inner
             .candidate_pairs(&self.inflated, boundary, size, &mut self.pairs);
-        if self.parallel {
-            self.anchors.par_extend(particles.par_iter().map(|p| p.pos));
-            self.radii
-                .par_extend(particles.par_iter().map(|p| p.radius));
-        } else {
-            self.anchors.extend(particles.iter().map(|p| p.pos));
-            self.radii.extend(particles.iter().map(|p| p.radius));
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                self.anchors.par_extend(particles.par_iter().map(|p| p.pos));
+                self.radii
+                    .par_extend(particles.par_iter().map(|p| p.radius));
+            },
+            {
+                self.anchors.extend(particles.iter().map(|p| p.pos));
+                self.radii.extend(particles.iter().map(|p| p.radius));
+            }
+        );
         self.built_for = Some((boundary, [size.x.to_bits(), size.y.to_bits()]));
     }
 }
@@ -123,11 +142,15 @@ impl<B: BroadPhase> BroadPhase for Skinned<B> {
             self.rebuild(particles, boundary, size);
         }
         out.clear();
-        if self.parallel {
-            out.par_extend(self.pairs.par_iter().copied());
-        } else {
-            out.extend_from_slice(&self.pairs);
-        }
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                out.par_extend(self.pairs.par_iter().copied());
+            },
+            {
+                out.extend_from_slice(&self.pairs);
+            }
+        );
     }
 
     fn set_parallel(&mut self, parallel: bool) {

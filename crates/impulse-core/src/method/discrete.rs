@@ -17,12 +17,14 @@
 //! side ([`crate::resolution::Banded`]); the result is the same bit for bit.
 
 use crate::ledger::Ledger;
+#[cfg(feature = "parallel")]
 use crate::parallel::CHUNK;
 use crate::resolution::Rule;
 use crate::stats::{Lap, StepStats};
 use crate::world::{Laws, Pipeline};
 use crate::Particle;
 use glam::DVec2;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// One impulse-method substep of length `h`, starting at world time `time`
@@ -64,11 +66,15 @@ pub(crate) fn verlet_substep(
     let mut lap = Lap::start();
     let previous = &mut pipeline.previous_positions;
     previous.clear();
-    if pipeline.parallel {
-        previous.par_extend(particles.par_iter().map(|p| p.pos));
-    } else {
-        previous.extend(particles.iter().map(|p| p.pos));
-    }
+    crate::parallel::pool_or_here!(
+        pipeline.parallel,
+        {
+            previous.par_extend(particles.par_iter().map(|p| p.pos));
+        },
+        {
+            previous.extend(particles.iter().map(|p| p.pos));
+        }
+    );
     pipeline.integrate(particles, laws.gravity, h);
     stats.timings.integration += lap.lap();
     pipeline.detect(particles, laws, stats);
@@ -93,17 +99,21 @@ pub(crate) fn verlet_substep(
     );
     stats.max_overlap = stats.max_overlap.max(report.max_overlap);
     let implied = |(p, previous): (&mut Particle, &DVec2)| p.vel = (p.pos - *previous) / h;
-    if pipeline.parallel {
-        let chunks = particles.par_chunks_mut(CHUNK);
-        chunks
-            .zip(pipeline.previous_positions.par_chunks(CHUNK))
-            .for_each(|(ps, prev)| ps.iter_mut().zip(prev).for_each(implied));
-    } else {
-        particles
-            .iter_mut()
-            .zip(&pipeline.previous_positions)
-            .for_each(implied);
-    }
+    crate::parallel::pool_or_here!(
+        pipeline.parallel,
+        {
+            let chunks = particles.par_chunks_mut(CHUNK);
+            chunks
+                .zip(pipeline.previous_positions.par_chunks(CHUNK))
+                .for_each(|(ps, prev)| ps.iter_mut().zip(prev).for_each(implied));
+        },
+        {
+            particles
+                .iter_mut()
+                .zip(&pipeline.previous_positions)
+                .for_each(implied);
+        }
+    );
     stats.timings.resolution += lap.lap();
     pipeline.apply_boundary(particles, laws, h, stats);
     stats.timings.boundary += lap.lap();

@@ -48,6 +48,7 @@ use super::{pair_mut, resolve_contact, ResolutionReport, Rule};
 use crate::ledger::Ledger;
 use crate::narrow_phase::Contact;
 use crate::particle::Particle;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 /// Horizontal bands the world's height is cut into: 32 per phase, enough to
@@ -112,39 +113,43 @@ impl Banded {
         let group = |k: usize| &self.order[self.starts[k]..self.starts[k + 1]];
         for parity in 0..2 {
             let band_of_phase = |k: usize| 2 * k + parity;
-            if parallel && !ledger.is_on() {
-                let discs = DiscsPtr::new(particles);
-                let phase = (0..BANDS / 2)
-                    .into_par_iter()
-                    .map(band_of_phase)
-                    .map(|band| {
-                        let mut report = ResolutionReport::default();
-                        for &k in group(band) {
-                            let c = &contacts[k as usize];
-                            // SAFETY: the bands of one phase share no disc
-                            // (module doc), so no other thread touches discs
-                            // `c.i` and `c.j` while this one holds them.
-                            let (a, b) = unsafe { discs.pair(c.i as usize, c.j as usize) };
-                            let off = (&mut Ledger::default(), time);
-                            resolve_contact(a, b, c, law, rule, off, &mut report);
-                        }
-                        report
-                    })
-                    .reduce(ResolutionReport::default, ResolutionReport::merge);
-                report = report.merge(phase);
-            } else {
-                for band in (0..BANDS / 2).map(band_of_phase) {
-                    resolve_serially(
-                        particles,
-                        contacts,
-                        group(band),
-                        law,
-                        rule,
-                        (ledger, time),
-                        &mut report,
-                    );
+            crate::parallel::pool_or_here!(
+                parallel && !ledger.is_on(),
+                {
+                    let discs = DiscsPtr::new(particles);
+                    let phase = (0..BANDS / 2)
+                        .into_par_iter()
+                        .map(band_of_phase)
+                        .map(|band| {
+                            let mut report = ResolutionReport::default();
+                            for &k in group(band) {
+                                let c = &contacts[k as usize];
+                                // SAFETY: the bands of one phase share no disc
+                                // (module doc), so no other thread touches discs
+                                // `c.i` and `c.j` while this one holds them.
+                                let (a, b) = unsafe { discs.pair(c.i as usize, c.j as usize) };
+                                let off = (&mut Ledger::default(), time);
+                                resolve_contact(a, b, c, law, rule, off, &mut report);
+                            }
+                            report
+                        })
+                        .reduce(ResolutionReport::default, ResolutionReport::merge);
+                    report = report.merge(phase);
+                },
+                {
+                    for band in (0..BANDS / 2).map(band_of_phase) {
+                        resolve_serially(
+                            particles,
+                            contacts,
+                            group(band),
+                            law,
+                            rule,
+                            (ledger, time),
+                            &mut report,
+                        );
+                    }
                 }
-            }
+            );
         }
         resolve_serially(
             particles,
@@ -233,6 +238,7 @@ fn resolve_serially(
 /// The discs, shared by the threads of one phase, each of which takes only
 /// discs that no other takes (the bands' guarantee).
 #[derive(Clone, Copy)]
+#[cfg(feature = "parallel")]
 struct DiscsPtr {
     first: *mut Particle,
     len: usize,
@@ -241,9 +247,12 @@ struct DiscsPtr {
 // SAFETY: `DiscsPtr` is only used inside one phase, whose threads touch
 // disjoint sets of discs (see `Banded::resolve`), while the slice it came
 // from is mutably borrowed by that phase and used by nothing else.
+#[cfg(feature = "parallel")]
 unsafe impl Send for DiscsPtr {}
+#[cfg(feature = "parallel")]
 unsafe impl Sync for DiscsPtr {}
 
+#[cfg(feature = "parallel")]
 impl DiscsPtr {
     fn new(particles: &mut [Particle]) -> Self {
         DiscsPtr {
@@ -324,6 +333,7 @@ mod tests {
         particles.iter().map(b).collect()
     }
 
+    #[cfg(feature = "parallel")]
     fn pool(threads: usize) -> rayon::ThreadPool {
         rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -390,6 +400,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "parallel")]
     fn side_by_side_is_bit_for_bit_the_serial_banded_order_on_any_pool() {
         for boundary in [Boundary::Box, Boundary::Periodic] {
             let start = crowd(3000, 7);
@@ -433,6 +444,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "parallel")]
     fn banded_resolution_keeps_momentum_and_the_centre_of_mass() {
         let start = crowd(3000, 11);
         let contacts = contacts_of(&start, Boundary::Box);
@@ -471,6 +483,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "parallel")]
     fn the_ledger_records_the_banded_order_and_forces_no_other_result() {
         let start = crowd(2000, 13);
         let contacts = contacts_of(&start, Boundary::Box);
