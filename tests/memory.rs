@@ -34,8 +34,17 @@ fn a_disc_costs_a_few_hundred_bytes_whatever_n() {
         let large = bytes_per_disc(100_000, method);
         // The discs themselves, plus the skin list and the grid's buffers.
         assert!(small > 2.0 * disc && large > 2.0 * disc, "{small} {large}");
-        // 1 GiB for 10⁶ discs is 1074 bytes each: stay well under.
-        assert!(large < 600.0, "{method}: {large:.0} bytes per disc");
+        // Within 15 % of what was measured on 2026-11-23 (10⁵ discs, two
+        // threads): a part that adds per-disc state measures again and moves
+        // this. (1 GiB for 10⁶ discs would be 1074 bytes each.)
+        let measured = match method {
+            Method::Verlet => 263.0,
+            _ => 247.0,
+        };
+        assert!(
+            (large / measured - 1.0).abs() < 0.15,
+            "{method}: {large:.0} bytes per disc, measured {measured:.0}"
+        );
         // Flat in n (no per-step garbage, no quadratic buffer).
         assert!(
             (large / small - 1.0).abs() < 0.3,
