@@ -33,6 +33,7 @@ pub mod history;
 pub mod impact;
 pub mod integration;
 pub mod ledger;
+pub mod math;
 pub mod method;
 pub mod metrics;
 pub mod narrow_phase;

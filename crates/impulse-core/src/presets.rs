@@ -75,13 +75,13 @@ impl Gas {
                 let offset = DVec2::new(rng.random_range(-1.0..=1.0), rng.random_range(-1.0..=1.0));
                 let angle = rng.random_range(0.0..std::f64::consts::TAU);
                 let pos = cell * spacing + offset * jitter;
-                let vel = self.speed * DVec2::from_angle(angle);
+                let vel = self.speed * crate::math::unit(angle);
                 let radius = if self.radius_ratio > 1.0 {
-                    self.radius * self.radius_ratio.powf(-rng.random_range(0.0..=1.0))
+                    self.radius * crate::math::pow(self.radius_ratio, -rng.random_range(0.0..=1.0))
                 } else {
                     self.radius
                 };
-                let mass = (radius / self.radius).powi(2);
+                let mass = (radius / self.radius) * (radius / self.radius);
                 Particle::new(pos, vel, mass, radius, Color::palette(k))
             })
             .collect();

@@ -1,7 +1,10 @@
 //! Step statistics: what the last step did and how long each stage took.
 
 use serde::Serialize;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+// `std::time::Instant::now` panics in a browser; web-time is std's on a
+// desktop and the page's clock there.
+use web_time::Instant;
 
 /// Measures consecutive stages: each [`Lap::lap`] returns the time since
 /// the previous one.

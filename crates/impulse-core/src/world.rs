@@ -528,7 +528,7 @@ impl World {
             (0..samples)
                 .map(|k| {
                     let angle = std::f64::consts::TAU * k as f64 / samples as f64;
-                    start + r * DVec2::from_angle(angle)
+                    start + r * crate::math::unit(angle)
                 })
                 .find(|&p| self.is_free(p, radius))
         })

@@ -64,7 +64,7 @@ pub(super) fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String>
             ));
         };
         let mass = fill.density * std::f64::consts::PI * radius * radius;
-        let vel = speed * DVec2::from_angle(heading);
+        let vel = speed * crate::math::unit(heading);
         let color = Color::palette(first + k);
         cells.insert(pos, world.particles.len());
         world

@@ -204,7 +204,7 @@ pub fn rayleigh_ks_distance(world: &World) -> f64 {
         .iter()
         .enumerate()
         .map(|(k, &v)| {
-            let model = 1.0 - (-v * v / mean_square).exp();
+            let model = 1.0 - crate::math::exp(-v * v / mean_square);
             let (below, at) = (k as f64 / n, (k + 1) as f64 / n);
             (model - below).abs().max((at - model).abs())
         })

@@ -83,7 +83,7 @@ fn pi_blocks(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     let mut right_up_to = None;
     let mut all_right = true;
     for k in 0..5 {
-        let ratio = 100f64.powi(k);
+        let ratio = crate::math::pow(100.0, f64::from(k));
         let mut world = load(PI_TEXT, PI_PATH, method)?;
         // The light disc must fit the gap the heavy one closes to, about
         // 2·gap₀/√ratio = 4 mm at 10⁸.
@@ -115,7 +115,7 @@ fn pi_blocks(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
             all_right = false;
             continue;
         };
-        let expected = (std::f64::consts::PI * 10f64.powi(k)).floor() as u64;
+        let expected = (std::f64::consts::PI * crate::math::pow(10.0, f64::from(k))).floor() as u64;
         if count == expected && all_right {
             right_up_to = Some(ratio);
         } else {

@@ -49,7 +49,7 @@ use crate::stats::StepStats;
 use crate::world::Laws;
 use glam::DVec2;
 use grid::Grid;
-use std::time::Instant;
+use web_time::Instant;
 
 mod collide;
 mod grid;
