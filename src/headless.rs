@@ -62,9 +62,6 @@ pub fn non_negative_seconds(s: &str) -> Result<f64, String> {
     }
 }
 
-/// Step used when neither the command line nor the scene gives one (s).
-pub const DEFAULT_DT: f64 = 1.0 / 240.0;
-
 /// Most steps one run may take, so a typo cannot run for days.
 const MAX_STEPS: f64 = 1e9;
 
@@ -110,7 +107,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     if let Some(k) = args.substeps {
         world.substeps = k;
     }
-    let dt = args.dt.or(scene.simulation.dt).unwrap_or(DEFAULT_DT);
+    let dt = scene.step_for(args.dt);
     let steps = (args.time / dt).round();
     if steps > MAX_STEPS {
         anyhow::bail!(

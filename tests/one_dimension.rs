@@ -5,7 +5,7 @@
 use impulse::method::{Method, Setting};
 use impulse::{Axis, Color, DVec2, Particle, World};
 
-const DT: f64 = 1.0 / 240.0;
+const DT: f64 = impulse::scene::DEFAULT_DT;
 
 fn line_world(method: Method, offset: f64) -> World {
     let mut w = World::new(DVec2::new(16.0, 10.0));

@@ -9,7 +9,7 @@ use impulse::{Color, DVec2, Particle, Scene, World};
 use std::path::{Path, PathBuf};
 
 /// The window's default step (s), for scenes that set none.
-const WINDOW_DT: f64 = 1.0 / 240.0;
+const WINDOW_DT: f64 = impulse::scene::DEFAULT_DT;
 
 /// Longest on-screen description, so that it fits one line on a projector.
 const MAX_DESCRIPTION_CHARS: usize = 140;

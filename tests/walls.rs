@@ -7,7 +7,7 @@ use impulse::method::{Method, Setting};
 use impulse::{Boundary, Color, Particle, Walls, World};
 use std::process::Command;
 
-const DT: f64 = 1.0 / 240.0;
+const DT: f64 = impulse::scene::DEFAULT_DT;
 
 fn disc(pos: [f64; 2], vel: [f64; 2]) -> Particle {
     Particle::new(pos.into(), vel.into(), 1.0, 0.5, Color::palette(0))

@@ -5,7 +5,7 @@ use impulse::method::{Method, Setting};
 use impulse::warnings::{self, warnings, Warning};
 use impulse::{Scene, World};
 
-const DT: f64 = 1.0 / 240.0;
+const DT: f64 = impulse::scene::DEFAULT_DT;
 
 fn preset(file: &str) -> World {
     let path = format!("{}/assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));

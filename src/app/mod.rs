@@ -260,10 +260,7 @@ struct App {
 
 impl App {
     fn new(options: WindowOptions, scene: Scene, scene_origin: String, world: World) -> Self {
-        let dt = options
-            .dt
-            .or(scene.simulation.dt)
-            .unwrap_or(crate::headless::DEFAULT_DT);
+        let dt = scene.step_for(options.dt);
         let mut clock = FixedStepClock::new(dt, 64);
         clock.paused = options.paused;
         let size = world.size;

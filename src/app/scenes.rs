@@ -139,11 +139,7 @@ impl App {
                 self.scene_edited = scene.edited;
                 self.forget_past();
                 self.realtime.clear();
-                self.clock.dt = self
-                    .options
-                    .dt
-                    .or(scene.simulation.dt)
-                    .unwrap_or(crate::headless::DEFAULT_DT);
+                self.clock.dt = scene.step_for(self.options.dt);
                 self.fit_camera();
                 self.selected = None;
                 self.gesture = Gesture::Idle;

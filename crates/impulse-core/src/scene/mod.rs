@@ -49,6 +49,9 @@ use std::path::Path;
 mod fill;
 use fill::DiscCells;
 
+/// The step used when neither the command line nor the scene gives one (s).
+pub const DEFAULT_DT: f64 = 1.0 / 240.0;
+
 /// Most discs a scene may ask for, so a typo cannot exhaust memory.
 pub const MAX_PARTICLES: usize = 2_000_000;
 
@@ -247,6 +250,13 @@ pub enum SceneError {
 }
 
 impl Scene {
+    /// The step to run at (s): `asked` (the command line's), else the
+    /// scene's `simulation.dt`, else [`DEFAULT_DT`]. The one place this is
+    /// decided, for the window, `run` and the stress suite.
+    pub fn step_for(&self, asked: Option<f64>) -> f64 {
+        asked.or(self.simulation.dt).unwrap_or(DEFAULT_DT)
+    }
+
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let origin = path.display().to_string();

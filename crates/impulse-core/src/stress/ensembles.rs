@@ -29,7 +29,7 @@ fn pile(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     let mut energy = world.total_energy();
     let mut worst_gain = 0.0f64;
     let duration = if size == Size::Quick { 6.0 } else { 10.0 };
-    let run = run_for(&mut world, 1.0 / 240.0, duration, |w, _| {
+    let run = run_for(&mut world, crate::scene::DEFAULT_DT, duration, |w, _| {
         let e = w.total_energy();
         worst_gain = worst_gain.max(e - energy);
         energy = e;
@@ -111,7 +111,7 @@ fn dense_start(method: Setting<Method>, _size: Size) -> Result<Outcome, String> 
     let mut world = load(DENSE_TEXT, DENSE_PATH, method)?;
     let n = world.particles.len() as f64;
     let overlap0 = max_relative_overlap(&world);
-    if let Err(stall) = run_for(&mut world, 1.0 / 240.0, 2.0, |_, _| {}) {
+    if let Err(stall) = run_for(&mut world, crate::scene::DEFAULT_DT, 2.0, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let injected = world.metrics().kinetic_energy / n;
@@ -140,7 +140,7 @@ pub(super) const LONG_RUN: Scenario = Scenario {
 fn long_run(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     let mut world = load(LONG_TEXT, LONG_PATH, method)?;
     let steps = if size == Size::Quick { 10_000.0 } else { 1e6 };
-    let dt = 1.0 / 240.0;
+    let dt = crate::scene::DEFAULT_DT;
     let before = world.metrics();
     let scale = Metrics::momentum_scale(&world.particles);
     if let Err(stall) = run_for(&mut world, dt, steps * dt, |_, _| {}) {
@@ -173,7 +173,7 @@ pub(super) const RELAXATION: Scenario = Scenario {
 fn relaxation(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     let mut world = load(RELAX_TEXT, RELAX_PATH, method)?;
     let duration = if size == Size::Quick { 10.0 } else { 20.0 };
-    if let Err(stall) = run_for(&mut world, 1.0 / 240.0, duration, |_, _| {}) {
+    if let Err(stall) = run_for(&mut world, crate::scene::DEFAULT_DT, duration, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let n = world.particles.len();

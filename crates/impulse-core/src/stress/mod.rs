@@ -119,12 +119,9 @@ fn load(text: &str, origin: &str, method: Setting<Method>) -> Result<World, Stri
     Ok(world)
 }
 
-/// The time step a scene file asks for, or the sandbox's 1/240 s.
+/// The time step a scene file asks for, or the default.
 fn scene_dt(text: &str, origin: &str) -> f64 {
-    Scene::parse(text, origin)
-        .ok()
-        .and_then(|s| s.simulation.dt)
-        .unwrap_or(1.0 / 240.0)
+    Scene::parse(text, origin).map_or(crate::scene::DEFAULT_DT, |s| s.step_for(None))
 }
 
 /// A step that hit the event cap: the method stalled.

@@ -99,7 +99,7 @@ fn pi_blocks(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
             (heavy > 0.0 && light.abs() <= heavy)
                 .then(|| w.total_pair_collisions + w.total_wall_hits + u64::from(light < 0.0))
         };
-        let dt = 1.0 / 240.0;
+        let dt = crate::scene::DEFAULT_DT;
         for _ in 0..(PI_MAX_SECONDS / dt) as u64 {
             let stats = world.step(dt);
             if stats.truncated {
@@ -152,7 +152,7 @@ fn cradle(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     let mut world = load(CRADLE_TEXT, CRADLE_PATH, method)?;
     let v0 = world.particles[0].vel;
     // Contact after 5 s; 3 s more to let the row settle into its result.
-    if let Err(stall) = run_for(&mut world, 1.0 / 240.0, 8.0, |_, _| {}) {
+    if let Err(stall) = run_for(&mut world, crate::scene::DEFAULT_DT, 8.0, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let error_of = |row: &[Particle]| {
@@ -210,7 +210,7 @@ fn mass_ratio(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
         ),
     ];
     let com0 = pair.metrics().center_of_mass;
-    if let Err(stall) = run_for(&mut pair, 1.0 / 240.0, 1.0, |_, _| {}) {
+    if let Err(stall) = run_for(&mut pair, crate::scene::DEFAULT_DT, 1.0, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let com_shift = (pair.metrics().center_of_mass - com0).length();
@@ -225,7 +225,7 @@ fn mass_ratio(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
         .collect();
     let y0: Vec<f64> = heavy.iter().map(|&i| pile.particles[i].pos.y).collect();
     let duration = if size == Size::Quick { 3.0 } else { 5.0 };
-    if let Err(stall) = run_for(&mut pile, 1.0 / 240.0, duration, |_, _| {}) {
+    if let Err(stall) = run_for(&mut pile, crate::scene::DEFAULT_DT, duration, |_, _| {}) {
         let mut out = stall.outcome();
         out.summary = format!(
             "pair: COM {com_shift:.0e} m, light {light_speed:.0e} m/s; pile {}",
@@ -268,7 +268,7 @@ fn symmetry(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     // The corner: back where it started after 9 s, moving the other way.
     let mut corner = load(CORNER_TEXT, CORNER_PATH, method)?;
     let start = corner.particles[0];
-    if let Err(stall) = run_for(&mut corner, 1.0 / 240.0, 9.0, |_, _| {}) {
+    if let Err(stall) = run_for(&mut corner, crate::scene::DEFAULT_DT, 9.0, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let p = corner.particles[0];
@@ -280,7 +280,7 @@ fn symmetry(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     // Three discs: B and C must mirror each other across A's line.
     let mut three = load(THREE_TEXT, THREE_PATH, method)?;
     let v0 = three.particles[0].vel.length();
-    if let Err(stall) = run_for(&mut three, 1.0 / 240.0, 8.0, |_, _| {}) {
+    if let Err(stall) = run_for(&mut three, crate::scene::DEFAULT_DT, 8.0, |_, _| {}) {
         return Ok(stall.outcome());
     }
     let [a, b, c] = [three.particles[0], three.particles[1], three.particles[2]];
@@ -329,7 +329,7 @@ fn degenerate(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     let mut failed = Vec::new();
     for (name, mut world) in cases {
         let mut ok = true;
-        let run = run_for(&mut world, 1.0 / 240.0, 2.0, |w, _| {
+        let run = run_for(&mut world, crate::scene::DEFAULT_DT, 2.0, |w, _| {
             ok &= finite_and_inside(w, 1e-6);
         });
         if run.is_err() || !ok {
