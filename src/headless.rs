@@ -14,10 +14,10 @@ pub struct RunArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
     /// Simulated time in seconds.
-    #[arg(long, value_parser = non_negative_seconds)]
+    #[arg(long, value_parser = crate::cli::non_negative_seconds)]
     pub time: f64,
     /// Physics time step in seconds [default: the scene's, else 1/240].
-    #[arg(long, value_parser = positive_seconds)]
+    #[arg(long, value_parser = crate::cli::positive_seconds)]
     pub dt: Option<f64>,
     /// Collision method: seed, impulse, verlet, exact or auto [default: the scene's].
     #[arg(long)]
@@ -26,7 +26,7 @@ pub struct RunArgs {
     #[arg(long)]
     pub broadphase: Option<Setting<BroadPhaseKind>>,
     /// Substeps per step (impulse, verlet), or auto [default: the scene's].
-    #[arg(long, value_parser = substeps)]
+    #[arg(long, value_parser = crate::cli::substeps)]
     pub substeps: Option<Setting<u32>>,
     /// Threads for the large-scene stages [default: RAYON_NUM_THREADS, else
     /// one per core]; `auto` still runs small scenes on one.
@@ -35,31 +35,6 @@ pub struct RunArgs {
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
-}
-
-/// Command-line parser for a positive, finite number of seconds.
-pub fn positive_seconds(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
-        _ => Err(format!("{s:?} is not a positive number of seconds")),
-    }
-}
-
-/// Command-line parser for substeps: `auto` or 1 to 10000, as in scene files.
-fn substeps(s: &str) -> Result<Setting<u32>, String> {
-    match s.parse::<Setting<u32>>() {
-        Ok(Setting::Fixed(k)) if !(1..=10_000).contains(&k) => {
-            Err(format!("{s:?} is not a number of substeps from 1 to 10000"))
-        }
-        other => other,
-    }
-}
-
-pub fn non_negative_seconds(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(v) if v >= 0.0 && v.is_finite() => Ok(v),
-        _ => Err(format!("{s:?} is not a number of seconds (0 or more)")),
-    }
 }
 
 /// Most steps one run may take, so a typo cannot run for days.
@@ -118,7 +93,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     let plan = world.plan_for(dt);
     let started = Instant::now();
     let mut max_overlap = 0.0f64;
-    let bar = crate::lab::progress::bar(steps as u64, "simulating");
+    let bar = crate::progress::bar(steps as u64, "simulating");
     for k in 0..steps as u64 {
         max_overlap = max_overlap.max(world.step(dt).max_overlap);
         if k % 256 == 0 {

@@ -2,9 +2,11 @@
 //! subcommands. Errors are one line on stderr and a non-zero exit code.
 
 mod app;
+mod cli;
 mod files;
 mod headless;
 mod lab;
+mod progress;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -41,13 +41,13 @@ pub struct WindowOptions {
     pub scene: Option<PathBuf>,
     /// Open a gas of N equal discs (periodic box, 30 % of the area covered)
     /// instead of a scene file: for trying large numbers of discs.
-    #[arg(long, value_name = "N", conflicts_with = "scene", value_parser = gas_count)]
+    #[arg(long, value_name = "N", conflicts_with = "scene", value_parser = crate::cli::gas_count)]
     pub gas: Option<usize>,
     /// Start paused.
     #[arg(long)]
     pub paused: bool,
     /// Physics time step in seconds [default: the scene's, else 1/240].
-    #[arg(long, value_parser = crate::headless::positive_seconds)]
+    #[arg(long, value_parser = crate::cli::positive_seconds)]
     pub dt: Option<f64>,
     /// Keep FILE updated with the state as JSON (rewritten atomically each frame).
     #[arg(long, value_name = "FILE")]
@@ -56,7 +56,7 @@ pub struct WindowOptions {
     #[arg(long, value_name = "FILE")]
     pub screenshot: Option<PathBuf>,
     /// Close the window after this many seconds of real time.
-    #[arg(long, value_name = "SECONDS", value_parser = crate::headless::positive_seconds)]
+    #[arg(long, value_name = "SECONDS", value_parser = crate::cli::positive_seconds)]
     pub exit_after: Option<f64>,
     /// Folder for saved scenes (Ctrl+S); created when first needed.
     #[arg(long, value_name = "DIR", default_value = "impulse-out")]
@@ -69,49 +69,18 @@ pub struct WindowOptions {
     /// the next start offers to restore if this window does not close
     /// normally; 0 turns autosave off.
     #[arg(long, value_name = "SECONDS", default_value_t = recovery::DEFAULT_EVERY,
-          value_parser = crate::headless::non_negative_seconds)]
+          value_parser = crate::cli::non_negative_seconds)]
     pub autosave: f64,
     /// Window size in pixels, WIDTHxHEIGHT.
-    #[arg(long, default_value = "1280x800", value_parser = window_size)]
+    #[arg(long, default_value = "1280x800", value_parser = crate::cli::window_size)]
     pub size: (i32, i32),
     /// Size of every text and line, 1 to 2.5 (F2 cycles 1, 1.5 and 2; 2 is
     /// for a projector).
-    #[arg(long, value_name = "SCALE", default_value_t = 1.0, value_parser = ui_scale)]
+    #[arg(long, value_name = "SCALE", default_value_t = 1.0, value_parser = crate::cli::ui_scale)]
     pub ui_scale: f32,
     /// Start in the light theme (for a projector in a bright room).
     #[arg(long)]
     pub light: bool,
-}
-
-fn ui_scale(s: &str) -> Result<f32, String> {
-    match s.parse::<f32>() {
-        Ok(v) if (1.0..=2.5).contains(&v) => Ok(v),
-        _ => Err(format!("{s:?} is not a UI scale from 1 to 2.5")),
-    }
-}
-
-fn window_size(s: &str) -> Result<(i32, i32), String> {
-    let parsed = s
-        .split_once('x')
-        .and_then(|(w, h)| Some((w.parse::<i32>().ok()?, h.parse::<i32>().ok()?)));
-    match parsed {
-        Some((w, h)) if (200..=8192).contains(&w) && (200..=8192).contains(&h) => Ok((w, h)),
-        _ => Err(format!(
-            "{s:?} is not a window size like 1280x800 (200 to 8192 px)"
-        )),
-    }
-}
-
-/// Most discs `--gas` builds.
-pub const MAX_GAS: usize = 1_000_000;
-
-fn gas_count(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if (1..=MAX_GAS).contains(&n) => Ok(n),
-        _ => Err(format!(
-            "{s:?} is not a number of discs from 1 to {MAX_GAS}"
-        )),
-    }
 }
 
 /// The scene `--gas N` opens: `impulse::presets::Gas` with N discs.

@@ -22,7 +22,7 @@
 //! errors below it are not the method's.
 
 use super::chart::{write_chart, Chart, Series};
-use super::progress;
+use crate::progress;
 use impulse::boundary::Boundary;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;

@@ -10,7 +10,7 @@
 //! the command fails only when it cannot write its files.
 
 use super::chart::{font_has, write_grid, Grid, GridCell};
-use super::progress;
+use crate::progress;
 use anyhow::Context as _;
 use impulse::stress::{self, Outcome, Size, METHODS};
 use plotters::style::RGBColor;

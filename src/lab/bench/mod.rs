@@ -23,7 +23,7 @@
 mod crossovers;
 
 use super::chart::{write_chart, Chart, Series};
-use super::progress;
+use crate::progress;
 use crossovers::{crossovers, crowded_resolution, thread_crossover};
 use impulse::alloc_count::live_bytes;
 use impulse::broad_phase::BroadPhaseKind;

@@ -1,4 +1,4 @@
-//! Progress bars for the lab commands.
+//! Progress bars for the long commands (`run` and the lab).
 //!
 //! [`bar`] draws on stderr with an ETA when stderr is a terminal and is hidden
 //! otherwise, so output piped to a file or another program stays quiet (and a

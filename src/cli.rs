@@ -1,0 +1,64 @@
+//! The command line's shared value parsers: each checks one option's value
+//! and says in one line what is wrong, for `run`, the window and the lab.
+
+use impulse::method::Setting;
+
+/// Command-line parser for a positive, finite number of seconds.
+pub fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?} is not a positive number of seconds")),
+    }
+}
+
+/// Command-line parser for substeps: `auto` or 1 to 10000, as in scene files.
+pub fn substeps(s: &str) -> Result<Setting<u32>, String> {
+    match s.parse::<Setting<u32>>() {
+        Ok(Setting::Fixed(k)) if !(1..=10_000).contains(&k) => {
+            Err(format!("{s:?} is not a number of substeps from 1 to 10000"))
+        }
+        other => other,
+    }
+}
+
+/// Command-line parser for a number of seconds, 0 or more.
+pub fn non_negative_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v >= 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?} is not a number of seconds (0 or more)")),
+    }
+}
+
+/// Command-line parser for the UI scale, 1 to 2.5.
+pub fn ui_scale(s: &str) -> Result<f32, String> {
+    match s.parse::<f32>() {
+        Ok(v) if (1.0..=2.5).contains(&v) => Ok(v),
+        _ => Err(format!("{s:?} is not a UI scale from 1 to 2.5")),
+    }
+}
+
+/// Command-line parser for a window size like 1280x800.
+pub fn window_size(s: &str) -> Result<(i32, i32), String> {
+    let parsed = s
+        .split_once('x')
+        .and_then(|(w, h)| Some((w.parse::<i32>().ok()?, h.parse::<i32>().ok()?)));
+    match parsed {
+        Some((w, h)) if (200..=8192).contains(&w) && (200..=8192).contains(&h) => Ok((w, h)),
+        _ => Err(format!(
+            "{s:?} is not a window size like 1280x800 (200 to 8192 px)"
+        )),
+    }
+}
+
+/// Most discs `--gas` builds.
+pub const MAX_GAS: usize = 1_000_000;
+
+/// Command-line parser for `--gas`: 1 to [`MAX_GAS`] discs.
+pub fn gas_count(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if (1..=MAX_GAS).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "{s:?} is not a number of discs from 1 to {MAX_GAS}"
+        )),
+    }
+}
