@@ -33,14 +33,10 @@ fn cases(default: u32) -> ProptestConfig {
 
 /// The shipped scenes, the seeds the mutations start from.
 fn shipped() -> Vec<String> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
-    let mut texts: Vec<String> = std::fs::read_dir(dir)
-        .expect("assets/scenes is readable")
-        .filter_map(|e| e.ok())
-        .filter(|e| e.path().extension().is_some_and(|x| x == "toml"))
-        .filter_map(|e| std::fs::read_to_string(e.path()).ok())
+    let texts: Vec<String> = impulse::catalogue::ALL
+        .iter()
+        .map(|f| f.text.to_string())
         .collect();
-    texts.sort();
     assert!(texts.len() >= 10, "found {} scenes", texts.len());
     texts
 }

@@ -14,20 +14,34 @@ const WORLD: &str = "[world]\nsize = [10.0, 10.0]\n";
 
 #[test]
 fn every_shipped_scene_loads_and_builds() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
-    let mut count = 0;
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.extension().is_some_and(|e| e == "toml") {
-            let scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-            let world = scene
-                .build(&path.display().to_string())
-                .unwrap_or_else(|e| panic!("{e}"));
-            assert!(world.size.min_element() > 0.0);
-            count += 1;
-        }
+    for file in impulse::catalogue::ALL {
+        let scene = Scene::parse(file.text, file.path).unwrap_or_else(|e| panic!("{e}"));
+        let world = scene.build(file.path).unwrap_or_else(|e| panic!("{e}"));
+        assert!(world.size.min_element() > 0.0);
     }
-    assert!(count >= 2, "default and empty at least");
+}
+
+#[test]
+fn the_catalogue_is_every_file_in_assets_scenes_as_it_is_on_disk() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let mut on_disk: Vec<String> = std::fs::read_dir(format!("{root}/assets/scenes"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .map(|p| format!("assets/scenes/{}", p.file_name().unwrap().to_str().unwrap()))
+        .collect();
+    on_disk.sort();
+    let listed: Vec<&str> = impulse::catalogue::ALL.iter().map(|f| f.path).collect();
+    assert_eq!(listed, on_disk, "a new scene file goes into the catalogue");
+    for file in impulse::catalogue::ALL {
+        let text = std::fs::read_to_string(format!("{root}/{}", file.path)).unwrap();
+        assert_eq!(
+            file.text, text,
+            "{} is embedded as it is on disk",
+            file.path
+        );
+        assert_eq!(impulse::catalogue::find(file.path), Some(&file));
+    }
 }
 
 #[test]

@@ -106,7 +106,7 @@ fn gas_scene(count: usize) -> (Scene, String) {
 }
 
 /// The scene the window opens without a file: something is already moving.
-pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");
+pub const DEFAULT_SCENE: &str = impulse::catalogue::DEFAULT.text;
 
 /// Loads the scene, then opens the window (or explains why it cannot).
 pub fn run(options: WindowOptions) -> anyhow::Result<()> {

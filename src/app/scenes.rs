@@ -9,7 +9,8 @@ use crate::files::write_durably;
 use impulse::Scene;
 use std::path::{Path, PathBuf};
 
-/// A preset: the key that opens it, and its scene file (compiled in).
+/// A preset: the key that opens it, and its scene file (from the core's
+/// catalogue, compiled in).
 pub struct Preset {
     /// The key's label ("1" … "9", "0", "Ctrl+N", or "" for the menu only).
     pub key: &'static str,
@@ -20,11 +21,11 @@ pub struct Preset {
 }
 
 macro_rules! preset {
-    ($key:literal, $file:literal) => {
+    ($key:literal, $file:ident) => {
         Preset {
             key: $key,
-            path: concat!("assets/scenes/", $file),
-            text: include_str!(concat!("../../assets/scenes/", $file)),
+            path: impulse::catalogue::$file.path,
+            text: impulse::catalogue::$file.text,
         }
     };
 }
@@ -32,20 +33,20 @@ macro_rules! preset {
 /// The presets, in menu order: the digit keys' ten, the π blocks at their
 /// other mass ratios (menu only), and the empty box last (Ctrl+N).
 pub const PRESETS: [Preset; 14] = [
-    preset!("1", "preset-1-head-on.toml"),
-    preset!("2", "preset-2-heavy-hits-light.toml"),
-    preset!("3", "preset-3-light-hits-heavy.toml"),
-    preset!("4", "preset-4-glancing.toml"),
-    preset!("5", "preset-5-inelastic.toml"),
-    preset!("6", "preset-6-cradle.toml"),
-    preset!("7", "preset-7-pi-blocks.toml"),
-    preset!("8", "preset-8-gas.toml"),
-    preset!("9", "preset-9-billiards.toml"),
-    preset!("0", "preset-0-pile.toml"),
-    preset!("", "pi-blocks-1.toml"),
-    preset!("", "pi-blocks-10000.toml"),
-    preset!("", "pi-blocks-1000000.toml"),
-    preset!("Ctrl+N", "preset-empty.toml"),
+    preset!("1", PRESET_1_HEAD_ON),
+    preset!("2", PRESET_2_HEAVY_HITS_LIGHT),
+    preset!("3", PRESET_3_LIGHT_HITS_HEAVY),
+    preset!("4", PRESET_4_GLANCING),
+    preset!("5", PRESET_5_INELASTIC),
+    preset!("6", PRESET_6_CRADLE),
+    preset!("7", PRESET_7_PI_BLOCKS),
+    preset!("8", PRESET_8_GAS),
+    preset!("9", PRESET_9_BILLIARDS),
+    preset!("0", PRESET_0_PILE),
+    preset!("", PI_BLOCKS_1),
+    preset!("", PI_BLOCKS_10000),
+    preset!("", PI_BLOCKS_1000000),
+    preset!("Ctrl+N", PRESET_EMPTY),
 ];
 
 /// "key  name" of every preset, for menus (parsed once).

@@ -29,6 +29,7 @@ pub mod alloc_count;
 pub mod auto;
 pub mod boundary;
 pub mod broad_phase;
+pub mod catalogue;
 pub mod history;
 pub mod impact;
 pub mod integration;

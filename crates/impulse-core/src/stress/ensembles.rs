@@ -6,8 +6,8 @@ use crate::method::{Method, Setting};
 use crate::metrics::Metrics;
 use crate::World;
 
-const PILE_PATH: &str = "assets/scenes/stress-pile.toml";
-const PILE_TEXT: &str = include_str!("../../../../assets/scenes/stress-pile.toml");
+const PILE_PATH: &str = crate::catalogue::STRESS_PILE.path;
+const PILE_TEXT: &str = crate::catalogue::STRESS_PILE.text;
 
 /// 4. A pile settling under gravity.
 pub(super) const PILE: Scenario = Scenario {
@@ -50,8 +50,8 @@ fn pile(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     })
 }
 
-const COLLAPSE_PATH: &str = "assets/scenes/stress-collapse.toml";
-const COLLAPSE_TEXT: &str = include_str!("../../../../assets/scenes/stress-collapse.toml");
+const COLLAPSE_PATH: &str = crate::catalogue::STRESS_COLLAPSE.path;
+const COLLAPSE_TEXT: &str = crate::catalogue::STRESS_COLLAPSE.text;
 
 /// 5. Inelastic collapse.
 pub(super) const COLLAPSE: Scenario = Scenario {
@@ -93,8 +93,8 @@ fn collapse(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     })
 }
 
-const DENSE_PATH: &str = "assets/scenes/stress-dense-start.toml";
-const DENSE_TEXT: &str = include_str!("../../../../assets/scenes/stress-dense-start.toml");
+const DENSE_PATH: &str = crate::catalogue::STRESS_DENSE_START.path;
+const DENSE_TEXT: &str = crate::catalogue::STRESS_DENSE_START.text;
 
 /// 7. A dense start.
 pub(super) const DENSE_START: Scenario = Scenario {
@@ -123,8 +123,8 @@ fn dense_start(method: Setting<Method>, _size: Size) -> Result<Outcome, String> 
     })
 }
 
-const LONG_PATH: &str = "assets/scenes/stress-long-run.toml";
-const LONG_TEXT: &str = include_str!("../../../../assets/scenes/stress-long-run.toml");
+const LONG_PATH: &str = crate::catalogue::STRESS_LONG_RUN.path;
+const LONG_TEXT: &str = crate::catalogue::STRESS_LONG_RUN.text;
 
 /// 8. A long run.
 pub(super) const LONG_RUN: Scenario = Scenario {
@@ -156,8 +156,8 @@ fn long_run(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     })
 }
 
-const RELAX_PATH: &str = "assets/scenes/stress-relaxation.toml";
-const RELAX_TEXT: &str = include_str!("../../../../assets/scenes/stress-relaxation.toml");
+const RELAX_PATH: &str = crate::catalogue::STRESS_RELAXATION.path;
+const RELAX_TEXT: &str = crate::catalogue::STRESS_RELAXATION.text;
 
 /// 11. Relaxation to Maxwell–Boltzmann.
 pub(super) const RELAXATION: Scenario = Scenario {

@@ -8,8 +8,8 @@ use super::{
 use crate::method::{Method, Setting};
 use crate::{Boundary, DVec2, Particle, World};
 
-const BULLET_PATH: &str = "assets/scenes/stress-bullet.toml";
-const BULLET_TEXT: &str = include_str!("../../../../assets/scenes/stress-bullet.toml");
+const BULLET_PATH: &str = crate::catalogue::STRESS_BULLET.path;
+const BULLET_TEXT: &str = crate::catalogue::STRESS_BULLET.text;
 
 /// 1. Bullets.
 pub(super) const BULLET: Scenario = Scenario {
@@ -60,8 +60,8 @@ fn bullet(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     })
 }
 
-const PI_PATH: &str = "assets/scenes/stress-pi-blocks.toml";
-const PI_TEXT: &str = include_str!("../../../../assets/scenes/stress-pi-blocks.toml");
+const PI_PATH: &str = crate::catalogue::STRESS_PI_BLOCKS.path;
+const PI_TEXT: &str = crate::catalogue::STRESS_PI_BLOCKS.text;
 
 /// 2. The blocks that count π.
 pub(super) const PI_BLOCKS: Scenario = Scenario {
@@ -134,8 +134,8 @@ fn pi_blocks(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     })
 }
 
-const CRADLE_PATH: &str = "assets/scenes/stress-cradle.toml";
-const CRADLE_TEXT: &str = include_str!("../../../../assets/scenes/stress-cradle.toml");
+const CRADLE_PATH: &str = crate::catalogue::STRESS_CRADLE.path;
+const CRADLE_TEXT: &str = crate::catalogue::STRESS_CRADLE.text;
 
 /// 3. Newton's cradle.
 pub(super) const CRADLE: Scenario = Scenario {
@@ -174,8 +174,8 @@ fn cradle(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     })
 }
 
-const MASS_PATH: &str = "assets/scenes/stress-mass-ratio.toml";
-const MASS_TEXT: &str = include_str!("../../../../assets/scenes/stress-mass-ratio.toml");
+const MASS_PATH: &str = crate::catalogue::STRESS_MASS_RATIO.path;
+const MASS_TEXT: &str = crate::catalogue::STRESS_MASS_RATIO.text;
 
 /// 6. Extreme mass ratios.
 pub(super) const MASS_RATIO: Scenario = Scenario {
@@ -248,10 +248,10 @@ fn mass_ratio(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     })
 }
 
-const CORNER_PATH: &str = "assets/scenes/stress-corner.toml";
-const CORNER_TEXT: &str = include_str!("../../../../assets/scenes/stress-corner.toml");
-const THREE_PATH: &str = "assets/scenes/stress-three-discs.toml";
-const THREE_TEXT: &str = include_str!("../../../../assets/scenes/stress-three-discs.toml");
+const CORNER_PATH: &str = crate::catalogue::STRESS_CORNER.path;
+const CORNER_TEXT: &str = crate::catalogue::STRESS_CORNER.text;
+const THREE_PATH: &str = crate::catalogue::STRESS_THREE_DISCS.path;
+const THREE_TEXT: &str = crate::catalogue::STRESS_THREE_DISCS.text;
 
 /// 9. Corners and simultaneous hits.
 pub(super) const SYMMETRY: Scenario = Scenario {
@@ -293,8 +293,8 @@ fn symmetry(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     })
 }
 
-const DEGENERATE_PATH: &str = "assets/scenes/stress-degenerate.toml";
-const DEGENERATE_TEXT: &str = include_str!("../../../../assets/scenes/stress-degenerate.toml");
+const DEGENERATE_PATH: &str = crate::catalogue::STRESS_DEGENERATE.path;
+const DEGENERATE_TEXT: &str = crate::catalogue::STRESS_DEGENERATE.text;
 
 /// 10. Degenerate input.
 pub(super) const DEGENERATE: Scenario = Scenario {
