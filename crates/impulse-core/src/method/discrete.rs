@@ -16,12 +16,13 @@
 //! ascending pair order, or for large contact lists band by band, side by
 //! side ([`crate::resolution::Banded`]); the result is the same bit for bit.
 
+use crate::laws::Laws;
 use crate::ledger::Ledger;
 #[cfg(feature = "parallel")]
 use crate::parallel::CHUNK;
+use crate::pipeline::Pipeline;
 use crate::resolution::Rule;
 use crate::stats::{Lap, StepStats};
-use crate::world::{Laws, Pipeline};
 use crate::Particle;
 use glam::DVec2;
 #[cfg(feature = "parallel")]

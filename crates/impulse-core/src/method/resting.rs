@@ -31,11 +31,12 @@
 //! inverse-mass shares; momentum is not conserved pair by pair in step 3,
 //! which only matters where the floor holds the discs anyway.
 
+use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
+use crate::pipeline::Pipeline;
 use crate::resolution::{collision_velocities, push_apart};
 use crate::stats::{Lap, StepStats};
-use crate::world::{Laws, Pipeline};
 use crate::{Boundary, Particle};
 use glam::DVec2;
 

@@ -3,8 +3,8 @@
 
 use super::Body;
 use crate::boundary::Boundary;
+use crate::laws::Laws;
 use crate::particle::Particle;
-use crate::world::Laws;
 use glam::DVec2;
 
 /// Cell width in largest diameters.

@@ -43,10 +43,10 @@
 //!   change of size, gravity or boundary) makes it start afresh.
 
 use crate::boundary::Boundary;
+use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
 use crate::particle::Particle;
 use crate::stats::StepStats;
-use crate::world::Laws;
 use glam::DVec2;
 use grid::Grid;
 use web_time::Instant;

@@ -11,8 +11,8 @@ use super::{
     SEPARATION_SWEEPS, TC_FRACTION,
 };
 use crate::boundary::Boundary;
+use crate::laws::Laws;
 use crate::particle::Particle;
-use crate::world::Laws;
 use glam::DVec2;
 
 impl Sim {

@@ -1,0 +1,147 @@
+//! The detection and resolution stages with their reusable buffers, shared
+//! by the methods: broad phase → narrow phase ([`Pipeline::detect`]),
+//! resolution ([`Pipeline::resolve`]), integration
+//! ([`Pipeline::integrate`]) and boundaries ([`Pipeline::apply_boundary`]).
+//! The world owns one and lends it to the method each step.
+
+use crate::boundary::WallReport;
+use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
+use crate::laws::Laws;
+use crate::ledger::Ledger;
+use crate::method::exact;
+use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
+use crate::parallel;
+use crate::particle::Particle;
+use crate::resolution::{ResolutionReport, Rule};
+use crate::stats::{Lap, StepStats};
+use glam::DVec2;
+
+/// Detection stages and their reusable buffers.
+pub(crate) struct Pipeline {
+    pub(crate) kind: BroadPhaseKind,
+    broad_phase: Box<dyn BroadPhase + Send>,
+    pairs: Vec<Pair>,
+    /// Contacts found by the last [`Pipeline::detect`].
+    pub(crate) contacts: Vec<Contact>,
+    /// Scratch: positions before a Verlet substep.
+    pub(crate) previous_positions: Vec<DVec2>,
+    /// Scratch of the resting-contact substep.
+    pub(crate) resting: crate::method::resting::Scratch,
+    /// The exact method's event calendar, carried from step to step.
+    pub(crate) exact: exact::Exact,
+    /// Run the order-free stages on rayon's pool (the plan's choice).
+    pub(crate) parallel: bool,
+    /// Scratch: the narrow phase's contacts per chunk of pairs.
+    contact_chunks: Vec<Vec<Contact>>,
+    /// Scratch: what the walls did per chunk of discs.
+    walls: Vec<WallReport>,
+    /// Scratch: large contact lists grouped into bands for resolution.
+    banded: crate::resolution::Banded,
+}
+
+impl Pipeline {
+    pub(crate) fn new(kind: BroadPhaseKind) -> Self {
+        Pipeline {
+            kind,
+            broad_phase: kind.build(),
+            pairs: Vec::new(),
+            contacts: Vec::new(),
+            previous_positions: Vec::new(),
+            resting: Default::default(),
+            exact: exact::Exact::default(),
+            parallel: false,
+            contact_chunks: Vec::new(),
+            walls: Vec::new(),
+            banded: Default::default(),
+        }
+    }
+
+    pub(crate) fn use_kind(&mut self, kind: BroadPhaseKind) {
+        if kind != self.kind {
+            let stop = self.exact.stop_at_collision;
+            *self = Pipeline::new(kind);
+            self.exact.stop_at_collision = stop;
+        }
+    }
+
+    /// Broad phase then narrow phase: fills `self.contacts`.
+    pub(crate) fn detect(&mut self, particles: &[Particle], laws: &Laws, stats: &mut StepStats) {
+        let mut lap = Lap::start();
+        self.broad_phase.set_parallel(self.parallel);
+        self.broad_phase
+            .candidate_pairs(particles, laws.boundary, laws.size, &mut self.pairs);
+        stats.candidate_pairs += self.pairs.len();
+        stats.timings.broad_phase += lap.lap();
+        if self.parallel {
+            find_contacts_in_chunks(
+                particles,
+                &self.pairs,
+                laws.boundary,
+                laws.size,
+                &mut self.contact_chunks,
+                &mut self.contacts,
+            );
+        } else {
+            find_contacts(
+                particles,
+                &self.pairs,
+                laws.boundary,
+                laws.size,
+                &mut self.contacts,
+            );
+        }
+        stats.contacts += self.contacts.len();
+        stats.timings.narrow_phase += lap.lap();
+    }
+
+    /// The resolution stage over `self.contacts`: in ascending pair order, or
+    /// band by band for large contact lists (on the pool if parallel; the
+    /// same result either way, see [`crate::resolution::Banded`]).
+    pub(crate) fn resolve(
+        &mut self,
+        particles: &mut [Particle],
+        (laws, h): (&Laws, f64),
+        rule: Rule,
+        ledger: (&mut Ledger, f64),
+    ) -> ResolutionReport {
+        let law = (laws.restitution, crate::impact::threshold(laws.gravity, h));
+        let (contacts, parallel) = (&self.contacts, self.parallel);
+        self.banded
+            .resolve(particles, contacts, law, rule, ledger, parallel)
+    }
+
+    /// The integration stage (semi-implicit Euler), chunk by chunk.
+    pub(crate) fn integrate(&self, particles: &mut [Particle], gravity: DVec2, h: f64) {
+        parallel::for_chunks_mut(self.parallel, particles, |chunk| {
+            crate::integration::integrate(chunk, gravity, h)
+        });
+    }
+
+    /// The boundary stage after a (sub)step of `h` seconds, adding what the
+    /// walls did to `stats`. It runs
+    /// chunk by chunk, serially too, and the chunks' wall impulses are
+    /// added in chunk order, so the sum does not depend on the threads.
+    pub(crate) fn apply_boundary(
+        &mut self,
+        particles: &mut [Particle],
+        laws: &Laws,
+        h: f64,
+        stats: &mut StepStats,
+    ) {
+        let (edges, gravity, e) = ((laws.size, laws.walls), laws.gravity, laws.wall_restitution);
+        let impact_speed = crate::impact::threshold(gravity, h);
+        parallel::map_chunks_mut(
+            self.parallel,
+            particles,
+            |chunk| laws.boundary.apply(chunk, edges, gravity, e, impact_speed),
+            &mut self.walls,
+        );
+        let mut impulse = 0.0;
+        for w in &self.walls {
+            stats.wall_hits += w.hits;
+            stats.resting_contacts += w.resting;
+            impulse += w.impulse;
+        }
+        stats.wall_impulse += impulse;
+    }
+}
