@@ -258,15 +258,15 @@ fn auto_models_no_more_than_the_scene_needs() {
     let mut big = gas(2000, Boundary::Periodic, 1);
     big.method = Setting::Auto;
     big.broad_phase = Setting::Auto;
-    let cost = exact_cost_per_second(&big, 0.01);
+    let cost = exact_cost_per_second(&big.particles, &big.laws(), 0.01);
     assert_eq!(big.plan_for(0.01).method, Method::Exact, "{cost}");
-    assert!(exact_cost_per_second(&big, 1e-4) > 5.0 * cost);
+    assert!(exact_cost_per_second(&big.particles, &big.laws(), 1e-4) > 5.0 * cost);
     assert_eq!(big.plan_for(1e-4).method, Method::Impulse);
     let mut hot = big.clone();
     for p in &mut hot.particles {
         p.vel *= 1000.0;
     }
-    assert!(exact_cost_per_second(&hot, 0.01) > 10.0 * cost);
+    assert!(exact_cost_per_second(&hot.particles, &hot.laws(), 0.01) > 10.0 * cost);
     assert_eq!(hot.plan_for(0.01).method, Method::Impulse);
     let mut many = gas(100_000, Boundary::Periodic, 1);
     many.method = Setting::Auto;
@@ -280,7 +280,11 @@ fn auto_models_no_more_than_the_scene_needs() {
     for p in big.particles.iter_mut().step_by(40) {
         p.radius = 5.0;
     }
-    assert!(grid_crowding(&big) > 8.0, "{}", grid_crowding(&big));
+    assert!(
+        grid_crowding(&big.particles, &big.laws()) > 8.0,
+        "{}",
+        grid_crowding(&big.particles, &big.laws())
+    );
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Quadtree);
     let mut few = gas(10, Boundary::Box, 1);
     few.broad_phase = Setting::Auto;

@@ -56,8 +56,23 @@
 //!   prints this crossover table again on every run.
 
 use crate::broad_phase::BroadPhaseKind;
+use crate::broad_phase::BroadPhaseKind as Broad;
+use crate::laws::Laws;
 use crate::method::{Method, Setting};
-use crate::world::World;
+use crate::particle::Particle;
+
+/// The four settings `auto` resolves, each fixed or `auto`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Choices {
+    /// Collision method.
+    pub method: Setting<Method>,
+    /// Broad phase.
+    pub broad_phase: Setting<Broad>,
+    /// Substeps per step for `impulse` and `verlet`.
+    pub substeps: Setting<u32>,
+    /// Whether the order-free stages run on rayon's pool.
+    pub parallel: Setting<bool>,
+}
 use serde::Serialize;
 
 /// Measured cost of the exact method per disc and step, before collisions,
@@ -108,22 +123,17 @@ pub struct Plan {
 /// Mean discs per cell of the grid broad phase: its cells are as wide as
 /// the largest disc it does not set aside (it sets aside up to
 /// [`GRID_MAX_BIG_DISCS`] discs bigger than [`BIG_DISC_FACTOR`] × the mean).
-pub fn grid_crowding(world: &World) -> f64 {
-    let n = world.particles.len();
+pub fn grid_crowding(particles: &[Particle], laws: &Laws) -> f64 {
+    let n = particles.len();
     if n == 0 {
         return 0.0;
     }
-    let mean_r = world.particles.iter().map(|p| p.radius).sum::<f64>() / n as f64;
+    let mean_r = particles.iter().map(|p| p.radius).sum::<f64>() / n as f64;
     let big_limit = BIG_DISC_FACTOR * mean_r;
-    let big = world
-        .particles
-        .iter()
-        .filter(|p| p.radius > big_limit)
-        .count();
+    let big = particles.iter().filter(|p| p.radius > big_limit).count();
     let cell_radius = if big <= GRID_MAX_BIG_DISCS {
         // Every big disc is set aside: cells fit the largest ordinary one.
-        world
-            .particles
+        particles
             .iter()
             .map(|p| p.radius)
             .filter(|&r| r <= big_limit)
@@ -131,14 +141,14 @@ pub fn grid_crowding(world: &World) -> f64 {
     } else {
         // The grid sets aside the largest few; cells fit the next one. Only
         // this rare case pays for a copy of the radii.
-        let mut radii: Vec<f64> = world.particles.iter().map(|p| p.radius).collect();
+        let mut radii: Vec<f64> = particles.iter().map(|p| p.radius).collect();
         let (_, next, _) = radii.select_nth_unstable_by(GRID_MAX_BIG_DISCS, |a, b| b.total_cmp(a));
         *next
     };
     let cell = 2.0 * cell_radius;
-    let area = match world.boundary {
+    let area = match laws.boundary {
         crate::Boundary::Open => {
-            let (lo, hi) = world.particles.iter().fold(
+            let (lo, hi) = particles.iter().fold(
                 (
                     glam::DVec2::splat(f64::INFINITY),
                     glam::DVec2::splat(f64::NEG_INFINITY),
@@ -147,37 +157,37 @@ pub fn grid_crowding(world: &World) -> f64 {
             );
             ((hi - lo).x * (hi - lo).y).max(cell * cell)
         }
-        _ => world.size.x * world.size.y,
+        _ => laws.size.x * laws.size.y,
     };
     n as f64 * cell * cell / area.max(f64::MIN_POSITIVE)
 }
 
 /// Estimated wall-clock seconds `exact` needs per simulated second.
-pub fn exact_cost_per_second(world: &World, dt: f64) -> f64 {
-    let n = world.particles.len() as f64;
+pub fn exact_cost_per_second(particles: &[Particle], laws: &Laws, dt: f64) -> f64 {
+    let n = particles.len() as f64;
     if n == 0.0 {
         return 0.0;
     }
-    let mean_diameter = world.particles.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n;
-    let v_rms = (world
-        .particles
+    let mean_diameter = particles.iter().map(|p| 2.0 * p.radius).sum::<f64>() / n;
+    let v_rms = (particles
         .iter()
         .map(|p| p.vel.length_squared())
         .sum::<f64>()
         / n)
         .sqrt();
-    let area = world.size.x * world.size.y;
+    let area = laws.size.x * laws.size.y;
     let frequency = std::f64::consts::SQRT_2 * (n / area) * mean_diameter * v_rms;
     n * (EXACT_SETUP_NS / dt + frequency * EXACT_COLLISION_NS) * 1e-9
 }
 
-/// Resolves every `auto` setting of `world` for a step of `dt`.
-pub fn plan(world: &World, dt: f64) -> Plan {
-    let n = world.particles.len();
+/// Resolves every `auto` setting of `choices` for these discs under these
+/// laws, for a step of `dt`.
+pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> Plan {
+    let n = particles.len();
     let mut reasons = Vec::new();
     let (mut min_r, mut min_m, mut max_m, mut max_speed) =
         (f64::INFINITY, f64::INFINITY, 0.0f64, 0.0f64);
-    for p in &world.particles {
+    for p in particles {
         min_r = min_r.min(p.radius);
         min_m = min_m.min(p.mass);
         max_m = max_m.max(p.mass);
@@ -185,16 +195,16 @@ pub fn plan(world: &World, dt: f64) -> Plan {
     }
     let mass_ratio = if n > 0 { max_m / min_m } else { 1.0 };
 
-    let method = match world.method {
+    let method = match choices.method {
         Setting::Fixed(m) => m,
         Setting::Auto => {
-            let dissipative = world.restitution < 1.0 || world.wall_restitution < 1.0;
-            let resting = world.gravity != glam::DVec2::ZERO && dissipative;
+            let dissipative = laws.restitution < 1.0 || laws.wall_restitution < 1.0;
+            let resting = laws.gravity != glam::DVec2::ZERO && dissipative;
             if resting {
                 reasons.push("impulse: discs will rest in contact (gravity, e < 1)".to_string());
                 Method::Impulse
             } else {
-                let cost = exact_cost_per_second(world, dt);
+                let cost = exact_cost_per_second(particles, laws, dt);
                 let extreme = mass_ratio >= EXTREME_MASS_RATIO;
                 let budget = if extreme {
                     4.0 * EXACT_BUDGET
@@ -219,10 +229,10 @@ pub fn plan(world: &World, dt: f64) -> Plan {
         }
     };
 
-    let broad_phase = match world.broad_phase {
+    let broad_phase = match choices.broad_phase {
         Setting::Fixed(b) => b,
         Setting::Auto => {
-            let crowding = grid_crowding(world);
+            let crowding = grid_crowding(particles, laws);
             let choice = if n <= BRUTE_MAX_DISCS {
                 BroadPhaseKind::Brute
             } else if crowding > MAX_DISCS_PER_CELL {
@@ -242,10 +252,10 @@ pub fn plan(world: &World, dt: f64) -> Plan {
     let substeps = if !method.uses_substeps() {
         1
     } else {
-        match world.substeps {
+        match choices.substeps {
             Setting::Fixed(k) => k.max(1),
             Setting::Auto => {
-                let fastest = max_speed + world.gravity.length() * dt;
+                let fastest = max_speed + laws.gravity.length() * dt;
                 let allowed = MAX_TRAVEL_PER_SUBSTEP * min_r;
                 let k = if n == 0 || allowed <= 0.0 {
                     1.0
@@ -264,7 +274,7 @@ pub fn plan(world: &World, dt: f64) -> Plan {
     };
 
     let discrete = method != Method::Exact;
-    let parallel = match world.parallel {
+    let parallel = match choices.parallel {
         Setting::Fixed(on) => on && discrete,
         Setting::Auto if !discrete => false,
         Setting::Auto => {

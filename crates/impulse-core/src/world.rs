@@ -145,6 +145,16 @@ impl World {
         }
     }
 
+    /// The four settings `auto` resolves.
+    pub fn choices(&self) -> auto::Choices {
+        auto::Choices {
+            method: self.method,
+            broad_phase: self.broad_phase,
+            substeps: self.substeps,
+            parallel: self.parallel,
+        }
+    }
+
     /// What the last step used: method, broad phase, substeps, and why.
     pub fn plan(&self) -> Option<&Plan> {
         self.plan.as_ref()
@@ -153,7 +163,7 @@ impl World {
     /// Decides method, broad phase and substeps for a step of `dt`:
     /// fixed settings as given, `auto` ones from the scene.
     pub fn plan_for(&self, dt: f64) -> Plan {
-        auto::plan(self, dt)
+        auto::plan(&self.particles, &self.laws(), self.choices(), dt)
     }
 
     /// Advances the world by `dt` seconds with the chosen method.
@@ -185,7 +195,12 @@ impl World {
             particles: self.particles.len(),
         };
         if self.plan.is_none() || self.plan_key != Some(key) || self.steps % REPLAN_EVERY == 0 {
-            self.plan = Some(auto::plan(self, dt));
+            self.plan = Some(auto::plan(
+                &self.particles,
+                &self.laws(),
+                self.choices(),
+                dt,
+            ));
             self.plan_key = Some(key);
         }
         let (method, broad_phase, planned_substeps, parallel) = match &self.plan {
