@@ -15,7 +15,6 @@ use crate::boundary::Boundary;
 use crate::broad_phase::Pair;
 use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
-use crate::resolution::band_of;
 use glam::DVec2;
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
@@ -31,9 +30,6 @@ pub struct Contact {
     pub normal: DVec2,
     /// How far the discs overlap: r₁ + r₂ − distance (> 0).
     pub depth: f64,
-    /// The horizontal bands discs `i` and `j` are in, by which large contact
-    /// lists are resolved on several threads ([`crate::resolution::Banded`]).
-    pub bands: [u8; 2],
 }
 
 /// The normal used when two centres coincide.
@@ -55,7 +51,6 @@ pub fn find_contacts(
             j,
             normal,
             depth,
-            bands: [band_of(a.pos.y, size.y), band_of(b.pos.y, size.y)],
         })
     }));
 }

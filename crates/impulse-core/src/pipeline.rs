@@ -106,8 +106,14 @@ impl Pipeline {
     ) -> ResolutionReport {
         let law = (laws.restitution, crate::impact::threshold(laws.gravity, h));
         let (contacts, parallel) = (&self.contacts, self.parallel);
-        self.banded
-            .resolve(particles, contacts, law, rule, ledger, parallel)
+        self.banded.resolve(
+            particles,
+            (contacts, laws.size.y),
+            law,
+            rule,
+            ledger,
+            parallel,
+        )
     }
 
     /// The integration stage (semi-implicit Euler), chunk by chunk.

@@ -99,7 +99,7 @@ impl Banded {
     pub fn resolve(
         &mut self,
         particles: &mut [Particle],
-        contacts: &[Contact],
+        (contacts, height): (&[Contact], f64),
         law: (f64, f64),
         rule: Rule,
         (ledger, time): (&mut Ledger, f64),
@@ -108,7 +108,8 @@ impl Banded {
         if contacts.len() < self.min_contacts {
             return super::resolve_contacts(particles, contacts, law, rule, ledger, time);
         }
-        self.group(particles.len(), contacts);
+        let band = |k: u32| band_of(particles[k as usize].pos.y, height);
+        self.group(particles.len(), contacts, |_, c| [band(c.i), band(c.j)]);
         let mut report = ResolutionReport::default();
         let group = |k: usize| &self.order[self.starts[k]..self.starts[k + 1]];
         for parity in 0..2 {
@@ -170,7 +171,14 @@ impl Banded {
     /// Soundness does not rest on that: a disc keeps the first band a contact
     /// gives it, and a contact that disagrees, or whose bands are not the same
     /// or neighbours, is resolved with the serial rest.
-    fn group(&mut self, disc_count: usize, contacts: &[Contact]) {
+    /// Sorts the contacts into bands: `bands_of(k, contact)` gives the
+    /// bands its two discs are in (from their heights, when resolving).
+    fn group(
+        &mut self,
+        disc_count: usize,
+        contacts: &[Contact],
+        bands_of: impl Fn(usize, &Contact) -> [u8; 2],
+    ) {
         const UNSEEN: u8 = u8::MAX;
         self.disc_bands.clear();
         self.disc_bands.resize(disc_count, UNSEEN);
@@ -183,8 +191,8 @@ impl Banded {
             *seen == band
         };
         self.keys.clear();
-        self.keys.extend(contacts.iter().map(|c| {
-            let [a, b] = c.bands;
+        self.keys.extend(contacts.iter().enumerate().map(|(k, c)| {
+            let [a, b] = bands_of(k, c);
             let in_bands = (a as usize) < BANDS && (b as usize) < BANDS && a.abs_diff(b) <= 1;
             if in_bands && claim(c.i, a) && claim(c.j, b) {
                 a.min(b)
@@ -347,22 +355,22 @@ mod tests {
         // bands) or out of range: grouping alone must keep each phase apart.
         let mut rng = ChaCha8Rng::seed_from_u64(3);
         let discs = 300u32;
-        let contacts: Vec<Contact> = (0..5000)
+        let (contacts, bands): (Vec<Contact>, Vec<[u8; 2]>) = (0..5000)
             .map(|_| {
                 let i = rng.random_range(0..discs - 1);
                 let j = rng.random_range(i + 1..discs);
                 let band = |rng: &mut ChaCha8Rng| rng.random_range(0..BANDS as u8 + 3);
-                Contact {
+                let contact = Contact {
                     i,
                     j,
                     normal: DVec2::X,
                     depth: 0.1,
-                    bands: [band(&mut rng), band(&mut rng)],
-                }
+                };
+                (contact, [band(&mut rng), band(&mut rng)])
             })
-            .collect();
+            .unzip();
         let mut banded = always_banded();
-        banded.group(discs as usize, &contacts);
+        banded.group(discs as usize, &contacts, |k, _| bands[k]);
         let mut seen: Vec<usize> = banded.order.iter().map(|&k| k as usize).collect();
         seen.sort_unstable();
         assert_eq!(
@@ -416,7 +424,7 @@ mod tests {
                     let ledger = (&mut Ledger::default(), 0.0);
                     always_banded().resolve(
                         &mut particles,
-                        &contacts,
+                        (&contacts, SIZE.y),
                         (0.9, 0.0),
                         Rule::IMPULSE,
                         ledger,
@@ -464,7 +472,7 @@ mod tests {
             let ledger = (&mut Ledger::default(), 0.0);
             always_banded().resolve(
                 &mut particles,
-                &contacts,
+                (&contacts, SIZE.y),
                 (1.0, 0.0),
                 Rule::IMPULSE,
                 ledger,
@@ -494,7 +502,7 @@ mod tests {
             let off = (&mut Ledger::default(), 0.0);
             let a = always_banded().resolve(
                 &mut quiet,
-                &contacts,
+                (&contacts, SIZE.y),
                 (1.0, 0.0),
                 Rule::IMPULSE,
                 off,
@@ -503,7 +511,7 @@ mod tests {
             let on = (&mut ledger, 0.0);
             let b = always_banded().resolve(
                 &mut recorded,
-                &contacts,
+                (&contacts, SIZE.y),
                 (1.0, 0.0),
                 Rule::IMPULSE,
                 on,
@@ -523,7 +531,14 @@ mod tests {
         assert!(contacts.len() < BANDED_MIN_CONTACTS);
         let (mut banded, mut ascending) = (start.clone(), start.clone());
         let off = (&mut Ledger::default(), 0.0);
-        Banded::default().resolve(&mut banded, &contacts, (0.8, 0.0), Rule::SEED, off, true);
+        Banded::default().resolve(
+            &mut banded,
+            (&contacts, SIZE.y),
+            (0.8, 0.0),
+            Rule::SEED,
+            off,
+            true,
+        );
         super::super::resolve_contacts(
             &mut ascending,
             &contacts,
