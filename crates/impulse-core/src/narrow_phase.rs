@@ -3,8 +3,7 @@
 //! For each overlapping pair it records the unit normal n̂ from the first disc
 //! to the second and the overlap depth. Coincident centres have no direction
 //! of their own; they get the fixed normal +x, so the result is deterministic
-//! and never NaN. It also notes the horizontal band each disc is in, by which
-//! resolution cuts a large contact list into work for several threads.
+//! and never NaN.
 //!
 //! Each pair is tested on its own, so for large scenes the pairs are cut into
 //! chunks of [`PAIR_CHUNK`] that rayon tests in parallel

@@ -22,9 +22,9 @@
 //!
 //! The order is fixed by the data (the discs' positions when resolution
 //! starts), never by the thread count, and the serial code resolves in the same
-//! order, so a run is the same bit for bit on any number of threads. The
-//! narrow phase writes each disc's band into its contacts ([`band_of`]), so
-//! grouping reads no disc.
+//! order, so a run is the same bit for bit on any number of threads. Grouping
+//! reads each disc's band from its height ([`band_of`]) before anything
+//! moves; the narrow phase knows nothing of bands.
 //!
 //! Below [`BANDED_MIN_CONTACTS`] contacts the order is plain ascending pair
 //! order ([`super::resolve_contacts`]) on one thread. Measured on a crowded
