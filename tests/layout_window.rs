@@ -181,15 +181,6 @@ fn tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar() {
 }
 
 /// Clicks at a point as a person would: move, press, release.
-fn click(app: &Sandbox, at: [f64; 2]) {
-    app.move_to(at);
-    app.wait_frames(1);
-    app.xdo(&["mousedown", "1"]);
-    app.wait_frames(1);
-    app.xdo(&["mouseup", "1"]);
-    app.wait_frames(2);
-}
-
 #[test]
 fn a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view() {
     let Some(x) = Xvfb::start("discs table") else {
@@ -204,12 +195,12 @@ fn a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view() {
         .map(|p| p["mass"].as_f64().unwrap())
         .collect();
     assert_eq!(before.len(), 2);
-    click(&app, widget(&s, "tab_discs", 0.5));
+    app.click(widget(&s, "tab_discs", 0.5));
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["tab"], "Discs");
 
     // Click the first disc's mass, select all, type 5, Enter.
-    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.click(widget(&s, "discs_mass_0", 0.5));
     let s = app.wait_frames(2);
     assert_eq!(s["ui"]["typing"], true, "the cell has the keyboard");
     app.xdo(&["key", "ctrl+a"]);
@@ -235,7 +226,7 @@ fn a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view() {
     // A velocity that is not a number: refused, the disc as it was, the
     // message on screen inside the dock without scrolling.
     let vx = s["particles"][1]["vel"][0].as_f64().unwrap();
-    click(&app, widget(&s, "discs_vx_1", 0.5));
+    app.click(widget(&s, "discs_vx_1", 0.5));
     app.xdo(&["key", "ctrl+a"]);
     app.xdo(&["type", "--delay", "40", "fast"]);
     app.xdo(&["key", "Return"]);

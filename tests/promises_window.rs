@@ -11,15 +11,6 @@ mod harness;
 use harness::*;
 use serde_json::Value;
 
-fn click(app: &Sandbox, at: [f64; 2]) {
-    app.move_to(at);
-    app.wait_frames(1);
-    app.xdo(&["mousedown", "1"]);
-    app.wait_frames(1);
-    app.xdo(&["mouseup", "1"]);
-    app.wait_frames(2);
-}
-
 fn key(app: &Sandbox, k: &str) -> Value {
     app.xdo(&["key", k]);
     app.wait_frames(3)
@@ -128,9 +119,9 @@ fn after_enter_in_a_field_digits_do_not_open_presets_until_esc() {
     };
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
     let s = app.wait_frames(3);
-    click(&app, widget(&s, "tab_discs", 0.5));
+    app.click(widget(&s, "tab_discs", 0.5));
     let s = app.wait_frames(2);
-    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.click(widget(&s, "discs_mass_0", 0.5));
     app.xdo(&["key", "ctrl+a"]);
     app.xdo(&["type", "--delay", "40", "3"]);
     let s = key(&app, "Return");
@@ -253,17 +244,17 @@ fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_o
     // Fold the two open sections so "New discs" opens in view.
     for section in ["section_show", "section_collisions", "section_new_discs"] {
         let s = app.wait_frames(2);
-        click(&app, widget(&s, section, 0.5));
+        app.click(widget(&s, section, 0.5));
     }
     let s = app.wait_frames(2);
     let at = widget(&s, "size_follows_mass", 0.05);
     assert!(at[1] < 800.0, "in view: {at:?}");
-    click(&app, at);
+    app.click(at);
     let s = app.wait_frames(2);
     assert_eq!(s["ui"]["size_follows_mass"], true);
-    click(&app, widget(&s, "tab_discs", 0.5));
+    app.click(widget(&s, "tab_discs", 0.5));
     let s = app.wait_frames(2);
-    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.click(widget(&s, "discs_mass_0", 0.5));
     app.xdo(&["key", "ctrl+a"]);
     app.xdo(&["type", "--delay", "40", "4"]);
     let s = key(&app, "Return");
@@ -272,7 +263,7 @@ fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_o
     let r = s["particles"][0]["radius"].as_f64().unwrap();
     assert!((r - 0.8).abs() < 1e-12, "{r}");
     // 100 kg would be 4 m in radius: it would cross the left wall.
-    click(&app, widget(&s, "discs_mass_0", 0.5));
+    app.click(widget(&s, "discs_mass_0", 0.5));
     app.xdo(&["key", "ctrl+a"]);
     app.xdo(&["type", "--delay", "40", "100"]);
     let s = key(&app, "Return");

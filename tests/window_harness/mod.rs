@@ -206,6 +206,17 @@ impl Sandbox {
         assert!(status.success(), "xdotool {args:?} failed");
     }
 
+    /// A left click at `p` as a person makes it: move, press, release,
+    /// with a frame between each.
+    pub fn click(&self, p: [f64; 2]) {
+        self.move_to(p);
+        self.wait_frames(1);
+        self.xdo(&["mousedown", "1"]);
+        self.wait_frames(1);
+        self.xdo(&["mouseup", "1"]);
+        self.wait_frames(2);
+    }
+
     pub fn move_to(&self, p: [f64; 2]) {
         self.xdo(&[
             "mousemove",
