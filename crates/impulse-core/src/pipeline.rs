@@ -1,14 +1,14 @@
-//! The detection and resolution stages with their reusable buffers, shared
-//! by the methods: broad phase → narrow phase ([`Pipeline::detect`]),
-//! resolution ([`Pipeline::resolve`]), integration
-//! ([`Pipeline::integrate`]) and boundaries ([`Pipeline::apply_boundary`]).
-//! The world owns one and lends it to the method each step.
+//! The five stages with their reusable buffers, shared by the fixed-step
+//! methods: [`Pipeline::broad_phase`] → [`Pipeline::narrow_phase`] →
+//! [`Pipeline::resolve`] → [`Pipeline::integrate`] →
+//! [`Pipeline::apply_boundary`]. Each stage adds its wall-clock time to the
+//! step's [`StageTimings`](crate::stats::StageTimings). The world owns one
+//! and runs a substep through it; the pipeline knows no method.
 
 use crate::boundary::WallReport;
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::laws::Laws;
 use crate::ledger::Ledger;
-use crate::method::exact;
 use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
 use crate::parallel;
 use crate::particle::Particle;
@@ -23,12 +23,6 @@ pub(crate) struct Pipeline {
     pairs: Vec<Pair>,
     /// Contacts found by the last [`Pipeline::detect`].
     pub(crate) contacts: Vec<Contact>,
-    /// Scratch: positions before a Verlet substep.
-    pub(crate) previous_positions: Vec<DVec2>,
-    /// Scratch of the resting-contact substep.
-    pub(crate) resting: crate::method::resting::Scratch,
-    /// The exact method's event calendar, carried from step to step.
-    pub(crate) exact: exact::Exact,
     /// Run the order-free stages on rayon's pool (the plan's choice).
     pub(crate) parallel: bool,
     /// Scratch: the narrow phase's contacts per chunk of pairs.
@@ -46,9 +40,6 @@ impl Pipeline {
             broad_phase: kind.build(),
             pairs: Vec::new(),
             contacts: Vec::new(),
-            previous_positions: Vec::new(),
-            resting: Default::default(),
-            exact: exact::Exact::default(),
             parallel: false,
             contact_chunks: Vec::new(),
             walls: Vec::new(),
@@ -56,22 +47,46 @@ impl Pipeline {
         }
     }
 
-    pub(crate) fn use_kind(&mut self, kind: BroadPhaseKind) {
-        if kind != self.kind {
-            let stop = self.exact.stop_at_collision;
+    /// Switches to another broad phase (fresh buffers); returns whether it
+    /// changed.
+    pub(crate) fn use_kind(&mut self, kind: BroadPhaseKind) -> bool {
+        let changed = kind != self.kind;
+        if changed {
             *self = Pipeline::new(kind);
-            self.exact.stop_at_collision = stop;
         }
+        changed
     }
 
-    /// Broad phase then narrow phase: fills `self.contacts`.
+    /// Broad phase then narrow phase.
     pub(crate) fn detect(&mut self, particles: &[Particle], laws: &Laws, stats: &mut StepStats) {
-        let mut lap = Lap::start();
+        self.broad_phase(particles, laws, stats);
+        self.narrow_phase(particles, laws, stats);
+    }
+
+    /// The broad phase: candidate pairs, whose boxes may touch.
+    pub(crate) fn broad_phase(
+        &mut self,
+        particles: &[Particle],
+        laws: &Laws,
+        stats: &mut StepStats,
+    ) {
+        let lap = Lap::start();
         self.broad_phase.set_parallel(self.parallel);
         self.broad_phase
             .candidate_pairs(particles, laws.boundary, laws.size, &mut self.pairs);
         stats.candidate_pairs += self.pairs.len();
-        stats.timings.broad_phase += lap.lap();
+        stats.timings.broad_phase += lap.elapsed();
+    }
+
+    /// The narrow phase: the candidate pairs that overlap, as contacts
+    /// (fills `self.contacts`).
+    pub(crate) fn narrow_phase(
+        &mut self,
+        particles: &[Particle],
+        laws: &Laws,
+        stats: &mut StepStats,
+    ) {
+        let lap = Lap::start();
         if self.parallel {
             find_contacts_in_chunks(
                 particles,
@@ -91,36 +106,51 @@ impl Pipeline {
             );
         }
         stats.contacts += self.contacts.len();
-        stats.timings.narrow_phase += lap.lap();
+        stats.timings.narrow_phase += lap.elapsed();
     }
 
     /// The resolution stage over `self.contacts`: in ascending pair order, or
     /// band by band for large contact lists (on the pool if parallel; the
-    /// same result either way, see [`crate::resolution::Banded`]).
+    /// same result either way, see [`crate::resolution::Banded`]), adding
+    /// what it did to `stats`.
     pub(crate) fn resolve(
         &mut self,
         particles: &mut [Particle],
         (laws, h): (&Laws, f64),
         rule: Rule,
         ledger: (&mut Ledger, f64),
-    ) -> ResolutionReport {
+        stats: &mut StepStats,
+    ) {
+        let lap = Lap::start();
         let law = (laws.restitution, crate::impact::threshold(laws.gravity, h));
         let (contacts, parallel) = (&self.contacts, self.parallel);
-        self.banded.resolve(
+        let report: ResolutionReport = self.banded.resolve(
             particles,
             (contacts, laws.size.y),
             law,
             rule,
             ledger,
             parallel,
-        )
+        );
+        stats.pair_collisions += report.collisions;
+        stats.resting_contacts += report.resting;
+        stats.max_overlap = stats.max_overlap.max(report.max_overlap);
+        stats.timings.resolution += lap.elapsed();
     }
 
     /// The integration stage (semi-implicit Euler), chunk by chunk.
-    pub(crate) fn integrate(&self, particles: &mut [Particle], gravity: DVec2, h: f64) {
+    pub(crate) fn integrate(
+        &self,
+        particles: &mut [Particle],
+        gravity: DVec2,
+        h: f64,
+        stats: &mut StepStats,
+    ) {
+        let lap = Lap::start();
         parallel::for_chunks_mut(self.parallel, particles, |chunk| {
             crate::integration::integrate(chunk, gravity, h)
         });
+        stats.timings.integration += lap.elapsed();
     }
 
     /// The boundary stage after a (sub)step of `h` seconds, adding what the
@@ -134,6 +164,7 @@ impl Pipeline {
         h: f64,
         stats: &mut StepStats,
     ) {
+        let lap = Lap::start();
         let (edges, gravity, e) = ((laws.size, laws.walls), laws.gravity, laws.wall_restitution);
         let impact_speed = crate::impact::threshold(gravity, h);
         parallel::map_chunks_mut(
@@ -149,5 +180,6 @@ impl Pipeline {
             impulse += w.impulse;
         }
         stats.wall_impulse += impulse;
+        stats.timings.boundary += lap.elapsed();
     }
 }

@@ -15,6 +15,11 @@ impl Lap {
         Lap(Instant::now())
     }
 
+    /// Time since the start (or the last lap).
+    pub(crate) fn elapsed(&self) -> Duration {
+        self.0.elapsed()
+    }
+
     pub(crate) fn lap(&mut self) -> Duration {
         let now = Instant::now();
         let elapsed = now - self.0;

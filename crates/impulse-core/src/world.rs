@@ -6,7 +6,7 @@ use crate::boundary::{Axis, Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
 pub use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
-use crate::method::{discrete, Method, Setting};
+use crate::method::{resting, verlet, Method, MethodState, Setting};
 use crate::metrics::Metrics;
 use crate::parallel;
 use crate::particle::Particle;
@@ -61,22 +61,20 @@ pub struct World {
     /// The last collisions, when turned on (`ledger.keep(n)`).
     pub ledger: Ledger,
     pipeline: Pipeline,
+    methods: MethodState,
     plan: Option<Plan>,
     plan_key: Option<PlanKey>,
     last_stats: StepStats,
 }
 
 /// What a plan was made for; a different key means plan again.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct PlanKey {
-    method: Setting<Method>,
-    broad_phase: Setting<BroadPhaseKind>,
-    substeps: Setting<u32>,
-    parallel: Setting<bool>,
+    choices: auto::Choices,
     threads: usize,
-    laws: [u64; 5],
-    boundary: Boundary,
-    walls: Walls,
+    /// The step's bits.
+    dt: u64,
+    laws: Laws,
     particles: usize,
 }
 
@@ -117,6 +115,7 @@ impl World {
             total_wall_impulse: 0.0,
             ledger: Ledger::default(),
             pipeline: Pipeline::new(BroadPhaseKind::Brute),
+            methods: MethodState::default(),
             plan: None,
             plan_key: None,
             last_stats: StepStats::default(),
@@ -174,113 +173,123 @@ impl World {
         if !(dt >= MIN_DT && dt.is_finite()) {
             return StepStats::default();
         }
-        // Re-plan when anything auto looks at may have changed: the settings,
-        // the laws, the disc count, the step; and every so often for speeds.
+        let (method, substeps) = self.replan(dt);
+        let laws = self.laws();
+        let line = self.hold_to_line();
+        let mut stats = StepStats::default();
+        let simulated = if method == Method::Exact {
+            stats.substeps = 1;
+            let ledger = (&mut self.ledger, self.time);
+            let exact = &mut self.methods.exact;
+            exact.advance(&mut self.particles, &laws, dt, &mut stats, ledger)
+        } else {
+            self.methods.exact.forget();
+            stats.substeps = substeps;
+            let h = dt / f64::from(substeps);
+            for k in 0..substeps {
+                let time = self.time + f64::from(k) * h;
+                self.substep(method, &laws, (h, time), &mut stats);
+            }
+            dt
+        };
+        if let Some(line) = &line {
+            line.hold(&mut self.particles);
+        }
+        self.book(&stats, simulated);
+        stats
+    }
+
+    /// One substep of `h` seconds of a fixed-step method, starting at
+    /// `time`: broad phase → narrow phase → resolution → integration →
+    /// boundaries. `verlet` integrates first, and `impulse` under gravity
+    /// with e < 1 resolves impacts and resting contacts apart; see
+    /// [`crate::method`].
+    fn substep(
+        &mut self,
+        method: Method,
+        laws: &Laws,
+        (h, time): (f64, f64),
+        stats: &mut StepStats,
+    ) {
+        let (pipeline, particles) = (&mut self.pipeline, &mut self.particles[..]);
+        let ledger = (&mut self.ledger, time);
+        let rule = match method {
+            Method::Verlet => {
+                let previous = &mut self.methods.previous_positions;
+                return verlet::substep(pipeline, previous, particles, laws, h, stats);
+            }
+            Method::Impulse if resting::applies(laws) => {
+                let scratch = &mut self.methods.resting;
+                return resting::substep(pipeline, scratch, particles, laws, h, stats, ledger);
+            }
+            Method::Seed => Rule::SEED,
+            Method::Impulse | Method::Exact => Rule::IMPULSE,
+        };
+        pipeline.broad_phase(particles, laws, stats);
+        pipeline.narrow_phase(particles, laws, stats);
+        pipeline.resolve(particles, (laws, h), rule, ledger, stats);
+        pipeline.integrate(particles, laws.gravity, h, stats);
+        pipeline.apply_boundary(particles, laws, h, stats);
+    }
+
+    /// Plans again when anything `auto` looks at may have changed (the
+    /// settings, the laws, the disc count, the step) and every
+    /// [`REPLAN_EVERY`] steps for the speeds; readies the pipeline for the
+    /// plan. Returns the method and its substeps.
+    fn replan(&mut self, dt: f64) -> (Method, u32) {
         let key = PlanKey {
-            method: self.method,
-            broad_phase: self.broad_phase,
-            substeps: self.substeps,
-            parallel: self.parallel,
+            choices: self.choices(),
             threads: parallel::threads(),
-            laws: [
-                dt,
-                self.restitution,
-                self.wall_restitution,
-                self.gravity.x,
-                self.gravity.y,
-            ]
-            .map(f64::to_bits),
-            boundary: self.boundary,
-            walls: self.walls,
+            dt: dt.to_bits(),
+            laws: self.laws(),
             particles: self.particles.len(),
         };
-        if self.plan.is_none() || self.plan_key != Some(key) || self.steps % REPLAN_EVERY == 0 {
-            self.plan = Some(auto::plan(
-                &self.particles,
-                &self.laws(),
-                self.choices(),
-                dt,
-            ));
-            self.plan_key = Some(key);
-        }
-        let (method, broad_phase, planned_substeps, parallel) = match &self.plan {
-            Some(p) => (p.method, p.broad_phase, p.substeps, p.parallel),
-            None => (Method::Impulse, BroadPhaseKind::Brute, 1, false),
+        let stale = self.plan_key.as_ref() != Some(&key) || self.steps % REPLAN_EVERY == 0;
+        let plan = match self.plan.take() {
+            Some(plan) if !stale => plan,
+            _ => auto::plan(&self.particles, &key.laws, key.choices, dt),
         };
-        self.pipeline.use_kind(broad_phase);
-        self.pipeline.parallel = parallel;
-        let laws = self.laws();
-        let mut stats = StepStats::default();
-        let mut simulated = dt;
-        // One dimension: the line holds each disc at its place across it,
-        // with no speed across it, before the step and after, whatever the
-        // method (a contact normal off the line cannot move a disc off it).
-        let across = self.constrain.map(|axis| {
-            let k = axis.locked();
-            let held: Vec<f64> = self.particles.iter().map(|p| p.pos[k]).collect();
-            lock_across(&mut self.particles, k, &held);
-            (k, held)
-        });
-        match method {
-            Method::Impulse | Method::Verlet | Method::Seed => {
-                let substeps = if method == Method::Seed {
-                    1
-                } else {
-                    planned_substeps.max(1)
-                };
-                stats.substeps = substeps;
-                self.pipeline.exact.forget();
-                let h = dt / f64::from(substeps);
-                for k in 0..substeps {
-                    let (pipeline, particles) = (&mut self.pipeline, &mut self.particles);
-                    let (ledger, time) = (&mut self.ledger, self.time + f64::from(k) * h);
-                    match method {
-                        Method::Verlet => {
-                            discrete::verlet_substep(pipeline, particles, &laws, h, &mut stats)
-                        }
-                        Method::Seed => discrete::impulse_substep(
-                            pipeline,
-                            particles,
-                            &laws,
-                            h,
-                            Rule::SEED,
-                            &mut stats,
-                            (ledger, time),
-                        ),
-                        _ => discrete::impulse_substep(
-                            pipeline,
-                            particles,
-                            &laws,
-                            h,
-                            Rule::IMPULSE,
-                            &mut stats,
-                            (ledger, time),
-                        ),
-                    }
-                }
-            }
-            Method::Exact => {
-                stats.substeps = 1;
-                simulated = self.pipeline.exact.advance(
-                    &mut self.particles,
-                    &laws,
-                    dt,
-                    &mut stats,
-                    (&mut self.ledger, self.time),
-                );
-            }
+        self.plan_key = Some(key);
+        if self.pipeline.use_kind(plan.broad_phase) {
+            self.methods.exact.forget();
         }
-        if let Some((k, held)) = &across {
-            lock_across(&mut self.particles, *k, held);
-        }
+        self.pipeline.parallel = plan.parallel;
+        let substeps = match plan.method {
+            Method::Seed | Method::Exact => 1,
+            _ => plan.substeps.max(1),
+        };
+        let method = plan.method;
+        self.plan = Some(plan);
+        (method, substeps)
+    }
+
+    /// In one dimension, holds every disc on the line (its place across it,
+    /// no speed across it) and returns the line to hold them to after the
+    /// step, whatever the method did (a contact normal off the line cannot
+    /// move a disc off it).
+    fn hold_to_line(&mut self) -> Option<Line> {
+        let axis = self.constrain?;
+        let line = Line {
+            across: axis.locked(),
+            at: self
+                .particles
+                .iter()
+                .map(|p| p.pos[axis.locked()])
+                .collect(),
+        };
+        line.hold(&mut self.particles);
+        Some(line)
+    }
+
+    /// Adds a step's time and counts to the world's running totals.
+    fn book(&mut self, stats: &StepStats, simulated: f64) {
         self.time += simulated;
         self.steps += 1;
         self.total_pair_collisions += stats.pair_collisions as u64;
         self.total_wall_hits += stats.wall_hits as u64;
         self.resting_contacts = stats.resting_contacts;
         self.total_wall_impulse += stats.wall_impulse;
-        self.last_stats = stats;
-        stats
+        self.last_stats = *stats;
     }
 
     /// Steps until the next pair collision (for at most `limit` seconds) and
@@ -294,7 +303,7 @@ impl World {
         }
         let before = self.ledger.recorded;
         let until = self.time + limit.max(0.0);
-        self.pipeline.exact.stop_at_collision = true;
+        self.methods.exact.stop_at_collision = true;
         while self.ledger.recorded == before && self.time < until {
             let time_before = self.time;
             self.step(dt.min(until - self.time).max(f64::MIN_POSITIVE));
@@ -302,7 +311,7 @@ impl World {
                 break; // no progress (the event cap)
             }
         }
-        self.pipeline.exact.stop_at_collision = false;
+        self.methods.exact.stop_at_collision = false;
         (self.ledger.recorded > before)
             .then(|| self.ledger.last().copied())
             .flatten()
@@ -418,16 +427,27 @@ impl World {
     }
 }
 
-/// Puts every disc back at `held` across the line (axis `k`) with no
-/// velocity across it; values already right are left as they are (bit for
-/// bit, so `exact` carries its calendar on).
-fn lock_across(particles: &mut [Particle], k: usize, held: &[f64]) {
-    for (p, &at) in particles.iter_mut().zip(held) {
-        if p.vel[k] != 0.0 {
-            p.vel[k] = 0.0;
-        }
-        if p.pos[k] != at {
-            p.pos[k] = at;
+/// Where a one-dimensional world's discs sit across its line.
+struct Line {
+    /// The axis across the line.
+    across: usize,
+    /// Each disc's place across the line.
+    at: Vec<f64>,
+}
+
+impl Line {
+    /// Puts every disc back on the line with no velocity across it; values
+    /// already right are left as they are (bit for bit, so `exact` carries
+    /// its calendar on).
+    fn hold(&self, particles: &mut [Particle]) {
+        let k = self.across;
+        for (p, &at) in particles.iter_mut().zip(&self.at) {
+            if p.vel[k] != 0.0 {
+                p.vel[k] = 0.0;
+            }
+            if p.pos[k] != at {
+                p.pos[k] = at;
+            }
         }
     }
 }
@@ -466,6 +486,7 @@ impl Clone for World {
             total_wall_impulse: self.total_wall_impulse,
             ledger: self.ledger.clone(),
             pipeline: Pipeline::new(self.pipeline.kind),
+            methods: MethodState::default(),
             plan: self.plan.clone(),
             plan_key: self.plan_key,
             last_stats: self.last_stats,

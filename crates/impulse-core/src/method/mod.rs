@@ -10,10 +10,11 @@
 //! [`Setting`] lets scene files, the command line and the UI say `auto`
 //! wherever they may name a method or a broad phase.
 
-pub mod discrete;
 pub mod exact;
 pub mod resting;
+pub(crate) mod verlet;
 
+use glam::DVec2;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::fmt;
 use std::str::FromStr;
@@ -69,6 +70,18 @@ impl FromStr for Method {
                 format!("unknown method {s:?}: expected one of seed, impulse, verlet, exact, auto")
             })
     }
+}
+
+/// What the methods keep beside the pipeline's buffers: `exact`'s event
+/// calendar from step to step, and scratch reused from substep to substep.
+#[derive(Default)]
+pub(crate) struct MethodState {
+    /// The exact method's event calendar, carried from step to step.
+    pub(crate) exact: exact::Exact,
+    /// Scratch of the resting-contact substep.
+    pub(crate) resting: resting::Scratch,
+    /// Scratch: positions before a Verlet substep.
+    pub(crate) previous_positions: Vec<DVec2>,
 }
 
 /// `auto`, or a fixed choice.

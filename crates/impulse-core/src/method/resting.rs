@@ -70,6 +70,7 @@ pub(crate) fn applies(laws: &Laws) -> bool {
 /// One impulse-method substep of length `h` with resting contact.
 pub(crate) fn substep(
     pipeline: &mut Pipeline,
+    scratch: &mut Scratch,
     particles: &mut [Particle],
     laws: &Laws,
     h: f64,
@@ -86,7 +87,7 @@ pub(crate) fn substep(
     let Scratch {
         fast_at_walls,
         impacts,
-    } = &mut pipeline.resting;
+    } = scratch;
     fast_at_walls.clear();
     fast_at_walls.extend(
         particles
@@ -170,14 +171,13 @@ pub(crate) fn substep(
     for p in particles.iter_mut() {
         p.pos += p.vel * h;
     }
-    stats.timings.integration += lap.lap();
+    stats.timings.integration += lap.elapsed();
     // The sweeps held the discs at the walls: what the wall stage still
     // catches is a disc that moved into a wall during this substep, counted
     // there as an impact if fast; its resting contacts are counted above.
     let resting = stats.resting_contacts;
     pipeline.apply_boundary(particles, laws, h, stats);
     stats.resting_contacts = resting;
-    stats.timings.boundary += lap.lap();
 }
 
 /// Normal velocity of disc j relative to disc i (negative: approaching).
