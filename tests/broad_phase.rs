@@ -567,7 +567,7 @@ fn random_gas(n: usize, phi: f64, seed: u64) -> World {
         .collect();
     particles.shuffle(&mut rng);
     let mut world = World::new(DVec2::splat(side));
-    world.boundary = Boundary::Periodic;
+    world.laws.boundary = Boundary::Periodic;
     world.particles = particles;
     world
 }

@@ -79,7 +79,7 @@ fn a_bouncing_ball_never_climbs_higher_than_it_fell_from() {
         Boundary::Box,
         vec![disc([2.0, drop_height], [0.0, 0.0], 1.0, 0.25)],
     );
-    w.gravity = DVec2::new(0.0, -9.81);
+    w.laws.gravity = DVec2::new(0.0, -9.81);
     let e0 = w.total_energy();
     let dt = 1.0 / 240.0;
     for _ in 0..(60.0 / dt) as usize {
@@ -118,12 +118,12 @@ fn no_disc_leaves_a_closed_box() {
         for p in &w.particles {
             assert!(p.pos.is_finite() && p.vel.is_finite());
             assert!(
-                p.pos.x >= p.radius && p.pos.x <= w.size.x - p.radius,
+                p.pos.x >= p.radius && p.pos.x <= w.laws.size.x - p.radius,
                 "x {}",
                 p.pos.x
             );
             assert!(
-                p.pos.y >= p.radius && p.pos.y <= w.size.y - p.radius,
+                p.pos.y >= p.radius && p.pos.y <= w.laws.size.y - p.radius,
                 "y {}",
                 p.pos.y
             );
@@ -240,7 +240,7 @@ fn rewinding_and_resuming_replays_the_same_run_bit_for_bit() {
     }
     assert_eq!(world.state_hash(), end);
     history.scrub(&mut world, -100);
-    world.restitution = 0.3;
+    world.laws.restitution = 0.3;
     let before = world.metrics().kinetic_energy;
     for _ in 0..100 {
         world.step(1.0 / 240.0);

@@ -16,7 +16,7 @@ fn disc(pos: [f64; 2], vel: [f64; 2], mass: f64, radius: f64) -> Particle {
 
 fn world(size: [f64; 2], boundary: Boundary, method: Method, discs: Vec<Particle>) -> World {
     let mut w = World::new(size.into());
-    w.boundary = boundary;
+    w.laws.boundary = boundary;
     w.method = Setting::Fixed(method);
     w.particles = discs;
     w
@@ -42,11 +42,13 @@ fn step_sanely(mut w: World, dt: f64, steps: usize, what: &str) -> World {
                 p.pos.is_finite() && p.vel.is_finite(),
                 "{what} {method:?} step {step}: disc {i} not finite: {p:?}"
             );
-            if w.boundary == Boundary::Box {
-                let slack = 1e-9 * w.size.max_element();
+            if w.laws.boundary == Boundary::Box {
+                let slack = 1e-9 * w.laws.size.max_element();
                 assert!(
                     p.pos.cmpge(DVec2::splat(p.radius - slack)).all()
-                        && p.pos.cmple(w.size - DVec2::splat(p.radius - slack)).all(),
+                        && p.pos
+                            .cmple(w.laws.size - DVec2::splat(p.radius - slack))
+                            .all(),
                     "{what} {method:?} step {step}: disc {i} outside the box: {p:?}"
                 );
             }
@@ -54,18 +56,21 @@ fn step_sanely(mut w: World, dt: f64, steps: usize, what: &str) -> World {
     }
     let after = Metrics::measure(&w.particles);
     let method = w.plan().map(|p| p.method);
-    if w.boundary != Boundary::Box && w.gravity == DVec2::ZERO {
+    if w.laws.boundary != Boundary::Box && w.laws.gravity == DVec2::ZERO {
         let drift = (after.momentum - before.momentum).length();
         // Rounding: of the sums, and of positions, which `verlet` turns into
         // velocities by dividing by the step.
-        let rounding = 4.0 * n * before.mass * f64::EPSILON * w.size.max_element() / dt;
+        let rounding = 4.0 * n * before.mass * f64::EPSILON * w.laws.size.max_element() / dt;
         assert!(
             drift <= 1e-9 * scale * (1.0 + n) + rounding,
             "{what} {method:?}: momentum drifted by {drift:e} (scale {scale:e})"
         );
     }
     // Overlaps pushed apart give energy; elastic laws must not, otherwise.
-    if w.restitution == 1.0 && w.wall_restitution == 1.0 && w.gravity == DVec2::ZERO && !overlapping
+    if w.laws.restitution == 1.0
+        && w.laws.wall_restitution == 1.0
+        && w.laws.gravity == DVec2::ZERO
+        && !overlapping
     {
         assert!(
             after.kinetic_energy <= before.kinetic_energy * (1.0 + 1e-6),

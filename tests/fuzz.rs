@@ -220,10 +220,10 @@ fn world_from(
     method: Setting<Method>,
 ) -> World {
     let mut world = World::new(DVec2::new(size.0, size.1));
-    world.boundary = boundary;
-    world.gravity = DVec2::new(0.0, -gravity);
-    world.restitution = restitution.0;
-    world.wall_restitution = restitution.1;
+    world.laws.boundary = boundary;
+    world.laws.gravity = DVec2::new(0.0, -gravity);
+    world.laws.restitution = restitution.0;
+    world.laws.wall_restitution = restitution.1;
     world.method = method;
     for (k, &(fx, fy, vx, vy, radius, mass)) in discs.iter().enumerate() {
         let r = radius.min(size.0 / 2.0).min(size.1 / 2.0) * 0.999;
@@ -344,7 +344,7 @@ fn step_and_check(scene: SceneCase) -> Result<(), TestCaseError> {
     }
     if boundary != Boundary::Box {
         let after = Metrics::measure(&world.particles);
-        let expected = before.momentum + before.mass * world.gravity * world.time;
+        let expected = before.momentum + before.mass * world.laws.gravity * world.time;
         let kicks = before.mass * gravity * world.time;
         let drift = (after.momentum - expected).length();
         // Rounding: of the sums, and of positions, which `verlet` turns
@@ -405,7 +405,7 @@ proptest! {
                 let gap = if overlap > 0.0 {
                     (p.pos - q.pos).length()
                 } else {
-                    boundary.separation(p.pos, q.pos, world.size).length()
+                    boundary.separation(p.pos, q.pos, world.laws.size).length()
                 };
                 let allowed = overlap * 2.0 * p.radius.min(q.radius);
                 prop_assert!(

@@ -43,7 +43,7 @@ fn the_pile_comes_to_rest_and_stops_counting() {
     // Its kinetic energy is down at the jitter floor: a resting disc gains
     // g·h towards its support each step and loses it at the contact, so
     // each carries about ½·m·(g·h)² (allow twice that).
-    let v = w.gravity.length() * DT;
+    let v = w.laws.gravity.length() * DT;
     let floor: f64 = w.particles.iter().map(|p| 0.5 * p.mass * v * v).sum();
     let ke = w.metrics().kinetic_energy;
     assert!(
@@ -73,9 +73,9 @@ fn a_dropped_ball_counts_its_bounces_and_then_rests() {
     // count the bounces they make, which may be fewer)
     for method in [Method::Exact, Method::Impulse] {
         let mut w = World::new(DVec2::new(4.0, 4.0));
-        w.gravity = DVec2::new(0.0, -g);
-        w.wall_restitution = e;
-        w.restitution = 0.5;
+        w.laws.gravity = DVec2::new(0.0, -g);
+        w.laws.wall_restitution = e;
+        w.laws.restitution = 0.5;
         w.method = Setting::Fixed(method);
         w.particles = vec![Particle::new(
             DVec2::new(2.0, height),
@@ -108,7 +108,7 @@ fn a_dropped_ball_counts_its_bounces_and_then_rests() {
         let p = &w.particles[0];
         assert!(
             // (impulse holds a resting disc within its slop of the floor)
-            p.pos.y < 0.5 + 0.01 && p.vel.y.abs() <= threshold(w.gravity, DT),
+            p.pos.y < 0.5 + 0.01 && p.vel.y.abs() <= threshold(w.laws.gravity, DT),
             "{method:?}: not at rest on the floor: {p:?}"
         );
     }

@@ -40,7 +40,7 @@ fn exact_head_on_matches_the_formula() {
                 ),
                 Method::Exact,
             );
-            w.restitution = e;
+            w.laws.restitution = e;
             w.step(2.0);
             let vcm = (2.0 * m1 - m2) / (m1 + m2);
             let want = [vcm - e * (2.0 - vcm), vcm - e * (-1.0 - vcm)];
@@ -82,8 +82,8 @@ fn exact_keeps_energy_in_an_elastic_box_gas_and_never_overlaps() {
     assert!(drift < 1e-12, "energy drift {drift:e}");
     assert!(max_overlap < 1e-9, "overlap {max_overlap:e} m");
     for p in &w.particles {
-        assert!(p.pos.x >= p.radius - 1e-9 && p.pos.x <= w.size.x - p.radius + 1e-9);
-        assert!(p.pos.y >= p.radius - 1e-9 && p.pos.y <= w.size.y - p.radius + 1e-9);
+        assert!(p.pos.x >= p.radius - 1e-9 && p.pos.x <= w.laws.size.x - p.radius + 1e-9);
+        assert!(p.pos.y >= p.radius - 1e-9 && p.pos.y <= w.laws.size.y - p.radius + 1e-9);
     }
 }
 
@@ -150,7 +150,7 @@ fn exact_drops_a_ball_on_the_floor_at_the_analytic_time() {
         ),
         Method::Exact,
     );
-    w.gravity = DVec2::new(0.0, -g);
+    w.laws.gravity = DVec2::new(0.0, -g);
     let t_hit = (2.0 * (h - r) / g).sqrt();
     w.step(t_hit * 0.999);
     assert_eq!(w.total_wall_hits, 0);
@@ -217,8 +217,8 @@ fn a_bullet_does_not_tunnel_with_exact_or_auto_substeps() {
 fn every_method_stays_finite_and_inside_under_gravity() {
     for method in Method::ALL {
         let mut w = with_method(gas(150, Boundary::Box, 9), method);
-        w.gravity = DVec2::new(0.0, -9.81);
-        w.restitution = 0.8;
+        w.laws.gravity = DVec2::new(0.0, -9.81);
+        w.laws.restitution = 0.8;
         for _ in 0..200 {
             let stats = w.step(1.0 / 120.0);
             assert!(!stats.truncated, "{method:?}");
@@ -242,8 +242,8 @@ fn auto_models_no_more_than_the_scene_needs() {
     w.substeps = Setting::Auto;
     assert_eq!(w.plan_for(0.01).method, Method::Exact);
     // A settling pile: impulse, never exact.
-    w.gravity = DVec2::new(0.0, -9.81);
-    w.restitution = 0.5;
+    w.laws.gravity = DVec2::new(0.0, -9.81);
+    w.laws.restitution = 0.5;
     let plan = w.plan_for(0.01);
     assert_eq!(plan.method, Method::Impulse);
     assert!(plan.reason.contains("rest"), "{}", plan.reason);
@@ -258,15 +258,15 @@ fn auto_models_no_more_than_the_scene_needs() {
     let mut big = gas(2000, Boundary::Periodic, 1);
     big.method = Setting::Auto;
     big.broad_phase = Setting::Auto;
-    let cost = exact_cost_per_second(&big.particles, &big.laws(), 0.01);
+    let cost = exact_cost_per_second(&big.particles, &big.laws, 0.01);
     assert_eq!(big.plan_for(0.01).method, Method::Exact, "{cost}");
-    assert!(exact_cost_per_second(&big.particles, &big.laws(), 1e-4) > 5.0 * cost);
+    assert!(exact_cost_per_second(&big.particles, &big.laws, 1e-4) > 5.0 * cost);
     assert_eq!(big.plan_for(1e-4).method, Method::Impulse);
     let mut hot = big.clone();
     for p in &mut hot.particles {
         p.vel *= 1000.0;
     }
-    assert!(exact_cost_per_second(&hot.particles, &hot.laws(), 0.01) > 10.0 * cost);
+    assert!(exact_cost_per_second(&hot.particles, &hot.laws, 0.01) > 10.0 * cost);
     assert_eq!(hot.plan_for(0.01).method, Method::Impulse);
     let mut many = gas(100_000, Boundary::Periodic, 1);
     many.method = Setting::Auto;
@@ -281,9 +281,9 @@ fn auto_models_no_more_than_the_scene_needs() {
         p.radius = 5.0;
     }
     assert!(
-        grid_crowding(&big.particles, &big.laws()) > 8.0,
+        grid_crowding(&big.particles, &big.laws) > 8.0,
         "{}",
-        grid_crowding(&big.particles, &big.laws())
+        grid_crowding(&big.particles, &big.laws)
     );
     assert_eq!(big.plan_for(0.01).broad_phase, BroadPhaseKind::Quadtree);
     let mut few = gas(10, Boundary::Box, 1);
@@ -337,9 +337,9 @@ fn impulse_holds_a_stack_at_rest_whatever_the_masses() {
     use impulse::method::resting::SLOP;
     let r = 0.25;
     let mut w = World::new(DVec2::new(2.0 * r, 20.0));
-    w.gravity = DVec2::new(0.0, -9.81);
-    w.restitution = 0.5;
-    w.wall_restitution = 0.5;
+    w.laws.gravity = DVec2::new(0.0, -9.81);
+    w.laws.restitution = 0.5;
+    w.laws.wall_restitution = 0.5;
     w.method = Setting::Fixed(Method::Impulse);
     for k in 0..10 {
         let mass = if k == 9 { 400.0 } else { 1.0 };
@@ -373,9 +373,9 @@ fn impulse_under_gravity_still_bounces_impacts_with_restitution() {
     // e²·H (to the step's resolution).
     let (g, e, r, drop) = (9.81, 0.5, 0.25, 2.0);
     let mut w = World::new(DVec2::new(4.0, 10.0));
-    w.gravity = DVec2::new(0.0, -g);
-    w.restitution = e;
-    w.wall_restitution = e;
+    w.laws.gravity = DVec2::new(0.0, -g);
+    w.laws.restitution = e;
+    w.laws.wall_restitution = e;
     w.method = Setting::Fixed(Method::Impulse);
     w.particles.push(disc([1.0, r + drop], [0.0, 0.0], 1.0, r)); // onto the floor
     w.particles.push(disc([3.0, r], [0.0, 0.0], 1e6, r)); // a resting, heavy base

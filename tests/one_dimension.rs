@@ -9,10 +9,10 @@ const DT: f64 = impulse::scene::DEFAULT_DT;
 
 fn line_world(method: Method, offset: f64) -> World {
     let mut w = World::new(DVec2::new(16.0, 10.0));
-    w.constrain = Some(Axis::X);
+    w.laws.constrain = Some(Axis::X);
     w.method = Setting::Fixed(method);
-    w.restitution = 0.5;
-    w.gravity = DVec2::new(0.0, -9.81); // held by the line
+    w.laws.restitution = 0.5;
+    w.laws.gravity = DVec2::new(0.0, -9.81); // held by the line
     w.particles = vec![
         Particle::new(
             DVec2::new(3.0, 5.0),
@@ -69,7 +69,7 @@ fn a_scene_says_constrain_and_a_save_keeps_it() {
     let text = "[world]\nsize = [10.0, 4.0]\nconstrain = \"x\"\n";
     let scene = impulse::Scene::parse(text, "t.toml").unwrap();
     let world = scene.build("t.toml").unwrap();
-    assert_eq!(world.constrain, Some(Axis::X));
+    assert_eq!(world.laws.constrain, Some(Axis::X));
     let again = impulse::Scene::from_world(&world, None, None).to_toml();
     assert!(again.contains("constrain = \"x\""), "{again}");
     let bad = text.replace("\"x\"", "\"z\"");

@@ -60,8 +60,8 @@ fn gas(method: Method, boundary: Boundary, gravity: bool) -> World {
     world.broad_phase = Setting::Fixed(BroadPhaseKind::Grid);
     world.substeps = Setting::Fixed(1);
     if gravity {
-        world.gravity = DVec2::new(0.0, -9.81);
-        world.restitution = 0.5;
+        world.laws.gravity = DVec2::new(0.0, -9.81);
+        world.laws.restitution = 0.5;
     }
     world
 }
@@ -143,7 +143,7 @@ fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
             ..Gas::default()
         }
         .build_fixed(method, BroadPhaseKind::Grid);
-        world.restitution = 0.9;
+        world.laws.restitution = 0.9;
         let mut probe = world.clone();
         let contacts: Vec<usize> = (0..4).map(|_| probe.step(0.02).contacts).collect();
         assert!(

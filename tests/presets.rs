@@ -126,7 +126,7 @@ fn check_head_on(file: &str) -> ([(f64, f64); 2], [f64; 2]) {
     let before = head_on_pair(&world, file);
     let [(m1, v1), (m2, v2)] = before;
     through_the_first_collision(&mut world, dt, file);
-    let (want1, want2) = head_on(m1, v1, m2, v2, world.restitution);
+    let (want1, want2) = head_on(m1, v1, m2, v2, world.laws.restitution);
     let tol = 1e-9 * v1.abs().max(v2.abs());
     let [a, b] = [world.particles[0].vel, world.particles[1].vel];
     assert_close(a.x, want1, tol, &format!("{file}: first disc's velocity"));
@@ -145,7 +145,7 @@ fn every_preset_parses_builds_and_has_a_short_name_and_a_one_line_description() 
         let world = scene
             .build(&file.to_string())
             .unwrap_or_else(|e| panic!("{e}"));
-        assert!(world.size.min_element() > 0.0, "{file}: empty box");
+        assert!(world.laws.size.min_element() > 0.0, "{file}: empty box");
         let name = scene.name.as_deref().unwrap_or("");
         assert!(!name.trim().is_empty(), "{file}: no name");
         assert!(
@@ -179,10 +179,16 @@ fn every_digit_key_has_exactly_one_preset_and_there_is_an_empty_box() {
     }
     let (_, empty) = load("preset-empty.toml");
     assert!(empty.particles.is_empty(), "the empty box has discs");
-    assert_eq!(empty.gravity, DVec2::ZERO, "the empty box has gravity");
-    assert_eq!((empty.restitution, empty.wall_restitution), (1.0, 1.0));
+    assert_eq!(empty.laws.gravity, DVec2::ZERO, "the empty box has gravity");
+    assert_eq!(
+        (empty.laws.restitution, empty.laws.wall_restitution),
+        (1.0, 1.0)
+    );
     let (_, default) = load("default.toml");
-    assert_eq!(empty.size, default.size, "not the default scene's box");
+    assert_eq!(
+        empty.laws.size, default.laws.size,
+        "not the default scene's box"
+    );
 }
 
 #[test]
@@ -234,7 +240,7 @@ fn heavy_hits_light_matches_the_1d_elastic_formulas() {
         heavy.vel.x != 0.0 && light.vel == DVec2::ZERO,
         "light at rest"
     );
-    assert_eq!(world.restitution, 1.0, "{file}: not elastic");
+    assert_eq!(world.laws.restitution, 1.0, "{file}: not elastic");
     let ([(m1, v1), (m2, _)], [after1, after2]) = check_head_on(file);
     // The advertised outcome: the heavy one keeps going, slower; the light
     // one leaves faster than the heavy one came (2m₁/(m₁ + m₂) > 1).
@@ -259,7 +265,7 @@ fn light_hits_heavy_matches_the_1d_elastic_formulas() {
         light.vel.x != 0.0 && heavy.vel == DVec2::ZERO,
         "heavy at rest"
     );
-    assert_eq!(world.restitution, 1.0, "{file}: not elastic");
+    assert_eq!(world.laws.restitution, 1.0, "{file}: not elastic");
     let ([(m1, v1), (m2, _)], [after1, after2]) = check_head_on(file);
     // The advertised outcome: the light one bounces back, the heavy one
     // moves on slowly in the light one's original direction.
@@ -279,7 +285,7 @@ fn glancing_equal_masses_leave_at_right_angles() {
         panic!("{file}: want two discs");
     };
     assert_eq!(a.mass, b.mass, "{file}: masses differ");
-    assert_eq!(world.restitution, 1.0, "{file}: not elastic");
+    assert_eq!(world.laws.restitution, 1.0, "{file}: not elastic");
     assert!(
         a.vel == DVec2::ZERO || b.vel == DVec2::ZERO,
         "{file}: the 90° rule needs a target at rest"
@@ -318,7 +324,7 @@ fn glancing_equal_masses_leave_at_right_angles() {
 fn perfectly_inelastic_pair_moves_on_together_at_the_momentum_conserving_speed() {
     let file = "preset-5-inelastic.toml";
     let (mut world, dt) = exact(file);
-    assert_eq!(world.restitution, 0.0, "{file}: restitution is not 0");
+    assert_eq!(world.laws.restitution, 0.0, "{file}: restitution is not 0");
     let [(m1, v1), (m2, v2)] = head_on_pair(&world, file);
     assert_eq!(m1, m2, "{file}: masses differ");
     let energy_before = kinetic_energy(&world);
@@ -350,7 +356,7 @@ fn perfectly_inelastic_pair_moves_on_together_at_the_momentum_conserving_speed()
 fn cradle_last_disc_leaves_at_the_arrival_speed_and_the_others_stay() {
     let file = "preset-6-cradle.toml";
     let (mut world, dt) = exact(file);
-    assert_eq!(world.restitution, 1.0, "{file}: not elastic");
+    assert_eq!(world.laws.restitution, 1.0, "{file}: not elastic");
     let moving: Vec<usize> = (0..world.particles.len())
         .filter(|&k| world.particles[k].vel != DVec2::ZERO)
         .collect();
@@ -405,7 +411,10 @@ fn pi_blocks_count_31_collisions_for_a_mass_ratio_of_100() {
     assert_eq!(light.pos.y, heavy.pos.y, "{file}: not on one line");
     assert!(light.pos.x < heavy.pos.x, "light between wall and heavy");
     assert!(light.vel == DVec2::ZERO && heavy.vel.x < 0.0 && heavy.vel.y == 0.0);
-    assert_eq!((world.restitution, world.wall_restitution), (1.0, 1.0));
+    assert_eq!(
+        (world.laws.restitution, world.laws.wall_restitution),
+        (1.0, 1.0)
+    );
     let ratio = heavy.mass / light.mass;
     assert_close(ratio, 100.0, 1e-12, "mass ratio");
     // Mass ratio 100^k counts ⌊π·10^k⌋ = ⌊π·√ratio⌋ collisions.
@@ -432,9 +441,14 @@ fn billiards_break_keeps_momentum_until_the_first_cushion_and_energy_between_bal
     let file = "preset-9-billiards.toml";
     let (mut world, dt) = exact(file);
     assert_eq!(world.particles.len(), 16, "{file}: cue ball and 15 balls");
-    assert_eq!(world.gravity, DVec2::ZERO, "{file}: gravity");
-    assert_eq!(world.restitution, 1.0, "{file}: balls not elastic");
-    assert_close(world.wall_restitution, 0.9, 0.05, "cushion restitution");
+    assert_eq!(world.laws.gravity, DVec2::ZERO, "{file}: gravity");
+    assert_eq!(world.laws.restitution, 1.0, "{file}: balls not elastic");
+    assert_close(
+        world.laws.wall_restitution,
+        0.9,
+        0.05,
+        "cushion restitution",
+    );
     let first = world.particles[0];
     for p in &world.particles {
         assert_eq!((p.mass, p.radius), (first.mass, first.radius), "unequal");
@@ -483,7 +497,10 @@ fn gas_keeps_its_energy_and_spreads_from_one_speed_towards_maxwell_boltzmann() {
         (150..=250).contains(&n),
         "{file}: {n} discs, want about 200"
     );
-    assert_eq!((world.restitution, world.wall_restitution), (1.0, 1.0));
+    assert_eq!(
+        (world.laws.restitution, world.laws.wall_restitution),
+        (1.0, 1.0)
+    );
     let first = world.particles[0];
     let speed = first.vel.length();
     for p in &world.particles {
@@ -508,7 +525,7 @@ fn gas_keeps_its_energy_and_spreads_from_one_speed_towards_maxwell_boltzmann() {
     for p in &world.particles {
         let r = DVec2::splat(p.radius);
         assert!(
-            p.pos.cmpge(r).all() && p.pos.cmple(world.size - r).all(),
+            p.pos.cmpge(r).all() && p.pos.cmple(world.laws.size - r).all(),
             "{file}: a disc left the box: {}",
             p.pos
         );
@@ -520,10 +537,10 @@ fn pile_settles_inside_the_box_under_auto_within_six_seconds() {
     let file = "preset-0-pile.toml";
     let (scene, mut world) = load(file);
     let dt = scene.simulation.dt.unwrap_or(WINDOW_DT);
-    let g = world.gravity.length();
+    let g = world.laws.gravity.length();
     assert!(g > 0.0, "{file}: no gravity");
     assert!(
-        world.restitution < 1.0,
+        world.laws.restitution < 1.0,
         "{file}: elastic discs never settle"
     );
     // Potential energy the discs can give up: each disc's bottom above the
@@ -538,7 +555,7 @@ fn pile_settles_inside_the_box_under_auto_within_six_seconds() {
     for (k, p) in world.particles.iter().enumerate() {
         let r = DVec2::splat(p.radius - tol * p.radius);
         assert!(
-            p.pos.cmpge(r).all() && p.pos.cmple(world.size - r).all(),
+            p.pos.cmpge(r).all() && p.pos.cmple(world.laws.size - r).all(),
             "{file}: disc {k} outside the box at {}",
             p.pos
         );

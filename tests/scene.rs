@@ -17,7 +17,7 @@ fn every_shipped_scene_loads_and_builds() {
     for file in impulse::catalogue::ALL {
         let scene = Scene::parse(file.text, file.path).unwrap_or_else(|e| panic!("{e}"));
         let world = scene.build(file.path).unwrap_or_else(|e| panic!("{e}"));
-        assert!(world.size.min_element() > 0.0);
+        assert!(world.laws.size.min_element() > 0.0);
     }
 }
 
@@ -136,7 +136,7 @@ fn a_saved_world_reloads_bit_for_bit() {
         .build("saved")
         .unwrap();
     assert_eq!(reloaded.particles, world.particles);
-    assert_eq!(reloaded.restitution, world.restitution);
+    assert_eq!(reloaded.laws.restitution, world.laws.restitution);
     // Stepping both gives the same future.
     let (mut a, mut b) = (world.clone(), reloaded);
     b.time = a.time;

@@ -30,7 +30,7 @@ fn head_on_matches_the_formula_for_mass_ratios_and_restitutions() {
                     disc([12.0, 50.0], [v2, 0.0], m2, 0.5),
                 ],
             );
-            w.restitution = e;
+            w.laws.restitution = e;
             let p0 = w.metrics().momentum;
             for _ in 0..2000 {
                 w.step(1e-3);
@@ -166,7 +166,7 @@ fn the_ledger_records_each_collision_with_its_momentum_and_energy() {
                 disc([14.0, 20.6], [0.0, 0.0], 3.0, 0.5),
             ],
         );
-        w.restitution = 0.5;
+        w.laws.restitution = 0.5;
         w.method = Setting::Fixed(method);
         w.ledger.keep(8);
         for _ in 0..(4 * 240) {

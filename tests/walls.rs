@@ -16,9 +16,9 @@ fn disc(pos: [f64; 2], vel: [f64; 2]) -> Particle {
 /// A 10 m box with a wall on the left and on the floor only.
 fn world(method: Method, gravity: f64) -> World {
     let mut w = World::new(DVec2::new(10.0, 10.0));
-    w.walls = Walls::from_names(&["left", "bottom"]).unwrap();
+    w.laws.walls = Walls::from_names(&["left", "bottom"]).unwrap();
     w.method = Setting::Fixed(method);
-    w.gravity = DVec2::new(0.0, -gravity);
+    w.laws.gravity = DVec2::new(0.0, -gravity);
     w
 }
 
@@ -104,7 +104,7 @@ fn a_scene_names_its_walls_and_a_save_keeps_them() {
     "#;
     let scene = impulse::Scene::parse(text, "t.toml").expect("a disc beyond an open side is fine");
     let world = scene.build("t.toml").unwrap();
-    assert_eq!(world.walls, Walls::from_names(&["left"]).unwrap());
+    assert_eq!(world.laws.walls, Walls::from_names(&["left"]).unwrap());
     let again = impulse::Scene::from_world(&world, None, None).to_toml();
     assert!(again.contains("walls = [\"left\"]"), "{again}");
     let bad = text.replace("[\"left\"]", "[\"floor\"]");
@@ -120,7 +120,7 @@ fn a_scene_names_its_walls_and_a_save_keeps_them() {
     // Four walls are the default and are not written out.
     let boxed = impulse::Scene::from_world(&World::new(DVec2::ONE), None, None).to_toml();
     assert!(!boxed.contains("walls"), "{boxed}");
-    assert_eq!(World::new(DVec2::ONE).boundary, Boundary::Box);
+    assert_eq!(World::new(DVec2::ONE).laws.boundary, Boundary::Box);
 }
 
 /// ⌊π·10^k⌋ for a mass ratio of 100^k.

@@ -222,7 +222,7 @@ mod tests {
             )
         };
         world.particles = vec![disc(50.0, 0.001), disc(-500.0, 1.0), disc(60.0, 2.0)];
-        let camera = Camera::fitting(world.size, DVec2::new(800.0, 800.0), 0.0);
+        let camera = Camera::fitting(world.laws.size, DVec2::new(800.0, 800.0), 0.0);
         let mut out = Vec::new();
         instances(&world, &camera, |_| impulse::Color::palette(3), &mut out);
         assert_eq!(out.len(), 2, "the disc at x = -500 m is off screen");

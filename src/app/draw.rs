@@ -92,8 +92,8 @@ fn px(v: DVec2) -> Vec2 {
 
 /// The walls (solid for a box, dashed for periodic, faint for open space).
 pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
-    let a = px(camera.world_to_screen(DVec2::new(0.0, world.size.y)));
-    let b = px(camera.world_to_screen(DVec2::new(world.size.x, 0.0)));
+    let a = px(camera.world_to_screen(DVec2::new(0.0, world.laws.size.y)));
+    let b = px(camera.world_to_screen(DVec2::new(world.laws.size.x, 0.0)));
     let (w, h) = (b.x - a.x, b.y - a.y);
     draw_rectangle(a.x, a.y, w, h, color(look.colors.inside));
     let wall = color(look.colors.wall);
@@ -105,21 +105,21 @@ pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
         (vec2(a.x, b.y), b),
         (a, vec2(b.x, a.y)),
     ];
-    let walled = match world.boundary {
-        Boundary::Box => world.walls.sides(),
+    let walled = match world.laws.boundary {
+        Boundary::Box => world.laws.walls.sides(),
         Boundary::Periodic | Boundary::Open => [false; 4],
     };
     // One dimension: a rail through the discs' line (drawn under them, like
     // beads on a wire), and only the walls at its ends (the sides along it
     // play no part).
     let mut skip = [false; 4];
-    if let (Some(axis), Some(first)) = (world.constrain, world.particles.first()) {
+    if let (Some(axis), Some(first)) = (world.laws.constrain, world.particles.first()) {
         let along = axis.index();
         let at = first.pos;
         let mut from = at;
         from[along] = 0.0;
         let mut to = at;
-        to[along] = world.size[along];
+        to[along] = world.laws.size[along];
         let (a, b) = (
             px(camera.world_to_screen(from)),
             px(camera.world_to_screen(to)),

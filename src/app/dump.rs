@@ -53,18 +53,10 @@ pub struct StateDump<'a> {
     pub substeps: String,
     /// What the last step used.
     pub plan: Option<impulse::auto::Plan>,
-    /// Particle restitution.
-    pub restitution: f64,
-    /// Wall restitution.
-    pub wall_restitution: f64,
-    /// Gravity (m/s², y up).
-    pub gravity: [f64; 2],
-    /// Edges: "box", "open" or "periodic".
-    pub boundary: String,
-    /// The sides of a box that have walls.
-    pub walls: Vec<&'static str>,
-    /// One dimension: the axis discs move along.
-    pub constrain: Option<impulse::Axis>,
+    /// The world's size and laws, as in a scene file's `[world]` table
+    /// (`walls` only when a box lacks some).
+    #[serde(flatten)]
+    pub laws: impulse::laws::Laws,
     /// What the method cannot promise right now, as the top bar says it.
     pub warnings: Vec<impulse::warnings::Warning>,
     /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
@@ -85,8 +77,6 @@ pub struct StateDump<'a> {
     /// Autosave: the recovery file, saves written, the last failure, and
     /// whether an earlier session is being offered.
     pub recovery: RecoveryDump,
-    /// World size (m).
-    pub size: [f64; 2],
     /// Totals.
     pub metrics: Metrics,
     /// Every disc.
@@ -191,12 +181,7 @@ impl<'a> StateDump<'a> {
             broad_phase: world.broad_phase.to_string(),
             substeps: world.substeps.to_string(),
             plan: world.plan().cloned(),
-            restitution: world.restitution,
-            wall_restitution: world.wall_restitution,
-            gravity: world.gravity.to_array(),
-            boundary: world.boundary.name().to_string(),
-            walls: world.walls.names(),
-            constrain: world.constrain,
+            laws: world.laws,
             warnings: Vec::new(),
             pi_result: None,
             panel_visible: false,
@@ -206,7 +191,6 @@ impl<'a> StateDump<'a> {
             realtime: RealtimeDump::default(),
             timing: Default::default(),
             recovery: RecoveryDump::default(),
-            size: world.size.to_array(),
             metrics: world.metrics(),
             particles: &world.particles,
         }

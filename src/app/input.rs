@@ -233,15 +233,19 @@ impl App {
     fn handle_world_keys(&mut self) {
         if is_key_pressed(KeyCode::E) {
             self.remember("restitution");
-            self.world.restitution = nudge_restitution(self.world.restitution, !shift());
-            self.toast(format!("Restitution e = {:.1}", self.world.restitution));
+            self.world.laws.restitution = nudge_restitution(self.world.laws.restitution, !shift());
+            self.toast(format!(
+                "Restitution e = {:.1}",
+                self.world.laws.restitution
+            ));
         }
         if is_key_pressed(KeyCode::W) {
             self.remember("wall restitution");
-            self.world.wall_restitution = nudge_restitution(self.world.wall_restitution, !shift());
+            self.world.laws.wall_restitution =
+                nudge_restitution(self.world.laws.wall_restitution, !shift());
             self.toast(format!(
                 "Wall restitution = {:.1}",
-                self.world.wall_restitution
+                self.world.laws.wall_restitution
             ));
         }
         if is_key_pressed(KeyCode::Y) {
@@ -261,12 +265,15 @@ impl App {
         }
         if is_key_pressed(KeyCode::G) {
             self.remember("gravity");
-            self.world.gravity = if self.world.gravity == DVec2::ZERO {
+            self.world.laws.gravity = if self.world.laws.gravity == DVec2::ZERO {
                 DVec2::new(0.0, -EARTH_GRAVITY)
             } else {
                 DVec2::ZERO
             };
-            self.toast(format!("Gravity {:.2} m/s²", self.world.gravity.length()));
+            self.toast(format!(
+                "Gravity {:.2} m/s²",
+                self.world.laws.gravity.length()
+            ));
         }
         if is_key_pressed(KeyCode::PageUp) || is_key_pressed(KeyCode::PageDown) {
             let factor = if is_key_pressed(KeyCode::PageUp) {
@@ -274,7 +281,7 @@ impl App {
             } else {
                 0.8
             };
-            let biggest = 0.45 * self.world.size.min_element();
+            let biggest = 0.45 * self.world.laws.size.min_element();
             self.new_disc.radius = (self.new_disc.radius * factor).clamp(0.01, biggest);
             self.toast(format!("New discs: radius {:.2} m", self.new_disc.radius));
         }
@@ -303,7 +310,7 @@ impl App {
     pub(super) fn new_disc_now(&self) -> super::interaction::NewDisc {
         let mut d = self.new_disc;
         if self.size_follows_mass {
-            let biggest = 0.45 * self.world.size.min_element();
+            let biggest = 0.45 * self.world.laws.size.min_element();
             d.radius = super::interaction::radius_for_mass(d.mass).min(biggest);
         }
         d

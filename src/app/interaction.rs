@@ -189,9 +189,11 @@ impl Gesture {
         else {
             return;
         };
-        let (Some(&(_, cursor)), size, edges) =
-            (trail.back(), world.size, (world.boundary, world.walls))
-        else {
+        let (Some(&(_, cursor)), size, edges) = (
+            trail.back(),
+            world.laws.size,
+            (world.laws.boundary, world.laws.walls),
+        ) else {
             return;
         };
         let velocity = trail_velocity(trail);

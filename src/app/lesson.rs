@@ -283,7 +283,8 @@ pub fn pi_decimals(world: &impulse::World) -> Option<u32> {
     let [a, b] = world.particles.as_slice() else {
         return None;
     };
-    let one_wall = world.boundary == impulse::Boundary::Box && world.walls.names().len() == 1;
+    let one_wall =
+        world.laws.boundary == impulse::Boundary::Box && world.laws.walls.names().len() == 1;
     let k = (a.mass.max(b.mass) / a.mass.min(b.mass)).log10() / 2.0;
     let round = k.round();
     (one_wall && (k - round).abs() < 1e-9 && (0.0..=8.0).contains(&round)).then_some(round as u32)
@@ -348,7 +349,7 @@ mod tests {
     #[test]
     fn other_scenes_are_not_pi_blocks() {
         let mut world = pi_world("preset-7-pi-blocks.toml");
-        world.walls = impulse::Walls::ALL;
+        world.laws.walls = impulse::Walls::ALL;
         assert_eq!(pi_decimals(&world), None, "four walls never end the count");
         let mut world = pi_world("preset-7-pi-blocks.toml");
         world.particles[1].mass = 50.0;

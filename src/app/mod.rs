@@ -232,7 +232,7 @@ impl App {
         let dt = scene.step_for(options.dt);
         let mut clock = FixedStepClock::new(dt, 64);
         clock.paused = options.paused;
-        let size = world.size;
+        let size = world.laws.size;
         let path = options.scene.as_ref().map(|p| p.display().to_string());
         let options_keep_all = options.frame_stats.is_some();
         let (recovery, recovery_problem) =

@@ -264,7 +264,7 @@ impl App {
     }
 
     fn put_back(&mut self, moment: super::undo::Moment) {
-        let resized = moment.world.size != self.world.size;
+        let resized = moment.world.laws.size != self.world.laws.size;
         self.world = moment.world;
         self.scene = moment.scene;
         self.scene_origin = moment.origin;

@@ -106,7 +106,7 @@ fn gas(gravity: bool) -> World {
     }
     .build();
     if gravity {
-        world.gravity = DVec2::new(0.0, -9.81);
+        world.laws.gravity = DVec2::new(0.0, -9.81);
     }
     world
 }

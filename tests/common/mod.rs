@@ -17,7 +17,7 @@ pub fn disc(pos: [f64; 2], vel: [f64; 2], mass: f64, radius: f64) -> Particle {
 /// A world of the given size, boundary and discs; no gravity, e = 1.
 pub fn world_with(size: [f64; 2], boundary: Boundary, particles: Vec<Particle>) -> World {
     let mut w = World::new(DVec2::from(size));
-    w.boundary = boundary;
+    w.laws.boundary = boundary;
     w.particles = particles;
     w
 }

@@ -1,23 +1,68 @@
-//! The physical laws of a world as the methods see them: copied out of the
-//! [`crate::world::World`] for one step, so the methods depend on this and
-//! not on the world.
+//! The physical laws of a world, declared once: the [`crate::world::World`]
+//! holds them, a scene file's `[world]` table is them (serde), and the
+//! methods read a copy for each step ([`Laws::in_effect`]), so they depend
+//! on this and not on the world.
 
-use crate::boundary::{Boundary, Walls};
+use crate::boundary::{Axis, Boundary, Walls};
 use glam::DVec2;
+use serde::{Deserialize, Serialize};
 
-/// The physical laws of a world, copied out for the methods.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The size of a world and the laws its discs obey.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Laws {
-    /// World size (m).
+    /// Width and height of the world rectangle (0,0)–`size` (m).
     pub size: DVec2,
-    /// Gravity (m/s²).
+    /// Uniform gravitational acceleration (m/s²); y is up.
+    #[serde(default)]
     pub gravity: DVec2,
-    /// Restitution between discs.
+    /// Coefficient of restitution e between discs, 0 (sticky) to 1 (elastic).
+    #[serde(default = "one")]
     pub restitution: f64,
-    /// Restitution at walls.
+    /// Coefficient of restitution at the walls.
+    #[serde(default = "one")]
     pub wall_restitution: f64,
-    /// Edge behaviour.
+    /// What the edges do.
+    #[serde(default)]
     pub boundary: Boundary,
-    /// Which sides of a box have walls.
+    /// The sides of a box that have walls (all four when absent).
+    #[serde(default, skip_serializing_if = "all_walls")]
     pub walls: Walls,
+    /// A one-dimensional world: the only axis discs move along ("x" or "y").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub constrain: Option<Axis>,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+fn all_walls(walls: &Walls) -> bool {
+    walls.all()
+}
+
+impl Laws {
+    /// A closed box of the given size: no gravity, elastic everywhere, two
+    /// dimensions.
+    pub fn new(size: DVec2) -> Self {
+        Laws {
+            size,
+            gravity: DVec2::ZERO,
+            restitution: 1.0,
+            wall_restitution: 1.0,
+            boundary: Boundary::Box,
+            walls: Walls::ALL,
+            constrain: None,
+        }
+    }
+
+    /// The laws as a step applies them: in one dimension, gravity across
+    /// the line is held by the line and drops out.
+    pub fn in_effect(&self) -> Laws {
+        let mut laws = *self;
+        if let Some(axis) = self.constrain {
+            laws.gravity[axis.locked()] = 0.0;
+        }
+        laws
+    }
 }

@@ -68,7 +68,7 @@ impl Gas {
         let jitter = (0.5 * (spacing - 2.0 * self.radius)).max(0.0) * 0.999;
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
         let mut world = World::new(DVec2::splat(side));
-        world.boundary = self.boundary;
+        world.laws.boundary = self.boundary;
         world.particles = (0..self.count)
             .map(|k| {
                 let cell = DVec2::new((k % per_row) as f64 + 0.5, (k / per_row) as f64 + 0.5);

@@ -43,7 +43,7 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
             code: VERLET,
             text: format!(
                 "verlet: collisions lose energy; the restitution e = {} is not honoured",
-                trim(world.restitution)
+                trim(world.laws.restitution)
             ),
         }),
         Method::Seed if several => out.push(Warning {

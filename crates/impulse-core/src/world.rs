@@ -2,7 +2,7 @@
 //! chosen collision method over the shared pipeline.
 
 use crate::auto::{self, Plan};
-use crate::boundary::{Axis, Boundary, Walls};
+use crate::boundary::{Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
 pub use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
@@ -21,20 +21,8 @@ use std::hash::{Hash, Hasher};
 pub struct World {
     /// The discs, in a stable order (indices are identities within a step).
     pub particles: Vec<Particle>,
-    /// Width and height of the world rectangle (m).
-    pub size: DVec2,
-    /// Uniform gravitational acceleration (m/s²); y is up.
-    pub gravity: DVec2,
-    /// Coefficient of restitution e between discs, 0 (sticky) to 1 (elastic).
-    pub restitution: f64,
-    /// Coefficient of restitution at the walls.
-    pub wall_restitution: f64,
-    /// What the edges do.
-    pub boundary: Boundary,
-    /// Which sides of a box have walls.
-    pub walls: Walls,
-    /// A one-dimensional world: the only axis discs move along.
-    pub constrain: Option<Axis>,
+    /// The world's size and the laws its discs obey.
+    pub laws: Laws,
     /// Collision method, or `auto`.
     pub method: Setting<Method>,
     /// Broad phase, or `auto`.
@@ -96,13 +84,7 @@ impl World {
     pub fn new(size: DVec2) -> Self {
         Self {
             particles: Vec::new(),
-            size,
-            gravity: DVec2::ZERO,
-            restitution: 1.0,
-            wall_restitution: 1.0,
-            boundary: Boundary::Box,
-            walls: Walls::ALL,
-            constrain: None,
+            laws: Laws::new(size),
             method: Setting::Fixed(Method::Impulse),
             broad_phase: Setting::Fixed(BroadPhaseKind::Brute),
             substeps: Setting::Fixed(1),
@@ -127,23 +109,6 @@ impl World {
         self.broad_phase = Setting::Fixed(kind);
     }
 
-    /// The laws, as the methods see them (in one dimension, gravity
-    /// across the line is held by the line and drops out).
-    pub fn laws(&self) -> Laws {
-        let mut gravity = self.gravity;
-        if let Some(axis) = self.constrain {
-            gravity[axis.locked()] = 0.0;
-        }
-        Laws {
-            size: self.size,
-            gravity,
-            restitution: self.restitution,
-            wall_restitution: self.wall_restitution,
-            boundary: self.boundary,
-            walls: self.walls,
-        }
-    }
-
     /// The four settings `auto` resolves.
     pub fn choices(&self) -> auto::Choices {
         auto::Choices {
@@ -162,7 +127,7 @@ impl World {
     /// Decides method, broad phase and substeps for a step of `dt`:
     /// fixed settings as given, `auto` ones from the scene.
     pub fn plan_for(&self, dt: f64) -> Plan {
-        auto::plan(&self.particles, &self.laws(), self.choices(), dt)
+        auto::plan(&self.particles, &self.laws.in_effect(), self.choices(), dt)
     }
 
     /// Advances the world by `dt` seconds with the chosen method.
@@ -174,7 +139,7 @@ impl World {
             return StepStats::default();
         }
         let (method, substeps) = self.replan(dt);
-        let laws = self.laws();
+        let laws = self.laws.in_effect();
         let line = self.hold_to_line();
         let mut stats = StepStats::default();
         let simulated = if method == Method::Exact {
@@ -241,7 +206,7 @@ impl World {
             choices: self.choices(),
             threads: parallel::threads(),
             dt: dt.to_bits(),
-            laws: self.laws(),
+            laws: self.laws.in_effect(),
             particles: self.particles.len(),
         };
         let stale = self.plan_key.as_ref() != Some(&key) || self.steps % REPLAN_EVERY == 0;
@@ -268,7 +233,7 @@ impl World {
     /// step, whatever the method did (a contact normal off the line cannot
     /// move a disc off it).
     fn hold_to_line(&mut self) -> Option<Line> {
-        let axis = self.constrain?;
+        let axis = self.laws.constrain?;
         let line = Line {
             across: axis.locked(),
             at: self
@@ -325,12 +290,14 @@ impl World {
     /// edges, or more than [`FORECAST_LIMIT`] discs.
     pub fn collisions_over(&self) -> bool {
         let n = self.particles.len();
-        if self.gravity != DVec2::ZERO || self.boundary == Boundary::Periodic || n > FORECAST_LIMIT
+        if self.laws.gravity != DVec2::ZERO
+            || self.laws.boundary == Boundary::Periodic
+            || n > FORECAST_LIMIT
         {
             return false;
         }
-        let walls = match self.boundary {
-            Boundary::Box => self.walls,
+        let walls = match self.laws.boundary {
+            Boundary::Box => self.laws.walls,
             _ => Walls::NONE,
         };
         let towards_a_wall = self.particles.iter().any(|p| {
@@ -359,7 +326,8 @@ impl World {
 
     /// Kinetic plus gravitational potential energy (J).
     pub fn total_energy(&self) -> f64 {
-        self.metrics().kinetic_energy + Metrics::potential_energy(&self.particles, self.gravity)
+        self.metrics().kinetic_energy
+            + Metrics::potential_energy(&self.particles, self.laws.gravity)
     }
 
     /// Index of the disc under a world point (the topmost, i.e. last drawn).
@@ -370,11 +338,18 @@ impl World {
     /// Whether a disc of `radius` at `pos` would lie inside the walls (for a
     /// closed box) and overlap no other disc.
     pub fn is_free(&self, pos: DVec2, radius: f64) -> bool {
-        let inside = self.boundary == Boundary::Periodic
-            || self.boundary.admits(self.walls, self.size, pos, radius);
+        let inside = self.laws.boundary == Boundary::Periodic
+            || self
+                .laws
+                .boundary
+                .admits(self.laws.walls, self.laws.size, pos, radius);
         inside
             && self.particles.iter().all(|p| {
-                self.boundary.separation(p.pos, pos, self.size).length() >= p.radius + radius
+                self.laws
+                    .boundary
+                    .separation(p.pos, pos, self.laws.size)
+                    .length()
+                    >= p.radius + radius
             })
     }
 
@@ -384,10 +359,10 @@ impl World {
         if !(radius > 0.0 && radius.is_finite() && wanted.is_finite()) {
             return None;
         }
-        let start = match self.boundary {
+        let start = match self.laws.boundary {
             Boundary::Box => {
-                let (lo, hi) = (DVec2::splat(radius), self.size - DVec2::splat(radius));
-                let w = self.walls;
+                let (lo, hi) = (DVec2::splat(radius), self.laws.size - DVec2::splat(radius));
+                let w = self.laws.walls;
                 DVec2::new(
                     clamp_walled(wanted.x, lo.x, hi.x, [w.left, w.right]),
                     clamp_walled(wanted.y, lo.y, hi.y, [w.bottom, w.top]),
@@ -399,7 +374,7 @@ impl World {
             return Some(start);
         }
         let ring_step = 0.25 * radius;
-        let max_rings = ((self.size.length() / ring_step).ceil() as usize).min(4000);
+        let max_rings = ((self.laws.size.length() / ring_step).ceil() as usize).min(4000);
         (1..=max_rings).find_map(|ring| {
             let r = ring as f64 * ring_step;
             let samples = 8 * ring.min(64);
@@ -467,13 +442,7 @@ impl Clone for World {
     fn clone(&self) -> Self {
         World {
             particles: self.particles.clone(),
-            size: self.size,
-            gravity: self.gravity,
-            restitution: self.restitution,
-            wall_restitution: self.wall_restitution,
-            boundary: self.boundary,
-            walls: self.walls,
-            constrain: self.constrain,
+            laws: self.laws,
             method: self.method,
             broad_phase: self.broad_phase,
             substeps: self.substeps,
@@ -497,9 +466,9 @@ impl Clone for World {
 impl std::fmt::Debug for World {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("World")
-            .field("size", &self.size)
+            .field("size", &self.laws.size)
             .field("particles", &self.particles.len())
-            .field("boundary", &self.boundary)
+            .field("boundary", &self.laws.boundary)
             .field("method", &self.method)
             .field("time", &self.time)
             .finish_non_exhaustive()

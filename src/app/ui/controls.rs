@@ -224,7 +224,7 @@ impl App {
 
     fn laws_section(&mut self, ui: &mut Ui) {
         let w = &mut self.world;
-        let mut e = w.restitution;
+        let mut e = w.laws.restitution;
         let (r, changed) = slider(
             ui,
             "Restitution e between discs (1: elastic, 0: they stick)",
@@ -235,11 +235,11 @@ impl App {
             "",
         );
         if changed {
-            w.restitution = (e * 100.0).round() / 100.0;
+            w.laws.restitution = (e * 100.0).round() / 100.0;
         }
         self.widget(ui, "restitution", &r.on_hover_text("E / Shift+E: ±0.1"));
         let w = &mut self.world;
-        let mut e = w.wall_restitution;
+        let mut e = w.laws.wall_restitution;
         let (r, changed) = slider(
             ui,
             "Restitution e at the walls",
@@ -250,7 +250,7 @@ impl App {
             "",
         );
         if changed {
-            w.wall_restitution = (e * 100.0).round() / 100.0;
+            w.laws.wall_restitution = (e * 100.0).round() / 100.0;
         }
         self.widget(
             ui,
@@ -260,7 +260,7 @@ impl App {
         // The slider shows |g| and sets it pointing down; a scene's sideways
         // gravity is only replaced once the slider is moved.
         let w = &mut self.world;
-        let mut g = w.gravity.length();
+        let mut g = w.laws.gravity.length();
         let (r, changed) = slider(
             ui,
             "Gravity, pointing down",
@@ -271,7 +271,7 @@ impl App {
             " m/s²",
         );
         if changed {
-            w.gravity = DVec2::new(0.0, -snap_gravity(g));
+            w.laws.gravity = DVec2::new(0.0, -snap_gravity(g));
         }
         self.widget(ui, "gravity", &r.on_hover_text("G: 9.81 m/s² down, or off"));
         let w = &mut self.world;
@@ -279,10 +279,10 @@ impl App {
             ui,
             "edges",
             &Boundary::ALL.map(Boundary::name),
-            w.boundary.name(),
+            w.laws.boundary.name(),
         ) {
             if let Some(&k) = Boundary::ALL.iter().find(|k| k.name() == b) {
-                w.boundary = k;
+                w.laws.boundary = k;
             }
         }
         let scales = TIME_SCALES.map(|s| format!("×{s}"));
@@ -365,7 +365,7 @@ impl App {
             .checkbox(&mut self.size_follows_mass, "size follows mass (same density)")
             .on_hover_text("a 1 kg disc is 0.4 m in radius; the radius grows as √m, for new discs and mass edits");
         self.widget(ui, "size_follows_mass", &r);
-        let biggest = 0.45 * self.world.size.min_element();
+        let biggest = 0.45 * self.world.laws.size.min_element();
         if self.size_follows_mass {
             let r = crate::app::interaction::radius_for_mass(self.new_disc.mass).min(biggest);
             self.new_disc.radius = r;
@@ -613,7 +613,7 @@ impl App {
         let changed: [Option<&str>; 4] = std::array::from_fn(|k| {
             (fields.text[k] != fields.shown[k]).then_some(fields.text[k].as_str())
         });
-        let biggest = 0.45 * self.world.size.min_element();
+        let biggest = 0.45 * self.world.laws.size.min_element();
         let parsed = parse_disc_edit(changed, biggest).and_then(|e| self.sized_edit(i, e));
         let note = match parsed {
             Ok(edit) if edit.is_empty() => Note::ok("Nothing changed: type a new value first"),

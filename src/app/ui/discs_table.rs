@@ -62,7 +62,12 @@ impl App {
         };
         let size = plain(r, 2);
         let overlapped = w.particles.iter().enumerate().find(|&(j, q)| {
-            j != i && w.boundary.separation(q.pos, p.pos, w.size).length() < r + q.radius
+            j != i
+                && w.laws
+                    .boundary
+                    .separation(q.pos, p.pos, w.laws.size)
+                    .length()
+                    < r + q.radius
         });
         if let Some((j, _)) = overlapped {
             return Err(format!(
@@ -70,7 +75,7 @@ impl App {
                 plain(m, 3)
             ));
         }
-        if !w.boundary.admits(w.walls, w.size, p.pos, r) {
+        if !w.laws.boundary.admits(w.laws.walls, w.laws.size, p.pos, r) {
             return Err(format!(
                 "at {} kg the disc would be {size} m in radius (size follows mass) and cross a wall",
                 plain(m, 3)

@@ -224,56 +224,46 @@ impl UiState {
     }
 }
 
-/// The laws a panel can change, to notice a change and undo it.
+/// What the panels can change (the laws and the four choices), to notice a
+/// change and undo it.
 #[derive(Clone, Copy, PartialEq)]
 struct Laws {
-    restitution: f64,
-    wall_restitution: f64,
-    gravity: glam::DVec2,
-    boundary: impulse::Boundary,
-    walls: impulse::Walls,
-    method: impulse::method::Setting<impulse::method::Method>,
-    broad_phase: impulse::method::Setting<impulse::broad_phase::BroadPhaseKind>,
-    substeps: impulse::method::Setting<u32>,
+    laws: impulse::laws::Laws,
+    choices: impulse::auto::Choices,
 }
 
 impl Laws {
     fn of(w: &impulse::World) -> Laws {
         Laws {
-            restitution: w.restitution,
-            wall_restitution: w.wall_restitution,
-            gravity: w.gravity,
-            boundary: w.boundary,
-            walls: w.walls,
-            method: w.method,
-            broad_phase: w.broad_phase,
-            substeps: w.substeps,
+            laws: w.laws,
+            choices: w.choices(),
         }
     }
 
     fn put(self, w: &mut impulse::World) {
-        w.restitution = self.restitution;
-        w.wall_restitution = self.wall_restitution;
-        w.gravity = self.gravity;
-        w.boundary = self.boundary;
-        w.walls = self.walls;
-        w.method = self.method;
-        w.broad_phase = self.broad_phase;
-        w.substeps = self.substeps;
+        w.laws = self.laws;
+        let impulse::auto::Choices {
+            method,
+            broad_phase,
+            substeps,
+            parallel,
+        } = self.choices;
+        (w.method, w.broad_phase, w.substeps, w.parallel) =
+            (method, broad_phase, substeps, parallel);
     }
 
     /// Which law `w` has changed from these, if any (for undo's message).
     fn changed_in(self, w: &impulse::World) -> Option<&'static str> {
-        let now = Laws::of(w);
-        if now == self {
+        let (now, was) = (w.laws, self.laws);
+        if Laws::of(w) == self {
             None
-        } else if now.restitution != self.restitution {
+        } else if now.restitution != was.restitution {
             Some("restitution")
-        } else if now.wall_restitution != self.wall_restitution {
+        } else if now.wall_restitution != was.wall_restitution {
             Some("wall restitution")
-        } else if now.gravity != self.gravity {
+        } else if now.gravity != was.gravity {
             Some("gravity")
-        } else if now.boundary != self.boundary || now.walls != self.walls {
+        } else if now.boundary != was.boundary || now.walls != was.walls {
             Some("edges")
         } else {
             Some("method")
@@ -414,7 +404,7 @@ impl App {
     /// the box and every disc that has left it.
     pub(super) fn fit_camera(&mut self) {
         let margin = 24.0 * f64::from(self.ui.scale);
-        let (mut lo, mut hi) = (glam::DVec2::ZERO, self.world.size);
+        let (mut lo, mut hi) = (glam::DVec2::ZERO, self.world.laws.size);
         if self.follows_discs() {
             for p in self.world.particles.iter().filter(|p| p.pos.is_finite()) {
                 lo = lo.min(p.pos - glam::DVec2::splat(p.radius));
@@ -428,7 +418,7 @@ impl App {
     /// Whether a fitted view follows the discs out of the box: a box with
     /// open sides (the π blocks leave through theirs).
     pub(super) fn follows_discs(&self) -> bool {
-        self.world.boundary == impulse::Boundary::Box && !self.world.walls.all()
+        self.world.laws.boundary == impulse::Boundary::Box && !self.world.laws.walls.all()
     }
 }
 

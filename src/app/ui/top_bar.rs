@@ -59,7 +59,7 @@ impl App {
                         .color(paused),
                     );
                 }
-                if self.world.gravity != glam::DVec2::ZERO {
+                if self.world.laws.gravity != glam::DVec2::ZERO {
                     // With gravity, kinetic energy alone seems to vanish in a fall.
                     ui.label(format!(
                         "KE + PE = {}",

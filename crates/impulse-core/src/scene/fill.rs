@@ -26,7 +26,7 @@ pub(super) fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String>
         .iter()
         .map(|p| p.radius)
         .fold(fill.radius[1], f64::max);
-    let mut cells = DiscCells::new(world.size, 2.0 * largest, world.boundary);
+    let mut cells = DiscCells::new(world.laws.size, 2.0 * largest, world.laws.boundary);
     for (k, p) in world.particles.iter().enumerate() {
         cells.insert(p.pos, k);
     }
@@ -36,8 +36,8 @@ pub(super) fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String>
         let heading = rng.random_range(0.0..std::f64::consts::TAU);
         let spot = (0..attempts_per_disc).find_map(|_| {
             let pos = DVec2::new(
-                rng.random_range(radius..=world.size.x - radius),
-                rng.random_range(radius..=world.size.y - radius),
+                rng.random_range(radius..=world.laws.size.x - radius),
+                rng.random_range(radius..=world.laws.size.y - radius),
             );
             let mut near = cells.near(pos).map(|i| &world.particles[i]);
             let free = if fill.overlap > 0.0 {
@@ -46,12 +46,16 @@ pub(super) fn add_fill(world: &mut World, fill: &FillSpec) -> Result<(), String>
                     (q.pos - pos).length() >= radius + q.radius - allowed
                 })
             } else {
-                let inside = world.boundary != Boundary::Box
+                let inside = world.laws.boundary != Boundary::Box
                     || (pos.cmpge(DVec2::splat(radius)).all()
-                        && pos.cmple(world.size - DVec2::splat(radius)).all());
+                        && pos.cmple(world.laws.size - DVec2::splat(radius)).all());
                 inside
                     && near.all(|q| {
-                        world.boundary.separation(q.pos, pos, world.size).length()
+                        world
+                            .laws
+                            .boundary
+                            .separation(q.pos, pos, world.laws.size)
+                            .length()
                             >= q.radius + radius
                     })
             };

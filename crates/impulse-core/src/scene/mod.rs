@@ -37,8 +37,8 @@
 //! overlap = 0.0                # optional: overlap allowed, fraction of a diameter
 //! ```
 
-use crate::boundary::{Axis, Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
+use crate::laws::Laws;
 use crate::method::{Method, Setting};
 use crate::particle::{Color, Particle};
 use crate::world::World;
@@ -98,7 +98,8 @@ pub struct Scene {
     #[serde(default, skip_serializing_if = "is_false")]
     pub edited: bool,
     /// The world's size and laws.
-    pub world: WorldSpec,
+    /// The `[world]` table.
+    pub world: Laws,
     /// How it is simulated.
     #[serde(default, skip_serializing_if = "SimulationSpec::is_default")]
     pub simulation: SimulationSpec,
@@ -108,32 +109,6 @@ pub struct Scene {
     /// Seeded random discs, placed after the listed ones.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fill: Option<FillSpec>,
-}
-
-/// The `[world]` table.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct WorldSpec {
-    /// Width and height (m).
-    pub size: DVec2,
-    /// Gravity (m/s²).
-    #[serde(default)]
-    pub gravity: DVec2,
-    /// Restitution between discs.
-    #[serde(default = "one")]
-    pub restitution: f64,
-    /// Restitution at the walls.
-    #[serde(default = "one")]
-    pub wall_restitution: f64,
-    /// Edge behaviour.
-    #[serde(default)]
-    pub boundary: Boundary,
-    /// The sides of a box that have walls (all four when absent).
-    #[serde(default, skip_serializing_if = "all_walls")]
-    pub walls: Walls,
-    /// One dimension: the axis discs move along ("x" or "y").
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub constrain: Option<Axis>,
 }
 
 /// The `[simulation]` table: method, broad phase, substeps, step.
@@ -204,10 +179,6 @@ pub struct FillSpec {
 
 fn is_false(b: &bool) -> bool {
     !*b
-}
-
-fn all_walls(w: &Walls) -> bool {
-    w.all()
 }
 
 fn is_zero(x: &f64) -> bool {
@@ -462,12 +433,7 @@ impl Scene {
         self.validate(origin)?;
         let w = &self.world;
         let mut world = World::new(w.size);
-        world.gravity = w.gravity;
-        world.restitution = w.restitution;
-        world.wall_restitution = w.wall_restitution;
-        world.boundary = w.boundary;
-        world.walls = w.walls;
-        world.constrain = w.constrain;
+        world.laws = *w;
         world.method = self.simulation.method;
         world.broad_phase = self.simulation.broad_phase;
         world.substeps = self.simulation.substeps;
@@ -496,15 +462,7 @@ impl Scene {
             name,
             description,
             edited: false,
-            world: WorldSpec {
-                size: world.size,
-                gravity: world.gravity,
-                restitution: world.restitution,
-                wall_restitution: world.wall_restitution,
-                boundary: world.boundary,
-                walls: world.walls,
-                constrain: world.constrain,
-            },
+            world: world.laws,
             simulation: SimulationSpec {
                 method: world.method,
                 broad_phase: world.broad_phase,
@@ -534,7 +492,7 @@ impl Scene {
 }
 
 /// The line (1-based) of `field` in scene text: `particles[2].mass` is the
-/// `mass` line of the third `[[particles]]` table, `world.size` the `size`
+/// `mass` line of the third `[[particles]]` table, `world.laws.size` the `size`
 /// line of `[world]`; the table's header when the key is not written.
 pub fn line_of(text: &str, field: &str) -> Option<usize> {
     let (table, key) = field.split_once('.').unwrap_or((field, ""));

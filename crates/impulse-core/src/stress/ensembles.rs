@@ -25,7 +25,7 @@ fn pile(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     let n = world.particles.len() as f64;
     let mean = |f: fn(&crate::Particle) -> f64| world.particles.iter().map(f).sum::<f64>() / n;
     let (m, r) = (mean(|p| p.mass), mean(|p| p.radius));
-    let unit = m * world.gravity.length() * r; // lifting a disc by its radius
+    let unit = m * world.laws.gravity.length() * r; // lifting a disc by its radius
     let mut energy = world.total_energy();
     let mut worst_gain = 0.0f64;
     let duration = if size == Size::Quick { 6.0 } else { 10.0 };

@@ -161,11 +161,11 @@ fn run_for(
 fn finite_and_inside(world: &World, slack: f64) -> bool {
     world.particles.iter().all(|p| {
         let finite = p.pos.is_finite() && p.vel.is_finite();
-        let inside = world.boundary != Boundary::Box
+        let inside = world.laws.boundary != Boundary::Box
             || (p.pos.x >= p.radius - slack
-                && p.pos.x <= world.size.x - p.radius + slack
+                && p.pos.x <= world.laws.size.x - p.radius + slack
                 && p.pos.y >= p.radius - slack
-                && p.pos.y <= world.size.y - p.radius + slack);
+                && p.pos.y <= world.laws.size.y - p.radius + slack);
         finite && inside
     })
 }
@@ -178,8 +178,9 @@ fn max_relative_overlap(world: &World) -> f64 {
     for i in 0..ps.len() {
         for j in i + 1..ps.len() {
             let d = world
+                .laws
                 .boundary
-                .separation(ps[i].pos, ps[j].pos, world.size)
+                .separation(ps[i].pos, ps[j].pos, world.laws.size)
                 .length();
             let depth = ps[i].radius + ps[j].radius - d;
             if depth > 0.0 {

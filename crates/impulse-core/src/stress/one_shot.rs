@@ -191,7 +191,7 @@ pub(super) const MASS_RATIO: Scenario = Scenario {
 fn mass_ratio(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
     // (a) Push-apart at 10⁶: two discs overlapping by a quarter diameter.
     let mut pair = World::new(DVec2::new(10.0, 10.0));
-    pair.boundary = Boundary::Open;
+    pair.laws.boundary = Boundary::Open;
     pair.method = method;
     pair.particles = vec![
         Particle::new(
@@ -324,7 +324,7 @@ fn degenerate(method: Setting<Method>, _size: Size) -> Result<Outcome, String> {
     // The big disc thrown at a wall with the small ones pinned in corners.
     let mut thrown = base;
     thrown.particles[0].vel = DVec2::new(30.0, 20.0);
-    thrown.gravity = DVec2::new(0.0, -9.81);
+    thrown.laws.gravity = DVec2::new(0.0, -9.81);
     cases.push(("big disc thrown", thrown));
     let mut failed = Vec::new();
     for (name, mut world) in cases {

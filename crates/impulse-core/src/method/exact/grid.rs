@@ -351,12 +351,8 @@ mod tests {
             Color::rgb(0, 0, 0),
         );
         let laws = Laws {
-            size,
-            gravity: DVec2::ZERO,
-            restitution: 1.0,
-            wall_restitution: 1.0,
             boundary,
-            walls: crate::Walls::ALL,
+            ..Laws::new(size)
         };
         let g = Grid::new(&vec![disc; (dims[0] * dims[1]) as usize], &laws);
         assert_eq!(g.dims, dims);
