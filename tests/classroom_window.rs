@@ -11,11 +11,29 @@ use std::path::PathBuf;
 use std::thread::sleep;
 use std::time::Duration;
 
-#[test]
+fn main() -> std::process::ExitCode {
+    harness::run(vec![
+        (
+            "number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly",
+            number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly,
+        ),
+        (
+            "the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution",
+            the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution,
+        ),
+        (
+            "j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports",
+            j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports,
+        ),
+        (
+            "dragging_the_selected_discs_arrow_tip_sets_its_velocity",
+            dragging_the_selected_discs_arrow_tip_sets_its_velocity,
+        ),
+    ])
+}
+
 fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
-    let Some(x) = Xvfb::start("presets") else {
-        return;
-    };
+    let x = Xvfb::start("presets");
     let out = tempfile::tempdir().expect("temp dir");
     let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
     let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
@@ -66,11 +84,8 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     again.quit();
 }
 
-#[test]
 fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restitution() {
-    let Some(x) = Xvfb::start("panel") else {
-        return;
-    };
+    let x = Xvfb::start("panel");
     let dir = tempfile::tempdir().unwrap();
     // The names hold keys that must not act while typed: '1' opens a
     // preset, 'c' clears the discs, 'r' resets, 'e' changes restitution.
@@ -191,11 +206,8 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
     app.quit();
 }
 
-#[test]
 fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
-    let Some(x) = Xvfb::start("lesson") else {
-        return;
-    };
+    let x = Xvfb::start("lesson");
     let out = tempfile::tempdir().expect("temp dir");
     let out_dir = out.path().to_str().expect("utf-8 temp path").to_string();
     let app = Sandbox::start(&x, &["--paused", "--out", &out_dir]);
@@ -263,11 +275,8 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
     app.quit();
 }
 
-#[test]
 fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
-    let Some(x) = Xvfb::start("aim") else {
-        return;
-    };
+    let x = Xvfb::start("aim");
     let app = Sandbox::start(&x, &["--paused"]);
     app.move_to([300.0, 400.0]);
     app.xdo(&["key", "1"]); // head-on: disc 0 moves, at 0.5 s per arrow

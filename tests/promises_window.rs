@@ -11,16 +11,50 @@ mod harness;
 use harness::*;
 use serde_json::Value;
 
+fn main() -> std::process::ExitCode {
+    harness::run(vec![
+        (
+            "clear_then_ctrl_z_restores_every_disc_bit_for_bit_and_never_the_com_view",
+            clear_then_ctrl_z_restores_every_disc_bit_for_bit_and_never_the_com_view,
+        ),
+        (
+            "the_centre_of_mass_view_on_and_off_leaves_every_velocity_bit_for_bit",
+            the_centre_of_mass_view_on_and_off_leaves_every_velocity_bit_for_bit,
+        ),
+        (
+            "a_rewind_and_replay_keeps_the_ledger_and_the_counters_equal",
+            a_rewind_and_replay_keeps_the_ledger_and_the_counters_equal,
+        ),
+        (
+            "after_enter_in_a_field_digits_do_not_open_presets_until_esc",
+            after_enter_in_a_field_digits_do_not_open_presets_until_esc,
+        ),
+        (
+            "switching_to_verlet_is_said_in_the_top_bar_and_switching_away_clears_it",
+            switching_to_verlet_is_said_in_the_top_bar_and_switching_away_clears_it,
+        ),
+        (
+            "the_pi_blocks_end_on_their_count",
+            the_pi_blocks_end_on_their_count,
+        ),
+        (
+            "a_one_dimensional_preset_keeps_every_y_velocity_zero_through_a_collision",
+            a_one_dimensional_preset_keeps_every_y_velocity_zero_through_a_collision,
+        ),
+        (
+            "with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_overlap",
+            with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_overlap,
+        ),
+    ])
+}
+
 fn key(app: &Sandbox, k: &str) -> Value {
     app.xdo(&["key", k]);
     app.wait_frames(3)
 }
 
-#[test]
 fn clear_then_ctrl_z_restores_every_disc_bit_for_bit_and_never_the_com_view() {
-    let Some(x) = Xvfb::start("undo") else {
-        return;
-    };
+    let x = Xvfb::start("undo");
     let app = Sandbox::start(&x, &["--paused", &asset("preset-9-billiards.toml")]);
     app.move_to([300.0, 300.0]);
     let before = app.wait_frames(2);
@@ -50,11 +84,8 @@ fn clear_then_ctrl_z_restores_every_disc_bit_for_bit_and_never_the_com_view() {
     app.quit();
 }
 
-#[test]
 fn the_centre_of_mass_view_on_and_off_leaves_every_velocity_bit_for_bit() {
-    let Some(x) = Xvfb::start("com view") else {
-        return;
-    };
+    let x = Xvfb::start("com view");
     let app = Sandbox::start(&x, &["--paused", &asset("preset-3-light-hits-heavy.toml")]);
     app.move_to([300.0, 300.0]);
     let before = app.wait_frames(2);
@@ -70,11 +101,8 @@ fn the_centre_of_mass_view_on_and_off_leaves_every_velocity_bit_for_bit() {
     app.quit();
 }
 
-#[test]
 fn a_rewind_and_replay_keeps_the_ledger_and_the_counters_equal() {
-    let Some(x) = Xvfb::start("rewind") else {
-        return;
-    };
+    let x = Xvfb::start("rewind");
     let app = Sandbox::start(&x, &[&asset("preset-5-inelastic.toml")]);
     app.move_to([300.0, 300.0]);
     let agree = |s: &Value| {
@@ -112,11 +140,8 @@ fn a_rewind_and_replay_keeps_the_ledger_and_the_counters_equal() {
     app.quit();
 }
 
-#[test]
 fn after_enter_in_a_field_digits_do_not_open_presets_until_esc() {
-    let Some(x) = Xvfb::start("panel keyboard") else {
-        return;
-    };
+    let x = Xvfb::start("panel keyboard");
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
     let s = app.wait_frames(3);
     app.click(widget(&s, "tab_discs", 0.5));
@@ -150,11 +175,8 @@ fn after_enter_in_a_field_digits_do_not_open_presets_until_esc() {
     app.quit();
 }
 
-#[test]
 fn switching_to_verlet_is_said_in_the_top_bar_and_switching_away_clears_it() {
-    let Some(x) = Xvfb::start("warnings") else {
-        return;
-    };
+    let x = Xvfb::start("warnings");
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
     app.move_to([300.0, 300.0]);
     let s = app.wait_frames(2);
@@ -185,11 +207,8 @@ fn switching_to_verlet_is_said_in_the_top_bar_and_switching_away_clears_it() {
     app.quit();
 }
 
-#[test]
 fn the_pi_blocks_end_on_their_count() {
-    let Some(x) = Xvfb::start("pi end") else {
-        return;
-    };
+    let x = Xvfb::start("pi end");
     let app = Sandbox::start(&x, &[&asset("pi-blocks-1.toml")]);
     app.move_to([300.0, 300.0]);
     // Equal masses: three collisions, over by about 8 s of simulated time.
@@ -207,11 +226,8 @@ fn the_pi_blocks_end_on_their_count() {
     app.quit();
 }
 
-#[test]
 fn a_one_dimensional_preset_keeps_every_y_velocity_zero_through_a_collision() {
-    let Some(x) = Xvfb::start("one dimension") else {
-        return;
-    };
+    let x = Xvfb::start("one dimension");
     let app = Sandbox::start(&x, &[&asset("preset-4-glancing.toml")]);
     app.move_to([300.0, 300.0]);
     // Key 2: heavy hits light, on a track.
@@ -234,11 +250,8 @@ fn a_one_dimensional_preset_keeps_every_y_velocity_zero_through_a_collision() {
     app.quit();
 }
 
-#[test]
 fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_overlap() {
-    let Some(x) = Xvfb::start("size follows mass") else {
-        return;
-    };
+    let x = Xvfb::start("size follows mass");
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
     app.wait_frames(3);
     // Fold the two open sections so "New discs" opens in view.

@@ -12,6 +12,19 @@ use std::thread::sleep;
 use std::time::{Duration, Instant};
 use window_harness::{Sandbox, Xvfb};
 
+fn main() -> std::process::ExitCode {
+    window_harness::run(vec![
+        (
+            "a_killed_window_is_offered_back_and_restored_exactly",
+            a_killed_window_is_offered_back_and_restored_exactly,
+        ),
+        (
+            "a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on",
+            a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on,
+        ),
+    ])
+}
+
 /// Waits until the dump satisfies `ready`, and returns it.
 fn wait_for(
     app: &Sandbox,
@@ -37,11 +50,8 @@ fn positions(scene: &Scene) -> Vec<[f64; 2]> {
     scene.particles.iter().map(|p| p.pos.to_array()).collect()
 }
 
-#[test]
 fn a_killed_window_is_offered_back_and_restored_exactly() {
-    let Some(x) = Xvfb::start("recovery") else {
-        return;
-    };
+    let x = Xvfb::start("recovery");
     let state = tempfile::tempdir().unwrap();
     let file = state.path().join("impulse").join("recovery.toml");
 
@@ -104,11 +114,8 @@ fn a_killed_window_is_offered_back_and_restored_exactly() {
     assert!(!file.exists(), "Ctrl+Q removes the recovery file");
 }
 
-#[test]
 fn a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on() {
-    let Some(x) = Xvfb::start("recovery-fail") else {
-        return;
-    };
+    let x = Xvfb::start("recovery-fail");
     let dir = tempfile::tempdir().unwrap();
     // The state folder would have to be inside a regular file.
     let blocker = dir.path().join("not-a-folder");

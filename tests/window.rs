@@ -2,8 +2,8 @@
 //! checked through the state dump (`--dump-state`) and screenshots.
 //!
 //! Needs the Debian packages xvfb, libgl1-mesa-dri, libxi6, libxkbcommon0 and
-//! xdotool (`.ci/run` installs them). Without them the tests print why they
-//! skip; with `CI` set, a missing package is a failure.
+//! xdotool (`.ci/run` installs them). Without them the tests are reported as
+//! ignored, with the reason; with `CI` set, a missing package is a failure.
 
 #[path = "window_harness/mod.rs"]
 mod harness;
@@ -14,11 +14,33 @@ use std::process::Command;
 use std::thread::sleep;
 use std::time::Duration;
 
-#[test]
+fn main() -> std::process::ExitCode {
+    harness::run(vec![
+        (
+            "dragging_on_empty_space_launches_a_disc_along_the_drag",
+            dragging_on_empty_space_launches_a_disc_along_the_drag,
+        ),
+        (
+            "wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom",
+            wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom,
+        ),
+        (
+            "space_pauses_n_steps_once_and_y_switches_the_method",
+            space_pauses_n_steps_once_and_y_switches_the_method,
+        ),
+        (
+            "screenshot_saves_the_frame_as_a_png",
+            screenshot_saves_the_frame_as_a_png,
+        ),
+        (
+            "a_gas_of_many_discs_opens_draws_them_and_reports_frame_times",
+            a_gas_of_many_discs_opens_draws_them_and_reports_frame_times,
+        ),
+    ])
+}
+
 fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
-    let Some(x) = Xvfb::start("launch") else {
-        return;
-    };
+    let x = Xvfb::start("launch");
     let app = Sandbox::start(&x, &[&asset("empty.toml"), "--paused"]);
     let view = View::of(&app.state());
     let (from, to) = ([400.0, 450.0], [640.0, 330.0]); // right and up on screen
@@ -72,9 +94,8 @@ fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
     app.quit();
 }
 
-#[test]
 fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
-    let Some(x) = Xvfb::start("zoom") else { return };
+    let x = Xvfb::start("zoom");
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_file(
         dir.path(),
@@ -148,11 +169,8 @@ fn wheel_zooms_at_the_cursor_and_grabbing_works_at_any_zoom() {
     app.quit();
 }
 
-#[test]
 fn space_pauses_n_steps_once_and_y_switches_the_method() {
-    let Some(x) = Xvfb::start("pause") else {
-        return;
-    };
+    let x = Xvfb::start("pause");
     let app = Sandbox::start(&x, &[]);
     let running = app.wait_frames(5);
     assert_eq!(running["paused"], false);
@@ -196,11 +214,8 @@ fn space_pauses_n_steps_once_and_y_switches_the_method() {
     assert!(last["metrics"]["count"].as_u64().unwrap() > 2);
 }
 
-#[test]
 fn screenshot_saves_the_frame_as_a_png() {
-    let Some(x) = Xvfb::start("screenshot") else {
-        return;
-    };
+    let x = Xvfb::start("screenshot");
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("shot.png");
     let status = Command::new(env!("CARGO_BIN_EXE_impulse"))
@@ -220,9 +235,8 @@ fn screenshot_saves_the_frame_as_a_png() {
     );
 }
 
-#[test]
 fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
-    let Some(x) = Xvfb::start("gas") else { return };
+    let x = Xvfb::start("gas");
     let dir = tempfile::tempdir().unwrap();
     let (csv, png) = (dir.path().join("times.csv"), dir.path().join("gas.png"));
     let app = Sandbox::start(

@@ -114,7 +114,7 @@ pub struct UiDump {
 /// The frame budget in a dump.
 #[derive(Default, Serialize)]
 pub struct RealtimeDump {
-    /// Simulated seconds per real second over the last six seconds running.
+    /// Simulated seconds per real second over the last ten seconds running.
     pub ratio: Option<f64>,
     /// What the top bar says ("running at 0.31× real time"), if anything.
     pub shown: Option<String>,

@@ -1,8 +1,8 @@
 //! What the window tests share: a private Xvfb, the `impulse` binary on it
 //! with a state dump, xdotool to drive it, and the camera maths to aim at
-//! world points. The four window test binaries use it (`window.rs`,
-//! `classroom_window.rs`, `abuse_window.rs`, `recovery_window.rs`), each a
-//! part of it, hence the `dead_code` allowance.
+//! world points, and the `main` of every window test binary ([`run`]:
+//! each `tests/*window.rs` has `harness = false`). Each binary uses a part
+//! of it, hence the `dead_code` allowance.
 #![allow(dead_code)]
 
 use serde_json::Value;
@@ -11,6 +11,60 @@ use std::process::{Child, Command, Stdio};
 use std::sync::{Mutex, MutexGuard};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
+
+/// What this machine lacks to run the window tests, if anything.
+pub fn missing_tools() -> Option<String> {
+    let missing: Vec<&str> = ["Xvfb", "xdotool"]
+        .into_iter()
+        .filter(|p| !have(p))
+        .collect();
+    (!missing.is_empty()).then(|| {
+        format!(
+            "{} not installed (apt-get install xvfb xdotool libgl1-mesa-dri libxi6 libxkbcommon0)",
+            missing.join(" and ")
+        )
+    })
+}
+
+/// The window tests' `main` (each window test file has `harness = false`):
+/// runs `tests` as libtest does, or, when Xvfb or xdotool is missing,
+/// reports each as *ignored*, with the reason, instead of passing it.
+/// With `CI` set a missing tool fails every test instead.
+pub fn run(tests: Vec<(&'static str, fn())>) -> std::process::ExitCode {
+    let args = libtest_mimic::Arguments::from_args();
+    let missing = missing_tools();
+    let ci = std::env::var_os("CI").is_some();
+    if let Some(why) = &missing {
+        if ci {
+            eprintln!("CI is set, so the window tests must run, but {why}");
+        } else {
+            eprintln!("window tests ignored: {why}");
+        }
+    }
+    let trials = tests
+        .into_iter()
+        .map(|(name, test)| {
+            let why = missing.clone();
+            let trial = libtest_mimic::Trial::test(name, move || match why {
+                Some(why) if ci => {
+                    Err(format!("CI is set, so the window tests must run: {why}").into())
+                }
+                Some(why) => Err(format!("cannot run here: {why}").into()),
+                None => {
+                    test();
+                    Ok(())
+                }
+            });
+            match &missing {
+                Some(_) if !ci => trial
+                    .with_ignored_flag(true)
+                    .with_kind("needs Xvfb and xdotool"),
+                _ => trial,
+            }
+        })
+        .collect();
+    libtest_mimic::run(&args, trials).exit_code()
+}
 
 /// One window at a time: two cores cannot render several at a usable rate.
 static ONE_WINDOW: Mutex<()> = Mutex::new(());
@@ -32,25 +86,13 @@ pub struct Xvfb {
 }
 
 impl Xvfb {
-    /// Starts one, or returns `None` (after saying why) when it cannot here.
-    pub fn start(test: &str) -> Option<Xvfb> {
+    /// Starts one (the tools were checked by [`run`]).
+    pub fn start(test: &str) -> Xvfb {
         // A test that failed while holding the lock poisoned it; the next
         // one still runs.
         let one = ONE_WINDOW.lock().unwrap_or_else(|e| e.into_inner());
-        let missing: Vec<&str> = ["Xvfb", "xdotool"]
-            .into_iter()
-            .filter(|p| !have(p))
-            .collect();
-        if !missing.is_empty() {
-            let why = format!(
-                "{test}: {} not installed (apt-get install xvfb xdotool)",
-                missing.join(", ")
-            );
-            if std::env::var_os("CI").is_some() {
-                panic!("CI is set, so the window tests must run: {why}");
-            }
-            eprintln!("SKIPPED {why}");
-            return None;
+        if let Some(why) = missing_tools() {
+            panic!("{test}: {why}");
         }
         // Xvfb picks a free display itself and writes its number on stdout
         // once it accepts connections (-displayfd), so stale lock files of
@@ -99,11 +141,11 @@ impl Xvfb {
             );
             sleep(Duration::from_millis(100));
         }
-        Some(Xvfb {
+        Xvfb {
             child,
             display,
             _one: one,
-        })
+        }
     }
 }
 
