@@ -1,21 +1,39 @@
 //! The `impulse` binary: the sandbox window by default, headless commands as
 //! subcommands. Errors are one line on stderr and a non-zero exit code.
+//!
+//! The same code builds for the browser (`scripts/build-web.sh`): there the
+//! page loads it and [`main`] opens the sandbox, with no command line, no
+//! lab and no threads; [`web`] is its bridge to the page.
 
 mod app;
 mod cli;
 mod files;
+#[cfg(not(target_arch = "wasm32"))]
 mod headless;
+#[cfg(not(target_arch = "wasm32"))]
 mod lab;
+#[cfg(not(target_arch = "wasm32"))]
 mod progress;
+#[cfg(target_arch = "wasm32")]
+mod web;
 
+#[cfg(not(target_arch = "wasm32"))]
 use clap::{Parser, Subcommand};
+#[cfg(not(target_arch = "wasm32"))]
 use std::process::ExitCode;
 
 /// Counts live heap bytes, for `bench`'s bytes per disc.
 #[global_allocator]
 static ALLOC: impulse::alloc_count::Counting = impulse::alloc_count::Counting;
 
+/// In the browser: the sandbox, on the scene the page's address carries.
+#[cfg(target_arch = "wasm32")]
+fn main() {
+    app::run_in_browser();
+}
+
 /// Impulse: a sandbox for 2D disc collisions.
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Parser, Debug)]
 #[command(name = "impulse", version, args_conflicts_with_subcommands = true)]
 struct Cli {
@@ -25,6 +43,7 @@ struct Cli {
     window: app::WindowOptions,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Simulate a scene without a window and print a summary.
@@ -37,6 +56,7 @@ enum Command {
     Stress(lab::stress::StressArgs),
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -61,6 +81,7 @@ fn main() -> ExitCode {
 /// Reports a command-line error in one line (clap's own message, its lines
 /// joined, without the usage block) with exit code 2; `--help` and
 /// `--version` print in full and succeed.
+#[cfg(not(target_arch = "wasm32"))]
 fn parse_error(e: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     if matches!(

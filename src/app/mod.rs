@@ -152,6 +152,32 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The options a window has when nothing is given: clap's defaults.
+fn default_options() -> WindowOptions {
+    use clap::{Args, FromArgMatches};
+    let command = WindowOptions::augment_args(clap::Command::new("impulse"));
+    let matches = command.get_matches_from(["impulse"]);
+    WindowOptions::from_arg_matches(&matches).expect("the defaults parse")
+}
+
+/// In the browser: the sandbox on the scene a shared link carries, else the
+/// default scene. The canvas fills the page and follows its pixel ratio.
+#[cfg(target_arch = "wasm32")]
+pub fn run_in_browser() {
+    impulse::clock::set_clock(crate::web::now);
+    let options = default_options();
+    let origin = "built-in default scene".to_string();
+    let scene = Scene::parse(DEFAULT_SCENE, &origin).expect("the default scene parses");
+    let world = scene.build(&origin).expect("the default scene builds");
+    let conf = Conf {
+        window_title: "Impulse".to_string(),
+        high_dpi: true,
+        sample_count: 4,
+        ..Default::default()
+    };
+    macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
+}
+
 /// Refuses, before any window opens, an output file whose folder does not
 /// exist or which is a folder itself (the window would only find out when it
 /// writes, frame after frame).
@@ -169,7 +195,7 @@ fn writable_place(flag: &str, file: &std::path::Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn ms_since(start: std::time::Instant, end: std::time::Instant) -> f64 {
+fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64 {
     end.duration_since(start).as_secs_f64() * 1e3
 }
 
@@ -295,7 +321,7 @@ impl App {
 
     async fn run(mut self) {
         prevent_quit();
-        let mut pending: Option<(std::time::Instant, frame_stats::FrameTimes)> = None;
+        let mut pending: Option<(impulse::clock::Instant, frame_stats::FrameTimes)> = None;
         let mut previous = (0.0, 0.0); // the last frame's time and its physics (s)
         let mut time_scale = self.clock.time_scale();
         loop {
@@ -303,7 +329,7 @@ impl App {
                 time_scale = self.clock.time_scale();
                 self.realtime.clear(); // measured against the scale asked for
             }
-            let frame_start = std::time::Instant::now();
+            let frame_start = impulse::clock::Instant::now();
             if let Some((start, mut times)) = pending.take() {
                 times.frame_ms = ms_since(start, frame_start);
                 previous = (times.frame_ms / 1e3, times.step_ms / 1e3);
@@ -318,14 +344,14 @@ impl App {
             }
             self.handle_keys();
             self.handle_mouse(mouse);
-            let step_start = std::time::Instant::now();
+            let step_start = impulse::clock::Instant::now();
             let budget = clock::physics_budget(previous.0, previous.1);
             let running = !self.clock.paused;
             self.advance_physics(get_frame_time() as f64, budget);
             if self.camera_fitted && self.follows_discs() {
                 self.fit_camera();
             }
-            let step_ms = ms_since(step_start, std::time::Instant::now());
+            let step_ms = ms_since(step_start, impulse::clock::Instant::now());
             self.realtime
                 .push(get_time(), self.world.time, running && !self.clock.paused);
             let timed_out = self
@@ -340,16 +366,16 @@ impl App {
             }
             let requested = self.screenshot_request.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
-            let draw_start = std::time::Instant::now();
+            let draw_start = impulse::clock::Instant::now();
             self.draw();
             egui_macroquad::draw();
             // The whole frame, panels included, read back before it is shown.
             let capture = wanted.then(dump::screen_image);
-            let draw_ms = ms_since(draw_start, std::time::Instant::now());
+            let draw_ms = ms_since(draw_start, impulse::clock::Instant::now());
             self.frame += 1;
             self.write_dump();
             let mut times = self.frame_times(step_ms, draw_ms);
-            let present_start = std::time::Instant::now();
+            let present_start = impulse::clock::Instant::now();
             if let Some(image) = capture {
                 if closing {
                     self.save_screenshot(&image);
@@ -361,7 +387,7 @@ impl App {
             if !closing {
                 next_frame().await;
             }
-            times.present_ms = ms_since(present_start, std::time::Instant::now());
+            times.present_ms = ms_since(present_start, impulse::clock::Instant::now());
             pending = Some((frame_start, times));
             if closing {
                 break;
@@ -408,7 +434,7 @@ impl App {
     /// dropping frames.
     fn advance_physics(&mut self, frame_seconds: f64, budget: f64) {
         let due = self.clock.advance(frame_seconds);
-        let start = std::time::Instant::now();
+        let start = impulse::clock::Instant::now();
         let mut steps = 0;
         // Small scenes: the totals just before and after each step with an
         // impact, so the plot drops at the instant of an inelastic collision.

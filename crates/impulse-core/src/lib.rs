@@ -30,6 +30,7 @@ pub mod auto;
 pub mod boundary;
 pub mod broad_phase;
 pub mod catalogue;
+pub mod clock;
 pub mod history;
 pub mod impact;
 pub mod integration;

@@ -2,9 +2,7 @@
 
 use serde::Serialize;
 use std::time::Duration;
-// `std::time::Instant::now` panics in a browser; web-time is std's on a
-// desktop and the page's clock there.
-use web_time::Instant;
+use crate::clock::Instant;
 
 /// Measures consecutive stages: each [`Lap::lap`] returns the time since
 /// the previous one.
@@ -22,7 +20,7 @@ impl Lap {
 
     pub(crate) fn lap(&mut self) -> Duration {
         let now = Instant::now();
-        let elapsed = now - self.0;
+        let elapsed = now.duration_since(self.0);
         self.0 = now;
         elapsed
     }

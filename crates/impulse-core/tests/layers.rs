@@ -10,6 +10,7 @@ const LAYERS: &[&[&str]] = &[
     &[
         "alloc_count",
         "catalogue",
+        "clock",
         "impact",
         "ledger",
         "math",

@@ -49,7 +49,7 @@ use crate::particle::Particle;
 use crate::stats::StepStats;
 use glam::DVec2;
 use grid::Grid;
-use web_time::Instant;
+use crate::clock::Instant;
 
 mod collide;
 mod grid;

@@ -1,0 +1,100 @@
+//! The browser build's bridge to the page (`web/impulse.js`, a miniquad
+//! plugin): the state report the page and its tests read, file downloads,
+//! the browser's local storage, and the address's fragment for shared
+//! links. Only compiled for `wasm32`; the desktop has files instead.
+
+use std::fmt;
+
+extern "C" {
+    fn impulse_report_state(ptr: *const u8, len: usize);
+    fn impulse_download(name: *const u8, name_len: usize, data: *const u8, data_len: usize);
+    fn impulse_storage_set(key: *const u8, key_len: usize, value: *const u8, len: usize) -> i32;
+    fn impulse_storage_get(key: *const u8, key_len: usize) -> i32;
+    fn impulse_storage_remove(key: *const u8, key_len: usize);
+    fn impulse_fragment_get() -> i32;
+    fn impulse_fragment_set(ptr: *const u8, len: usize);
+    fn impulse_take(ptr: *mut u8, len: usize);
+    fn impulse_now() -> f64;
+}
+
+/// Seconds on the page's clock (`performance.now()`), for the core's stage
+/// timings and the frame times.
+pub fn now() -> f64 {
+    // SAFETY: no arguments, a number back.
+    unsafe { impulse_now() }
+}
+
+/// The plugin's version, checked by the page's loader against its own.
+#[no_mangle]
+pub extern "C" fn impulse_crate_version() -> u32 {
+    1
+}
+
+/// Bytes the page has set aside for us (`len` from the call that did so).
+fn take(len: i32) -> Option<String> {
+    let len = usize::try_from(len).ok()?;
+    let mut bytes = vec![0u8; len];
+    // SAFETY: the page copies exactly `len` bytes into the buffer we own.
+    unsafe { impulse_take(bytes.as_mut_ptr(), len) };
+    String::from_utf8(bytes).ok()
+}
+
+/// Puts the app's state (JSON) where the page can read it
+/// (`window.impulseState`).
+pub fn report_state(json: &str) {
+    // SAFETY: the page reads `len` bytes of our memory during the call.
+    unsafe { impulse_report_state(json.as_ptr(), json.len()) }
+}
+
+/// Offers `data` to the user as a downloaded file named `name`.
+pub fn download(name: &str, data: &[u8]) {
+    // SAFETY: as above; the page copies the bytes before returning.
+    unsafe { impulse_download(name.as_ptr(), name.len(), data.as_ptr(), data.len()) }
+}
+
+/// Why the browser would not keep something.
+#[derive(Debug)]
+pub struct StorageFull;
+
+impl fmt::Display for StorageFull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("the browser's storage for this page is full or turned off")
+    }
+}
+
+impl std::error::Error for StorageFull {}
+
+/// Keeps `value` under `key` in the browser's local storage.
+pub fn storage_set(key: &str, value: &str) -> Result<(), StorageFull> {
+    // SAFETY: the page reads both strings during the call.
+    let ok = unsafe { impulse_storage_set(key.as_ptr(), key.len(), value.as_ptr(), value.len()) };
+    if ok == 1 {
+        Ok(())
+    } else {
+        Err(StorageFull)
+    }
+}
+
+/// What local storage holds under `key`.
+pub fn storage_get(key: &str) -> Option<String> {
+    // SAFETY: the page reads the key during the call.
+    take(unsafe { impulse_storage_get(key.as_ptr(), key.len()) })
+}
+
+/// Forgets `key` in local storage.
+pub fn storage_remove(key: &str) {
+    // SAFETY: as above.
+    unsafe { impulse_storage_remove(key.as_ptr(), key.len()) }
+}
+
+/// The page address's fragment, without the `#`.
+pub fn fragment() -> String {
+    // SAFETY: no arguments; the page sets the bytes aside for `take`.
+    take(unsafe { impulse_fragment_get() }).unwrap_or_default()
+}
+
+/// Replaces the page address's fragment (no new history entry).
+pub fn set_fragment(value: &str) {
+    // SAFETY: the page reads the string during the call.
+    unsafe { impulse_fragment_set(value.as_ptr(), value.len()) }
+}

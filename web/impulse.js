@@ -1,0 +1,73 @@
+// Impulse's bridge between the page and the app, as a miniquad plugin (the
+// Rust side is src/web.rs): the state report tests and the page read, file
+// downloads, local storage for autosave, and the address's fragment for
+// shared links. Loaded after macroquad's mq_js_bundle.js, whose
+// UTF8ToString and wasm_memory it uses.
+"use strict";
+(function () {
+    // Bytes set aside for the app, which fetches them with impulse_take.
+    let pending = new Uint8Array(0);
+    const text = (ptr, len) => UTF8ToString(ptr, len);
+    const give = (string) => {
+        pending = new TextEncoder().encode(string);
+        return pending.length;
+    };
+    function register(importObject) {
+        const env = importObject.env;
+        env.impulse_report_state = (ptr, len) => {
+            window.impulseState = text(ptr, len);
+            if (window.impulseFirstReport === undefined) {
+                window.impulseFirstReport = performance.now();
+                const loading = document.getElementById("loading");
+                if (loading) loading.remove();
+            }
+        };
+        env.impulse_download = (namePtr, nameLen, dataPtr, dataLen) => {
+            const name = text(namePtr, nameLen);
+            const data = new Uint8Array(wasm_memory.buffer, dataPtr, dataLen).slice();
+            const url = URL.createObjectURL(new Blob([data]));
+            const link = document.createElement("a");
+            link.href = url;
+            link.download = name;
+            document.body.appendChild(link);
+            link.click();
+            link.remove();
+            setTimeout(() => URL.revokeObjectURL(url), 60000);
+            (window.impulseDownloads = window.impulseDownloads || []).push({ name, bytes: dataLen });
+        };
+        env.impulse_storage_set = (keyPtr, keyLen, valuePtr, valueLen) => {
+            try {
+                localStorage.setItem(text(keyPtr, keyLen), text(valuePtr, valueLen));
+                return 1;
+            } catch (e) {
+                return 0; // quota exceeded, or storage turned off
+            }
+        };
+        env.impulse_storage_get = (keyPtr, keyLen) => {
+            let value = null;
+            try {
+                value = localStorage.getItem(text(keyPtr, keyLen));
+            } catch (e) {
+                value = null;
+            }
+            return value === null ? -1 : give(value);
+        };
+        env.impulse_storage_remove = (keyPtr, keyLen) => {
+            try {
+                localStorage.removeItem(text(keyPtr, keyLen));
+            } catch (e) {
+                // nothing kept, nothing to remove
+            }
+        };
+        env.impulse_fragment_get = () => give(window.location.hash.replace(/^#/, ""));
+        env.impulse_fragment_set = (ptr, len) => {
+            history.replaceState(null, "", "#" + text(ptr, len));
+        };
+        env.impulse_now = () => performance.now() / 1000;
+        env.impulse_take = (ptr, len) => {
+            new Uint8Array(wasm_memory.buffer, ptr, len).set(pending.subarray(0, len));
+            pending = new Uint8Array(0);
+        };
+    }
+    miniquad_add_plugin({ register_plugin: register, name: "impulse", version: 1 });
+})();
