@@ -1,6 +1,7 @@
 //! The command line's shared value parsers: each checks one option's value
 //! and says in one line what is wrong, for `run`, the window and the lab.
 
+#[cfg(not(target_arch = "wasm32"))]
 use impulse::method::Setting;
 
 /// Command-line parser for a positive, finite number of seconds.
@@ -11,6 +12,7 @@ pub fn positive_seconds(s: &str) -> Result<f64, String> {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Command-line parser for substeps: `auto` or 1 to 10000, as in scene files.
 pub fn substeps(s: &str) -> Result<Setting<u32>, String> {
     match s.parse::<Setting<u32>>() {

@@ -11,6 +11,7 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     replace(path, bytes, false)
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// [`write_atomically`], and the data is on the disk before the rename, so
 /// that a power cut leaves either the old file or the new one, never an
 /// empty one. For what the user must not lose: saves and the autosave.

@@ -198,6 +198,7 @@ impl<'a> StateDump<'a> {
 }
 
 /// Writes the dump as JSON.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn write_state(path: &Path, dump: &StateDump) -> std::io::Result<()> {
     let json = serde_json::to_vec_pretty(dump).map_err(std::io::Error::other)?;
     write_atomically(path, &json)
@@ -220,6 +221,11 @@ pub fn write_png(
     height: u32,
     rgba_bottom_up: &[u8],
 ) -> std::io::Result<()> {
+    write_atomically(path, &png_bytes(width, height, rgba_bottom_up)?)
+}
+
+/// An RGBA frame (rows bottom-up) encoded as a PNG.
+pub fn png_bytes(width: u32, height: u32, rgba_bottom_up: &[u8]) -> std::io::Result<Vec<u8>> {
     let row = width as usize * 4;
     let rgb: Vec<u8> = rgba_bottom_up
         .chunks_exact(row)
@@ -236,5 +242,5 @@ pub fn write_png(
         image::ImageFormat::Png,
     )
     .map_err(std::io::Error::other)?;
-    write_atomically(path, &png)
+    Ok(png)
 }

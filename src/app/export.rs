@@ -72,6 +72,15 @@ pub fn ledger_csv(ledger: &Ledger) -> String {
     out
 }
 
+/// The three files, named after `stem`: totals, discs, collisions.
+pub fn files(stem: &str, samples: &[Sample], world: &World) -> [(String, String); 3] {
+    [
+        (format!("{stem}-totals.csv"), totals_csv(samples)),
+        (format!("{stem}-discs.csv"), particles_csv(world)),
+        (format!("{stem}-collisions.csv"), ledger_csv(&world.ledger)),
+    ]
+}
+
 /// Writes the three files into `dir` (created if needed), named after
 /// `stem`; returns their paths.
 pub fn export_all(
@@ -81,11 +90,7 @@ pub fn export_all(
     world: &World,
 ) -> std::io::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir)?;
-    let files = [
-        (format!("{stem}-totals.csv"), totals_csv(samples)),
-        (format!("{stem}-discs.csv"), particles_csv(world)),
-        (format!("{stem}-collisions.csv"), ledger_csv(&world.ledger)),
-    ];
+    let files = files(stem, samples, world);
     let mut written = Vec::new();
     for (name, text) in files {
         let path = dir.join(name);

@@ -210,6 +210,14 @@ impl App {
         let stem = scenes::slug(self.scene.name.as_deref().unwrap_or("scene"));
         let samples: Vec<plot::Sample> = self.totals.samples().copied().collect();
         let dir = self.options.out.clone();
+        if cfg!(target_arch = "wasm32") {
+            for (name, text) in export::files(&stem, &samples, &self.world) {
+                let (stem, _) = name.rsplit_once('.').unwrap_or((&name, ""));
+                let _ = scenes::keep_file(&dir, stem, "csv", text.as_bytes()); // downloads
+            }
+            self.toast("Downloaded the totals, discs and collisions as CSV files");
+            return;
+        }
         match export::export_all(&dir, &stem, &samples, &self.world) {
             Ok(files) => {
                 eprintln!(

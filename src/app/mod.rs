@@ -7,6 +7,7 @@ mod camera;
 mod clock;
 mod cull;
 mod discs;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod display;
 mod draw;
 mod dump;
@@ -19,6 +20,7 @@ mod plot;
 mod readouts;
 mod recovery;
 mod scenes;
+mod share;
 mod trails;
 mod ui;
 mod undo;
@@ -29,7 +31,9 @@ use draw::{Look, Overlays};
 use glam::DVec2;
 use impulse::{Scene, World};
 use interaction::{Gesture, NewDisc};
-use macroquad::miniquad::conf::{Conf, LinuxBackend, Platform};
+use macroquad::miniquad::conf::Conf;
+#[cfg(not(target_arch = "wasm32"))]
+use macroquad::miniquad::conf::{LinuxBackend, Platform};
 use macroquad::prelude::*;
 use std::collections::VecDeque;
 use std::path::PathBuf;
@@ -83,6 +87,7 @@ pub struct WindowOptions {
     pub light: bool,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// The scene `--gas N` opens: `impulse::presets::Gas` with N discs.
 fn gas_scene(count: usize) -> (Scene, String) {
     let mut world = impulse::presets::Gas {
@@ -108,6 +113,7 @@ fn gas_scene(count: usize) -> (Scene, String) {
 /// The scene the window opens without a file: something is already moving.
 pub const DEFAULT_SCENE: &str = impulse::catalogue::DEFAULT.text;
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Loads the scene, then opens the window (or explains why it cannot).
 pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     for (flag, file) in [
@@ -153,6 +159,7 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
 }
 
 /// The options a window has when nothing is given: clap's defaults.
+#[cfg(target_arch = "wasm32")]
 fn default_options() -> WindowOptions {
     use clap::{Args, FromArgMatches};
     let command = WindowOptions::augment_args(clap::Command::new("impulse"));
@@ -166,18 +173,47 @@ fn default_options() -> WindowOptions {
 pub fn run_in_browser() {
     impulse::clock::set_clock(crate::web::now);
     let options = default_options();
-    let origin = "built-in default scene".to_string();
-    let scene = Scene::parse(DEFAULT_SCENE, &origin).expect("the default scene parses");
-    let world = scene.build(&origin).expect("the default scene builds");
+    let default = || {
+        let origin = "built-in default scene".to_string();
+        let scene = Scene::parse(DEFAULT_SCENE, &origin).expect("the default scene parses");
+        (scene, origin)
+    };
+    // A shared link opens its scene; a damaged one says so over the default.
+    let (mut scene, mut origin, mut problem) = match share::scene_in(&crate::web::fragment()) {
+        Some(Ok(scene)) => (scene, "the shared link".to_string(), None),
+        Some(Err(why)) => {
+            let (scene, origin) = default();
+            (
+                scene,
+                origin,
+                Some(format!("This link's scene cannot open: {why}")),
+            )
+        }
+        None => {
+            let (scene, origin) = default();
+            (scene, origin, None)
+        }
+    };
+    let world = match scene.build(&origin) {
+        Ok(world) => world,
+        Err(e) => {
+            problem = Some(format!("This link's scene cannot open: {e}"));
+            (scene, origin) = default();
+            scene.build(&origin).expect("the default scene builds")
+        }
+    };
     let conf = Conf {
         window_title: "Impulse".to_string(),
         high_dpi: true,
         sample_count: 4,
         ..Default::default()
     };
-    macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
+    let mut app = App::new(options, scene, origin, world);
+    app.pending_report = problem.or(app.pending_report.take());
+    macroquad::Window::from_config(conf, app.run());
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Refuses, before any window opens, an output file whose folder does not
 /// exist or which is a folder itself (the window would only find out when it
 /// writes, frame after frame).
@@ -251,6 +287,8 @@ struct App {
     scene_edited: bool,
     /// New discs and mass edits take the radius of one density.
     size_follows_mass: bool,
+    /// A problem found before the window opened, shown in its first frame.
+    pending_report: Option<String>,
 }
 
 impl App {
@@ -306,10 +344,10 @@ impl App {
             press_moment: None,
             scene_edited: false,
             size_follows_mass: false,
+            pending_report: None,
         };
-        if let Some(problem) = recovery_problem {
-            app.report(problem);
-        }
+        // Shown once the window exists (the toast reads its clock).
+        app.pending_report = recovery_problem;
         if app.recovery.offered.is_some() {
             eprintln!(
                 "impulse: an earlier session did not close normally; R restores it ({})",
@@ -340,10 +378,15 @@ impl App {
             self.ui_pass(mouse);
             if self.frame == 0 {
                 self.fit_camera();
+                #[cfg(not(target_arch = "wasm32"))]
                 display::mark_open();
+                if let Some(problem) = self.pending_report.take() {
+                    self.report(problem);
+                }
             }
             self.handle_keys();
             self.handle_mouse(mouse);
+            self.open_dropped_files();
             let step_start = impulse::clock::Instant::now();
             let budget = clock::physics_budget(previous.0, previous.1);
             let running = !self.clock.paused;
@@ -594,24 +637,43 @@ impl App {
         }
     }
 
-    /// Saves the frame F12 asked for and says where.
+    /// Saves the frame F12 asked for and says where (in the browser:
+    /// downloads it).
     fn save_screenshot_key(&mut self, image: &dump::ScreenImage, path: &std::path::Path) {
         let (w, h, rgba) = image;
-        let saved = std::fs::create_dir_all(&self.options.out)
-            .and_then(|()| dump::write_png(path, *w, *h, rgba));
+        let dir = path.parent().unwrap_or(std::path::Path::new("."));
+        let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+        let saved = dump::png_bytes(*w, *h, rgba)
+            .map_err(|e| e.to_string())
+            .and_then(|png| scenes::keep_file(dir, &stem, "png", &png));
         match saved {
-            Ok(()) => {
+            Ok(path) => {
                 eprintln!("impulse: screenshot saved to {}", path.display());
-                self.toast(format!("Screenshot saved to {}", path.display()));
+                let verb = if cfg!(target_arch = "wasm32") {
+                    "downloaded as"
+                } else {
+                    "saved to"
+                };
+                self.toast(format!("Screenshot {verb} {}", path.display()));
             }
-            Err(e) => self.report(format!("Screenshot not saved to {}: {e}", path.display())),
+            Err(e) => self.report(format!("Screenshot not saved: {e}")),
         }
     }
 
+    /// The state dump: into `--dump-state`'s file on the desktop; in the
+    /// browser, reported to the page (`window.impulseState`), every frame
+    /// for up to 2,000 discs and every 30th beyond (a long JSON each frame
+    /// would cost more than the drawing).
     fn write_dump(&self) {
-        let Some(path) = &self.options.dump_state else {
+        #[cfg(not(target_arch = "wasm32"))]
+        let Some(path) = &self.options.dump_state
+        else {
             return;
         };
+        #[cfg(target_arch = "wasm32")]
+        if self.world.particles.len() > 2_000 && self.frame % 30 != 1 {
+            return;
+        }
         let mut state = dump::StateDump::of(&self.world, &self.camera);
         state.frame = self.frame;
         state.paused = self.clock.paused;
@@ -667,8 +729,13 @@ impl App {
             error: self.recovery.error.clone(),
             offered: self.recovery.offered.is_some(),
         };
+        #[cfg(not(target_arch = "wasm32"))]
         if let Err(e) = dump::write_state(path, &state) {
             eprintln!("impulse: cannot write state dump {}: {e}", path.display());
+        }
+        #[cfg(target_arch = "wasm32")]
+        if let Ok(json) = serde_json::to_string(&state) {
+            crate::web::report_state(&json);
         }
     }
 }

@@ -8,6 +8,9 @@
 //! `~/.local/state/impulse/`, else the output folder). A write that fails (a
 //! full disk, a read-only folder) is reported once in the window and on the
 //! terminal, and tried again at the next interval; nothing else changes.
+//!
+//! In the browser the same names are keys of the page's local storage
+//! ([`keep`]); a scene too large for it is reported the same way.
 
 use super::App;
 use impulse::Scene;
@@ -66,8 +69,13 @@ impl Recovery {
             offered: None,
         };
         let mut message = None;
-        if recovery.path.exists() {
-            match Scene::load(&recovery.path) {
+        let origin = recovery.path.display().to_string();
+        let found = keep::read(&recovery.path).map(|text| {
+            text.map_err(|e| e.to_string())
+                .and_then(|text| Scene::parse(&text, &origin).map_err(|e| e.to_string()))
+        });
+        if let Some(found) = found {
+            match found {
                 Ok(scene) => recovery.offered = Some(scene),
                 Err(e) => {
                     message = Some(match recovery.set_aside() {
@@ -110,11 +118,7 @@ impl Recovery {
     /// message when it failed with an error not reported before.
     pub fn save(&mut self, now: f64, hash: u64, text: &str) -> Option<String> {
         self.last_try = now;
-        let written = self
-            .path
-            .parent()
-            .map_or(Ok(()), std::fs::create_dir_all)
-            .and_then(|()| crate::files::write_durably(&self.path, text.as_bytes()));
+        let written = keep::write(&self.path, text);
         match written {
             Ok(()) => {
                 self.saves += 1;
@@ -123,7 +127,7 @@ impl Recovery {
                 None
             }
             Err(e) => {
-                let message = format!("Autosave to {} failed: {e}", self.path.display());
+                let message = format!("Autosave to {} failed: {e}", keep::place(&self.path));
                 let new = self.error.as_deref() != Some(message.as_str());
                 self.error = Some(message.clone());
                 new.then_some(message)
@@ -135,7 +139,7 @@ impl Recovery {
     pub fn set_aside(&mut self) -> std::io::Result<PathBuf> {
         self.offered = None;
         let to = self.path.with_file_name(SET_ASIDE_NAME);
-        std::fs::rename(&self.path, &to)?;
+        keep::rename(&self.path, &to)?;
         Ok(to)
     }
 
@@ -148,8 +152,75 @@ impl Recovery {
     /// The window closes normally: nothing to recover next time.
     pub fn finish(&mut self) {
         if self.every > 0.0 && self.offered.is_none() {
-            let _ = std::fs::remove_file(&self.path);
+            keep::remove(&self.path);
         }
+    }
+}
+
+/// Where the recovery text is kept: files on the desktop.
+#[cfg(not(target_arch = "wasm32"))]
+mod keep {
+    use std::path::Path;
+
+    /// The text at `path`: `None` when there is none, an error when it
+    /// cannot be read.
+    pub fn read(path: &Path) -> Option<std::io::Result<String>> {
+        path.exists().then(|| std::fs::read_to_string(path))
+    }
+
+    /// Writes `text` to `path` atomically and durably (folder created).
+    pub fn write(path: &Path, text: &str) -> std::io::Result<()> {
+        path.parent()
+            .map_or(Ok(()), std::fs::create_dir_all)
+            .and_then(|()| crate::files::write_durably(path, text.as_bytes()))
+    }
+
+    pub fn rename(from: &Path, to: &Path) -> std::io::Result<()> {
+        std::fs::rename(from, to)
+    }
+
+    pub fn remove(path: &Path) {
+        let _ = std::fs::remove_file(path);
+    }
+
+    /// `path` in a message.
+    pub fn place(path: &Path) -> String {
+        path.display().to_string()
+    }
+}
+
+/// Where the recovery text is kept: the page's local storage in the
+/// browser, the paths being its keys.
+#[cfg(target_arch = "wasm32")]
+mod keep {
+    use crate::web;
+    use std::path::Path;
+
+    fn key(path: &Path) -> String {
+        format!("impulse:{}", path.display())
+    }
+
+    pub fn read(path: &Path) -> Option<std::io::Result<String>> {
+        web::storage_get(&key(path)).map(Ok)
+    }
+
+    pub fn write(path: &Path, text: &str) -> std::io::Result<()> {
+        web::storage_set(&key(path), text).map_err(std::io::Error::other)
+    }
+
+    pub fn rename(from: &Path, to: &Path) -> std::io::Result<()> {
+        let text = web::storage_get(&key(from)).unwrap_or_default();
+        web::storage_set(&key(to), &text).map_err(std::io::Error::other)?;
+        web::storage_remove(&key(from));
+        Ok(())
+    }
+
+    pub fn remove(path: &Path) {
+        web::storage_remove(&key(path));
+    }
+
+    pub fn place(_path: &Path) -> String {
+        "the browser's storage".to_string()
     }
 }
 
@@ -210,10 +281,13 @@ impl App {
     pub(super) fn recovery_prompt(&self) -> Option<String> {
         self.recovery.offered.as_ref().map(|scene| {
             let name = scene.name.as_deref().unwrap_or("sandbox");
-            format!(
-                "The last session did not close normally. Restore its {name} ({} discs), or set it aside?",
-                scene.particles.len()
-            )
+            let n = scene.particles.len();
+            if cfg!(target_arch = "wasm32") {
+                // A browser tab is closed, never quit: its sandbox is kept.
+                format!("This browser kept your last sandbox, {name} ({n} discs). Restore it, or set it aside?")
+            } else {
+                format!("The last session did not close normally. Restore its {name} ({n} discs), or set it aside?")
+            }
         })
     }
 }

@@ -5,6 +5,7 @@
 use super::interaction::Gesture;
 use super::ui::Note;
 use super::App;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::files::write_durably;
 use impulse::Scene;
 use std::path::{Path, PathBuf};
@@ -95,9 +96,27 @@ pub fn slug(name: &str) -> String {
     }
 }
 
-/// The first of `dir/stem.toml`, `dir/stem-2.toml`, … that does not exist.
-pub fn free_path(dir: &Path, stem: &str) -> PathBuf {
-    free_file(dir, stem, "toml")
+/// Keeps `bytes` for the user as `stem.ext`: on the desktop written into
+/// `dir` (created if needed) under the first free name, atomically and
+/// durably; in the browser downloaded. Returns the file, or why not.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn keep_file(dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("cannot create {}: {e}", dir.display()))
+        .and_then(|()| {
+            let path = free_file(dir, stem, ext);
+            write_durably(&path, bytes)
+                .map(|()| path.clone())
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))
+        })
+}
+
+/// Keeps `bytes` for the user as `stem.ext`: downloaded by the browser.
+#[cfg(target_arch = "wasm32")]
+pub fn keep_file(_dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
+    let name = format!("{stem}.{ext}");
+    crate::web::download(&name, bytes);
+    Ok(PathBuf::from(name))
 }
 
 /// The first of `dir/stem.ext`, `dir/stem-2.ext`, … that does not exist.
@@ -166,24 +185,66 @@ impl App {
         let scene = self.current_scene();
         let dir = self.options.out.clone();
         let stem = slug(name.as_deref().unwrap_or("scene"));
-        let result = std::fs::create_dir_all(&dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))
-            .and_then(|()| {
-                let path = free_path(&dir, &stem);
-                write_durably(&path, scene.to_toml().as_bytes())
-                    .map(|()| path.clone())
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))
-            });
+        let result = keep_file(&dir, &stem, "toml", scene.to_toml().as_bytes());
         match result {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
-                self.toast(format!("Saved {}", path.display()));
+                let verb = if cfg!(target_arch = "wasm32") {
+                    "Downloaded"
+                } else {
+                    "Saved"
+                };
+                self.toast(format!("{verb} {}", path.display()));
                 Ok(path)
             }
             Err(e) => {
                 let message = format!("Not saved: {e}");
                 self.report(message.clone());
                 Err(message)
+            }
+        }
+    }
+
+    /// Puts the scene into the page's address, to send as a link (the
+    /// browser build); a scene too large for a link says so and offers
+    /// the file instead.
+    pub(super) fn share_link(&mut self) {
+        match super::share::fragment_for(&self.current_scene()) {
+            Ok(fragment) => {
+                #[cfg(target_arch = "wasm32")]
+                crate::web::set_fragment(&fragment);
+                let _ = fragment;
+                self.toast("The page's address now opens this scene: copy it from the address bar and send it");
+            }
+            Err(why) => {
+                self.report(format!("Not shared: {why}"));
+            }
+        }
+    }
+
+    /// Opens the scene files dropped on the window (bytes in the browser,
+    /// a path on the desktop); a bad one is reported and the scene kept.
+    pub(super) fn open_dropped_files(&mut self) {
+        for file in macroquad::input::get_dropped_files() {
+            let name = file
+                .path
+                .as_ref()
+                .map_or_else(|| "dropped file".to_string(), |p| p.display().to_string());
+            let text = match (&file.bytes, &file.path) {
+                (Some(bytes), _) => {
+                    String::from_utf8(bytes.clone()).map_err(|_| format!("{name}: not a text file"))
+                }
+                (None, Some(path)) => {
+                    std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))
+                }
+                (None, None) => Err("a dropped file without content".to_string()),
+            };
+            let scene = text.and_then(|text| Scene::parse(&text, &name).map_err(|e| e.to_string()));
+            match scene {
+                Ok(scene) => {
+                    let _ = self.open_scene(scene, name); // reported
+                }
+                Err(e) => self.report(format!("{e} (kept the current scene)")),
             }
         }
     }

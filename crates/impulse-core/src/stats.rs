@@ -1,8 +1,8 @@
 //! Step statistics: what the last step did and how long each stage took.
 
+use crate::clock::Instant;
 use serde::Serialize;
 use std::time::Duration;
-use crate::clock::Instant;
 
 /// Measures consecutive stages: each [`Lap::lap`] returns the time since
 /// the previous one.

@@ -464,25 +464,44 @@ impl App {
                     }
                 }
             });
-        ui.label("Scene file:");
-        let r = ui.add(
-            egui::TextEdit::singleline(&mut self.ui.path)
-                .hint_text("assets/scenes/preset-8-gas.toml")
-                .desired_width(f32::INFINITY),
-        );
-        self.widget(ui, "scene_path", &r);
-        self.ui.note_text_field(&r);
-        let enter = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        // The browser has no folders to type: a scene file is dropped on
+        // the page, saves and exports download, and a link can carry it.
+        let in_browser = cfg!(target_arch = "wasm32");
+        let mut enter = false;
+        if in_browser {
+            ui.label("Open a scene file: drop it on the page.");
+        } else {
+            ui.label("Scene file:");
+            let r = ui.add(
+                egui::TextEdit::singleline(&mut self.ui.path)
+                    .hint_text("assets/scenes/preset-8-gas.toml")
+                    .desired_width(f32::INFINITY),
+            );
+            self.widget(ui, "scene_path", &r);
+            self.ui.note_text_field(&r);
+            enter = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        }
         ui.horizontal_wrapped(|ui| {
-            let r = ui.button("Open").on_hover_text("Enter in the field");
-            self.widget(ui, "open", &r);
-            if r.clicked() || enter {
-                actions.push(Action::Open);
+            if !in_browser {
+                let r = ui.button("Open").on_hover_text("Enter in the field");
+                self.widget(ui, "open", &r);
+                if r.clicked() || enter {
+                    actions.push(Action::Open);
+                }
             }
             let r = ui.button("Save").on_hover_text("Ctrl+S");
             self.widget(ui, "save", &r);
             if r.clicked() {
                 actions.push(Action::Save);
+            }
+            if in_browser {
+                let r = ui
+                    .button("Share link")
+                    .on_hover_text("puts this scene into the page's address, to send as a link");
+                self.widget(ui, "share", &r);
+                if r.clicked() {
+                    actions.push(Action::Share);
+                }
             }
             if ui.button("Clear discs").on_hover_text("C").clicked() {
                 actions.push(Action::Clear);
@@ -498,7 +517,11 @@ impl App {
                 actions.push(Action::Screenshot);
             }
         });
-        ui.label(format!("Saves go to {}/", self.options.out.display()));
+        if in_browser {
+            ui.label("Saves, exports and screenshots download as files.");
+        } else {
+            ui.label(format!("Saves go to {}/", self.options.out.display()));
+        }
         if let Some(note) = &self.ui.scene_note {
             show_note(ui, note);
         }

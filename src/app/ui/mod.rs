@@ -101,6 +101,8 @@ pub enum Action {
     DeleteSelected,
     Open,
     Save,
+    /// Put the scene into the page address (the browser build).
+    Share,
     Reset,
     Clear,
     Export,
@@ -384,6 +386,7 @@ impl App {
             Action::DeleteSelected => self.delete_selected(),
             Action::Open => self.open_from_panel(),
             Action::Save => self.save_from_panel(),
+            Action::Share => self.share_link(),
             Action::Reset => self.reset_scene(),
             Action::Clear => self.clear_discs(),
             Action::Export => self.export_data(),

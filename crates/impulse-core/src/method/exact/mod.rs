@@ -43,13 +43,13 @@
 //!   change of size, gravity or boundary) makes it start afresh.
 
 use crate::boundary::Boundary;
+use crate::clock::Instant;
 use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
 use crate::particle::Particle;
 use crate::stats::StepStats;
 use glam::DVec2;
 use grid::Grid;
-use crate::clock::Instant;
 
 mod collide;
 mod grid;
