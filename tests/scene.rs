@@ -149,6 +149,43 @@ fn a_saved_world_reloads_bit_for_bit() {
 }
 
 #[test]
+fn a_saved_pile_with_its_contacts_overlapping_reopens_exactly() {
+    // Discs at rest in contact overlap a little: a save of a running pile
+    // must reopen (autosave and recovery depend on it), while the same
+    // overlap written by hand is still refused as a mistake.
+    let file = impulse::catalogue::PRESET_0_PILE;
+    let mut world = Scene::parse(file.text, file.path)
+        .unwrap()
+        .build(file.path)
+        .unwrap();
+    for _ in 0..1200 {
+        world.step(1.0 / 240.0);
+    }
+    let saved = Scene::from_world(&world, None, None);
+    assert!(
+        saved.overlapping,
+        "a settled pile has contacts that overlap"
+    );
+    let reloaded = Scene::parse(&saved.to_toml(), "saved")
+        .unwrap()
+        .build("saved")
+        .unwrap();
+    assert_eq!(reloaded.particles, world.particles);
+    let by_hand = saved.to_toml().replace("overlapping = true\n", "");
+    let refused = Scene::parse(&by_hand, "by hand").and_then(|s| s.build("by hand"));
+    let e = refused
+        .expect_err("an overlap written by hand is refused")
+        .to_string();
+    assert!(e.contains("overlaps"), "{e}");
+    // A world without overlaps is saved without the flag.
+    let spread = Scene::parse(WORLD, "spread")
+        .unwrap()
+        .build("spread")
+        .unwrap();
+    assert!(!Scene::from_world(&spread, None, None).overlapping);
+}
+
+#[test]
 fn value_errors_give_the_line_of_the_field_too() {
     // Overlap: the second disc's `pos` line (line 8 of this text).
     let text = format!(

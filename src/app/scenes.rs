@@ -409,10 +409,10 @@ mod tests {
     fn free_path_skips_existing_files() {
         let dir = std::env::temp_dir().join(format!("impulse-free-path-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        let first = free_path(&dir, "gas");
+        let first = free_file(&dir, "gas", "toml");
         assert_eq!(first, dir.join("gas.toml"));
         std::fs::write(&first, "x").unwrap();
-        assert_eq!(free_path(&dir, "gas"), dir.join("gas-2.toml"));
+        assert_eq!(free_file(&dir, "gas", "toml"), dir.join("gas-2.toml"));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

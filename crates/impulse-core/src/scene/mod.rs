@@ -5,6 +5,8 @@
 //! description = "Two equal discs meet"  # optional, one line
 //! edited = true                         # optional: saved after its discs were
 //!                                       # edited, so the description may not hold
+//! overlapping = true                    # optional: the listed discs may overlap
+//!                                       # (written by saves of a running world)
 //!
 //! [world]
 //! size = [16.0, 10.0]          # metres
@@ -97,8 +99,12 @@ pub struct Scene {
     /// description may no longer describe it.
     #[serde(default, skip_serializing_if = "is_false")]
     pub edited: bool,
-    /// The world's size and laws.
-    /// The `[world]` table.
+    /// The listed discs may overlap: a saved state (discs in contact
+    /// overlap a little, a dense start a lot). Hand-written scenes leave it
+    /// out, so that overlapping discs there are reported as a mistake.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub overlapping: bool,
+    /// The world's size and laws (the `[world]` table).
     pub world: Laws,
     /// How it is simulated.
     #[serde(default, skip_serializing_if = "SimulationSpec::is_default")]
@@ -175,6 +181,23 @@ pub struct FillSpec {
     /// deliberately dense start.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub overlap: f64,
+}
+
+/// Whether any two discs overlap (cells of the widest diameter: O(n)).
+fn any_overlap(particles: &[Particle], laws: &Laws) -> bool {
+    let widest = particles.iter().map(|p| p.radius).fold(0.0, f64::max);
+    if !(widest > 0.0 && widest.is_finite()) {
+        return false;
+    }
+    let mut cells = DiscCells::new(laws.size, 2.0 * widest, laws.boundary);
+    particles.iter().enumerate().any(|(k, p)| {
+        let hit = cells.near(p.pos).any(|other| {
+            let q = &particles[other];
+            laws.boundary.separation(q.pos, p.pos, laws.size).length() < p.radius + q.radius
+        });
+        cells.insert(p.pos, k);
+        hit
+    })
 }
 
 fn is_false(b: &bool) -> bool {
@@ -348,8 +371,10 @@ impl Scene {
             if !w.boundary.admits(w.walls, w.size, p.pos, p.radius) {
                 return Err(bad(field("pos"), "puts the disc outside the box"));
             }
-            let overlapped = cells
-                .near(p.pos)
+            let overlapped = (!self.overlapping)
+                .then(|| cells.near(p.pos))
+                .into_iter()
+                .flatten()
                 .filter(|&other| {
                     let q = &self.particles[other];
                     w.boundary.separation(q.pos, p.pos, w.size).length() < p.radius + q.radius
@@ -462,6 +487,7 @@ impl Scene {
             name,
             description,
             edited: false,
+            overlapping: any_overlap(&world.particles, &world.laws),
             world: world.laws,
             simulation: SimulationSpec {
                 method: world.method,
