@@ -137,6 +137,7 @@ impl App {
                         {
                             let description = scenes::preset_description(k);
                             let r = ui.button(RichText::new(label.as_str()).strong());
+                            self.ui.note_widget(format!("preset_{k}"), r.rect, ppp);
                             if r.clicked() {
                                 actions.push(Action::OpenPreset(k));
                             }

@@ -1,0 +1,269 @@
+"""The browser build in a real browser: headless Chromium (Debian's, with
+its chromium-driver) driven through WebDriver (selenium from PyPI), the way a
+student at a Chromebook uses the page. Run by scripts/test-web.sh, which
+builds dist/ and serves it; the address comes as the first argument.
+
+Checks: the page loads without console errors and reports its first state
+within 3 s; it fills the browser window and follows a resize; the default
+scene moves; a drag on empty space launches a disc along the drag; a preset
+opens from the Presets menu; Save downloads a scene file; a shared link
+reopens its scene; the physics matches the desktop build's (state hashes
+written by `impulse run`, passed in a file as the second argument); and a
+screenshot is saved for a person to look at (third argument).
+"""
+
+import json
+import math
+import sys
+import time
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+
+URL = sys.argv[1]
+SCREENSHOT = sys.argv[2] if len(sys.argv) > 2 else "web-screenshot.png"
+failures = []
+
+
+def check(ok, what):
+    print(("ok     " if ok else "FAILED ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def browser(width=1280, height=800):
+    options = webdriver.ChromeOptions()
+    options.binary_location = "/usr/bin/chromium"
+    for arg in [
+        "--headless=new",
+        "--no-sandbox",
+        "--use-gl=angle",
+        "--use-angle=swiftshader",
+        "--enable-unsafe-swiftshader",
+        f"--window-size={width},{height}",
+    ]:
+        options.add_argument(arg)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    # The chromium-driver package's driver: never a download.
+    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+
+def state(driver):
+    text = driver.execute_script("return window.impulseState || null")
+    return json.loads(text) if text else None
+
+
+def wait_state(driver, until=lambda s: True, seconds=20.0, what="a state report"):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        s = state(driver)
+        if s is not None and until(s):
+            return s
+        time.sleep(0.05)
+    raise AssertionError(f"timed out waiting for {what}")
+
+
+def wait_frames(driver, n):
+    first = wait_state(driver)["frame"]
+    return wait_state(driver, lambda s: s["frame"] >= first + n, what=f"{n} frames")
+
+
+def console_errors(driver):
+    return [e["message"] for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+
+
+def to_screen(s, w):
+    """World point (m) to CSS pixels on the page."""
+    c = s["camera"]
+    ratio = s["_dpr"]
+    x = c["origin"][0] + c["viewport"][0] / 2 + (w[0] - c["center"][0]) * c["scale"]
+    y = c["origin"][1] + c["viewport"][1] / 2 - (w[1] - c["center"][1]) * c["scale"]
+    return [x / ratio, y / ratio]
+
+
+def with_dpr(driver, s):
+    s["_dpr"] = driver.execute_script("return window.devicePixelRatio || 1")
+    return s
+
+
+def pointer(driver, points, hold=True):
+    """Presses at the first CSS point, moves through the rest, releases
+    (`hold=False`: clicks there; `hold=None`: only moves there)."""
+    canvas = driver.find_element(By.ID, "glcanvas")
+    size = canvas.size
+    chain = ActionChains(driver, duration=50)
+    x0, y0 = points[0]
+    chain.move_to_element_with_offset(canvas, x0 - size["width"] / 2, y0 - size["height"] / 2)
+    if hold:
+        chain.click_and_hold()
+    last = points[0]
+    for p in points[1:]:
+        chain.move_by_offset(p[0] - last[0], p[1] - last[1])
+        last = p
+    if hold:
+        chain.release()
+    elif hold is not None:
+        chain.click()
+    chain.perform()
+
+
+def click_widget(driver, s, name):
+    rect = s["panel_widgets"][name]
+    ratio = s["_dpr"]
+    pointer(driver, [[(rect[0] + rect[2] / 2) / ratio, (rect[1] + rect[3] / 2) / ratio]], hold=False)
+
+
+def show_widget(driver, name, section):
+    """Scrolls the side dock until `name` is on the page, opening its
+    `section` on the way if it is closed; returns the state with it."""
+    from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
+
+    s = with_dpr(driver, wait_frames(driver, 1))
+    ratio = s["_dpr"]
+    height = s["layout"]["window"][1]
+
+    def visible(rect):
+        return rect is not None and rect[1] >= 0 and rect[1] + rect[3] <= height
+
+    for _ in range(40):
+        widgets = s["panel_widgets"]
+        if visible(widgets.get(name)):
+            return s
+        if name not in widgets and visible(widgets.get(section)):
+            click_widget(driver, s, section)
+        else:
+            # The wheel scrolls the dock under the pointer (egui knows where
+            # the pointer is from its moves, so it moves there first).
+            anchor = widgets["section_collisions"]
+            x, y = (anchor[0] + anchor[2] / 2) / ratio, height / ratio / 2
+            pointer(driver, [[x, y]], hold=None)
+            wait_frames(driver, 1)
+            origin = ScrollOrigin.from_viewport(int(x), int(y))
+            ActionChains(driver).scroll_from_origin(origin, 0, 300).perform()
+        s = with_dpr(driver, wait_frames(driver, 3))
+    raise AssertionError(f"{name} never came into view")
+
+
+def empty_spot(s):
+    """A world point well clear of every disc and of the walls."""
+    size = s["size"]
+    best = None
+    for i in range(1, 20):
+        for j in range(1, 12):
+            p = [size[0] * i / 20, size[1] * j / 12]
+            walls = min(p[0], p[1], size[0] - p[0], size[1] - p[1])
+            discs = min(math.dist(p, d["pos"]) - d["radius"] for d in s["particles"])
+            clearance = min(walls, discs)
+            if best is None or clearance > best[0]:
+                best = (clearance, p)
+    return best[1]
+
+
+d = browser()
+try:
+    d.get(URL)
+    first = wait_state(d, what="the first state report")
+    loaded_ms = d.execute_script("return window.impulseFirstReport")
+    print(f"first state report {loaded_ms:.0f} ms after navigation", flush=True)
+    check(loaded_ms < 3000, f"interactive within 3 s of navigation ({loaded_ms:.0f} ms)")
+    check(
+        d.execute_script("return document.getElementById('loading') === null"),
+        "the loading note is gone once the app runs",
+    )
+
+    # The page fills the window.
+    inner = d.execute_script("return [window.innerWidth, window.innerHeight]")
+    s = with_dpr(d, wait_frames(d, 2))
+    window = [v / s["_dpr"] for v in s["layout"]["window"]]
+    check(
+        abs(window[0] - inner[0]) <= 1 and abs(window[1] - inner[1]) <= 1,
+        f"the app fills the page ({window} for a page of {inner})",
+    )
+
+    # The default scene moves.
+    a = wait_frames(d, 5)
+    b = wait_frames(d, 20)
+    moved = any(p["pos"] != q["pos"] for p, q in zip(a["particles"], b["particles"]))
+    check(b["time"] > a["time"] and moved, "the default scene moves")
+
+    # A drag on empty space launches a disc along the drag (paused, so
+    # that nothing it meets changes its velocity before it is read).
+    s = with_dpr(d, wait_frames(d, 1))
+    click_widget(d, s, "play")
+    s = with_dpr(d, wait_state(d, lambda s: s["paused"], what="Pause"))
+    n = len(s["particles"])
+    start = empty_spot(s)
+    p0 = to_screen(s, start)
+    path = [[p0[0] + 10 * k, p0[1] - 5 * k] for k in range(0, 9)]
+    pointer(d, path)
+    s = wait_frames(d, 3)
+    check(len(s["particles"]) == n + 1, f"a drag launched one disc ({n} → {len(s['particles'])})")
+    if len(s["particles"]) == n + 1:
+        v = s["particles"][-1]["vel"]
+        # Screen right and up is world +x, +y.
+        check(v[0] > 0 and v[1] > 0, f"the disc flies along the drag (v = {v})")
+    click_widget(d, with_dpr(d, wait_frames(d, 1)), "play")
+
+    # A preset opens from the Presets menu.
+    s = with_dpr(d, wait_frames(d, 1))
+    click_widget(d, s, "presets")
+    s = with_dpr(d, wait_state(d, lambda s: s["ui"]["presets_open"], what="the Presets menu"))
+    wait_state(d, lambda s: "preset_1" in s["panel_widgets"], what="the preset buttons")
+    s = with_dpr(d, wait_frames(d, 10))  # the window has settled where it opens
+    click_widget(d, s, "preset_1")
+    s = wait_state(d, lambda s: "preset-2" in s["scene_origin"], what="preset 2 to open")
+    check("heavy" in (s["scene_name"] or "").lower(), f"a preset opened from the menu: {s['scene_name']}")
+
+    # Save downloads the scene as a file.
+    s = show_widget(d, "save", "section_scene")
+    click_widget(d, s, "save")
+    wait_frames(d, 2)
+    downloads = d.execute_script("return window.impulseDownloads || []")
+    check(
+        any(x["name"].endswith(".toml") and x["bytes"] > 100 for x in downloads),
+        f"Save downloads a scene file: {downloads}",
+    )
+
+    # Share puts the scene in the address; the link reopens it.
+    s = show_widget(d, "share", "section_scene")
+    click_widget(d, s, "share")
+    wait_frames(d, 2)
+    link = d.current_url
+    check("#scene=" in link, f"Share link puts the scene into the address ({len(link)} characters)")
+    shared = wait_frames(d, 1)
+    d.save_screenshot(SCREENSHOT)
+    errors = console_errors(d)
+    check(not errors, f"no console errors: {errors}")
+finally:
+    d.quit()
+
+# The link, opened in a fresh browser, opens that scene.
+d = browser(1000, 700)
+try:
+    d.get(link)
+    s = wait_state(d, lambda s: s["frame"] >= 2, what="the shared link to open")
+    check(s["scene_origin"] == "the shared link", f"the link opens its scene ({s['scene_origin']})")
+    check(
+        len(s["particles"]) == len(shared["particles"]) and s["scene_name"] == shared["scene_name"],
+        "the shared scene has the same discs and name",
+    )
+    inner = d.execute_script("return [window.innerWidth, window.innerHeight]")
+    d.set_window_size(800, 600)
+    resized = d.execute_script("return [window.innerWidth, window.innerHeight]")
+    s = with_dpr(d, wait_state(
+        d,
+        lambda s: abs(s["layout"]["window"][0] - resized[0] * (s.get("_dpr") or 1)) <= 1,
+        what="the app to follow the resize",
+    ))
+    check(True, f"the app follows a resize ({inner} → {resized})")
+    errors = console_errors(d)
+    check(not errors, f"no console errors on the shared link: {errors}")
+finally:
+    d.quit()
+
+if failures:
+    print(f"{len(failures)} browser check(s) failed", flush=True)
+    sys.exit(1)
+print("all browser checks passed", flush=True)
