@@ -104,6 +104,18 @@ impl Camera {
     pub fn pan_pixels(&mut self, pixels: DVec2) {
         self.center -= DVec2::new(pixels.x, -pixels.y) / self.scale;
     }
+
+    /// Two fingers moved from `before` to `after` (screen px): the scene
+    /// follows their midpoint and scales with their distance, so the world
+    /// point between them stays between them.
+    pub fn pinch(&mut self, before: [DVec2; 2], after: [DVec2; 2]) {
+        let (mid_before, mid_after) = ((before[0] + before[1]) / 2.0, (after[0] + after[1]) / 2.0);
+        let (d_before, d_after) = (before[0].distance(before[1]), after[0].distance(after[1]));
+        self.pan_pixels(mid_after - mid_before);
+        if d_before > 1.0 && d_after > 1.0 {
+            self.zoom_at(mid_after, d_after / d_before);
+        }
+    }
 }
 
 #[cfg(test)]
@@ -112,6 +124,25 @@ mod tests {
 
     fn camera() -> Camera {
         Camera::fitting(DVec2::new(16.0, 10.0), DVec2::new(1280.0, 800.0), 40.0)
+    }
+
+    #[test]
+    fn a_pinch_keeps_the_point_between_the_fingers_and_scales_with_them() {
+        let mut c = camera();
+        let before = [DVec2::new(500.0, 400.0), DVec2::new(700.0, 400.0)];
+        let held = c.screen_to_world(DVec2::new(600.0, 400.0));
+        let scale = c.scale;
+        // Apart to twice the distance, and the pair moved right and down.
+        let after = [DVec2::new(450.0, 450.0), DVec2::new(850.0, 450.0)];
+        c.pinch(before, after);
+        assert!((c.scale - 2.0 * scale).abs() < 1e-9);
+        let now = c.world_to_screen(held);
+        assert!((now - DVec2::new(650.0, 450.0)).length() < 1e-9, "{now}");
+        // Fingers on one spot change nothing but the pan.
+        let spot = [DVec2::new(10.0, 10.0); 2];
+        let s = c.scale;
+        c.pinch(spot, spot);
+        assert_eq!(c.scale, s);
     }
 
     #[test]

@@ -326,6 +326,39 @@ impl App {
         self.toast("Cleared: drag on empty space to launch discs");
     }
 
+    /// Two or more fingers on a touch screen pan and zoom (the first
+    /// finger alone is a mouse: a drag launches a disc). While they are
+    /// down, whatever the first finger began is dropped.
+    pub(super) fn handle_touches(&mut self) {
+        let fingers: Vec<DVec2> = touches()
+            .iter()
+            .filter(|t| {
+                matches!(
+                    t.phase,
+                    TouchPhase::Started | TouchPhase::Moved | TouchPhase::Stationary
+                )
+            })
+            .map(|t| DVec2::new(f64::from(t.position.x), f64::from(t.position.y)))
+            .collect();
+        if fingers.len() >= 2 {
+            let now = [fingers[0], fingers[1]];
+            if let Some(before) = self.pinch {
+                self.camera.pinch(before, now);
+                self.camera_fitted = false;
+            }
+            self.pinch = Some(now);
+            self.gesture = Gesture::Idle;
+            self.press_moment = None;
+        } else if self.pinch.is_some() && fingers.is_empty() {
+            self.pinch = None;
+        }
+    }
+
+    /// Whether two fingers are panning and zooming (mouse gestures wait).
+    pub(super) fn pinching(&self) -> bool {
+        self.pinch.is_some()
+    }
+
     pub(super) fn handle_mouse(&mut self, mouse: DVec2) {
         let at = self.camera.screen_to_world(mouse);
         let now = get_time();

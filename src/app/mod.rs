@@ -289,6 +289,8 @@ struct App {
     size_follows_mass: bool,
     /// A problem found before the window opened, shown in its first frame.
     pending_report: Option<String>,
+    /// Two fingers down on a touch screen: where they were last frame.
+    pinch: Option<[DVec2; 2]>,
 }
 
 impl App {
@@ -345,6 +347,7 @@ impl App {
             scene_edited: false,
             size_follows_mass: false,
             pending_report: None,
+            pinch: None,
         };
         // Shown once the window exists (the toast reads its clock).
         app.pending_report = recovery_problem;
@@ -385,7 +388,10 @@ impl App {
                 }
             }
             self.handle_keys();
-            self.handle_mouse(mouse);
+            self.handle_touches();
+            if !self.pinching() {
+                self.handle_mouse(mouse);
+            }
             self.open_dropped_files();
             let step_start = impulse::clock::Instant::now();
             let budget = clock::physics_budget(previous.0, previous.1);

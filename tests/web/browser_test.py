@@ -109,6 +109,17 @@ def pointer(driver, points, hold=True):
     chain.perform()
 
 
+def touch(driver, kind, points):
+    """A touch event with fingers at CSS `points` (Chrome DevTools)."""
+    driver.execute_cdp_cmd(
+        "Input.dispatchTouchEvent",
+        {
+            "type": kind,
+            "touchPoints": [{"x": p[0], "y": p[1], "id": k} for k, p in enumerate(points)],
+        },
+    )
+
+
 def click_widget(driver, s, name):
     rect = s["panel_widgets"][name]
     ratio = s["_dpr"]
@@ -205,6 +216,40 @@ try:
         # Screen right and up is world +x, +y.
         check(v[0] > 0 and v[1] > 0, f"the disc flies along the drag (v = {v})")
     click_widget(d, with_dpr(d, wait_frames(d, 1)), "play")
+
+    # Touch: one finger launches a disc, two fingers spread apart zoom in.
+    s = with_dpr(d, wait_frames(d, 1))
+    click_widget(d, s, "play")
+    s = with_dpr(d, wait_state(d, lambda s: s["paused"], what="Pause"))
+    n = len(s["particles"])
+    p0 = to_screen(s, empty_spot(s))
+    touch(d, "touchStart", [p0])
+    wait_frames(d, 2)
+    for k in range(1, 7):
+        touch(d, "touchMove", [[p0[0] + 12 * k, p0[1] + 6 * k]])
+        wait_frames(d, 1)
+    touch(d, "touchEnd", [])
+    s = with_dpr(d, wait_frames(d, 3))
+    launched = len(s["particles"]) == n + 1
+    check(
+        launched and s["particles"][-1]["vel"][0] > 0 and s["particles"][-1]["vel"][1] < 0,
+        f"a one-finger drag launches a disc along it ({n} → {len(s['particles'])})",
+    )
+    scale = s["camera"]["scale"]
+    c = to_screen(s, [s["size"][0] / 2, s["size"][1] / 2])
+    touch(d, "touchStart", [[c[0] - 40, c[1]], [c[0] + 40, c[1]]])
+    wait_frames(d, 2)
+    for k in range(1, 7):
+        touch(d, "touchMove", [[c[0] - 40 - 10 * k, c[1]], [c[0] + 40 + 10 * k, c[1]]])
+        wait_frames(d, 1)
+    touch(d, "touchEnd", [])
+    s = with_dpr(d, wait_frames(d, 3))
+    zoom = s["camera"]["scale"] / scale
+    check(
+        1.6 < zoom < 2.9 and len(s["particles"]) == n + 1,
+        f"two fingers spread to 2.5× apart zoom in {zoom:.2f}× and launch nothing",
+    )
+    click_widget(d, s, "play")
 
     # A preset opens from the Presets menu.
     s = with_dpr(d, wait_frames(d, 1))
