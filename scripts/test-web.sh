@@ -3,7 +3,8 @@
 # serves it on a free local port, and drives it in headless Chromium through
 # WebDriver (tests/web/browser_test.py). Needs Debian's chromium and
 # chromium-driver (installed with apt when run as root) and selenium from
-# PyPI (installed into target/web-venv). Writes target/web-screenshot.png.
+# PyPI (installed into target/web-venv). Compares the physics with the
+# desktop build's (`impulse fingerprint`). Writes target/web-screenshot.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if ! command -v chromium >/dev/null || [ ! -x /usr/bin/chromedriver ]; then
@@ -20,6 +21,7 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 "$venv/bin/python" -c "import selenium" 2>/dev/null || "$venv/bin/pip" install -q selenium
 scripts/build-web.sh
+cargo run --release --quiet -- fingerprint > target/fingerprints.json
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server --bind 127.0.0.1 -d dist "$port" >/dev/null 2>&1 &
 server=$!
@@ -28,4 +30,5 @@ for _ in $(seq 50); do
   python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break
   sleep 0.1
 done
-"$venv/bin/python" tests/web/browser_test.py "http://127.0.0.1:$port/" target/web-screenshot.png
+"$venv/bin/python" tests/web/browser_test.py "http://127.0.0.1:$port/" target/web-screenshot.png \
+  target/fingerprints.json

@@ -54,6 +54,10 @@ enum Command {
     Accuracy(lab::accuracy::AccuracyArgs),
     /// Run the stability suite under every method: where each one fails.
     Stress(lab::stress::StressArgs),
+    /// Print the state hashes of the shipped scenes after a fixed number of
+    /// steps, as JSON (the browser test compares the web build's with them).
+    #[command(hide = true)]
+    Fingerprint,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -67,6 +71,10 @@ fn main() -> ExitCode {
         Some(Command::Bench(args)) => lab::bench::run(&args),
         Some(Command::Accuracy(args)) => lab::accuracy::run(&args),
         Some(Command::Stress(args)) => lab::stress::run(&args),
+        Some(Command::Fingerprint) => {
+            println!("{}", impulse::fingerprint::fingerprints_json());
+            Ok(())
+        }
         None => app::run(cli.window),
     };
     match result {

@@ -15,6 +15,7 @@ extern "C" {
     fn impulse_fragment_set(ptr: *const u8, len: usize);
     fn impulse_take(ptr: *mut u8, len: usize);
     fn impulse_now() -> f64;
+    fn impulse_report_fingerprints(ptr: *const u8, len: usize);
 }
 
 /// Seconds on the page's clock (`performance.now()`), for the core's stage
@@ -22,6 +23,16 @@ extern "C" {
 pub fn now() -> f64 {
     // SAFETY: no arguments, a number back.
     unsafe { impulse_now() }
+}
+
+/// Computes the physics fingerprints ([`impulse::fingerprint`]) and puts
+/// them where the page can read them (`window.impulseFingerprints`); the
+/// browser test calls it and compares them with the desktop's.
+#[no_mangle]
+pub extern "C" fn impulse_fingerprints() {
+    let json = impulse::fingerprint::fingerprints_json();
+    // SAFETY: the page reads `len` bytes of our memory during the call.
+    unsafe { impulse_report_fingerprints(json.as_ptr(), json.len()) }
 }
 
 /// The plugin's version, checked by the page's loader against its own.

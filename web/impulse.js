@@ -63,6 +63,9 @@
         env.impulse_fragment_set = (ptr, len) => {
             history.replaceState(null, "", "#" + text(ptr, len));
         };
+        env.impulse_report_fingerprints = (ptr, len) => {
+            window.impulseFingerprints = text(ptr, len);
+        };
         env.impulse_now = () => performance.now() / 1000;
         env.impulse_take = (ptr, len) => {
             new Uint8Array(wasm_memory.buffer, ptr, len).set(pending.subarray(0, len));

@@ -7,9 +7,10 @@ Checks: the page loads without console errors and reports its first state
 within 3 s; it fills the browser window and follows a resize; the default
 scene moves; a drag on empty space launches a disc along the drag; a preset
 opens from the Presets menu; Save downloads a scene file; a shared link
-reopens its scene; the physics matches the desktop build's (state hashes
-written by `impulse run`, passed in a file as the second argument); and a
-screenshot is saved for a person to look at (third argument).
+reopens its scene; touch launches and pinches; the physics matches the
+desktop build's bit for bit (`impulse fingerprint`'s state hashes, passed in
+a file as the third argument); and a screenshot is saved for a person to look
+at (second argument).
 """
 
 import json
@@ -24,6 +25,7 @@ from selenium.webdriver.common.by import By
 
 URL = sys.argv[1]
 SCREENSHOT = sys.argv[2] if len(sys.argv) > 2 else "web-screenshot.png"
+DESKTOP_PRINTS = sys.argv[3] if len(sys.argv) > 3 else None
 failures = []
 
 
@@ -305,6 +307,20 @@ try:
     check(True, f"the app follows a resize ({inner} → {resized})")
     errors = console_errors(d)
     check(not errors, f"no console errors on the shared link: {errors}")
+
+    # Same physics: the presets and seeded fills, stepped in the browser,
+    # end in the same bits as on the desktop.
+    if DESKTOP_PRINTS:
+        d.execute_script("wasm_exports.impulse_fingerprints()")
+        web = json.loads(d.execute_script("return window.impulseFingerprints"))
+        with open(DESKTOP_PRINTS) as f:
+            desktop = json.load(f)
+        differing = [k for k in desktop if web.get(k) != desktop[k]]
+        check(
+            len(web) == len(desktop) and not differing,
+            f"the web build's state after {len(desktop)} scenes × 240 steps equals the desktop's"
+            + (f" (differ: {differing})" if differing else ""),
+        )
 finally:
     d.quit()
 

@@ -31,6 +31,7 @@ pub mod boundary;
 pub mod broad_phase;
 pub mod catalogue;
 pub mod clock;
+pub mod fingerprint;
 pub mod history;
 pub mod impact;
 pub mod integration;

@@ -26,7 +26,7 @@ const LAYERS: &[&[&str]] = &[
     &["method"],
     &["auto"],
     &["world"],
-    &["history", "presets", "scene", "warnings"],
+    &["fingerprint", "history", "presets", "scene", "warnings"],
     &["stress"],
 ];
 
