@@ -16,9 +16,8 @@ const LAYERS: &[&[&str]] = &[
         "math",
         "parallel",
         "particle",
-        "stats",
     ],
-    &["boundary", "integration", "metrics"],
+    &["boundary", "integration", "metrics", "stats"],
     &["broad_phase", "laws"],
     &["narrow_phase"],
     &["resolution"],
@@ -26,8 +25,8 @@ const LAYERS: &[&[&str]] = &[
     &["method"],
     &["auto"],
     &["world"],
-    &["fingerprint", "history", "presets", "scene", "warnings"],
-    &["stress"],
+    &["history", "presets", "scene", "warnings"],
+    &["fingerprint", "stress"],
 ];
 
 /// Items the crate root re-exports, and the module each comes from.
