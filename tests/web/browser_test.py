@@ -35,7 +35,7 @@ def check(ok, what):
         failures.append(what)
 
 
-def browser(width=1280, height=800):
+def browser(width=1280, height=800, scale=None):
     options = webdriver.ChromeOptions()
     options.binary_location = "/usr/bin/chromium"
     for arg in [
@@ -45,7 +45,7 @@ def browser(width=1280, height=800):
         "--use-angle=swiftshader",
         "--enable-unsafe-swiftshader",
         f"--window-size={width},{height}",
-    ]:
+    ] + ([f"--force-device-scale-factor={scale}"] if scale else []):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     # The chromium-driver package's driver: never a download.
@@ -286,8 +286,9 @@ try:
 finally:
     d.quit()
 
-# The link, opened in a fresh browser, opens that scene.
-d = browser(1000, 700)
+# The link, opened in a fresh browser on a screen of pixel ratio 2, opens
+# that scene.
+d = browser(1000, 700, scale=2)
 try:
     d.get(link)
     s = wait_state(d, lambda s: s["frame"] >= 2, what="the shared link to open")
@@ -296,15 +297,39 @@ try:
         len(s["particles"]) == len(shared["particles"]) and s["scene_name"] == shared["scene_name"],
         "the shared scene has the same discs and name",
     )
+    ratio = d.execute_script("return window.devicePixelRatio")
     inner = d.execute_script("return [window.innerWidth, window.innerHeight]")
+    s = wait_frames(d, 2)
+    check(
+        ratio == 2 and abs(s["layout"]["window"][0] - 2 * inner[0]) <= 2,
+        f"at pixel ratio {ratio} the app draws {s['layout']['window']} pixels for a page of {inner}",
+    )
+    d.save_screenshot(SCREENSHOT.replace(".png", "-pixel-ratio-2.png"))
     d.set_window_size(800, 600)
     resized = d.execute_script("return [window.innerWidth, window.innerHeight]")
-    s = with_dpr(d, wait_state(
+    wait_state(
         d,
-        lambda s: abs(s["layout"]["window"][0] - resized[0] * (s.get("_dpr") or 1)) <= 1,
+        lambda s: abs(s["layout"]["window"][0] - ratio * resized[0]) <= 2,
         what="the app to follow the resize",
-    ))
+    )
     check(True, f"the app follows a resize ({inner} → {resized})")
+
+    # A browser that will not keep the autosave says so in the window.
+    d.execute_script(
+        "Storage.prototype.setItem = function () {"
+        " throw new DOMException('full', 'QuotaExceededError'); }"
+    )
+    s = wait_state(
+        d,
+        lambda s: s["recovery"]["error"] is not None,
+        seconds=20,
+        what="the autosave to fail",
+    )
+    message = s["ui"]["message"] or ""
+    check(
+        "storage" in s["recovery"]["error"] and "Autosave" in message,
+        f"a full browser storage is reported: {message!r}",
+    )
     errors = console_errors(d)
     check(not errors, f"no console errors on the shared link: {errors}")
 

@@ -580,7 +580,12 @@ impl App {
             if ui.button("Zoom −").on_hover_text("−").clicked() {
                 actions.push(Action::Zoom(1.0 / 1.15));
             }
-            if ui.button("Full screen").on_hover_text("F11").clicked() {
+            // A page may go full screen only inside the click's own event,
+            // which a frame never is: in the browser its own full-screen
+            // key (F11, or the Chromebook's) does it.
+            if !cfg!(target_arch = "wasm32")
+                && ui.button("Full screen").on_hover_text("F11").clicked()
+            {
                 actions.push(Action::Fullscreen);
             }
             if ui
