@@ -45,7 +45,13 @@ const MAX_STEPS: f64 = 1e9;
 struct Summary {
     scene: String,
     steps: u64,
+    /// Simulated time reached (s): less than `requested_time` when steps
+    /// were cut short.
     sim_time: f64,
+    /// Simulated time asked for (s).
+    requested_time: f64,
+    /// Steps the method cut short (`exact`'s event cap): the run fell behind.
+    truncated_steps: u64,
     dt: f64,
     /// Impacts in all: between discs and with walls.
     collisions: u64,
@@ -93,9 +99,12 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     let plan = world.plan_for(dt);
     let started = Instant::now();
     let mut max_overlap = 0.0f64;
+    let mut truncated_steps = 0u64;
     let bar = crate::progress::bar(steps as u64, "simulating");
     for k in 0..steps as u64 {
-        max_overlap = max_overlap.max(world.step(dt).max_overlap);
+        let stats = world.step(dt);
+        max_overlap = max_overlap.max(stats.max_overlap);
+        truncated_steps += u64::from(stats.truncated);
         if k % 256 == 0 {
             bar.set_position(k);
         }
@@ -106,6 +115,8 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         scene: origin,
         steps: world.steps,
         sim_time: world.time,
+        requested_time: args.time,
+        truncated_steps,
         dt,
         collisions: world.total_pair_collisions + world.total_wall_hits,
         pair_collisions: world.total_pair_collisions,
@@ -124,7 +135,45 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     } else {
         summary_text(&summary)
     };
-    print_quietly(&text)
+    print_quietly(&text)?;
+    match fell_behind(&summary) {
+        Some(warning) => Err(FellBehind(warning).into()),
+        None => Ok(()),
+    }
+}
+
+/// Exit code of a run that did not reach the time it was asked for.
+pub const EXIT_FELL_BEHIND: u8 = 3;
+
+/// A run whose method cut steps short: the summary is printed, and the
+/// binary exits with [`EXIT_FELL_BEHIND`] after this one line.
+#[derive(Debug)]
+pub struct FellBehind(pub String);
+
+impl std::fmt::Display for FellBehind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for FellBehind {}
+
+/// The one-line warning for a run that fell behind, naming the method and
+/// what to use instead; `None` when it reached the time asked for.
+fn fell_behind(s: &Summary) -> Option<String> {
+    let short = s.requested_time - s.sim_time > 0.5 * s.dt;
+    (s.truncated_steps > 0 && short).then(|| {
+        format!(
+            "{} cut {} of {} steps short (its event cap) and reached {:.4} s of the {} s asked for: \
+             discs at rest make an event-driven method stall; use --method impulse (resting contact) \
+             or --method auto",
+            s.plan.method.name(),
+            s.truncated_steps,
+            s.steps,
+            s.sim_time,
+            s.requested_time
+        )
+    })
 }
 
 /// Prints to stdout; a reader that went away (`| head`) is not an error.
@@ -146,6 +195,12 @@ fn summary_text(s: &Summary) -> String {
     println!("scene            {}", s.scene);
     println!("steps            {} (dt = {} s)", s.steps, s.dt);
     println!("sim time         {:.6} s", s.sim_time);
+    if s.truncated_steps > 0 {
+        println!(
+            "cut short        {} steps (of {}), {:.6} s asked for",
+            s.truncated_steps, s.steps, s.requested_time
+        );
+    }
     println!("pair collisions  {}", s.pair_collisions);
     println!("wall hits        {}", s.wall_hits);
     println!("max overlap      {:.3e} m", s.max_overlap);

@@ -79,6 +79,10 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is::<headless::FellBehind>() => {
+            eprintln!("impulse: warning: {e}");
+            ExitCode::from(headless::EXIT_FELL_BEHIND)
+        }
         Err(e) => {
             eprintln!("impulse: {e:#}");
             ExitCode::FAILURE

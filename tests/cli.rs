@@ -351,3 +351,34 @@ fn window_output_files_in_missing_folders_are_refused_before_a_window_opens() {
         assert_one_line(&[flag, &folder], 1, &[flag, "is a folder"]);
     }
 }
+
+#[test]
+fn a_run_that_falls_behind_says_so_and_exits_with_its_own_code() {
+    // Heavy discs resting on light ones: `exact` stalls at its event cap.
+    let scene = asset("stress-mass-ratio.toml");
+    let out = impulse(&[
+        "run", &scene, "--time", "0.1", "--method", "exact", "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
+    let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (reached, asked) = (
+        summary["sim_time"].as_f64().unwrap(),
+        summary["requested_time"].as_f64().unwrap(),
+    );
+    assert!(reached < asked && asked == 0.1, "{reached} of {asked}");
+    assert!(summary["truncated_steps"].as_u64().unwrap() > 0);
+    let err = stderr(&out);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("exact") && err.contains("--method impulse"),
+        "{err}"
+    );
+    // The same scene under impulse reaches its time, cuts nothing, exits 0.
+    let out = impulse(&[
+        "run", &scene, "--time", "0.1", "--method", "impulse", "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(summary["truncated_steps"], 0);
+    assert!((summary["sim_time"].as_f64().unwrap() - 0.1).abs() < 1e-9);
+}

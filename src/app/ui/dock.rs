@@ -16,6 +16,8 @@ use egui_plot::{Arrows, Bar, BarChart, Corner, Legend, Line, Plot, PlotPoints, P
 const PX_COLOR: Color32 = Color32::from_rgb(86, 180, 233); // sky blue
 const PY_COLOR: Color32 = Color32::from_rgb(230, 159, 0); // orange
 const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
+/// Below this height (points) a plot has no room for its legend box.
+const COMPACT_PLOT_HEIGHT: f32 = 110.0;
 
 impl App {
     /// Draws the dock; returns its rectangle (points).
@@ -93,8 +95,20 @@ impl App {
             ),
             _ => "No record yet: run the simulation.".to_string(),
         };
-        ui.label(drift);
+        // A short dock (a laptop's browser) leaves the plots too low for a
+        // legend box inside them, which then covered the line above: the
+        // series are named in coloured words beside it instead.
+        let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
+        ui.horizontal_wrapped(|ui| {
+            ui.label(drift);
+            if compact {
+                for (name, color) in [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("KE", KE_COLOR)] {
+                    ui.label(RichText::new(format!("━ {name}")).color(color).strong());
+                }
+            }
+        });
         let height = ui.available_height();
+        let legend = |corner| (!compact).then(|| Legend::default().position(corner));
         let series = |value: fn(&crate::app::plot::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
         };
@@ -105,10 +119,12 @@ impl App {
         );
         ui.columns(2, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
-            still_plot("momentum_plot")
-                .height(height)
-                .legend(Legend::default().position(Corner::RightBottom))
-                .x_axis_label("time (s)")
+            let plot = still_plot("momentum_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
                 .y_axis_label("p (kg·m/s)")
                 .include_y(lo)
                 .include_y(hi)
@@ -130,10 +146,12 @@ impl App {
                     );
                 });
             let (lo, hi) = padded_range(ke.iter().map(|p| p[1]));
-            still_plot("energy_plot")
-                .height(height)
-                .legend(Legend::default().position(Corner::RightBottom))
-                .x_axis_label("time (s)")
+            let plot = still_plot("energy_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
                 .y_axis_label("KE (J)")
                 .include_y(lo)
                 .include_y(hi)

@@ -179,7 +179,11 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     for t in &throughput {
         let _ = writeln!(
             table,
-            "| exact | {} | {:.1e} | {:.3e} | {:.2} | {:.1e} |",
+            "| exact{} | {} | {:.1e} | {:.3e} | {:.2} | {:.1e} |",
+            match t.cut_short {
+                0 => String::new(),
+                k => format!(" ({k} steps cut short: stalled)"),
+            },
             t.n,
             t.collisions as f64,
             t.collisions_per_second,
@@ -247,6 +251,8 @@ pub struct Throughput {
     pub events_per_collision: f64,
     /// |KE after − KE before| / KE before over the timed steps.
     pub energy_change: f64,
+    /// Steps the event cap cut short (the rate is then of a stalled run).
+    pub cut_short: usize,
 }
 
 /// Measures `exact` on the gas with long steps, for at least `collisions`
@@ -262,7 +268,7 @@ pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
     let ke0 = world.metrics().kinetic_energy;
     let target = collisions;
     let bar = progress::bar(target as u64, &format!("exact, {n} discs"));
-    let (mut rates, mut events, mut collisions) = (Vec::new(), 0usize, 0usize);
+    let (mut rates, mut events, mut collisions, mut cut_short) = (Vec::new(), 0usize, 0usize, 0);
     // A gas that stopped colliding would never reach the target: give up
     // after a step without collisions.
     while rates.len() < 3 || (collisions < target && rates.last() != Some(&0.0)) {
@@ -271,6 +277,7 @@ pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
         rates.push(stats.pair_collisions as f64 / t.elapsed().as_secs_f64());
         events += stats.events;
         collisions += stats.pair_collisions;
+        cut_short += usize::from(stats.truncated);
         bar.set_position(collisions.min(target) as u64);
     }
     bar.finish_and_clear();
@@ -280,6 +287,7 @@ pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
         collisions_per_second: median(&mut rates),
         events_per_collision: events as f64 / collisions.max(1) as f64,
         energy_change: (world.metrics().kinetic_energy - ke0).abs() / ke0,
+        cut_short,
     }
 }
 
