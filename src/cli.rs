@@ -64,3 +64,14 @@ pub fn gas_count(s: &str) -> Result<usize, String> {
         )),
     }
 }
+
+/// A number for a message: plain when it reads well, in e-notation when it
+/// is very large or very small (`1e300`, not 301 digits).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn number(x: f64) -> String {
+    if x != 0.0 && !(1e-4..1e9).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}

@@ -92,8 +92,9 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     let steps = (args.time / dt).round();
     if steps > MAX_STEPS {
         anyhow::bail!(
-            "--time {} with --dt {dt} would take {steps:e} steps (limit {MAX_STEPS:e})",
-            args.time
+            "--time {} with --dt {} would take {steps:e} steps (limit {MAX_STEPS:e})",
+            crate::cli::number(args.time),
+            crate::cli::number(dt)
         );
     }
     let plan = world.plan_for(dt);

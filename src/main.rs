@@ -35,7 +35,12 @@ fn main() {
 /// Impulse: a sandbox for 2D disc collisions.
 #[cfg(not(target_arch = "wasm32"))]
 #[derive(Parser, Debug)]
-#[command(name = "impulse", version, args_conflicts_with_subcommands = true)]
+#[command(
+    name = "impulse",
+    version,
+    args_conflicts_with_subcommands = true,
+    allow_negative_numbers = true
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -47,6 +52,9 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Simulate a scene without a window and print a summary.
+    // Negative numbers are values, so that `--time -1` gets the value's own
+    // message ("must be positive"), not "unexpected argument".
+    #[command(allow_negative_numbers = true)]
     Run(headless::RunArgs),
     /// Time a step per disc for every broad phase and method against n.
     Bench(lab::bench::BenchArgs),

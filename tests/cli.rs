@@ -382,3 +382,26 @@ fn a_run_that_falls_behind_says_so_and_exits_with_its_own_code() {
     assert_eq!(summary["truncated_steps"], 0);
     assert!((summary["sim_time"].as_f64().unwrap() - 0.1).abs() < 1e-9);
 }
+
+#[test]
+fn negative_numbers_reach_their_check_and_messages_say_things_once() {
+    let scene = asset("default.toml");
+    let out = impulse(&["run", &scene, "--time", "-1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("-1") && err.contains("number of seconds"),
+        "{err}"
+    );
+    assert!(!err.contains("unexpected argument"), "{err}");
+    let out = impulse(&["run", &scene, "--time", "1", "--dt", "-0.5"]);
+    assert!(stderr(&out).contains("positive"), "{}", stderr(&out));
+    // A missing file: its cause once.
+    let out = impulse(&["run", "/no/such/scene.toml", "--time", "1"]);
+    let err = stderr(&out);
+    assert_eq!(err.matches("No such file").count(), 1, "{err}");
+    // A huge number in e-notation, not hundreds of digits.
+    let out = impulse(&["run", &scene, "--time", "1e300"]);
+    let err = stderr(&out);
+    assert!(err.contains("--time 1e300") && err.len() < 200, "{err}");
+}

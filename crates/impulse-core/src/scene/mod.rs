@@ -216,12 +216,13 @@ fn one() -> f64 {
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
     /// The file could not be read.
-    #[error("{origin}: cannot read: {source}")]
+    #[error("{origin}: cannot read: {cause}")]
     Io {
         /// File name.
         origin: String,
-        /// The operating system's reason.
-        source: std::io::Error,
+        /// The operating system's reason (in the message, not chained
+        /// after it as well, so it is said once).
+        cause: std::io::Error,
     },
     /// The text is not valid TOML or does not fit the scene format.
     #[error("{origin}: {message}")]
@@ -254,9 +255,9 @@ impl Scene {
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let origin = path.display().to_string();
-        let io = |source| SceneError::Io {
+        let io = |cause| SceneError::Io {
             origin: origin.clone(),
-            source,
+            cause,
         };
         // Read at most one byte past the limit, so `/dev/zero` or a huge file
         // is refused instead of filling memory.
