@@ -77,16 +77,15 @@ def console_errors(driver):
 
 
 def to_screen(s, w):
-    """World point (m) to CSS pixels on the page."""
+    """World point (m) to CSS pixels on the page (the app's pixels are CSS
+    pixels, whatever the screen's pixel ratio)."""
     c = s["camera"]
-    ratio = s["_dpr"]
     x = c["origin"][0] + c["viewport"][0] / 2 + (w[0] - c["center"][0]) * c["scale"]
     y = c["origin"][1] + c["viewport"][1] / 2 - (w[1] - c["center"][1]) * c["scale"]
-    return [x / ratio, y / ratio]
+    return [x, y]
 
 
 def with_dpr(driver, s):
-    s["_dpr"] = driver.execute_script("return window.devicePixelRatio || 1")
     return s
 
 
@@ -124,8 +123,7 @@ def touch(driver, kind, points):
 
 def click_widget(driver, s, name):
     rect = s["panel_widgets"][name]
-    ratio = s["_dpr"]
-    pointer(driver, [[(rect[0] + rect[2] / 2) / ratio, (rect[1] + rect[3] / 2) / ratio]], hold=False)
+    pointer(driver, [[rect[0] + rect[2] / 2, rect[1] + rect[3] / 2]], hold=False)
 
 
 def show_widget(driver, name, section):
@@ -134,7 +132,6 @@ def show_widget(driver, name, section):
     from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
 
     s = with_dpr(driver, wait_frames(driver, 1))
-    ratio = s["_dpr"]
     height = s["layout"]["window"][1]
 
     def visible(rect):
@@ -150,7 +147,7 @@ def show_widget(driver, name, section):
             # The wheel scrolls the dock under the pointer (egui knows where
             # the pointer is from its moves, so it moves there first).
             anchor = widgets["section_collisions"]
-            x, y = (anchor[0] + anchor[2] / 2) / ratio, height / ratio / 2
+            x, y = anchor[0] + anchor[2] / 2, height / 2
             pointer(driver, [[x, y]], hold=None)
             wait_frames(driver, 1)
             origin = ScrollOrigin.from_viewport(int(x), int(y))
@@ -189,7 +186,7 @@ try:
     # The page fills the window.
     inner = d.execute_script("return [window.innerWidth, window.innerHeight]")
     s = with_dpr(d, wait_frames(d, 2))
-    window = [v / s["_dpr"] for v in s["layout"]["window"]]
+    window = s["layout"]["window"]
     check(
         abs(window[0] - inner[0]) <= 1 and abs(window[1] - inner[1]) <= 1,
         f"the app fills the page ({window} for a page of {inner})",
@@ -300,16 +297,32 @@ try:
     ratio = d.execute_script("return window.devicePixelRatio")
     inner = d.execute_script("return [window.innerWidth, window.innerHeight]")
     s = wait_frames(d, 2)
+    drawn = d.execute_script(
+        "const c = document.getElementById('glcanvas'); return [c.width, c.height]"
+    )
     check(
-        ratio == 2 and abs(s["layout"]["window"][0] - 2 * inner[0]) <= 2,
-        f"at pixel ratio {ratio} the app draws {s['layout']['window']} pixels for a page of {inner}",
+        ratio == 2
+        and abs(drawn[0] - 2 * inner[0]) <= 2
+        and abs(s["layout"]["window"][0] - inner[0]) <= 1,
+        f"at pixel ratio {ratio} the canvas has {drawn} device pixels for a page of {inner}",
+    )
+    check(
+        s["layout"]["min_text_px"] >= 14,
+        f"text is as large at pixel ratio 2 ({s['layout']['min_text_px']} CSS px at least)",
+    )
+    view = s["layout"]["world"]
+    corners = [to_screen(s, [0, 0]), to_screen(s, s["size"])]
+    check(
+        all(view[0] - 1 <= p[0] <= view[0] + view[2] + 1 for p in corners)
+        and all(view[1] - 1 <= p[1] <= view[1] + view[3] + 1 for p in corners),
+        f"at pixel ratio 2 the whole box is in the world's rectangle ({corners} in {view})",
     )
     d.save_screenshot(SCREENSHOT.replace(".png", "-pixel-ratio-2.png"))
     d.set_window_size(800, 600)
     resized = d.execute_script("return [window.innerWidth, window.innerHeight]")
     wait_state(
         d,
-        lambda s: abs(s["layout"]["window"][0] - ratio * resized[0]) <= 2,
+        lambda s: abs(s["layout"]["window"][0] - resized[0]) <= 1,
         what="the app to follow the resize",
     )
     check(True, f"the app follows a resize ({inner} → {resized})")

@@ -162,7 +162,7 @@ impl App {
 
     fn widget(&mut self, ui: &Ui, name: &str, response: &egui::Response) {
         self.ui
-            .note_widget(name, response.rect, ui.ctx().pixels_per_point());
+            .note_widget(name, response.rect, super::px_per_point(ui.ctx()));
     }
 
     /// Play or pause, step, slower, faster, reset, presets, help, fit.
@@ -429,7 +429,7 @@ impl App {
                     select_all_on_focus(ui, &r, &self.ui.fields.text[k]);
                     self.ui.note_text_field(&r);
                     self.ui
-                        .note_widget(FIELD_KEYS[k], r.rect, ui.ctx().pixels_per_point());
+                        .note_widget(FIELD_KEYS[k], r.rect, super::px_per_point(ui.ctx()));
                     if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                         enter = true;
                     }

@@ -160,7 +160,7 @@ impl App {
             if let Some(note) = self.ui.table.note.clone() {
                 let r = show_note(ui, &note);
                 self.ui
-                    .note_widget("table_note", r.rect, ui.ctx().pixels_per_point());
+                    .note_widget("table_note", r.rect, super::px_per_point(ui.ctx()));
             }
         });
         if self.world.particles.is_empty() {
@@ -171,7 +171,7 @@ impl App {
         let mut commit: Option<CellEdit> = None;
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
-        let ppp = ui.ctx().pixels_per_point();
+        let ppp = super::px_per_point(ui.ctx());
         let mut cells = Vec::new();
         let particles = &self.world.particles;
         let editing = self.ui.table.editing.clone();

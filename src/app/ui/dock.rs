@@ -53,7 +53,7 @@ impl App {
     }
 
     fn tab_strip(&mut self, ui: &mut egui::Ui) {
-        let ppp = ui.ctx().pixels_per_point();
+        let ppp = super::px_per_point(ui.ctx());
         ui.horizontal(|ui| {
             for tab in DockTab::ALL {
                 let chosen = self.ui.tab == tab && self.ui.dock_expanded;
@@ -97,13 +97,14 @@ impl App {
         };
         // A short dock (a laptop's browser) leaves the plots too low for a
         // legend box inside them, which then covered the line above: the
-        // series are named in coloured words beside it instead.
+        // series are named in coloured words beside it instead (p in
+        // kg·m/s, KE in J, as the line says).
         let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
         ui.horizontal_wrapped(|ui| {
             ui.label(drift);
             if compact {
                 for (name, color) in [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("KE", KE_COLOR)] {
-                    ui.label(RichText::new(format!("━ {name}")).color(color).strong());
+                    ui.label(RichText::new(format!("— {name}")).color(color).strong());
                 }
             }
         });
@@ -125,7 +126,8 @@ impl App {
                 None => plot,
             };
             plot.x_axis_label("time (s)")
-                .y_axis_label("p (kg·m/s)")
+                // Too low for a rotated label: the line above gives the units.
+                .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
                 .include_y(lo)
                 .include_y(hi)
                 .label_formatter(|name, v| {
@@ -152,7 +154,7 @@ impl App {
                 None => plot,
             };
             plot.x_axis_label("time (s)")
-                .y_axis_label("KE (J)")
+                .y_axis_label(if compact { "" } else { "KE (J)" })
                 .include_y(lo)
                 .include_y(hi)
                 .label_formatter(|name, v| {

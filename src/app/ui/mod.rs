@@ -273,6 +273,14 @@ impl Laws {
     }
 }
 
+/// The app's pixels per egui point. The app's pixels are macroquad's: the
+/// mouse, the camera and the dump use them (a window's pixels on a desktop,
+/// CSS pixels in a browser), while egui draws `dpi` times as many device
+/// pixels on a high-density screen, so text is as large and sharper there.
+pub fn px_per_point(ctx: &egui::Context) -> f32 {
+    ctx.pixels_per_point() / macroquad::window::screen_dpi_scale()
+}
+
 /// An egui rectangle (points) as [x, y, w, h] in pixels.
 fn to_px(rect: egui::Rect, ppp: f32) -> [f32; 4] {
     [
@@ -290,11 +298,15 @@ impl App {
         let mut actions = Vec::new();
         let laws_before = Laws::of(&self.world);
         egui_macroquad::ui(|ctx| {
-            if self.ui.applied != Some((self.ui.scale, self.ui.theme)) {
-                theme::apply(ctx, self.ui.scale, self.ui.theme);
+            let dpi = macroquad::window::screen_dpi_scale();
+            let wanted_ppp = dpi * self.ui.scale;
+            if self.ui.applied != Some((self.ui.scale, self.ui.theme))
+                || (ctx.pixels_per_point() - wanted_ppp).abs() > 1e-3
+            {
+                theme::apply(ctx, wanted_ppp, self.ui.theme);
                 self.ui.applied = Some((self.ui.scale, self.ui.theme));
             }
-            let ppp = ctx.pixels_per_point();
+            let ppp = px_per_point(ctx);
             self.ui.widgets.clear();
             self.ui.text_focus = false;
             let mut panels = Vec::new();
@@ -338,7 +350,7 @@ impl App {
                 window: [screen.width() * ppp, screen.height() * ppp],
                 world: to_px(world, ppp),
                 panels,
-                min_text_px: theme::min_text_px(ctx),
+                min_text_px: theme::min_text_points(ctx) * ppp,
                 ui_scale: self.ui.scale,
             };
         });

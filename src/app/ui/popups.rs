@@ -94,7 +94,7 @@ pub const HELP: &[(&str, &str)] = &[
 impl App {
     /// The popups that are open.
     pub(super) fn popups(&mut self, ctx: &egui::Context, actions: &mut Vec<Action>) {
-        let ppp = ctx.pixels_per_point();
+        let ppp = super::px_per_point(ctx);
         let screen = ctx.screen_rect();
         if self.ui.help_open {
             let mut open = true;

@@ -11,7 +11,7 @@ const BAR_POINTS: f64 = 120.0;
 impl App {
     /// Draws the strip; returns its rectangle (points).
     pub(super) fn strip(&mut self, ctx: &egui::Context) -> egui::Rect {
-        let ppp = f64::from(ctx.pixels_per_point());
+        let ppp = f64::from(super::px_per_point(ctx));
         let metres = nice_length(BAR_POINTS * ppp / self.camera.scale);
         let bar = (metres * self.camera.scale / ppp) as f32;
         let message = self
@@ -48,7 +48,7 @@ impl App {
                         let line = result.clone().unwrap_or_default();
                         let r = ui.add(egui::Label::new(RichText::new(line).strong()).wrap());
                         self.ui
-                            .note_widget("pi_result", r.rect, ctx.pixels_per_point());
+                            .note_widget("pi_result", r.rect, super::px_per_point(ctx));
                     }
                     (Some(message), _) => {
                         let color = if ui.visuals().dark_mode {

@@ -99,9 +99,10 @@ impl Theme {
     }
 }
 
-/// Sets egui's scale, text sizes and colours.
-pub fn apply(ctx: &egui::Context, scale: f32, theme: Theme) {
-    ctx.set_zoom_factor(scale);
+/// Sets egui's device pixels per point (the screen's pixel density times
+/// the UI scale), text sizes and colours.
+pub fn apply(ctx: &egui::Context, pixels_per_point: f32, theme: Theme) {
+    ctx.set_pixels_per_point(pixels_per_point);
     let (preference, mut visuals) = match theme {
         Theme::Dark => (egui::Theme::Dark, egui::Visuals::dark()),
         Theme::Light => (egui::Theme::Light, egui::Visuals::light()),
@@ -135,15 +136,15 @@ pub fn apply(ctx: &egui::Context, scale: f32, theme: Theme) {
     ctx.set_style_of(preference, style);
 }
 
-/// The smallest text size egui draws with now, in physical pixels.
-pub fn min_text_px(ctx: &egui::Context) -> f32 {
+/// The smallest text size egui draws with now, in points.
+pub fn min_text_points(ctx: &egui::Context) -> f32 {
     let smallest = ctx
         .style()
         .text_styles
         .values()
         .map(|f| f.size)
         .fold(f32::INFINITY, f32::min);
-    smallest * ctx.pixels_per_point()
+    smallest
 }
 
 #[cfg(test)]
@@ -176,7 +177,7 @@ mod tests {
                 apply(&ctx, scale, theme);
                 let _ = ctx.run(Default::default(), |_| {});
                 assert_eq!(
-                    min_text_px(&ctx),
+                    min_text_points(&ctx) * ctx.pixels_per_point(),
                     MIN_TEXT_POINTS * scale,
                     "{scale} {theme:?}"
                 );

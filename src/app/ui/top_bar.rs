@@ -38,7 +38,7 @@ impl App {
                 };
                 let state = ui.label(state.strong());
                 self.ui
-                    .note_widget("run_state", state.rect, ctx.pixels_per_point());
+                    .note_widget("run_state", state.rect, super::px_per_point(ctx));
                 if let Some(slow) = self.slow_note() {
                     ui.label(RichText::new(slow).color(paused));
                 }
@@ -85,7 +85,7 @@ impl App {
                     self.ui.note_widget(
                         format!("warning_{}", warning.code),
                         r.rect,
-                        ctx.pixels_per_point(),
+                        super::px_per_point(ctx),
                     );
                 }
                 if !self.ui.docks_open {
