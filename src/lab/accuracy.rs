@@ -85,12 +85,16 @@ const METRICS: [Metric; 4] = [
         "RMS position error after 0.25 s (radii)",
         |p| p.trajectory_error,
     ),
-    ("collisions", "relative error of the collision count", |p| {
-        p.collision_error
-    }),
-    ("energy", "relative energy drift under gravity", |p| {
-        p.energy_drift
-    }),
+    (
+        "collisions",
+        "relative error of the collision count over 10 s",
+        |p| p.collision_error,
+    ),
+    (
+        "energy",
+        "relative energy drift over 10 s, falling under gravity",
+        |p| p.energy_drift,
+    ),
     ("pressure", "relative error of the wall pressure", |p| {
         p.pressure_error
     }),
@@ -250,8 +254,14 @@ pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
     crate::files::write_atomically(&args.out.join("accuracy.csv"), csv(&points).as_bytes())?;
     for (name, label, error) in METRICS {
         let mut series = series_by_method(&points, error);
-        series.push(noise_floor(&points, error));
-        let front = pareto_front(&points, error);
+        let floor = noise_floor(&points, error);
+        // Below the noise floor the errors are rounding, not accuracy.
+        let mut front = pareto_front(&points, error);
+        let level = floor.points.first().map_or(0.0, |p| p.1);
+        for p in &mut front.points {
+            p.1 = p.1.max(level);
+        }
+        series.push(floor);
         let title = format!("Speed against accuracy: {name}");
         let chart = Chart {
             title: &title,
@@ -268,24 +278,59 @@ pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// One series per method and substep count: a colour per method, a marker
+/// per substep count, its points joined in step order (largest step, the
+/// cheapest, first), so that each line is a convergence curve.
 fn series_by_method(points: &[Point], error: fn(&Point) -> f64) -> Vec<Series> {
-    let mut series: Vec<Series> = Vec::new();
+    let mut series: Vec<(Method, u32, Series)> = Vec::new();
     for p in points {
-        let name = p.method.name().to_string();
         let xy = (p.cost, error(p).max(ZERO_ERROR));
-        match series.iter_mut().find(|s| s.name == name) {
-            Some(s) => s.points.push(xy),
-            None => series.push(Series {
-                name,
-                points: vec![xy],
-                dashed: false,
-            }),
+        match series
+            .iter_mut()
+            .find(|(m, k, _)| *m == p.method && *k == p.substeps)
+        {
+            Some((_, _, s)) => s.points.push(xy),
+            None => series.push((
+                p.method,
+                p.substeps,
+                Series {
+                    name: match (p.method.uses_substeps(), p.substeps) {
+                        (false, _) => p.method.name().to_string(),
+                        (true, 1) => format!("{}, 1 substep", p.method.name()),
+                        (true, k) => format!("{}, {k} substeps", p.method.name()),
+                    },
+                    points: vec![xy],
+                    colour: Some(method_colour(p.method)),
+                    marker: Some(substep_marker(p.method, p.substeps)),
+                    ..Default::default()
+                },
+            )),
         }
     }
-    for s in &mut series {
-        s.points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    series.sort_by_key(|(m, k, _)| (method_colour(*m), *k));
+    series.into_iter().map(|(_, _, s)| s).collect()
+}
+
+/// The method's colour in the charts (indices into the chart palette:
+/// orange, sky blue, bluish green, blue), the same in every chart.
+pub fn method_colour(method: Method) -> usize {
+    match method {
+        Method::Seed => 0,
+        Method::Impulse => 1,
+        Method::Verlet => 2,
+        Method::Exact => 4,
     }
-    series
+}
+
+/// A marker per substep count: circle 1, square 4 (or 8), triangle 16;
+/// `exact` a diamond.
+fn substep_marker(method: Method, substeps: u32) -> usize {
+    match (method, substeps) {
+        (Method::Exact, _) => 3,
+        (_, 0..=1) => 0,
+        (_, 2..=8) => 1,
+        _ => 2,
+    }
 }
 
 /// The largest error of `exact` against itself at other step sizes, drawn
@@ -306,6 +351,9 @@ fn noise_floor(points: &[Point], error: fn(&Point) -> f64) -> Series {
         name: "noise floor (exact vs exact)".into(),
         points: vec![(lo, floor), (hi, floor)],
         dashed: true,
+        colour: Some(7),
+        marker: Some(4),
+        line: None,
     }
 }
 
@@ -325,9 +373,10 @@ pub fn pareto_front(points: &[Point], error: fn(&Point) -> f64) -> Series {
         }
     }
     Series {
-        name: "Pareto front".into(),
+        name: "Pareto front (not below the noise floor)".into(),
         points: front,
         dashed: true,
+        ..Default::default()
     }
 }
 

@@ -40,6 +40,8 @@ pub struct Row {
     pub figure: String,
     /// The pass criterion, in words.
     pub criterion: String,
+    /// The criterion's threshold on the figure, short.
+    pub threshold: String,
     /// One outcome per method, in the order of the method names.
     pub outcomes: Vec<Outcome>,
 }
@@ -83,9 +85,10 @@ pub fn run(args: &StressArgs) -> anyhow::Result<()> {
         }
         rows.push(Row {
             key: scenario.key.into(),
-            title: scenario.title.into(),
+            title: scenario.title_for(size).into(),
             figure: scenario.figure.into(),
             criterion: scenario.criterion.into(),
+            threshold: scenario.threshold.into(),
             outcomes,
         });
     }
@@ -162,23 +165,25 @@ fn cell(text: &str) -> String {
 /// The table (figure and ✓/✗ per cell), then the criteria and every run's
 /// summary.
 pub fn markdown(methods: &[String], rows: &[Row]) -> String {
-    let mut out = String::from("| scenario |");
+    let mut out = String::from("| scenario | pass if |");
     for m in methods {
         let _ = write!(out, " {} |", cell(m));
     }
-    out.push_str("\n|---|");
+    out.push_str("\n|---|---|");
     out.push_str(&":---:|".repeat(methods.len()));
     out.push('\n');
     for row in rows {
-        let _ = write!(out, "| {} |", cell(&row.title));
+        let threshold = row.threshold.trim_start_matches("pass if ");
+        let _ = write!(out, "| {} | {} |", cell(&row.title), cell(threshold));
         for o in &row.outcomes {
             let _ = write!(out, " {} {} |", compact(o.figure), mark(o.pass));
         }
         out.push('\n');
     }
     out.push_str(
-        "\nEach cell is the scenario's figure (— when none was measured): \
-         ✓ the criterion held, ✗ it did not.\n\n## criteria\n\n",
+        "\nEach cell is the scenario's figure: ✓ the criterion held, ✗ it did not; \
+         — means no figure was measured (the run stalled or failed first, as its \
+         details say).\n\n## criteria\n\n",
     );
     for row in rows {
         let _ = writeln!(
@@ -249,7 +254,7 @@ fn chart(
     };
     let labels: Vec<(String, String)> = rows
         .iter()
-        .map(|r| (r.title.clone(), r.figure.clone()))
+        .map(|r| (r.title.clone(), format!("{}; {}", r.figure, r.threshold)))
         .collect();
     let cells: Vec<GridCell> = rows
         .iter()
@@ -261,7 +266,7 @@ fn chart(
         .collect();
     let pass = format!("{yes} criterion held");
     let fail = format!("{no} criterion missed");
-    let note = format!("{size} suite; cells give the figure named under each scenario");
+    let note = format!("{size} suite; cells: the figure named under each scenario (— none: the run stalled or failed first)");
     let grid = Grid {
         title: "Stability suite: where each method fails",
         legend: &[(&pass, PASS_FILL), (&fail, FAIL_FILL)],
@@ -292,6 +297,7 @@ mod tests {
             title: title.into(),
             figure: format!("{key} figure"),
             criterion: format!("{key} criterion"),
+            threshold: format!("{key} threshold"),
             outcomes,
         };
         let rows = vec![
@@ -355,13 +361,16 @@ mod tests {
         let md = markdown(&methods, &rows);
         let table: Vec<&str> = md.lines().take_while(|l| l.starts_with('|')).collect();
         assert_eq!(table.len(), 2 + rows.len(), "{md}");
-        assert_eq!(table[0], "| scenario | seed | exact |");
-        assert_eq!(table[1], "|---|:---:|:---:|");
-        assert_eq!(table[2], "| 1. Bullet \\| fast | 1 ✗ | 0 ✓ |");
-        assert_eq!(table[3], "| 4. Pile | — ✗ | 2.1e-2 ✓ |");
+        assert_eq!(table[0], "| scenario | pass if | seed | exact |");
+        assert_eq!(table[1], "|---|---|:---:|:---:|");
+        assert_eq!(
+            table[2],
+            "| 1. Bullet \\| fast | bullet threshold | 1 ✗ | 0 ✓ |"
+        );
+        assert_eq!(table[3], "| 4. Pile | pile threshold | — ✗ | 2.1e-2 ✓ |");
         // The escaped pipe aside, every table line has one cell per column.
         for line in &table {
-            assert_eq!(line.replace("\\|", "").matches('|').count(), 4, "{line}");
+            assert_eq!(line.replace("\\|", "").matches('|').count(), 5, "{line}");
         }
         let section = |name: &str| -> Vec<String> {
             md.split(&format!("## {name}\n\n"))

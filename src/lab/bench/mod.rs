@@ -422,10 +422,17 @@ fn series_of(rows: &[Row]) -> Vec<Series> {
         let name = label(r);
         match series.iter_mut().find(|s| s.name == name) {
             Some(s) => s.points.push((r.n as f64, r.ns_per_particle_step)),
+            // A colour per method (as in every chart), a line style per
+            // broad phase, a triangle for the runs on several threads.
             None => series.push(Series {
                 name,
                 points: vec![(r.n as f64, r.ns_per_particle_step)],
-                dashed: r.method != Method::Impulse,
+                colour: Some(crate::lab::accuracy::method_colour(r.method)),
+                line: BroadPhaseKind::ALL
+                    .iter()
+                    .position(|k| k.name() == r.broad_phase),
+                marker: Some(if r.threads > 1 { 2 } else { 0 }),
+                ..Default::default()
             }),
         }
     }

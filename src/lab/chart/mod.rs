@@ -4,7 +4,8 @@
 //!
 //! A [`Chart`] is a title, two axis labels, a linear or logarithmic scale per
 //! axis, some [`Series`] and optionally one highlighted series (say a Pareto
-//! front) drawn thick and black on top of the others. [`write_chart`] renders
+//! front) drawn thick and black beneath the others, whose markers stay
+//! visible on it. [`write_chart`] renders
 //! it at 1200×800 with grid lines, one marker per point, a legend to the right
 //! of the plot, and the Okabe–Ito colour-blind-safe palette.
 //!
@@ -57,6 +58,31 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Draw the line dashed (for a reference slope or a model, say).
     pub dashed: bool,
+    /// Colour, an index into [`PALETTE`]; by default the series' own index,
+    /// so series that belong together (one method) can share a colour.
+    pub colour: Option<usize>,
+    /// Marker shape, an index into the five shapes (circle, square,
+    /// triangle, diamond, cross); by default the series' own index.
+    pub marker: Option<usize>,
+    /// Line style, an index into [`LINE_STYLES`] (solid, dashed, dotted,
+    /// long dashes); by default solid, or dashed if `dashed`.
+    pub line: Option<usize>,
+}
+
+/// A legend entry: name, colour, marker, line pattern, highlighted.
+type LegendEntry<'a> = (&'a str, RGBColor, Marker, Option<(u32, u32)>, bool);
+
+/// Line styles: `None` solid, else (dash, gap) in pixels.
+pub const LINE_STYLES: [Option<(u32, u32)>; 4] = [None, Some((12, 7)), Some((3, 5)), Some((24, 6))];
+
+impl Series {
+    /// The (dash, gap) the line is drawn with, or `None` for solid.
+    fn pattern(&self) -> Option<(u32, u32)> {
+        match self.line {
+            Some(k) => LINE_STYLES[k % LINE_STYLES.len()],
+            None => self.dashed.then_some((12, 7)),
+        }
+    }
 }
 
 /// Everything [`write_chart`] draws.
@@ -74,7 +100,7 @@ pub struct Chart<'a> {
     pub log_y: bool,
     /// The series, coloured in order from the Okabe–Ito palette.
     pub series: &'a [Series],
-    /// A series drawn thick and black on top of the others, e.g. a Pareto
+    /// A series drawn thick and black beneath the others, e.g. a Pareto
     /// front; it gets the last legend entry.
     pub highlight: Option<&'a Series>,
 }
@@ -250,20 +276,20 @@ fn draw_marker<DB: DrawingBackend, CT: CoordTranslate>(
     .map_err(draw_error)
 }
 
-/// Draws a polyline, dashed or solid (any coordinate system).
+/// Draws a polyline, solid or with (dash, gap) `pattern` (any coordinate
+/// system).
 fn draw_line<DB: DrawingBackend, CT: CoordTranslate>(
     area: &DrawingArea<DB, CT>,
     points: Vec<CT::From>,
-    dashed: bool,
+    pattern: Option<(u32, u32)>,
     style: ShapeStyle,
 ) -> Result<()>
 where
     CT::From: Clone,
 {
-    if dashed {
-        area.draw(&DashedPathElement::new(points, 12, 7, style))
-    } else {
-        area.draw(&PathElement::new(points, style))
+    match pattern {
+        Some((dash, gap)) => area.draw(&DashedPathElement::new(points, dash, gap, style)),
+        None => area.draw(&PathElement::new(points, style)),
     }
     .map_err(draw_error)
 }
@@ -301,19 +327,19 @@ fn draw<DB: DrawingBackend>(
     )?;
     let (_, body) = root.margin(0, 8, 8, 8).split_vertically(56);
 
-    // Legend entries: (name, colour, marker, dashed, highlighted).
-    let mut entries: Vec<(&str, RGBColor, Marker, bool, bool)> = chart
+    // Legend entries: (name, colour, marker, line pattern, highlighted).
+    let mut entries: Vec<LegendEntry> = chart
         .series
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let colour = PALETTE[i % PALETTE.len()];
-            let marker = MARKERS[i % MARKERS.len()];
-            (s.name.as_str(), colour, marker, s.dashed, false)
+            let colour = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
+            let marker = MARKERS[s.marker.unwrap_or(i) % MARKERS.len()];
+            (s.name.as_str(), colour, marker, s.pattern(), false)
         })
         .collect();
     if let Some(h) = chart.highlight {
-        entries.push((h.name.as_str(), BLACK, Marker::Circle, h.dashed, true));
+        entries.push((h.name.as_str(), BLACK, Marker::Circle, h.pattern(), true));
     }
     let mut text_room = 0.0f64;
     for entry in &entries {
@@ -403,24 +429,16 @@ fn draw<DB: DrawingBackend>(
         true,
     )?;
 
-    for (i, runs) in layout.series.iter().enumerate() {
-        let (_, colour, marker, dashed, _) = entries[i];
-        for run in runs {
-            draw_line(area, run.clone(), dashed, colour.stroke_width(SERIES_WIDTH))?;
-            for &p in run {
-                draw_marker(area, p, marker, MARKER_SIZE, colour.filled())?;
-            }
-        }
-    }
+    // The highlight first, so that no data point is hidden under it.
     if let (Some(runs), Some(h)) = (&layout.highlight, chart.highlight) {
         // A white halo first, so the line reads on top of whatever it crosses.
         for run in runs {
             let halo = HALO.stroke_width(HIGHLIGHT_WIDTH + 4);
-            draw_line(area, run.clone(), false, halo)?;
+            draw_line(area, run.clone(), None, halo)?;
         }
         for run in runs {
             let line = BLACK.stroke_width(HIGHLIGHT_WIDTH);
-            draw_line(area, run.clone(), h.dashed, line)?;
+            draw_line(area, run.clone(), h.pattern(), line)?;
             for &p in run {
                 draw_marker(area, p, Marker::Circle, HIGHLIGHT_MARKER + 2, HALO.filled())?;
                 draw_marker(area, p, Marker::Circle, HIGHLIGHT_MARKER, BLACK.filled())?;
@@ -428,6 +446,20 @@ fn draw<DB: DrawingBackend>(
         }
     }
 
+    for (i, runs) in layout.series.iter().enumerate() {
+        let (_, colour, marker, pattern, _) = entries[i];
+        for run in runs {
+            draw_line(
+                area,
+                run.clone(),
+                pattern,
+                colour.stroke_width(SERIES_WIDTH),
+            )?;
+            for &p in run {
+                draw_marker(area, p, marker, MARKER_SIZE, colour.filled())?;
+            }
+        }
+    }
     if !entries.is_empty() {
         draw_legend(&legend, ts, &entries)?;
     }
@@ -439,7 +471,7 @@ fn draw<DB: DrawingBackend>(
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     ts: Typesetting,
-    entries: &[(&str, RGBColor, Marker, bool, bool)],
+    entries: &[LegendEntry],
 ) -> Result<()> {
     const ROW: i32 = 30;
     const TOP: i32 = 12;
@@ -461,7 +493,8 @@ fn draw_legend<DB: DrawingBackend>(
 
     let anchor = (HPos::Left, VPos::Center);
     let text_room = f64::from((width - TEXT_X - 12).max(10));
-    for (row, &(name, colour, marker, dashed, highlighted)) in entries[..shown].iter().enumerate() {
+    for (row, &(name, colour, marker, pattern, highlighted)) in entries[..shown].iter().enumerate()
+    {
         let cy = TOP + 4 + ROW / 2 + row as i32 * ROW;
         let (line_width, marker_size) = if highlighted {
             (HIGHLIGHT_WIDTH, HIGHLIGHT_MARKER)
@@ -469,7 +502,7 @@ fn draw_legend<DB: DrawingBackend>(
             (SERIES_WIDTH, MARKER_SIZE)
         };
         let sample = vec![(14, cy), (56, cy)];
-        draw_line(area, sample, dashed, colour.stroke_width(line_width))?;
+        draw_line(area, sample, pattern, colour.stroke_width(line_width))?;
         draw_marker(area, (35, cy), marker, marker_size, colour.filled())?;
         let text = fit_text(area, ts, name, text_room)?;
         put_text(area, ts, &text, LEGEND_SIZE, anchor, (TEXT_X, cy), false)?;

@@ -6,7 +6,7 @@ fn series(name: &str, points: Vec<(f64, f64)>) -> Series {
     Series {
         name: name.to_owned(),
         points,
-        dashed: false,
+        ..Default::default()
     }
 }
 

@@ -62,10 +62,14 @@ pub struct Scenario {
     pub key: &'static str,
     /// Title for the table.
     pub title: &'static str,
+    /// The title of the quick runs, where they differ from the full ones.
+    pub quick_title: Option<&'static str>,
     /// What the figure measures, with its unit.
     pub figure: &'static str,
     /// The pass criterion, in words.
     pub criterion: &'static str,
+    /// The criterion's threshold on the figure, short (for a table row).
+    pub threshold: &'static str,
     /// The scene file it starts from, relative to the repository.
     pub scene_path: &'static str,
     /// The scene file's text (compiled in).
@@ -74,6 +78,14 @@ pub struct Scenario {
 }
 
 impl Scenario {
+    /// The title of the runs of `size`.
+    pub fn title_for(&self, size: Size) -> &'static str {
+        match (size, self.quick_title) {
+            (Size::Quick, Some(title)) => title,
+            _ => self.title,
+        }
+    }
+
     /// Runs the scenario under `method`. A panic or an error is a failed
     /// outcome that says what happened, never a crash of the suite.
     pub fn run(&self, method: Setting<Method>, size: Size) -> Outcome {
