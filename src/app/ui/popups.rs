@@ -65,7 +65,7 @@ pub const HELP: &[(&str, &str)] = &[
         "1 … 9, 0, P",
         "open a classroom preset / the preset menu (Presets…)",
     ),
-    ("Ctrl+N", "a new empty box"),
+    ("Ctrl+N", "a new empty box (Presets…: the last one)"),
     ("Ctrl+Z", "undo the last change to the scene (Undo)"),
     ("Ctrl+Shift+Z, Ctrl+Y", "redo it (Redo)"),
     (
@@ -111,6 +111,13 @@ impl App {
                             .num_columns(2)
                             .show(ui, |ui| {
                                 for (keys, what) in HELP {
+                                    // The browser keeps these keys for itself
+                                    // (and has its own full-screen key).
+                                    if cfg!(target_arch = "wasm32")
+                                        && ["Ctrl+Q", "F11"].contains(keys)
+                                    {
+                                        continue;
+                                    }
                                     ui.label(RichText::new(*keys).strong());
                                     ui.label(*what);
                                     ui.end_row();
