@@ -118,10 +118,15 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
         app.wait_frames(2);
     };
     // Fold "Show" and open "Scene", so the file field is in view.
+    // (Each click waits for the sections to stop sliding: on a loaded
+    // machine two frames were not always enough, and a click missed.)
     click(widget(&s0, "section_show", 0.5));
-    let s = app.wait_frames(2);
+    let s = app.wait_still();
     click(widget(&s, "section_scene", 0.5));
-    let s0 = app.wait_frames(2);
+    app.wait_for("the Scene section to open", 120, |s| {
+        s["panel_widgets"]["scene_path"].is_array()
+    });
+    let s0 = app.wait_still();
     let field = widget(&s0, "scene_path", 0.5);
     assert!(field[1] < 800.0, "the field is on screen: {field:?}");
 

@@ -255,11 +255,15 @@ fn with_size_following_mass_an_edit_resizes_the_disc_or_is_refused_if_it_would_o
     let app = Sandbox::start(&x, &["--paused", &asset("preset-1-head-on.toml")]);
     app.wait_frames(3);
     // Fold the two open sections so "New discs" opens in view.
+    // (Each click waits for the sections to stop sliding first.)
     for section in ["section_show", "section_collisions", "section_new_discs"] {
-        let s = app.wait_frames(2);
+        let s = app.wait_still();
         app.click(widget(&s, section, 0.5));
     }
-    let s = app.wait_frames(2);
+    app.wait_for("the New discs section to open", 120, |s| {
+        s["panel_widgets"]["size_follows_mass"].is_array()
+    });
+    let s = app.wait_still();
     let at = widget(&s, "size_follows_mass", 0.05);
     assert!(at[1] < 800.0, "in view: {at:?}");
     app.click(at);

@@ -222,6 +222,32 @@ impl Sandbox {
         }
     }
 
+    /// Waits, frame by frame for at most `frames`, until the state meets
+    /// `ready`, and returns it; `what` names it in the failure.
+    pub fn wait_for(&self, what: &str, frames: u64, ready: impl Fn(&Value) -> bool) -> Value {
+        for _ in 0..frames {
+            let s = self.wait_frames(1);
+            if ready(&s) {
+                return s;
+            }
+        }
+        panic!("{what} did not happen within {frames} frames");
+    }
+
+    /// Waits until a panel's animations are over: the same widget
+    /// rectangles two frames running (a folding section slides for a few).
+    pub fn wait_still(&self) -> Value {
+        let mut last = self.wait_frames(1);
+        for _ in 0..120 {
+            let s = self.wait_frames(1);
+            if s["panel_widgets"] == last["panel_widgets"] {
+                return s;
+            }
+            last = s;
+        }
+        panic!("the panels kept moving for 120 frames");
+    }
+
     /// Waits until `n` more frames have been drawn, and returns the state.
     pub fn wait_frames(&self, n: u64) -> Value {
         let start = self.state()["frame"].as_u64().unwrap_or(0);
