@@ -192,7 +192,7 @@ fn stress_quick_writes_table_csv_and_chart_for_every_scenario_and_method() {
     let out = impulse(&["stress", "--quick", "--out", out_dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", stderr(&out));
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(stdout.contains("| scenario | seed | impulse | verlet | exact | auto |"));
+    assert!(stdout.contains("| scenario | pass if | seed | impulse | verlet | exact | auto |"));
     for name in ["stress.md", "stress.csv", "stress.png", "stress.svg"] {
         let len = std::fs::metadata(out_dir.join(name)).map_or(0, |m| m.len());
         assert!(len > 0, "{name} missing or empty");
