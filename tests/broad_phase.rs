@@ -492,7 +492,7 @@ fn a_world_steps_bit_for_bit_the_same_whatever_the_broad_phase() {
 /// Release-mode cost of `World::step` per disc for each broad phase:
 /// `cargo test --release --test broad_phase -- --ignored --nocapture`.
 #[test]
-#[ignore]
+#[ignore = "a measurement printed for a person (release, --nocapture), not a check"]
 fn measure_step_cost() {
     let dt = 0.005; // speeds ~1 m/s: a disc moves 1 % of its radius per step
     println!("ns per particle-step of World::step (median of 5 batches)");

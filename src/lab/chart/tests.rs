@@ -287,7 +287,7 @@ fn linear_axis_labels() {
 /// Writes /tmp/chart-example.{png,svg} for a look:
 /// `cargo test --bin impulse chart_example -- --ignored`.
 #[test]
-#[ignore]
+#[ignore = "writes an example chart to /tmp for a person to look at; not a check"]
 fn chart_example() {
     let (all, front) = accuracy_series();
     let chart = Chart {
