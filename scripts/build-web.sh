@@ -4,38 +4,14 @@
 # it with `python3 -m http.server -d dist` and open http://localhost:8000;
 # dist/ is a static site for any web host.
 #
-# With the rustup toolchain's wasm32 target installed it uses plain cargo;
-# otherwise Debian's rustc-web (rustc with the standard library's sources)
-# and lld-19, which come from the package registries alone. Run as root, it
-# installs what it needs with apt; otherwise it says what is missing.
+# The toolchain route (rustup's wasm32 target, else Debian's rustc-web and
+# lld-19, installed with apt when run as root) is scripts/wasm-toolchain.sh's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-target=wasm32-unknown-unknown
+source scripts/wasm-toolchain.sh
 out=target/wasm/$target/release/impulse.wasm
-if rustup target list --installed 2>/dev/null | grep -qx "$target"; then
-  echo "web build: rustup's installed $target target"
-  CARGO_TARGET_DIR=target/wasm cargo build --release --bin impulse --no-default-features \
-    --target "$target"
-else
-  need=()
-  [ -x /usr/bin/rustc ] && [ -d /usr/lib/rustlib/src/rust/library ] || need+=(rustc-web cargo-web rust-web-src)
-  command -v wasm-ld-19 >/dev/null || need+=(lld-19)
-  if [ ${#need[@]} -gt 0 ]; then
-    if [ "$(id -u)" -eq 0 ]; then
-      apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
-    else
-      echo "missing: ${need[*]} (Debian packages; apt-get install them as root)" >&2
-      exit 1
-    fi
-  fi
-  echo "web build: Debian's rustc-web with -Zbuild-std"
-  RUSTC=/usr/bin/rustc RUSTC_BOOTSTRAP=1 \
-    CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER=wasm-ld-19 \
-    CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C link-arg=--allow-undefined" \
-    CARGO_TARGET_DIR=target/wasm \
-    /usr/bin/cargo build --release --bin impulse --no-default-features \
-    --target "$target" -Zbuild-std=std,panic_abort
-fi
+echo "web build: $wasm_route"
+wasm_cargo --release --bin impulse --no-default-features
 rm -rf dist && mkdir -p dist
 cp web/index.html web/impulse.js dist/
 registry=$(cargo metadata --format-version 1 | python3 -c '

@@ -244,3 +244,84 @@ pub fn png_bytes(width: u32, height: u32, rgba_bottom_up: &[u8]) -> std::io::Res
     .map_err(std::io::Error::other)?;
     Ok(png)
 }
+
+impl super::App {
+    /// The state dump: into `--dump-state`'s file on the desktop; in the
+    /// browser, reported to the page (`window.impulseState`), every frame
+    /// for up to 2,000 discs and every 30th beyond (a long JSON each frame
+    /// would cost more than the drawing).
+    pub(super) fn write_dump(&self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        let Some(path) = &self.options.dump_state
+        else {
+            return;
+        };
+        #[cfg(target_arch = "wasm32")]
+        if self.world.particles.len() > 2_000 && self.frame % 30 != 1 {
+            return;
+        }
+        let mut state = StateDump::of(&self.world, &self.camera);
+        state.frame = self.frame;
+        state.paused = self.clock.paused;
+        state.time_scale = self.clock.time_scale();
+        state.dt = self.clock.dt;
+        state.warnings = impulse::warnings::warnings(&self.world, self.clock.dt);
+        state.pi_result = super::lesson::pi_result(&self.world);
+        state.selected = self.selected;
+        state.history_len = self.history.len();
+        state.history_cursor = self.history.cursor();
+        state.collisions_recorded = self.world.ledger.recorded;
+        state.held = self.gesture.held();
+        state.scene_name = self.scene.name.clone();
+        state.scene_origin = self.scene_origin.clone();
+        state.panel_visible = self.ui.docks_open && self.ui.side_open;
+        state.panel_widgets = self.ui.widgets.clone();
+        state.timing = self.frame_stats.recent();
+        let mut layout = self.ui.layout.clone();
+        if let Some(world_px) = self.world_text.as_ref().and_then(|t| t.smallest()) {
+            layout.min_text_px = layout.min_text_px.min(world_px);
+        }
+        state.layout = layout;
+        state.ui = UiDump {
+            docks_open: self.ui.docks_open,
+            side_open: self.ui.side_open,
+            dock_expanded: self.ui.dock_expanded,
+            tab: self.ui.tab.title().to_string(),
+            help_open: self.ui.help_open,
+            presets_open: self.ui.presets_open,
+            theme: self.ui.theme.name().to_string(),
+            typing: self.ui.typing,
+            panel_keyboard: self.ui.panel_keyboard,
+            undo_levels: self.undo.levels().into(),
+            scene_edited: self.scene_edited,
+            center_of_mass_view: self.lesson.com_view.is_some(),
+            size_follows_mass: self.size_follows_mass,
+            table_note: self.ui.table.note.as_ref().map(|n| n.text.clone()),
+            message: self
+                .toast
+                .as_ref()
+                .filter(|(_, until)| macroquad::time::get_time() < *until)
+                .map(|(m, _)| m.clone()),
+        };
+        state.realtime = RealtimeDump {
+            ratio: self.sim_rate(),
+            shown: self.slow_note(),
+            steps_last_frame: self.steps_last_frame,
+            steps_dropped: self.steps_dropped,
+        };
+        state.recovery = RecoveryDump {
+            file: self.recovery.path().display().to_string(),
+            saves: self.recovery.saves,
+            error: self.recovery.error.clone(),
+            offered: self.recovery.offered.is_some(),
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Err(e) = write_state(path, &state) {
+            eprintln!("impulse: cannot write state dump {}: {e}", path.display());
+        }
+        #[cfg(target_arch = "wasm32")]
+        if let Ok(json) = serde_json::to_string(&state) {
+            crate::web::report_state(&json);
+        }
+    }
+}
