@@ -219,10 +219,10 @@ fn the_pi_blocks_end_on_their_count() {
     }
     assert_eq!(s["pi_result"], "3 collisions: π ≈ 3");
     assert_eq!(s["walls"], serde_json::json!(["left"]));
-    assert!(
-        s["panel_widgets"]["pi_result"].is_array(),
-        "shown under the world"
-    );
+    // The result is drawn from the frame after the one that found it.
+    app.wait_for("the π result shown under the world", 30, |s| {
+        s["panel_widgets"]["pi_result"].is_array()
+    });
     app.quit();
 }
 
