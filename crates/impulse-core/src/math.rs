@@ -20,6 +20,21 @@ pub fn exp(x: f64) -> f64 {
     libm::exp(x)
 }
 
+/// The cube root of `x`.
+pub fn cbrt(x: f64) -> f64 {
+    libm::cbrt(x)
+}
+
+/// The arc cosine of `x` (radians).
+pub fn acos(x: f64) -> f64 {
+    libm::acos(x)
+}
+
+/// The cosine of `x` (radians).
+pub fn cos(x: f64) -> f64 {
+    libm::cos(x)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

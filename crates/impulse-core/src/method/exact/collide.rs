@@ -1,7 +1,7 @@
 //! What an event does: a pair collision (alone or with others at the same
 //! instant), a wall hit, a crossing into the next cell.
 
-use super::{simultaneous, Sim, SIMULTANEOUS_TOLERANCE};
+use super::{simultaneous, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
 use crate::ledger::Collision;
 use crate::resolution::collision_velocities;
 use glam::DVec2;
@@ -10,6 +10,9 @@ impl Sim {
     pub(super) fn collide_pair(&mut self, i: u32, j: u32) {
         self.advance_to(i, self.now);
         self.advance_to(j, self.now);
+        if self.sleepers > 0 && (self.asleep[i as usize] || self.asleep[j as usize]) {
+            return self.meet_sleeper(i, j);
+        }
         if self.queue.another_by(i, self.now) {
             // Another event at this very instant: maybe a disc meeting two
             // others at once.
@@ -33,7 +36,8 @@ impl Sim {
         };
         if (b.vel - a.vel).dot(normal) < 0.0 {
             let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
-            let rapid = self.now - ia.last_hit < self.t_c || self.now - ib.last_hit < self.t_c;
+            let rapid = self.now - ia.last_hit < CONTACT_DURATION
+                || self.now - ib.last_hit < CONTACT_DURATION;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             if self.record {
@@ -62,6 +66,80 @@ impl Sim {
         self.predict(j);
     }
 
+    /// A moving disc meets a sleeping one (either may own the event; both
+    /// are at the current time): the sleeper wakes if the collision would
+    /// set it moving faster than its sleep speed, and the collision is the
+    /// ordinary one; if not, it stays put and the mover bounces off it as
+    /// off the floor, and may fall asleep on it (see [`super::sleep`]).
+    fn meet_sleeper(&mut self, i: u32, j: u32) {
+        let (mover, sleeper) = if self.asleep[i as usize] { (j, i) } else { (i, j) };
+        let (a, b) = (self.bodies[mover as usize], self.bodies[sleeper as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let dist = d.length();
+        if !(dist > 0.0) {
+            self.predict(i);
+            self.predict(j);
+            return; // sharing a centre: set-up separates those
+        }
+        let normal = d / dist;
+        let closing = a.vel.dot(normal);
+        // Slower than gravity presses it on within a contact duration (or
+        // not approaching, but pressed on): resting on the sleeper, not
+        // hitting it. Held, it sleeps; if not, it slides off.
+        let pressing = self.laws.gravity.dot(normal);
+        if closing <= pressing.max(0.0) * CONTACT_DURATION {
+            if pressing > 0.0 && !self.maybe_sleep(mover) {
+                self.slide_off(mover, normal);
+            }
+            self.predict(i);
+            self.predict(j);
+            return;
+        }
+        let (am, asl) = (self.aux[mover as usize], self.aux[sleeper as usize]);
+        let rapid = self.now - am.last_hit < CONTACT_DURATION;
+        let e = if rapid { 1.0 } else { self.laws.restitution };
+        let (vm, vs) = collision_velocities(am.mass, asl.mass, a.vel, DVec2::ZERO, normal, e);
+        let wakes = vs.length() > self.sleep_speed(sleeper);
+        let (vm, vs) = if wakes {
+            (vm, vs)
+        } else {
+            (a.vel - (1.0 + e) * closing * normal, DVec2::ZERO)
+        };
+        if self.record {
+            self.collided.push(Collision {
+                time: self.now,
+                discs: [
+                    self.order[mover as usize] as usize,
+                    self.order[sleeper as usize] as usize,
+                ],
+                normal,
+                masses: [am.mass, asl.mass],
+                before: [a.vel, DVec2::ZERO],
+                after: [vm, vs],
+            });
+        }
+        self.count(mover, closing);
+        self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
+        let body = &mut self.bodies[mover as usize];
+        body.vel = vm;
+        body.gen += 1;
+        self.aux[mover as usize].last_hit = self.now;
+        if wakes {
+            let woken = self.wake(sleeper);
+            self.bodies[sleeper as usize].vel = vs;
+            self.aux[sleeper as usize].last_hit = self.now;
+            self.predict(mover);
+            self.predict(sleeper);
+            for k in woken {
+                self.predict(k);
+            }
+        } else {
+            self.maybe_sleep(mover);
+            self.predict(mover);
+            self.predict(sleeper);
+        }
+    }
+
     /// The contacts, approaching and touching right now (to round-off), of
     /// `i` and `j` with each other and with their neighbours; each disc
     /// involved is advanced to now. Pairs are (body, body, normal).
@@ -75,7 +153,7 @@ impl Sim {
         }
         let mut touches = Vec::new();
         for (d, k) in around {
-            if k == d || (d == j && k == i) {
+            if k == d || (d == j && k == i) || self.asleep[k as usize] {
                 continue;
             }
             if touches.iter().any(|&(x, y, _)| (x, y) == (k, d)) {
@@ -106,7 +184,7 @@ impl Sim {
         let velocities: Vec<DVec2> = ids.iter().map(|&k| self.bodies[k as usize].vel).collect();
         let rapid = ids
             .iter()
-            .any(|&k| self.now - self.aux[k as usize].last_hit < self.t_c);
+            .any(|&k| self.now - self.aux[k as usize].last_hit < CONTACT_DURATION);
         let e = if rapid { 1.0 } else { self.laws.restitution };
         let list: Vec<simultaneous::Touch> = touches
             .iter()
@@ -148,7 +226,7 @@ impl Sim {
 
     pub(super) fn hit_wall(&mut self, i: u32, axis: usize, upper: bool) {
         self.advance_to(i, self.now);
-        let rapid = self.now - self.aux[i as usize].last_hit < self.t_c;
+        let rapid = self.now - self.aux[i as usize].last_hit < CONTACT_DURATION;
         let e = if rapid {
             1.0
         } else {
@@ -163,7 +241,10 @@ impl Sim {
         };
         b.pos[axis] = if upper { size - b.radius } else { b.radius };
         let speed = b.vel[axis].abs();
-        if into_wall {
+        if !into_wall {
+            // On the wall with gravity pressing it on: resting there.
+            self.maybe_sleep(i);
+        } else {
             let aux = &mut self.aux[i as usize];
             self.wall_impulse += aux.mass * (1.0 + e) * b.vel[axis].abs();
             b.vel[axis] *= -e;
@@ -174,6 +255,7 @@ impl Sim {
             } else {
                 self.rested(i);
             }
+            self.maybe_sleep(i);
         }
         self.predict(i);
     }
@@ -191,7 +273,7 @@ impl Sim {
     /// Counts body `i` as resting on something, once per step: a disc at
     /// rest meets its support event after event, and the count is of discs
     /// resting, not of those events.
-    fn rested(&mut self, i: u32) {
+    pub(super) fn rested(&mut self, i: u32) {
         let stamp = &mut self.rest_stamps[i as usize];
         if *stamp != self.step_id {
             *stamp = self.step_id;

@@ -27,6 +27,103 @@ pub(super) fn pair_time(d: DVec2, dv: DVec2, sigma: f64) -> f64 {
     }
 }
 
+/// Time until two discs touch (distance `sigma`) when their separation
+/// moves as `d + dv·t + ½·a·t²`: one disc falls while the other lies still
+/// (asleep, see `sleep`), so their relative motion is a parabola and the
+/// touching time a root of a quartic. Zero if they touch or overlap and
+/// approach now; infinity if they never meet approaching.
+///
+/// The squared distance minus σ², f(t), is monotone between the roots of
+/// its derivative (a cubic, solved in closed form and polished); the answer
+/// is the start of the first falling stretch that begins in contact, or
+/// the root inside the first falling stretch that ends in it (bisection,
+/// to the last bit).
+pub(super) fn accelerating_pair_time(d: DVec2, dv: DVec2, a: DVec2, sigma: f64) -> f64 {
+    let c4 = 0.25 * a.length_squared();
+    if c4 == 0.0 {
+        return pair_time(d, dv, sigma);
+    }
+    let (c3, c2, c1) = (dv.dot(a), dv.length_squared() + d.dot(a), 2.0 * d.dot(dv));
+    let c0 = d.length_squared() - sigma * sigma;
+    let f = |t: f64| (((c4 * t + c3) * t + c2) * t + c1) * t + c0;
+    let slope = |t: f64| ((4.0 * c4 * t + 3.0 * c3) * t + 2.0 * c2) * t + c1;
+    let mut ends = [0.0; 5];
+    let mut count = 1;
+    for r in cubic_roots(3.0 * c3 / (4.0 * c4), c2 / (2.0 * c4), c1 / (4.0 * c4)) {
+        if r > 0.0 && r.is_finite() {
+            ends[count] = r;
+            count += 1;
+        }
+    }
+    ends[1..count].sort_unstable_by(f64::total_cmp);
+    // The last stretch, to infinity, rises (c4 > 0): no contact begins there.
+    for k in 0..count - 1 {
+        let (lo, hi) = (ends[k], ends[k + 1]);
+        if slope(0.5 * (lo + hi)) >= 0.0 {
+            continue;
+        }
+        if f(lo) <= 0.0 {
+            return lo;
+        }
+        if f(hi) < 0.0 {
+            let (mut outside, mut inside) = (lo, hi);
+            loop {
+                let mid = 0.5 * (outside + inside);
+                if mid <= outside || mid >= inside {
+                    return outside;
+                }
+                if f(mid) > 0.0 {
+                    outside = mid;
+                } else {
+                    inside = mid;
+                }
+            }
+        }
+    }
+    f64::INFINITY
+}
+
+/// The real roots of t³ + b·t² + c·t + d (one or three; NaN fills the
+/// slots of missing ones), each polished by Newton's method.
+fn cubic_roots(b: f64, c: f64, d: f64) -> [f64; 3] {
+    let shift = b / 3.0;
+    let p = c - b * shift;
+    let q = 2.0 * shift * shift * shift - c * shift + d;
+    let half_q = 0.5 * q;
+    let third_p = p / 3.0;
+    let disc = half_q * half_q + third_p * third_p * third_p;
+    let mut roots = if disc > 0.0 {
+        // One real root; the sum of two cube roots, the smaller found from
+        // the larger so that nothing cancels.
+        let u = crate::math::cbrt(-half_q - half_q.signum() * disc.sqrt());
+        let x = if u == 0.0 { 0.0 } else { u - third_p / u };
+        [x - shift, f64::NAN, f64::NAN]
+    } else if p == 0.0 {
+        [-shift, f64::NAN, f64::NAN]
+    } else {
+        let r = (-third_p).sqrt();
+        let cos3 = (half_q / (third_p * r)).clamp(-1.0, 1.0);
+        let phi = crate::math::acos(cos3) / 3.0;
+        let third = 2.0 * std::f64::consts::PI / 3.0;
+        [0.0, 1.0, 2.0].map(|k| 2.0 * r * crate::math::cos(phi - k * third) - shift)
+    };
+    for x in roots.iter_mut().filter(|x| x.is_finite()) {
+        for _ in 0..3 {
+            let value = ((*x + b) * *x + c) * *x + d;
+            let slope = (3.0 * *x + 2.0 * b) * *x + c;
+            if slope == 0.0 {
+                break;
+            }
+            let next = *x - value / slope;
+            if !next.is_finite() {
+                break;
+            }
+            *x = next;
+        }
+    }
+    roots
+}
+
 /// First time ≥ 0 at which a coordinate `p` moving at `v` with acceleration
 /// `g` reaches `target` while moving in the direction `sign` (−1 down, +1 up).
 pub(super) fn first_crossing(p: f64, v: f64, g: f64, target: f64, sign: f64) -> Option<f64> {
@@ -105,6 +202,63 @@ mod tests {
             never,
             "overlapping and separating"
         );
+    }
+
+    #[test]
+    fn cubic_roots_are_found_for_one_and_three_real_roots() {
+        // (t − 1)(t − 2)(t − 3) = t³ − 6t² + 11t − 6.
+        let mut r = cubic_roots(-6.0, 11.0, -6.0);
+        r.sort_by(f64::total_cmp);
+        for (got, want) in r.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((got - want).abs() < 1e-12, "{r:?}");
+        }
+        // (t − 2)(t² + 1): one real root.
+        let r = cubic_roots(-2.0, 1.0, -2.0);
+        assert!((r[0] - 2.0).abs() < 1e-12 && r[1].is_nan(), "{r:?}");
+    }
+
+    #[test]
+    fn a_disc_dropped_onto_a_still_one_meets_it_when_the_fall_says() {
+        let g = DVec2::new(0.0, -9.81);
+        // Centre 3 above a still disc, both radius 0.5: it falls 2 m.
+        let d = DVec2::new(0.0, -3.0); // from the falling disc to the still one
+        let t = accelerating_pair_time(d, DVec2::ZERO, -g, 1.0);
+        assert!((t - (4.0f64 / 9.81).sqrt()).abs() < 1e-12, "{t}");
+        // Thrown sideways past it, high enough to clear it: never.
+        let t = accelerating_pair_time(DVec2::new(-5.0, -0.5), DVec2::new(-100.0, 0.0), -g, 1.0);
+        assert_eq!(t, f64::INFINITY);
+        // Thrown up off its top: back down on it after 2v/g.
+        let t = accelerating_pair_time(DVec2::new(0.0, -1.0), DVec2::new(0.0, -2.0), -g, 1.0);
+        assert!((t - 4.0 / 9.81).abs() < 1e-9, "{t}");
+        // Resting on it, a hair inside: at once.
+        let t = accelerating_pair_time(DVec2::new(0.0, -(1.0 - 1e-15)), DVec2::ZERO, -g, 1.0);
+        assert_eq!(t, 0.0);
+        // A hair inside and rising too slowly to get out: the moment it turns.
+        let t = accelerating_pair_time(DVec2::new(0.0, -(1.0 - 1e-9)), DVec2::new(0.0, -1e-6), -g, 1.0);
+        assert!((t - 1e-6 / 9.81).abs() < 1e-12, "{t}");
+    }
+
+    #[test]
+    fn the_quartic_time_agrees_with_stepping_the_fall() {
+        // A disc thrown at an angle past a still one: the first instant the
+        // centres come within σ, found by fine steps, and the formula's.
+        let g = DVec2::new(0.0, -9.81);
+        for (k, v) in [(1.0, 2.0), (2.0, 0.5), (-1.0, 3.0), (0.3, 0.0)].into_iter().enumerate() {
+            let d = DVec2::new(1.5, -1.2 - 0.1 * k as f64);
+            let dv = -DVec2::new(v.0, v.1);
+            let t = accelerating_pair_time(d, dv, -g, 1.0);
+            let h = 1e-6;
+            let at = |t: f64| (d + dv * t - 0.5 * g * t * t).length();
+            let stepped = (0..4_000_000)
+                .map(|s| s as f64 * h)
+                .find(|&s| at(s) <= 1.0)
+                .unwrap_or(f64::INFINITY);
+            if stepped.is_finite() {
+                assert!((t - stepped).abs() <= h, "{k}: {t} vs {stepped}");
+            } else {
+                assert_eq!(t, f64::INFINITY, "{k}");
+            }
+        }
     }
 
     #[test]

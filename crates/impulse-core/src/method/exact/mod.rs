@@ -23,9 +23,11 @@
 //!   gravity solve a quadratic too.
 //! - Inelastic collapse (e < 1 can produce infinitely many collisions in
 //!   finite time): the TC rule of Luding & McNamara (1998): a collision of a
-//!   disc that already collided within [`TC_FRACTION`] of the step is
-//!   elastic. It keeps the count of collisions per step finite while changing
-//!   the dissipation only in those rare rapid sequences. A hard cap of
+//!   disc that already collided within the contact duration
+//!   [`CONTACT_DURATION`] is elastic. It keeps the count of collisions per
+//!   step finite while changing the dissipation only in those rare rapid
+//!   sequences. Under gravity, slow discs that are held up fall asleep
+//!   (see [`sleep`]), so a pile comes to rest instead. A hard cap of
 //!   [`EVENTS_PER_DISC`]·n + [`EVENTS_BASE`] events per step bounds the work
 //!   in any case; hitting it ends the step early and is reported
 //!   (`StepStats::truncated`).
@@ -58,12 +60,16 @@ mod predict;
 mod queue;
 mod setup;
 mod simultaneous;
+pub mod sleep;
 
 use predict::PairGuess;
 use queue::EventQueue;
 
-/// TC-model window, as a fraction of the step.
-pub const TC_FRACTION: f64 = 1e-4;
+/// The TC model's contact duration t_c (s): a disc that collided less than
+/// this long ago collides elastically. About the contact time of two
+/// billiard balls (200–300 µs); a physical time, so results do not depend
+/// on the step.
+pub const CONTACT_DURATION: f64 = 1e-4;
 /// Event budget per disc and step.
 pub const EVENTS_PER_DISC: usize = 1_000;
 /// Event budget per step on top of the per-disc one.
@@ -119,6 +125,7 @@ impl Exact {
         sim.stop_at_collision = self.stop_at_collision;
         sim.stopped = false;
         sim.run();
+        sim.count_sleepers();
         let impact_speed = sim.impact_speed;
         for mut c in sim.collided.drain(..) {
             let closing = (c.before[0] - c.before[1]).dot(c.normal);
@@ -219,7 +226,6 @@ struct Sim {
     laws: Laws,
     end: f64,
     now: f64,
-    t_c: f64,
     /// The discs in cell order; `order[k]` is body k's index in the caller's slice.
     bodies: Vec<Body>,
     aux: Vec<Aux>,
@@ -256,6 +262,12 @@ struct Sim {
     /// Collisions of this step, for the ledger (when it is on).
     record: bool,
     collided: Vec<Collision>,
+    /// Whether discs may fall asleep under these laws ([`sleep`]).
+    sleeping: bool,
+    /// Per body: asleep (still, without gravity, until woken).
+    asleep: Vec<bool>,
+    /// How many are asleep.
+    sleepers: usize,
 }
 
 impl Sim {
@@ -402,7 +414,11 @@ impl Sim {
     }
 
     fn advance_to(&mut self, i: u32, t: f64) {
-        let g = self.laws.gravity;
+        let g = if self.sleepers > 0 && self.asleep[i as usize] {
+            DVec2::ZERO // still (its velocity is zero)
+        } else {
+            self.laws.gravity
+        };
         let b = &mut self.bodies[i as usize];
         let tau = t - b.time;
         if tau != 0.0 {

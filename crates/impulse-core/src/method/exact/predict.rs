@@ -9,7 +9,7 @@
 //! a full prediction, for the commonest event of a gas.
 
 use super::grid::NIL;
-use super::kinematics::{first_crossing, pair_time};
+use super::kinematics::{accelerating_pair_time, first_crossing, pair_time};
 use super::queue::Event;
 use super::{Body, Kind, Sim};
 use crate::boundary::Boundary;
@@ -80,7 +80,10 @@ impl Sim {
                 gen: guess.gen,
             },
         );
-        let exit = if self.laws.gravity == DVec2::ZERO {
+        let still = self.sleepers > 0 && self.asleep[i as usize];
+        let exit = if still {
+            None // asleep: no walls, no crossings
+        } else if self.laws.gravity == DVec2::ZERO {
             self.straight_exit(me)
         } else {
             self.curved_exit(me)
@@ -122,6 +125,9 @@ impl Sim {
     ) -> PairGuess {
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
         let g = laws.gravity;
+        // Sleepers lie still; a pair with one of them meets on a parabola.
+        let sleepers = GRAVITY && self.sleepers > 0;
+        let me_asleep = sleepers && self.asleep[i as usize];
         let visit = |cell: usize, shift: DVec2| {
             let mut next = self.grid.first(cell);
             while next != NIL {
@@ -129,6 +135,32 @@ impl Sim {
                 let other = &bodies[j as usize];
                 next = other.next_in_cell;
                 if j == i {
+                    continue;
+                }
+                if sleepers && (me_asleep || self.asleep[j as usize]) {
+                    let other_asleep = self.asleep[j as usize];
+                    if me_asleep && other_asleep {
+                        continue; // neither moves
+                    }
+                    let tau = now - other.time;
+                    let (pj, vj, a) = if other_asleep {
+                        (other.pos, DVec2::ZERO, -g)
+                    } else {
+                        (
+                            other.pos + other.vel * tau + 0.5 * g * tau * tau,
+                            other.vel + g * tau,
+                            g,
+                        )
+                    };
+                    let d = laws.boundary.separation(me.pos, pj, laws.size);
+                    let t = now + accelerating_pair_time(d, vj - me.vel, a, me.radius + other.radius);
+                    if t < guess.time {
+                        guess = PairGuess {
+                            time: t,
+                            partner: j,
+                            gen: other.gen,
+                        };
+                    }
                     continue;
                 }
                 let tau = now - other.time;

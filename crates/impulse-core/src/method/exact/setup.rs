@@ -11,7 +11,7 @@ use super::predict::PairGuess;
 use super::queue::EventQueue;
 use super::{
     Aux, Body, Sim, EVENTS_BASE, EVENTS_PER_DISC, OVERLAP_TOLERANCE, PREFETCH_MIN_DISCS,
-    SEPARATION_SWEEPS, TC_FRACTION,
+    SEPARATION_SWEEPS,
 };
 use crate::boundary::Boundary;
 use crate::laws::Laws;
@@ -32,7 +32,6 @@ impl Sim {
             laws: *laws,
             end: dt,
             now: 0.0,
-            t_c: TC_FRACTION * dt,
             bodies: Vec::with_capacity(n),
             aux: Vec::with_capacity(n),
             order: Vec::with_capacity(n),
@@ -58,6 +57,9 @@ impl Sim {
             stopped: false,
             record: false,
             collided: Vec::new(),
+            sleeping: Sim::may_sleep(laws),
+            asleep: vec![false; n],
+            sleepers: 0,
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -272,9 +274,14 @@ impl Sim {
         }
         self.queue.shift_times(shift);
         self.laws = *laws; // restitutions may have changed
+        self.sleeping = Sim::may_sleep(laws);
+        if !self.sleeping && self.sleepers > 0 {
+            self.now = 0.0;
+            self.wake_all();
+            self.predict_all();
+        }
         self.now = 0.0;
         self.end = dt;
-        self.t_c = TC_FRACTION * dt;
         self.events = 0;
         self.collisions = 0;
         self.wall_hits = 0;

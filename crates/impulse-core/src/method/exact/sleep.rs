@@ -1,0 +1,259 @@
+//! Sleeping discs: how `exact` comes to rest.
+//!
+//! Event-driven hard discs cannot rest: a disc on a support under gravity
+//! collides with it again and again, ever faster (inelastic collapse), and
+//! the TC rule only turns that into endless elastic micro-bounces. Here a
+//! slow disc whose weight is carried falls *asleep*, as in DynamO's
+//! sleeping particles (S. González, "Sleeping of particles in DynamO",
+//! `docs/sleeping.tex` of github.com/dynamomd/DynamO; M. N. Bannerman,
+//! R. Sargant, L. Lue, J. Comput. Chem. 32, 3329 (2011)):
+//!
+//! - **Falling asleep.** Right after a disc meets a support (a wall, or a
+//!   disc already asleep), it sleeps if it moves slower than its sleep
+//!   speed √(2·g·[`SLEEP_LIFT`]·r) (the speed that would lift it a
+//!   thousandth of its radius) and its supports hold it: for frictionless
+//!   discs, the upward direction lies between the normals of the supports
+//!   it touches (within [`SUPPORT_GAP`]), so a disc in a groove or on the
+//!   floor sleeps and one balanced on a single disc rolls off. It stops
+//!   dead (its last kinetic energy, under ½·m·g·r/1000, is lost) and
+//!   neither moves nor feels gravity until woken.
+//! - **Meeting a sleeper.** A moving disc meets a sleeping one as a still
+//!   disc, at the instant the quartic of [`super::kinematics`] gives. If
+//!   the two-disc collision would set the sleeper moving faster than its
+//!   sleep speed, it wakes and the collision is the ordinary one; if not,
+//!   the sleeper stays put as the floor would, and the moving disc bounces
+//!   off it with the restitution.
+//! - **Waking.** A woken disc wakes every sleeper it holds up (touching it,
+//!   above it), and those wake the ones they hold, so nothing floats.
+//!
+//! Only scenes with gravity and a restitution below 1 sleep: without either
+//! nothing comes to rest, and the events are those of plain `exact`.
+
+use super::Sim;
+use glam::DVec2;
+
+/// A disc sleeps below the speed that would lift it this fraction of its
+/// radius against gravity.
+pub const SLEEP_LIFT: f64 = 1e-3;
+/// A support holds a disc within this gap, as a fraction of the smaller
+/// radius (a disc settling in a groove bounces between its two supports,
+/// ever lower, and touches one of them only at a time).
+pub const SUPPORT_GAP: f64 = 1e-2;
+
+/// How far a disc resting on a sleeper that cannot hold it steps down the
+/// tangent, as a fraction of its radius ([`Sim::slide_off`]).
+pub const SLIDE_STEP: f64 = 1e-4;
+
+/// The 2D cross product a × b.
+fn cross(a: DVec2, b: DVec2) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+impl Sim {
+    /// Whether discs may fall asleep under these laws.
+    pub(super) fn may_sleep(laws: &crate::laws::Laws) -> bool {
+        laws.gravity != DVec2::ZERO && (laws.restitution < 1.0 || laws.wall_restitution < 1.0)
+    }
+
+    /// The speed below which body `i` may fall asleep (m/s).
+    pub(super) fn sleep_speed(&self, i: u32) -> f64 {
+        let r = self.bodies[i as usize].radius;
+        (2.0 * self.laws.gravity.length() * SLEEP_LIFT * r).sqrt()
+    }
+
+    /// Puts body `i` (at the current time, just after meeting a support) to
+    /// sleep if it is slow and held; returns whether it fell asleep.
+    pub(super) fn maybe_sleep(&mut self, i: u32) -> bool {
+        if !self.sleeping || self.asleep[i as usize] {
+            return false;
+        }
+        let b = self.bodies[i as usize];
+        if b.vel.length() >= self.sleep_speed(i) || !self.is_held(i) {
+            return false;
+        }
+        let body = &mut self.bodies[i as usize];
+        body.vel = DVec2::ZERO;
+        body.gen += 1;
+        self.asleep[i as usize] = true;
+        self.sleepers += 1;
+        true
+    }
+
+    /// Whether body `i`'s supports (walls and sleeping discs within
+    /// [`SUPPORT_GAP`]) can carry its weight without friction: the upward
+    /// direction lies in the cone of their normals.
+    fn is_held(&self, i: u32) -> bool {
+        let up = -self.laws.gravity.normalize();
+        let me = self.bodies[i as usize];
+        let mut normals: Vec<DVec2> = Vec::new();
+        if self.laws.boundary == crate::boundary::Boundary::Box {
+            let gap = SUPPORT_GAP * me.radius;
+            for axis in 0..2 {
+                let mut n = DVec2::ZERO;
+                n[axis] = 1.0;
+                if self.laws.walls.at(axis, false) && me.pos[axis] - me.radius <= gap {
+                    normals.push(n);
+                }
+                let top = self.laws.size[axis] - me.radius;
+                if self.laws.walls.at(axis, true) && top - me.pos[axis] <= gap {
+                    normals.push(-n);
+                }
+            }
+        }
+        self.grid.for_each_neighbour(me.cell, |c, _| {
+            for k in self.grid.members(&self.bodies, c) {
+                if k == i || !self.asleep[k as usize] {
+                    continue;
+                }
+                let other = &self.bodies[k as usize];
+                let d = self
+                    .laws
+                    .boundary
+                    .separation(other.pos, me.pos, self.laws.size);
+                let dist = d.length();
+                let gap = dist - me.radius - other.radius;
+                if dist > 0.0 && gap <= SUPPORT_GAP * me.radius.min(other.radius) {
+                    normals.push(d / dist);
+                }
+            }
+        });
+        if normals.iter().any(|n| n.dot(up) >= 1.0 - 1e-9) {
+            return true;
+        }
+        normals.iter().any(|&a| {
+            cross(a, up) > 0.0
+                && normals
+                    .iter()
+                    .any(|&b| cross(up, b) > 0.0 && cross(a, b) > 0.0)
+        })
+    }
+
+    /// Moving body `i` rests on a sleeper along `normal` (from it to the
+    /// sleeper) without being held: it slides off. A hard disc would slide
+    /// round the sleeper's surface, which event by event is an endless
+    /// train of ever smaller bounces; instead it steps [`SLIDE_STEP`] of its
+    /// radius down the tangent and takes the speed that drop gives
+    /// (kinetic plus potential energy unchanged), which opens a gap of a
+    /// few billionths of its radius for it to fall through. Where the step
+    /// would overlap something, it stops instead (wedged).
+    pub(super) fn slide_off(&mut self, i: u32, normal: DVec2) {
+        let g = self.laws.gravity;
+        let along = g - g.dot(normal) * normal;
+        let me = self.bodies[i as usize];
+        let step = SLIDE_STEP * me.radius;
+        let (Some(tangent), true) = (along.try_normalize(), step > 0.0) else {
+            return;
+        };
+        let to = me.pos + step * tangent;
+        if self.would_overlap(i, to) {
+            let body = &mut self.bodies[i as usize];
+            body.vel = DVec2::ZERO;
+            body.gen += 1;
+            self.asleep[i as usize] = true;
+            self.sleepers += 1;
+            return;
+        }
+        let drop = along.length() * step; // potential energy per kg given up
+        let v_t = me.vel.dot(tangent);
+        let w = -v_t + (v_t * v_t + 2.0 * drop).sqrt();
+        let body = &mut self.bodies[i as usize];
+        body.pos = to;
+        body.vel += w * tangent;
+        body.gen += 1;
+        let (from, cell) = (me.cell, self.grid.cell_of(to));
+        if cell != from {
+            self.grid.remove(&mut self.bodies, i, from);
+            self.grid.insert(&mut self.bodies, i, cell);
+            self.bodies[i as usize].cell = cell;
+        }
+    }
+
+    /// Whether body `i` placed at `to` would overlap a wall or a disc
+    /// (sleeping discs where they lie, moving ones where they are now).
+    fn would_overlap(&mut self, i: u32, to: DVec2) -> bool {
+        let r = self.bodies[i as usize].radius;
+        if self.laws.boundary == crate::boundary::Boundary::Box
+            && (to.cmplt(DVec2::splat(r)).any() || to.cmpgt(self.laws.size - r).any())
+        {
+            return true;
+        }
+        let mut near = Vec::new();
+        let cell = self.grid.cell_of(to);
+        self.grid.for_each_neighbour(cell, |c, _| {
+            near.extend(self.grid.members(&self.bodies, c).filter(|&k| k != i));
+        });
+        near.into_iter().any(|k| {
+            self.advance_to(k, self.now);
+            let other = &self.bodies[k as usize];
+            let d = self.laws.boundary.separation(to, other.pos, self.laws.size);
+            d.length() < r + other.radius
+        })
+    }
+
+    /// Wakes sleeping body `i` (at the current time, still at rest) and,
+    /// through them, every sleeper it holds up; returns the others woken,
+    /// which the caller re-predicts.
+    pub(super) fn wake(&mut self, i: u32) -> Vec<u32> {
+        let up = -self.laws.gravity.normalize_or_zero();
+        let mut woken = Vec::new();
+        self.rouse(i);
+        let mut stack = vec![i];
+        while let Some(k) = stack.pop() {
+            let below = self.bodies[k as usize];
+            let mut held = Vec::new();
+            self.grid.for_each_neighbour(below.cell, |c, _| {
+                for s in self.grid.members(&self.bodies, c) {
+                    if !self.asleep[s as usize] {
+                        continue;
+                    }
+                    let above = &self.bodies[s as usize];
+                    let d = self
+                        .laws
+                        .boundary
+                        .separation(below.pos, above.pos, self.laws.size);
+                    let gap = d.length() - below.radius - above.radius;
+                    if d.dot(up) > 0.0 && gap <= SUPPORT_GAP * below.radius.min(above.radius) {
+                        held.push(s);
+                    }
+                }
+            });
+            for s in held {
+                if self.asleep[s as usize] {
+                    self.rouse(s);
+                    woken.push(s);
+                    stack.push(s);
+                }
+            }
+        }
+        woken
+    }
+
+    /// Marks sleeping body `i` awake, at rest at the current time.
+    fn rouse(&mut self, i: u32) {
+        self.advance_to(i, self.now);
+        self.asleep[i as usize] = false;
+        self.sleepers -= 1;
+        self.bodies[i as usize].gen += 1;
+    }
+
+    /// Wakes every sleeper (the laws no longer let discs sleep).
+    pub(super) fn wake_all(&mut self) {
+        for i in 0..self.bodies.len() as u32 {
+            if self.asleep[i as usize] {
+                self.rouse(i);
+            }
+        }
+    }
+
+    /// Counts every sleeper as resting this step.
+    pub(super) fn count_sleepers(&mut self) {
+        if self.sleepers == 0 {
+            return;
+        }
+        for i in 0..self.bodies.len() as u32 {
+            if self.asleep[i as usize] {
+                self.rested(i);
+            }
+        }
+    }
+}
