@@ -1,6 +1,7 @@
 //! What an event does: a pair collision (alone or with others at the same
 //! instant), a wall hit, a crossing into the next cell.
 
+use super::kinematics::CREEP;
 use super::{simultaneous, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
 use crate::ledger::Collision;
 use crate::resolution::collision_velocities;
@@ -10,7 +11,7 @@ impl Sim {
     pub(super) fn collide_pair(&mut self, i: u32, j: u32) {
         self.advance_to(i, self.now);
         self.advance_to(j, self.now);
-        if self.sleepers > 0 && (self.asleep[i as usize] || self.asleep[j as usize]) {
+        if self.asleep(i) || self.asleep(j) {
             return self.meet_sleeper(i, j);
         }
         if self.queue.another_by(i, self.now) {
@@ -34,11 +35,15 @@ impl Sim {
         } else {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
-        if (b.vel - a.vel).dot(normal) < 0.0 {
+        if (b.vel - a.vel).dot(normal) < -CREEP {
             let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
             let rapid = self.now - ia.last_hit < CONTACT_DURATION
                 || self.now - ib.last_hit < CONTACT_DURATION;
-            let e = if rapid { 1.0 } else { self.laws.restitution };
+            let e = if rapid {
+                1.0
+            } else {
+                self.laws.restitution
+            };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             if self.record {
                 self.collided.push(Collision {
@@ -72,7 +77,7 @@ impl Sim {
     /// ordinary one; if not, it stays put and the mover bounces off it as
     /// off the floor, and may fall asleep on it (see [`super::sleep`]).
     fn meet_sleeper(&mut self, i: u32, j: u32) {
-        let (mover, sleeper) = if self.asleep[i as usize] { (j, i) } else { (i, j) };
+        let (mover, sleeper) = if self.asleep(i) { (j, i) } else { (i, j) };
         let (a, b) = (self.bodies[mover as usize], self.bodies[sleeper as usize]);
         let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
         let dist = d.length();
@@ -84,19 +89,18 @@ impl Sim {
         let normal = d / dist;
         let closing = a.vel.dot(normal);
         // Slower than gravity presses it on within a contact duration (or
-        // not approaching, but pressed on): resting on the sleeper, not
-        // hitting it. Held, it sleeps; if not, it slides off.
-        let pressing = self.laws.gravity.dot(normal);
-        if closing <= pressing.max(0.0) * CONTACT_DURATION {
-            if pressing > 0.0 && !self.maybe_sleep(mover) {
-                self.slide_off(mover, normal);
+        // not approaching at all): resting on the sleeper, not hitting it
+        // (see [`super::sleep`]).
+        if closing <= 0.0 || self.rest_on(mover, -normal, closing) {
+            if closing <= 0.0 {
+                self.rest_on(mover, -normal, 0.0);
             }
             self.predict(i);
             self.predict(j);
             return;
         }
         let (am, asl) = (self.aux[mover as usize], self.aux[sleeper as usize]);
-        let rapid = self.now - am.last_hit < CONTACT_DURATION;
+        let rapid = self.rapid(mover);
         let e = if rapid { 1.0 } else { self.laws.restitution };
         let (vm, vs) = collision_velocities(am.mass, asl.mass, a.vel, DVec2::ZERO, normal, e);
         let wakes = vs.length() > self.sleep_speed(sleeper);
@@ -134,6 +138,7 @@ impl Sim {
                 self.predict(k);
             }
         } else {
+            self.unwedge(mover);
             self.maybe_sleep(mover);
             self.predict(mover);
             self.predict(sleeper);
@@ -153,7 +158,7 @@ impl Sim {
         }
         let mut touches = Vec::new();
         for (d, k) in around {
-            if k == d || (d == j && k == i) || self.asleep[k as usize] {
+            if k == d || (d == j && k == i) || self.asleep(k) {
                 continue;
             }
             if touches.iter().any(|&(x, y, _)| (x, y) == (k, d)) {
@@ -166,7 +171,7 @@ impl Sim {
             let reach = a.radius + b.radius;
             if dist > 0.0 && dist <= reach * (1.0 + SIMULTANEOUS_TOLERANCE) {
                 let normal = sep / dist;
-                if (b.vel - a.vel).dot(normal) < 0.0 {
+                if (b.vel - a.vel).dot(normal) < -CREEP {
                     touches.push((d, k, normal));
                 }
             }
@@ -185,7 +190,11 @@ impl Sim {
         let rapid = ids
             .iter()
             .any(|&k| self.now - self.aux[k as usize].last_hit < CONTACT_DURATION);
-        let e = if rapid { 1.0 } else { self.laws.restitution };
+        let e = if rapid {
+            1.0
+        } else {
+            self.laws.restitution
+        };
         let list: Vec<simultaneous::Touch> = touches
             .iter()
             .map(|&(a, b, normal)| simultaneous::Touch {
@@ -243,8 +252,12 @@ impl Sim {
         let speed = b.vel[axis].abs();
         if !into_wall {
             // On the wall with gravity pressing it on: resting there.
-            self.maybe_sleep(i);
+            self.rest_on_wall(i, axis, upper, 0.0);
+        } else if self.rest_on_wall(i, axis, upper, speed) {
+            self.wall_impulse += self.aux[i as usize].mass * speed;
+            self.rested(i);
         } else {
+            let b = &mut self.bodies[i as usize];
             let aux = &mut self.aux[i as usize];
             self.wall_impulse += aux.mass * (1.0 + e) * b.vel[axis].abs();
             b.vel[axis] *= -e;
@@ -255,9 +268,15 @@ impl Sim {
             } else {
                 self.rested(i);
             }
+            self.unwedge(i);
             self.maybe_sleep(i);
         }
         self.predict(i);
+    }
+
+    /// Whether body `i` collided within a contact duration.
+    fn rapid(&self, i: u32) -> bool {
+        self.now - self.aux[i as usize].last_hit < CONTACT_DURATION
     }
 
     /// Counts a pair collision of body `i` closing at `closing` m/s: an

@@ -3,6 +3,11 @@
 
 use glam::DVec2;
 
+/// Closing speed (m/s) below which two discs in contact are taken as not
+/// approaching: a pair that creeps together at 10⁻¹² m/s would need a
+/// million years to close a micrometre.
+pub(super) const CREEP: f64 = 1e-12;
+
 /// Time until two discs at separation `d` with relative velocity `dv`
 /// touch (distance `sigma`), if they approach; zero if they already overlap
 /// and approach; infinity if they never touch. Computed without branches
@@ -14,7 +19,9 @@ pub(super) fn pair_time(d: DVec2, dv: DVec2, sigma: f64) -> f64 {
     let gap = d.length_squared() - sigma * sigma;
     let disc = b * b - dv.length_squared() * gap;
     let overlapping = gap <= 0.0;
-    let meets = b < 0.0 && (overlapping | (disc > 0.0));
+    // In contact, a pair closing slower than CREEP is not approaching
+    // (round-off in a pile falling together would collide it forever).
+    let meets = b < 0.0 && (!overlapping | (b < -CREEP * sigma)) && (overlapping | (disc > 0.0));
     let t = if overlapping {
         0.0
     } else {
@@ -63,7 +70,40 @@ pub(super) fn accelerating_pair_time(d: DVec2, dv: DVec2, a: DVec2, sigma: f64) 
             continue;
         }
         if f(lo) <= 0.0 {
-            return lo;
+            // In contact already and turning in: the contact begins when
+            // they close at CREEP (f′ = −2σ·CREEP), found on the part of
+            // the stretch where f′ still falls (up to the root of f″);
+            // touching and never closing that fast, they only graze.
+            let least = -2.0 * sigma * CREEP;
+            if slope(lo) <= least {
+                return lo;
+            }
+            let curve = |t: f64| (12.0 * c4 * t + 6.0 * c3) * t + 2.0 * c2;
+            let mut deepest = hi;
+            let (qa, qb, qc) = (12.0 * c4, 6.0 * c3, 2.0 * c2);
+            let q = qb * qb - 4.0 * qa * qc;
+            if q >= 0.0 {
+                for r in [(-qb - q.sqrt()) / (2.0 * qa), (-qb + q.sqrt()) / (2.0 * qa)] {
+                    if r > lo && r < deepest && curve(0.5 * (lo + r)) < 0.0 {
+                        deepest = r;
+                    }
+                }
+            }
+            if slope(deepest) > least {
+                continue;
+            }
+            let (mut before, mut after) = (lo, deepest);
+            loop {
+                let mid = 0.5 * (before + after);
+                if mid <= before || mid >= after {
+                    return after;
+                }
+                if slope(mid) > least {
+                    before = mid;
+                } else {
+                    after = mid;
+                }
+            }
         }
         if f(hi) < 0.0 {
             let (mut outside, mut inside) = (lo, hi);

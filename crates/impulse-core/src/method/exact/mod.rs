@@ -264,10 +264,10 @@ struct Sim {
     collided: Vec<Collision>,
     /// Whether discs may fall asleep under these laws ([`sleep`]).
     sleeping: bool,
-    /// Per body: asleep (still, without gravity, until woken).
-    asleep: Vec<bool>,
-    /// How many are asleep.
-    sleepers: usize,
+    /// Per body: moving freely, asleep, or riding a wall ([`sleep`]).
+    rest: Vec<sleep::Rest>,
+    /// How many are asleep or riding.
+    resting_bodies: usize,
 }
 
 impl Sim {
@@ -414,11 +414,7 @@ impl Sim {
     }
 
     fn advance_to(&mut self, i: u32, t: f64) {
-        let g = if self.sleepers > 0 && self.asleep[i as usize] {
-            DVec2::ZERO // still (its velocity is zero)
-        } else {
-            self.laws.gravity
-        };
+        let g = self.accel(i);
         let b = &mut self.bodies[i as usize];
         let tau = t - b.time;
         if tau != 0.0 {

@@ -11,6 +11,7 @@
 use super::grid::NIL;
 use super::kinematics::{accelerating_pair_time, first_crossing, pair_time};
 use super::queue::Event;
+use super::sleep::Rest;
 use super::{Body, Kind, Sim};
 use crate::boundary::Boundary;
 use glam::DVec2;
@@ -80,17 +81,23 @@ impl Sim {
                 gen: guess.gen,
             },
         );
-        let still = self.sleepers > 0 && self.asleep[i as usize];
-        let exit = if still {
-            None // asleep: no walls, no crossings
-        } else if self.laws.gravity == DVec2::ZERO {
+        let g = self.accel(i);
+        let exit = if self.asleep(i) {
+            None // still: no walls, no crossings
+        } else if g == DVec2::ZERO {
             self.straight_exit(me)
         } else {
-            self.curved_exit(me)
+            self.curved_exit(me, g)
         };
         if let Some((tau, kind)) = exit {
             if self.now + tau < best.0 {
                 best = (self.now + tau, kind);
+            }
+        }
+        if let Some(w) = std::env::var_os("IMPULSE_DEBUG_PAIR") {
+            let w = w.to_string_lossy().to_string();
+            if w.split(',').any(|x| x.parse::<u32>().ok() == Some(i)) {
+                eprintln!("predict {i} at {} rest {:?} pos {:?} vel {:?} gen {} -> {:?} at {}", self.now, self.rest[i as usize], me.pos, me.vel, me.gen, best.1, best.0);
             }
         }
         let event = best.0.is_finite().then_some(Event {
@@ -125,9 +132,10 @@ impl Sim {
     ) -> PairGuess {
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
         let g = laws.gravity;
-        // Sleepers lie still; a pair with one of them meets on a parabola.
-        let sleepers = GRAVITY && self.sleepers > 0;
-        let me_asleep = sleepers && self.asleep[i as usize];
+        // Sleepers lie still and riders feel only part of gravity: a pair
+        // with one of them may meet on a parabola.
+        let resting = GRAVITY && self.resting_bodies > 0;
+        let my_rest = if resting { self.rest[i as usize] } else { Rest::Free };
         let visit = |cell: usize, shift: DVec2| {
             let mut next = self.grid.first(cell);
             while next != NIL {
@@ -137,23 +145,18 @@ impl Sim {
                 if j == i {
                     continue;
                 }
-                if sleepers && (me_asleep || self.asleep[j as usize]) {
-                    let other_asleep = self.asleep[j as usize];
-                    if me_asleep && other_asleep {
+                if resting && (my_rest != Rest::Free || self.rest[j as usize] != Rest::Free) {
+                    let its_rest = self.rest[j as usize];
+                    if my_rest == Rest::Asleep && its_rest == Rest::Asleep {
                         continue; // neither moves
                     }
+                    let (mine, its) = (self.accel(i), self.accel(j));
                     let tau = now - other.time;
-                    let (pj, vj, a) = if other_asleep {
-                        (other.pos, DVec2::ZERO, -g)
-                    } else {
-                        (
-                            other.pos + other.vel * tau + 0.5 * g * tau * tau,
-                            other.vel + g * tau,
-                            g,
-                        )
-                    };
+                    let pj = other.pos + other.vel * tau + 0.5 * its * tau * tau;
+                    let vj = other.vel + its * tau;
                     let d = laws.boundary.separation(me.pos, pj, laws.size);
-                    let t = now + accelerating_pair_time(d, vj - me.vel, a, me.radius + other.radius);
+                    let sigma = me.radius + other.radius;
+                    let t = now + accelerating_pair_time(d, vj - me.vel, its - mine, sigma);
                     if t < guess.time {
                         guess = PairGuess {
                             time: t,
@@ -240,8 +243,7 @@ impl Sim {
     }
 
     /// Under gravity: the first wall hit or cell crossing along parabolas.
-    fn curved_exit(&self, me: &Body) -> Option<(f64, Kind)> {
-        let g = self.laws.gravity;
+    fn curved_exit(&self, me: &Body, g: DVec2) -> Option<(f64, Kind)> {
         let mut best: Option<(f64, Kind)> = None;
         let mut consider = |tau: Option<f64>, kind: Kind| {
             if let Some(tau) = tau {

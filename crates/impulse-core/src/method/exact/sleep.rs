@@ -25,12 +25,31 @@
 //!   off it with the restitution.
 //! - **Waking.** A woken disc wakes every sleeper it holds up (touching it,
 //!   above it), and those wake the ones they hold, so nothing floats.
+//! - **Resting contact without sleep.** A disc that meets a still support
+//!   (a wall or a sleeper) gravity presses it on, slower than gravity
+//!   presses within a contact duration t_c, but too fast to sleep (sliding
+//!   along the floor), *glances* off it: its velocity turns, its speed
+//!   kept, to leave the support at half that pressing speed, so it comes
+//!   back after t_c. Hard discs would instead bounce ever lower, with no
+//!   end to the events (the TC rule keeps such bounces elastic, but at
+//!   whatever tiny speed they had). Energy is unchanged; momentum along
+//!   the support shrinks by a relative (g·t_c/2v)²/2, under 10⁻⁵ for
+//!   anything faster than 0.2 m/s.
 //!
 //! Only scenes with gravity and a restitution below 1 sleep: without either
 //! nothing comes to rest, and the events are those of plain `exact`.
 
-use super::Sim;
+use super::{Sim, CONTACT_DURATION};
 use glam::DVec2;
+
+/// Whether a disc flies or sleeps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Rest {
+    /// Flying under gravity.
+    Free,
+    /// Still, without gravity, until woken.
+    Asleep,
+}
 
 /// A disc sleeps below the speed that would lift it this fraction of its
 /// radius against gravity.
@@ -55,6 +74,79 @@ impl Sim {
         laws.gravity != DVec2::ZERO && (laws.restitution < 1.0 || laws.wall_restitution < 1.0)
     }
 
+    /// Whether body `i` is asleep.
+    #[inline]
+    pub(super) fn asleep(&self, i: u32) -> bool {
+        self.resting_bodies > 0 && self.rest[i as usize] == Rest::Asleep
+    }
+
+    /// Body `i`'s acceleration: gravity, or what is left of it at rest.
+    #[inline]
+    pub(super) fn accel(&self, i: u32) -> DVec2 {
+        let g = self.laws.gravity;
+        if self.resting_bodies == 0 {
+            return g;
+        }
+        match self.rest[i as usize] {
+            Rest::Free => g,
+            Rest::Asleep => DVec2::ZERO,
+        }
+    }
+
+    /// Sets body `i`'s way of moving, keeping the count of resting ones.
+    fn set_rest(&mut self, i: u32, rest: Rest) {
+        let was = std::mem::replace(&mut self.rest[i as usize], rest);
+        match (was == Rest::Free, rest == Rest::Free) {
+            (true, false) => self.resting_bodies += 1,
+            (false, true) => self.resting_bodies -= 1,
+            _ => {}
+        }
+    }
+
+    /// Body `i` (at the current time) meets a still support — the wall
+    /// across `axis` (`upper` or lower) — `speed` m/s into it: a resting
+    /// contact if slower than gravity presses it on within a contact
+    /// duration; then it sleeps or glances off. Returns whether it was one.
+    pub(super) fn rest_on_wall(&mut self, i: u32, axis: usize, upper: bool, speed: f64) -> bool {
+        let mut out = DVec2::ZERO; // from the wall into the box
+        out[axis] = if upper { -1.0 } else { 1.0 };
+        self.rest_on(i, out, speed)
+    }
+
+    /// Body `i` meets a still support along `out` (unit, from the support
+    /// to the disc), closing at `closing` m/s: see [`Sim::rest_on_wall`].
+    pub(super) fn rest_on(&mut self, i: u32, out: DVec2, closing: f64) -> bool {
+        let pressing = -self.laws.gravity.dot(out);
+        if !self.sleeping || pressing <= 0.0 || closing > pressing * CONTACT_DURATION {
+            return false;
+        }
+        if !self.maybe_sleep(i) && !self.glance(i, out, pressing) {
+            self.slide_off(i, -out);
+        }
+        true
+    }
+
+    /// Turns body `i`'s velocity, its speed kept, to leave the support
+    /// along `out` at half of what `pressing` (m/s²) builds in a contact
+    /// duration; false if it is slower than that.
+    fn glance(&mut self, i: u32, out: DVec2, pressing: f64) -> bool {
+        let leave = 0.5 * pressing * CONTACT_DURATION;
+        let body = &mut self.bodies[i as usize];
+        let v = body.vel;
+        let speed = v.length();
+        if speed <= leave {
+            return false;
+        }
+        let along = v - v.dot(out) * out;
+        body.vel = match along.try_normalize() {
+            Some(t) => leave * out + (speed * speed - leave * leave).sqrt() * t,
+            None => speed * out,
+        };
+        body.gen += 1;
+        self.aux[i as usize].last_hit = self.now;
+        true
+    }
+
     /// The speed below which body `i` may fall asleep (m/s).
     pub(super) fn sleep_speed(&self, i: u32) -> f64 {
         let r = self.bodies[i as usize].radius;
@@ -64,7 +156,7 @@ impl Sim {
     /// Puts body `i` (at the current time, just after meeting a support) to
     /// sleep if it is slow and held; returns whether it fell asleep.
     pub(super) fn maybe_sleep(&mut self, i: u32) -> bool {
-        if !self.sleeping || self.asleep[i as usize] {
+        if !self.sleeping || self.asleep(i) {
             return false;
         }
         let b = self.bodies[i as usize];
@@ -74,9 +166,70 @@ impl Sim {
         let body = &mut self.bodies[i as usize];
         body.vel = DVec2::ZERO;
         body.gen += 1;
-        self.asleep[i as usize] = true;
-        self.sleepers += 1;
+        self.set_rest(i, Rest::Asleep);
         true
+    }
+
+    /// After body `i` bounced off a still support, takes out whatever of
+    /// its velocity still drives it into another one it touches (a wall or
+    /// a sleeper, to round-off): wedged between two, a bounce off each
+    /// sent it straight back into the other, at the same instant, forever.
+    pub(super) fn unwedge(&mut self, i: u32) {
+        if !self.sleeping {
+            return;
+        }
+        let me = self.bodies[i as usize];
+        let mut outs: Vec<DVec2> = Vec::new();
+        if self.laws.boundary == crate::boundary::Boundary::Box {
+            let near = super::SIMULTANEOUS_TOLERANCE * me.radius;
+            for axis in 0..2 {
+                let mut n = DVec2::ZERO;
+                n[axis] = 1.0;
+                if self.laws.walls.at(axis, false) && me.pos[axis] - me.radius <= near {
+                    outs.push(n);
+                }
+                let top = self.laws.size[axis] - me.radius;
+                if self.laws.walls.at(axis, true) && top - me.pos[axis] <= near {
+                    outs.push(-n);
+                }
+            }
+        }
+        if self.resting_bodies > 0 {
+            self.grid.for_each_neighbour(me.cell, |c, _| {
+                for k in self.grid.members(&self.bodies, c) {
+                    if k == i || !self.asleep(k) {
+                        continue;
+                    }
+                    let other = &self.bodies[k as usize];
+                    let d = self.laws.boundary.separation(other.pos, me.pos, self.laws.size);
+                    let (dist, reach) = (d.length(), me.radius + other.radius);
+                    if dist > 0.0 && dist <= reach * (1.0 + super::SIMULTANEOUS_TOLERANCE) {
+                        outs.push(d / dist);
+                    }
+                }
+            });
+        }
+        if outs.len() < 2 {
+            return;
+        }
+        // The least change that drives into none of them: the velocity as
+        // it is, or without its part into one support, or (in the plane,
+        // two supports at once) nothing.
+        let creep = super::kinematics::CREEP;
+        let frees = |w: DVec2| outs.iter().all(|o| w.dot(*o) >= -creep);
+        let v = me.vel;
+        if frees(v) {
+            return;
+        }
+        let mut best: Option<(f64, DVec2)> = None;
+        for &out in &outs {
+            let into = v.dot(out);
+            let w = v - into * out;
+            if into < 0.0 && frees(w) && best.is_none_or(|(least, _)| -into < least) {
+                best = Some((-into, w));
+            }
+        }
+        self.bodies[i as usize].vel = best.map_or(DVec2::ZERO, |(_, w)| w);
     }
 
     /// Whether body `i`'s supports (walls and sleeping discs within
@@ -102,7 +255,7 @@ impl Sim {
         }
         self.grid.for_each_neighbour(me.cell, |c, _| {
             for k in self.grid.members(&self.bodies, c) {
-                if k == i || !self.asleep[k as usize] {
+                if k == i || !self.asleep(k) {
                     continue;
                 }
                 let other = &self.bodies[k as usize];
@@ -149,8 +302,7 @@ impl Sim {
             let body = &mut self.bodies[i as usize];
             body.vel = DVec2::ZERO;
             body.gen += 1;
-            self.asleep[i as usize] = true;
-            self.sleepers += 1;
+            self.set_rest(i, Rest::Asleep);
             return;
         }
         let drop = along.length() * step; // potential energy per kg given up
@@ -203,7 +355,7 @@ impl Sim {
             let mut held = Vec::new();
             self.grid.for_each_neighbour(below.cell, |c, _| {
                 for s in self.grid.members(&self.bodies, c) {
-                    if !self.asleep[s as usize] {
+                    if !self.asleep(s) {
                         continue;
                     }
                     let above = &self.bodies[s as usize];
@@ -218,7 +370,7 @@ impl Sim {
                 }
             });
             for s in held {
-                if self.asleep[s as usize] {
+                if self.asleep(s) {
                     self.rouse(s);
                     woken.push(s);
                     stack.push(s);
@@ -231,27 +383,28 @@ impl Sim {
     /// Marks sleeping body `i` awake, at rest at the current time.
     fn rouse(&mut self, i: u32) {
         self.advance_to(i, self.now);
-        self.asleep[i as usize] = false;
-        self.sleepers -= 1;
+        self.set_rest(i, Rest::Free);
         self.bodies[i as usize].gen += 1;
     }
 
-    /// Wakes every sleeper (the laws no longer let discs sleep).
+    /// Wakes every sleeper and unhitches every rider (the laws no longer
+    /// let discs rest); every disc must be at the current time.
     pub(super) fn wake_all(&mut self) {
         for i in 0..self.bodies.len() as u32 {
-            if self.asleep[i as usize] {
-                self.rouse(i);
+            if self.rest[i as usize] != Rest::Free {
+                self.set_rest(i, Rest::Free);
+                self.bodies[i as usize].gen += 1;
             }
         }
     }
 
-    /// Counts every sleeper as resting this step.
+    /// Counts every disc asleep or riding a wall as resting this step.
     pub(super) fn count_sleepers(&mut self) {
-        if self.sleepers == 0 {
+        if self.resting_bodies == 0 {
             return;
         }
         for i in 0..self.bodies.len() as u32 {
-            if self.asleep[i as usize] {
+            if self.rest[i as usize] != Rest::Free {
                 self.rested(i);
             }
         }
