@@ -166,8 +166,8 @@ fn fell_behind(s: &Summary) -> Option<String> {
     (s.truncated_steps > 0 && short).then(|| {
         format!(
             "{} cut {} of {} steps short (its event cap) and reached {:.4} s of the {} s asked for: \
-             discs at rest make an event-driven method stall; use --method impulse (resting contact) \
-             or --method auto",
+             more collisions per step than an event-driven method can carry; use --method impulse \
+             (a fixed cost per step) or --method auto",
             s.plan.method.name(),
             s.truncated_steps,
             s.steps,

@@ -354,18 +354,24 @@ fn window_output_files_in_missing_folders_are_refused_before_a_window_opens() {
 
 #[test]
 fn a_run_that_falls_behind_says_so_and_exits_with_its_own_code() {
-    // Heavy discs resting on light ones: `exact` stalls at its event cap.
-    let scene = asset("stress-mass-ratio.toml");
-    let out = impulse(&[
-        "run", &scene, "--time", "0.1", "--method", "exact", "--json",
-    ]);
+    // A disc at 10⁶ m/s in a 2 m box with one-second steps: a million wall
+    // hits a step, past `exact`'s event cap.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("bullet.toml");
+    std::fs::write(
+        &scene,
+        "[world]\nsize = [2.0, 2.0]\n\n[simulation]\ndt = 1.0\n\n[[particles]]\npos = [1.0, 1.0]\nvel = [1e6, 0.3]\nmass = 1.0\nradius = 0.5\n",
+    )
+    .unwrap();
+    let scene = scene.to_str().unwrap().to_string();
+    let out = impulse(&["run", &scene, "--time", "3", "--method", "exact", "--json"]);
     assert_eq!(out.status.code(), Some(3), "{}", stderr(&out));
     let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let (reached, asked) = (
         summary["sim_time"].as_f64().unwrap(),
         summary["requested_time"].as_f64().unwrap(),
     );
-    assert!(reached < asked && asked == 0.1, "{reached} of {asked}");
+    assert!(reached < asked && asked == 3.0, "{reached} of {asked}");
     assert!(summary["truncated_steps"].as_u64().unwrap() > 0);
     let err = stderr(&out);
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -375,12 +381,12 @@ fn a_run_that_falls_behind_says_so_and_exits_with_its_own_code() {
     );
     // The same scene under impulse reaches its time, cuts nothing, exits 0.
     let out = impulse(&[
-        "run", &scene, "--time", "0.1", "--method", "impulse", "--json",
+        "run", &scene, "--time", "3", "--method", "impulse", "--json",
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
     let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(summary["truncated_steps"], 0);
-    assert!((summary["sim_time"].as_f64().unwrap() - 0.1).abs() < 1e-9);
+    assert!((summary["sim_time"].as_f64().unwrap() - 3.0).abs() < 1e-9);
 }
 
 #[test]

@@ -39,11 +39,7 @@ impl Sim {
             let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
             let rapid = self.now - ia.last_hit < CONTACT_DURATION
                 || self.now - ib.last_hit < CONTACT_DURATION;
-            let e = if rapid {
-                1.0
-            } else {
-                self.laws.restitution
-            };
+            let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             if self.record {
                 self.collided.push(Collision {
@@ -190,11 +186,7 @@ impl Sim {
         let rapid = ids
             .iter()
             .any(|&k| self.now - self.aux[k as usize].last_hit < CONTACT_DURATION);
-        let e = if rapid {
-            1.0
-        } else {
-            self.laws.restitution
-        };
+        let e = if rapid { 1.0 } else { self.laws.restitution };
         let list: Vec<simultaneous::Touch> = touches
             .iter()
             .map(|&(a, b, normal)| simultaneous::Touch {

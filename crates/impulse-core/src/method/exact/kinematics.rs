@@ -270,11 +270,25 @@ mod tests {
         // Thrown up off its top: back down on it after 2v/g.
         let t = accelerating_pair_time(DVec2::new(0.0, -1.0), DVec2::new(0.0, -2.0), -g, 1.0);
         assert!((t - 4.0 / 9.81).abs() < 1e-9, "{t}");
-        // Resting on it, a hair inside: at once.
+        // Resting on it, a hair inside: as soon as it closes at CREEP.
         let t = accelerating_pair_time(DVec2::new(0.0, -(1.0 - 1e-15)), DVec2::ZERO, -g, 1.0);
-        assert_eq!(t, 0.0);
+        assert!(t >= 0.0 && t <= 2.0 * CREEP / 9.81, "{t}");
+        // Grazing a still disc's side (touching, moving along it, pressed
+        // on by nothing): never.
+        let t = accelerating_pair_time(
+            DVec2::new(-1.0, 0.0),
+            DVec2::new(0.0, 0.0),
+            DVec2::ZERO,
+            1.0,
+        );
+        assert_eq!(t, f64::INFINITY);
         // A hair inside and rising too slowly to get out: the moment it turns.
-        let t = accelerating_pair_time(DVec2::new(0.0, -(1.0 - 1e-9)), DVec2::new(0.0, -1e-6), -g, 1.0);
+        let t = accelerating_pair_time(
+            DVec2::new(0.0, -(1.0 - 1e-9)),
+            DVec2::new(0.0, -1e-6),
+            -g,
+            1.0,
+        );
         assert!((t - 1e-6 / 9.81).abs() < 1e-12, "{t}");
     }
 
@@ -283,7 +297,10 @@ mod tests {
         // A disc thrown at an angle past a still one: the first instant the
         // centres come within σ, found by fine steps, and the formula's.
         let g = DVec2::new(0.0, -9.81);
-        for (k, v) in [(1.0, 2.0), (2.0, 0.5), (-1.0, 3.0), (0.3, 0.0)].into_iter().enumerate() {
+        for (k, v) in [(1.0, 2.0), (2.0, 0.5), (-1.0, 3.0), (0.3, 0.0)]
+            .into_iter()
+            .enumerate()
+        {
             let d = DVec2::new(1.5, -1.2 - 0.1 * k as f64);
             let dv = -DVec2::new(v.0, v.1);
             let t = accelerating_pair_time(d, dv, -g, 1.0);

@@ -94,12 +94,6 @@ impl Sim {
                 best = (self.now + tau, kind);
             }
         }
-        if let Some(w) = std::env::var_os("IMPULSE_DEBUG_PAIR") {
-            let w = w.to_string_lossy().to_string();
-            if w.split(',').any(|x| x.parse::<u32>().ok() == Some(i)) {
-                eprintln!("predict {i} at {} rest {:?} pos {:?} vel {:?} gen {} -> {:?} at {}", self.now, self.rest[i as usize], me.pos, me.vel, me.gen, best.1, best.0);
-            }
-        }
         let event = best.0.is_finite().then_some(Event {
             time: best.0,
             owner: i,
@@ -135,7 +129,11 @@ impl Sim {
         // Sleepers lie still and riders feel only part of gravity: a pair
         // with one of them may meet on a parabola.
         let resting = GRAVITY && self.resting_bodies > 0;
-        let my_rest = if resting { self.rest[i as usize] } else { Rest::Free };
+        let my_rest = if resting {
+            self.rest[i as usize]
+        } else {
+            Rest::Free
+        };
         let visit = |cell: usize, shift: DVec2| {
             let mut next = self.grid.first(cell);
             while next != NIL {

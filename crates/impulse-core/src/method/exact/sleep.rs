@@ -201,7 +201,10 @@ impl Sim {
                         continue;
                     }
                     let other = &self.bodies[k as usize];
-                    let d = self.laws.boundary.separation(other.pos, me.pos, self.laws.size);
+                    let d = self
+                        .laws
+                        .boundary
+                        .separation(other.pos, me.pos, self.laws.size);
                     let (dist, reach) = (d.length(), me.radius + other.radius);
                     if dist > 0.0 && dist <= reach * (1.0 + super::SIMULTANEOUS_TOLERANCE) {
                         outs.push(d / dist);

@@ -1,0 +1,139 @@
+//! `exact` where discs come to rest (sleeping discs, see
+//! `impulse::method::exact::sleep`): piles settle without overlap and
+//! without gaining energy, a dropped ball rests when the geometric series
+//! of its bounces says, and a resting pile still answers a hit.
+
+use impulse::method::exact::sleep::SLEEP_LIFT;
+use impulse::method::{Method, Setting};
+use impulse::{Color, DVec2, Particle, Scene, World};
+
+const DT: f64 = impulse::scene::DEFAULT_DT;
+
+fn preset(file: &str) -> World {
+    let path = format!("{}/assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    let mut w = Scene::load(std::path::Path::new(&path))
+        .and_then(|s| s.build(&path))
+        .unwrap();
+    w.method = Setting::Fixed(Method::Exact);
+    w
+}
+
+/// The deepest overlap of any two discs, as a fraction of the smaller radius.
+fn deepest_overlap(w: &World) -> f64 {
+    let ps = &w.particles;
+    let mut worst = 0.0f64;
+    for i in 0..ps.len() {
+        for j in i + 1..ps.len() {
+            let d = (ps[i].pos - ps[j].pos).length();
+            let depth = ps[i].radius + ps[j].radius - d;
+            worst = worst.max(depth / ps[i].radius.min(ps[j].radius));
+        }
+    }
+    worst
+}
+
+#[test]
+fn a_pile_settles_under_exact_without_overlap_stall_or_energy_gain() {
+    let mut w = preset("stress-pile.toml");
+    let mut energy = w.total_energy();
+    for step in 0..(6.0 / DT) as usize {
+        let stats = w.step(DT);
+        assert!(!stats.truncated, "step {step} cut short");
+        let now = w.total_energy();
+        assert!(
+            now - energy <= 1e-12 * energy.abs(),
+            "step {step}: energy rose by {:e} of itself",
+            (now - energy) / energy.abs()
+        );
+        energy = now;
+        if step % 240 == 0 {
+            let o = deepest_overlap(&w);
+            assert!(o < 1e-9, "step {step}: overlap {o:e} of a radius");
+        }
+    }
+    assert!(deepest_overlap(&w) < 1e-9);
+    // At rest: every disc asleep, so no kinetic energy at all.
+    assert_eq!(w.metrics().kinetic_energy, 0.0);
+    assert_eq!(w.resting_contacts, w.particles.len(), "all counted resting");
+}
+
+/// A ball of radius r dropped from centre height H onto a floor with
+/// restitution e first lands after t₀ = √(2h/g), h = H − r, at v₀ = √(2gh);
+/// its bounces then last 2e·v₀/(g(1 − e)) in all (a geometric series). It
+/// falls asleep when a bounce would leave slower than its sleep speed
+/// v_s = √(2g·SLEEP_LIFT·r), which skips the last bounces: at most
+/// 2v_s/(g(1 − e)) early.
+#[test]
+fn a_dropped_ball_rests_when_the_geometric_series_says() {
+    for (e, height) in [(0.5, 3.0), (0.7, 2.0), (0.9, 1.5)] {
+        let (g, r) = (9.81, 0.25);
+        let mut w = World::new(DVec2::new(4.0, 4.0));
+        w.laws.gravity = DVec2::new(0.0, -g);
+        w.laws.wall_restitution = e;
+        w.laws.restitution = e;
+        w.method = Setting::Fixed(Method::Exact);
+        w.particles = vec![Particle::new(
+            DVec2::new(2.0, height),
+            DVec2::ZERO,
+            1.0,
+            r,
+            Color::palette(0),
+        )];
+        let h = height - r;
+        let v0 = (2.0 * g * h).sqrt();
+        let rest = (2.0 * h / g).sqrt() + 2.0 * e * v0 / (g * (1.0 - e));
+        let early = 2.0 * (2.0 * g * SLEEP_LIFT * r).sqrt() / (g * (1.0 - e));
+        let started = std::time::Instant::now();
+        let mut rested_at = None;
+        for _ in 0..((rest + 1.0) / DT) as usize {
+            w.step(DT);
+            let p = &w.particles[0];
+            match (rested_at, p.vel == DVec2::ZERO) {
+                (None, true) => rested_at = Some(w.time),
+                (Some(_), false) => rested_at = None,
+                _ => {}
+            }
+        }
+        let at = rested_at.expect("never came to rest");
+        assert!(
+            at >= rest - early - DT && at <= rest + DT,
+            "e = {e}: at rest from {at:.4} s, the series says {rest:.4} s (up to {early:.4} s early)"
+        );
+        assert!((w.particles[0].pos.y - r).abs() < 1e-12, "on the floor");
+        assert!(
+            started.elapsed().as_secs_f64() < 5.0,
+            "{:?}",
+            started.elapsed()
+        );
+    }
+}
+
+#[test]
+fn a_resting_pile_still_answers_a_hit() {
+    let mut w = preset("preset-0-pile.toml");
+    for _ in 0..(8.0 / DT) as usize {
+        w.step(DT);
+    }
+    assert_eq!(w.metrics().kinetic_energy, 0.0, "settled");
+    let before: Vec<DVec2> = w.particles.iter().map(|p| p.pos).collect();
+    let momentum = w.metrics().momentum;
+    // A disc thrown hard at the pile from high up on the left.
+    w.particles.push(Particle::new(
+        DVec2::new(1.0, 8.0),
+        DVec2::new(12.0, -6.0),
+        3.0,
+        0.3,
+        Color::palette(1),
+    ));
+    for _ in 0..(1.5 / DT) as usize {
+        w.step(DT);
+    }
+    let moved = before
+        .iter()
+        .zip(&w.particles)
+        .filter(|(b, p)| (**b - p.pos).length() > 1e-3)
+        .count();
+    assert!(moved >= 3, "only {moved} discs of the pile moved");
+    assert!(deepest_overlap(&w) < 1e-9);
+    assert_eq!(momentum, DVec2::ZERO);
+}
