@@ -77,7 +77,7 @@ impl Sim {
         let (a, b) = (self.bodies[mover as usize], self.bodies[sleeper as usize]);
         let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
         let dist = d.length();
-        if !(dist > 0.0) {
+        if dist.is_nan() || dist <= 0.0 {
             self.predict(i);
             self.predict(j);
             return; // sharing a centre: set-up separates those

@@ -272,7 +272,7 @@ mod tests {
         assert!((t - 4.0 / 9.81).abs() < 1e-9, "{t}");
         // Resting on it, a hair inside: as soon as it closes at CREEP.
         let t = accelerating_pair_time(DVec2::new(0.0, -(1.0 - 1e-15)), DVec2::ZERO, -g, 1.0);
-        assert!(t >= 0.0 && t <= 2.0 * CREEP / 9.81, "{t}");
+        assert!((0.0..=2.0 * CREEP / 9.81).contains(&t), "{t}");
         // Grazing a still disc's side (touching, moving along it, pressed
         // on by nothing): never.
         let t = accelerating_pair_time(
