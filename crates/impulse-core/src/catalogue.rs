@@ -73,13 +73,17 @@ pub const STRESS_MASS_RATIO: SceneFile = scene_file!("stress-mass-ratio.toml");
 pub const STRESS_PI_BLOCKS: SceneFile = scene_file!("stress-pi-blocks.toml");
 /// `assets/scenes/stress-pile.toml`.
 pub const STRESS_PILE: SceneFile = scene_file!("stress-pile.toml");
+/// `assets/scenes/stress-pile-large.toml`.
+pub const STRESS_PILE_LARGE: SceneFile = scene_file!("stress-pile-large.toml");
+/// `assets/scenes/stress-pile-tall.toml`.
+pub const STRESS_PILE_TALL: SceneFile = scene_file!("stress-pile-tall.toml");
 /// `assets/scenes/stress-relaxation.toml`.
 pub const STRESS_RELAXATION: SceneFile = scene_file!("stress-relaxation.toml");
 /// `assets/scenes/stress-three-discs.toml`.
 pub const STRESS_THREE_DISCS: SceneFile = scene_file!("stress-three-discs.toml");
 
 /// Every shipped scene file, in file-name order.
-pub const ALL: [SceneFile; 28] = [
+pub const ALL: [SceneFile; 30] = [
     DEFAULT,
     EMPTY,
     PI_BLOCKS_1,
@@ -105,6 +109,8 @@ pub const ALL: [SceneFile; 28] = [
     STRESS_LONG_RUN,
     STRESS_MASS_RATIO,
     STRESS_PI_BLOCKS,
+    STRESS_PILE_LARGE,
+    STRESS_PILE_TALL,
     STRESS_PILE,
     STRESS_RELAXATION,
     STRESS_THREE_DISCS,
