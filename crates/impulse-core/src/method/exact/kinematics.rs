@@ -92,35 +92,44 @@ pub(super) fn accelerating_pair_time(d: DVec2, dv: DVec2, a: DVec2, sigma: f64) 
             if slope(deepest) > least {
                 continue;
             }
-            let (mut before, mut after) = (lo, deepest);
-            loop {
-                let mid = 0.5 * (before + after);
-                if mid <= before || mid >= after {
-                    return after;
-                }
-                if slope(mid) > least {
-                    before = mid;
-                } else {
-                    after = mid;
-                }
-            }
+            return falling_root(|t| slope(t) - least, curve, lo, deepest).1;
         }
         if f(hi) < 0.0 {
-            let (mut outside, mut inside) = (lo, hi);
-            loop {
-                let mid = 0.5 * (outside + inside);
-                if mid <= outside || mid >= inside {
-                    return outside;
-                }
-                if f(mid) > 0.0 {
-                    outside = mid;
-                } else {
-                    inside = mid;
-                }
-            }
+            return falling_root(f, slope, lo, hi).0;
         }
     }
     f64::INFINITY
+}
+
+/// Where `g`, falling on [lo, hi] with g(lo) > 0 ≥ g(hi), crosses zero:
+/// the last time found above it and the first at or below it, a bit or two
+/// apart. Newton's method (`dg` is g′) inside the bracket, bisection where
+/// a Newton step would leave it: about five evaluations instead of sixty.
+fn falling_root(g: impl Fn(f64) -> f64, dg: impl Fn(f64) -> f64, lo: f64, hi: f64) -> (f64, f64) {
+    let (mut above, mut below) = (lo, hi);
+    let mut t = 0.5 * (lo + hi);
+    for _ in 0..200 {
+        if t <= above || t >= below {
+            t = 0.5 * (above + below);
+            if t <= above || t >= below {
+                break; // the bracket is two neighbouring numbers
+            }
+        }
+        let value = g(t);
+        if value > 0.0 {
+            above = t;
+        } else {
+            below = t;
+        }
+        let step = value / dg(t);
+        let next = t - step;
+        t = if step.is_finite() && next > above && next < below {
+            next
+        } else {
+            0.5 * (above + below)
+        };
+    }
+    (above, below)
 }
 
 /// The real roots of t³ + b·t² + c·t + d (one or three; NaN fills the
