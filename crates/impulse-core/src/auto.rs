@@ -25,8 +25,8 @@
 //!   Not where discs will come to rest in contact (gravity with
 //!   restitution below 1): `exact` gets there (its discs fall asleep), but
 //!   settling costs it far more than `impulse` (measured 2026-11-23: the
-//!   150-disc pile, 15 s, 4.3 s of wall clock against 0.2 s; the 360-disc
-//!   tall pile 12.3 s against 0.46 s), so it is not the cheaper choice.
+//!   150-disc pile, 15 s, 2.2 s of wall clock against 0.2 s; the 360-disc
+//!   tall pile 8.3 s against 0.45 s), so it is not the cheaper choice.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
 //!   59 / 52 / 65 / 112 at n = 8 / 16 / 32 / 64 against the grid's 60 / 39 /
@@ -204,7 +204,7 @@ pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> P
             let resting = laws.gravity != glam::DVec2::ZERO && dissipative;
             if resting {
                 reasons.push(
-                    "impulse: discs will rest in contact (gravity, e < 1), where exact costs 20× more"
+                    "impulse: discs will rest in contact (gravity, e < 1), where exact costs 10–20× more"
                         .to_string(),
                 );
                 Method::Impulse
