@@ -41,19 +41,7 @@ impl Sim {
                 || self.now - ib.last_hit < CONTACT_DURATION;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
-            if self.record {
-                self.collided.push(Collision {
-                    time: self.now,
-                    discs: [
-                        self.order[i as usize] as usize,
-                        self.order[j as usize] as usize,
-                    ],
-                    normal,
-                    masses: [ia.mass, ib.mass],
-                    before: [a.vel, b.vel],
-                    after: [va, vb],
-                });
-            }
+            self.record_pair([i, j], normal, [a.vel, b.vel], [va, vb]);
             for (k, v) in [(i, va), (j, vb)] {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
@@ -65,6 +53,20 @@ impl Sim {
         }
         self.predict(i);
         self.predict(j);
+    }
+
+    /// Keeps a pair collision of bodies `k` for the ledger (when it is on).
+    fn record_pair(&mut self, k: [u32; 2], normal: DVec2, before: [DVec2; 2], after: [DVec2; 2]) {
+        if self.record {
+            self.collided.push(Collision {
+                time: self.now,
+                discs: k.map(|b| self.order[b as usize] as usize),
+                normal,
+                masses: k.map(|b| self.aux[b as usize].mass),
+                before,
+                after,
+            });
+        }
     }
 
     /// A moving disc meets a sleeping one (either may own the event; both
@@ -105,19 +107,7 @@ impl Sim {
         } else {
             (a.vel - (1.0 + e) * closing * normal, DVec2::ZERO)
         };
-        if self.record {
-            self.collided.push(Collision {
-                time: self.now,
-                discs: [
-                    self.order[mover as usize] as usize,
-                    self.order[sleeper as usize] as usize,
-                ],
-                normal,
-                masses: [am.mass, asl.mass],
-                before: [a.vel, DVec2::ZERO],
-                after: [vm, vs],
-            });
-        }
+        self.record_pair([mover, sleeper], normal, [a.vel, DVec2::ZERO], [vm, vs]);
         self.count(mover, closing);
         self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         let body = &mut self.bodies[mover as usize];

@@ -264,10 +264,10 @@ struct Sim {
     collided: Vec<Collision>,
     /// Whether discs may fall asleep under these laws ([`sleep`]).
     sleeping: bool,
-    /// Per body: moving freely, asleep, or riding a wall ([`sleep`]).
+    /// Per body: moving freely or asleep ([`sleep`]).
     rest: Vec<sleep::Rest>,
-    /// How many are asleep or riding.
-    resting_bodies: usize,
+    /// How many are asleep.
+    sleepers: usize,
 }
 
 impl Sim {

@@ -126,9 +126,8 @@ impl Sim {
     ) -> PairGuess {
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
         let g = laws.gravity;
-        // Sleepers lie still and riders feel only part of gravity: a pair
-        // with one of them may meet on a parabola.
-        let resting = GRAVITY && self.resting_bodies > 0;
+        // Sleepers lie still: a moving disc meets one on a parabola.
+        let resting = GRAVITY && self.sleepers > 0;
         let my_rest = if resting {
             self.rest[i as usize]
         } else {

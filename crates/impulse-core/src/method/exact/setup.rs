@@ -59,7 +59,7 @@ impl Sim {
             collided: Vec::new(),
             sleeping: Sim::may_sleep(laws),
             rest: vec![super::sleep::Rest::Free; n],
-            resting_bodies: 0,
+            sleepers: 0,
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -275,7 +275,7 @@ impl Sim {
         self.queue.shift_times(shift);
         self.laws = *laws; // restitutions may have changed
         self.sleeping = Sim::may_sleep(laws);
-        if !self.sleeping && self.resting_bodies > 0 {
+        if !self.sleeping && self.sleepers > 0 {
             self.now = 0.0;
             self.wake_all();
             self.predict_all();

@@ -77,14 +77,14 @@ impl Sim {
     /// Whether body `i` is asleep.
     #[inline]
     pub(super) fn asleep(&self, i: u32) -> bool {
-        self.resting_bodies > 0 && self.rest[i as usize] == Rest::Asleep
+        self.sleepers > 0 && self.rest[i as usize] == Rest::Asleep
     }
 
     /// Body `i`'s acceleration: gravity, or what is left of it at rest.
     #[inline]
     pub(super) fn accel(&self, i: u32) -> DVec2 {
         let g = self.laws.gravity;
-        if self.resting_bodies == 0 {
+        if self.sleepers == 0 {
             return g;
         }
         match self.rest[i as usize] {
@@ -97,8 +97,8 @@ impl Sim {
     fn set_rest(&mut self, i: u32, rest: Rest) {
         let was = std::mem::replace(&mut self.rest[i as usize], rest);
         match (was == Rest::Free, rest == Rest::Free) {
-            (true, false) => self.resting_bodies += 1,
-            (false, true) => self.resting_bodies -= 1,
+            (true, false) => self.sleepers += 1,
+            (false, true) => self.sleepers -= 1,
             _ => {}
         }
     }
@@ -179,39 +179,10 @@ impl Sim {
             return;
         }
         let me = self.bodies[i as usize];
-        let mut outs: Vec<DVec2> = Vec::new();
-        if self.laws.boundary == crate::boundary::Boundary::Box {
-            let near = super::SIMULTANEOUS_TOLERANCE * me.radius;
-            for axis in 0..2 {
-                let mut n = DVec2::ZERO;
-                n[axis] = 1.0;
-                if self.laws.walls.at(axis, false) && me.pos[axis] - me.radius <= near {
-                    outs.push(n);
-                }
-                let top = self.laws.size[axis] - me.radius;
-                if self.laws.walls.at(axis, true) && top - me.pos[axis] <= near {
-                    outs.push(-n);
-                }
-            }
-        }
-        if self.resting_bodies > 0 {
-            self.grid.for_each_neighbour(me.cell, |c, _| {
-                for k in self.grid.members(&self.bodies, c) {
-                    if k == i || !self.asleep(k) {
-                        continue;
-                    }
-                    let other = &self.bodies[k as usize];
-                    let d = self
-                        .laws
-                        .boundary
-                        .separation(other.pos, me.pos, self.laws.size);
-                    let (dist, reach) = (d.length(), me.radius + other.radius);
-                    if dist > 0.0 && dist <= reach * (1.0 + super::SIMULTANEOUS_TOLERANCE) {
-                        outs.push(d / dist);
-                    }
-                }
-            });
-        }
+        let tolerance = super::SIMULTANEOUS_TOLERANCE;
+        let outs = self.still_supports(i, tolerance * me.radius, |dist, mine, its| {
+            dist <= (mine + its) * (1.0 + tolerance)
+        });
         if outs.len() < 2 {
             return;
         }
@@ -235,26 +206,32 @@ impl Sim {
         self.bodies[i as usize].vel = best.map_or(DVec2::ZERO, |(_, w)| w);
     }
 
-    /// Whether body `i`'s supports (walls and sleeping discs within
-    /// [`SUPPORT_GAP`]) can carry its weight without friction: the upward
-    /// direction lies in the cone of their normals.
-    fn is_held(&self, i: u32) -> bool {
-        let up = -self.laws.gravity.normalize();
+    /// The outward normals (unit, from the support to body `i`) of the
+    /// walls within `wall_gap` of it and of the sleeping discs that
+    /// `touching(distance between centres, its radius, theirs)` accepts.
+    fn still_supports(
+        &self,
+        i: u32,
+        wall_gap: f64,
+        touching: impl Fn(f64, f64, f64) -> bool,
+    ) -> Vec<DVec2> {
         let me = self.bodies[i as usize];
-        let mut normals: Vec<DVec2> = Vec::new();
+        let mut normals = Vec::new();
         if self.laws.boundary == crate::boundary::Boundary::Box {
-            let gap = SUPPORT_GAP * me.radius;
             for axis in 0..2 {
                 let mut n = DVec2::ZERO;
                 n[axis] = 1.0;
-                if self.laws.walls.at(axis, false) && me.pos[axis] - me.radius <= gap {
+                if self.laws.walls.at(axis, false) && me.pos[axis] - me.radius <= wall_gap {
                     normals.push(n);
                 }
                 let top = self.laws.size[axis] - me.radius;
-                if self.laws.walls.at(axis, true) && top - me.pos[axis] <= gap {
+                if self.laws.walls.at(axis, true) && top - me.pos[axis] <= wall_gap {
                     normals.push(-n);
                 }
             }
+        }
+        if self.sleepers == 0 {
+            return normals;
         }
         self.grid.for_each_neighbour(me.cell, |c, _| {
             for k in self.grid.members(&self.bodies, c) {
@@ -267,11 +244,22 @@ impl Sim {
                     .boundary
                     .separation(other.pos, me.pos, self.laws.size);
                 let dist = d.length();
-                let gap = dist - me.radius - other.radius;
-                if dist > 0.0 && gap <= SUPPORT_GAP * me.radius.min(other.radius) {
+                if dist > 0.0 && touching(dist, me.radius, other.radius) {
                     normals.push(d / dist);
                 }
             }
+        });
+        normals
+    }
+
+    /// Whether body `i`'s supports (walls and sleeping discs within
+    /// [`SUPPORT_GAP`]) can carry its weight without friction: the upward
+    /// direction lies in the cone of their normals.
+    fn is_held(&self, i: u32) -> bool {
+        let up = -self.laws.gravity.normalize();
+        let me = self.bodies[i as usize];
+        let normals = self.still_supports(i, SUPPORT_GAP * me.radius, |dist, mine, its| {
+            dist - mine - its <= SUPPORT_GAP * mine.min(its)
         });
         if normals.iter().any(|n| n.dot(up) >= 1.0 - 1e-9) {
             return true;
@@ -390,8 +378,8 @@ impl Sim {
         self.bodies[i as usize].gen += 1;
     }
 
-    /// Wakes every sleeper and unhitches every rider (the laws no longer
-    /// let discs rest); every disc must be at the current time.
+    /// Wakes every sleeper (the laws no longer let discs rest); every disc
+    /// must be at the current time.
     pub(super) fn wake_all(&mut self) {
         for i in 0..self.bodies.len() as u32 {
             if self.rest[i as usize] != Rest::Free {
@@ -401,9 +389,9 @@ impl Sim {
         }
     }
 
-    /// Counts every disc asleep or riding a wall as resting this step.
+    /// Counts every sleeping disc as resting this step.
     pub(super) fn count_sleepers(&mut self) {
-        if self.resting_bodies == 0 {
+        if self.sleepers == 0 {
             return;
         }
         for i in 0..self.bodies.len() as u32 {
