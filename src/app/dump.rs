@@ -14,6 +14,11 @@ use std::path::Path;
 pub struct StateDump<'a> {
     /// Frames drawn so far.
     pub frame: u64,
+    /// The window draws only on input or a timer now: nothing has moved
+    /// or changed for a while (see `idle`).
+    pub sleeping: bool,
+    /// Frames drawn by the idle timer, so far.
+    pub idle_frames: u64,
     /// Simulated time (s).
     pub time: f64,
     /// Physics steps so far.
@@ -161,6 +166,8 @@ impl<'a> StateDump<'a> {
     pub fn of(world: &'a World, camera: &Camera) -> Self {
         StateDump {
             frame: 0,
+            sleeping: false,
+            idle_frames: 0,
             time: world.time,
             steps: world.steps,
             paused: false,
@@ -262,6 +269,8 @@ impl super::App {
         }
         let mut state = StateDump::of(&self.world, &self.camera);
         state.frame = self.frame;
+        state.sleeping = self.idle.sleeping();
+        state.idle_frames = self.idle.idle_frames;
         state.paused = self.clock.paused;
         state.time_scale = self.clock.time_scale();
         state.dt = self.clock.dt;

@@ -13,6 +13,7 @@ mod draw;
 mod dump;
 mod export;
 mod frame_stats;
+mod idle;
 mod input;
 mod interaction;
 mod lesson;
@@ -141,20 +142,39 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
         Some(name) => format!("Impulse - {name}"),
         None => "Impulse".to_string(),
     };
+    let (width, height) = options.size;
+    let app = App::new(options, scene, origin, world);
     let conf = Conf {
         window_title: title,
-        window_width: options.size.0,
-        window_height: options.size.1,
+        window_width: width,
+        window_height: height,
         window_resizable: true,
         sample_count: 4,
         platform: Platform {
             linux_backend: LinuxBackend::X11WithWaylandFallback,
+            linux_wm_class: WM_CLASS,
+            // Frames only when asked for (see `idle`), where the window
+            // can be woken.
+            blocking_event_loop: app.idle.wakes(),
             ..Default::default()
         },
         ..Default::default()
     };
+    let conf = macroquad::conf::Conf {
+        miniquad_conf: conf,
+        update_on: Some(macroquad::conf::UpdateTrigger {
+            key_down: true,
+            mouse_down: true,
+            mouse_up: true,
+            mouse_motion: true,
+            mouse_wheel: true,
+            specific_key: None,
+            touch: true,
+        }),
+        ..Default::default()
+    };
     display::guard_window_start();
-    macroquad::Window::from_config(conf, App::new(options, scene, origin, world).run());
+    macroquad::Window::from_config(conf, app.run());
     Ok(())
 }
 
@@ -235,6 +255,9 @@ fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64
     end.duration_since(start).as_secs_f64() * 1e3
 }
 
+/// The window's WM_CLASS on X11 (the idle waker finds the window by it).
+const WM_CLASS: &str = "impulse";
+
 /// The window's whole state.
 struct App {
     options: WindowOptions,
@@ -291,6 +314,8 @@ struct App {
     pending_report: Option<String>,
     /// Two fingers down on a touch screen: where they were last frame.
     pinch: Option<[DVec2; 2]>,
+    /// Whether the window draws its next frame at once or sleeps.
+    idle: idle::Idle,
 }
 
 impl App {
@@ -348,6 +373,7 @@ impl App {
             size_follows_mass: false,
             pending_report: None,
             pinch: None,
+            idle: idle::Idle::new(WM_CLASS),
         };
         // Shown once the window exists (the toast reads its clock).
         app.pending_report = recovery_problem;
@@ -434,6 +460,9 @@ impl App {
                 }
             }
             if !closing {
+                let busy = self.busy(running);
+                let due = self.options.exit_after;
+                self.idle.frame_done(busy, (mx, my), due);
                 next_frame().await;
             }
             times.present_ms = ms_since(present_start, impulse::clock::Instant::now());
@@ -443,6 +472,28 @@ impl App {
             }
         }
         self.write_frame_stats();
+    }
+
+    /// Whether this frame showed a change or took input, so the next one
+    /// follows at once (see [`idle`]; it also notices the pointer moving):
+    /// discs moving, a button or key held, a gesture or a message on
+    /// screen. (egui's own repaint requests are not asked: every input event
+    /// makes one, the idle timer's too. Its animations end within the
+    /// grace period after the input that started them.)
+    fn busy(&self, was_running: bool) -> bool {
+        let moving = (was_running || !self.clock.paused)
+            && self.world.particles.iter().any(|p| p.vel != DVec2::ZERO);
+        let input = mouse_wheel() != (0.0, 0.0)
+            || !get_keys_down().is_empty()
+            || [MouseButton::Left, MouseButton::Right, MouseButton::Middle]
+                .into_iter()
+                .any(is_mouse_button_down)
+            || !touches().is_empty();
+        moving
+            || input
+            || !matches!(self.gesture, Gesture::Idle)
+            || self.toast.is_some()
+            || self.frame < 2
     }
 
     /// This frame's record, its frame and present times still to come.

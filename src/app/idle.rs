@@ -1,0 +1,245 @@
+//! An idle window costs nothing: when nothing moves and no input arrives,
+//! the window stops drawing until the next input or timer.
+//!
+//! The window runs miniquad's blocking event loop: a frame is drawn only
+//! when asked for. Input asks (macroquad's update triggers); a frame that
+//! has something to show asks for the next one ([`Idle::frame_done`]). For
+//! [`GRACE`] seconds after the last change or input every frame is drawn,
+//! so panels finish their animations and tooltips appear. After that the
+//! window sleeps, and a waker thread draws one frame a second (the clock
+//! and the state dump stay current, autosave and `--exit-after` happen on
+//! time) or sooner when `--exit-after` is due.
+//!
+//! The waker cannot ask miniquad for a frame itself (its event loop takes
+//! the display lock without waiting, and would panic if another thread held
+//! it). It sends the window an X event instead, a pointer motion to where
+//! the pointer already is, which macroquad answers with a frame on the main
+//! thread. It finds this process's window through the X-Resource
+//! extension. Where that is missing (not X11, the browser), the window
+//! draws every frame as before.
+
+use macroquad::prelude::get_time;
+use std::sync::{Arc, Condvar, Mutex};
+
+/// Seconds of frames after the last change or input.
+pub const GRACE: f64 = 1.0;
+/// Seconds between frames while idle.
+pub const IDLE_FRAME: f64 = 1.0;
+
+/// When the window draws its next frame.
+pub struct Idle {
+    /// The last time something changed or input arrived (s, window clock).
+    last_busy: f64,
+    waker: Option<waker::Waker>,
+    /// Frames drawn while idle (for the state dump).
+    pub idle_frames: u64,
+    /// The pointer at the end of the last frame.
+    mouse: (f32, f32),
+}
+
+impl Idle {
+    /// Starts the waker (on X11); `class` is the window's WM_CLASS.
+    pub fn new(class: &str) -> Self {
+        Idle {
+            last_busy: 0.0,
+            waker: waker::Waker::start(class),
+            idle_frames: 0,
+            mouse: (f32::NAN, f32::NAN),
+        }
+    }
+
+    /// Whether a waker runs, so the window may sleep between frames.
+    pub fn wakes(&self) -> bool {
+        self.waker.is_some()
+    }
+
+    /// Whether the window sleeps between frames now.
+    pub fn sleeping(&self) -> bool {
+        self.waker.as_ref().is_some_and(|w| w.ready()) && get_time() - self.last_busy >= GRACE
+    }
+
+    /// Called at the end of each frame: `busy` if something moved or
+    /// changed on screen this frame; `mouse` is where the pointer is (a
+    /// move keeps the window awake; the waker's event puts it back there); `due` is the window-clock time
+    /// something must happen by (`--exit-after`), if any.
+    pub fn frame_done(&mut self, busy: bool, mouse: (f32, f32), due: Option<f64>) {
+        let now = get_time();
+        let moved = mouse != self.mouse;
+        self.mouse = mouse;
+        if busy || moved || self.waker.is_none() {
+            self.last_busy = now;
+        }
+        match &self.waker {
+            Some(waker) if waker.ready() && now - self.last_busy >= GRACE => {
+                self.idle_frames += 1;
+                let mut wait = IDLE_FRAME;
+                if let Some(due) = due {
+                    wait = wait.min((due - now).max(0.0));
+                }
+                waker.wake_in(wait, mouse);
+            }
+            Some(_) => macroquad::miniquad::window::schedule_update(),
+            None => {}
+        }
+    }
+}
+
+/// Whether the blocking event loop can be used here.
+pub fn blocking() -> bool {
+    cfg!(target_os = "linux") && std::env::var_os("WAYLAND_DISPLAY").is_none()
+}
+
+/// A wake-up asked for: when, and where the pointer is.
+type Alarm = Option<(std::time::Instant, (f32, f32))>;
+
+#[cfg(target_os = "linux")]
+mod waker {
+    use super::*;
+    use x11rb::connection::Connection;
+    use x11rb::protocol::res::{ClientIdMask, ClientIdSpec, ConnectionExt as _};
+    use x11rb::protocol::xproto::{
+        AtomEnum, ConnectionExt as _, EventMask, MotionNotifyEvent, Window, MOTION_NOTIFY_EVENT,
+    };
+
+    /// The thread that wakes the window.
+    pub struct Waker {
+        alarm: Arc<(Mutex<Alarm>, Condvar)>,
+        /// This process's window, once found.
+        window: Arc<Mutex<Option<Window>>>,
+    }
+
+    impl Waker {
+        pub fn start(class: &str) -> Option<Waker> {
+            if !blocking() {
+                return None;
+            }
+            let (conn, screen) = x11rb::connect(None).ok()?;
+            let root = conn.setup().roots.get(screen)?.root;
+            let alarm: Arc<(Mutex<Alarm>, Condvar)> = Arc::default();
+            let window = Arc::new(Mutex::new(None));
+            let (a, w, class) = (alarm.clone(), window.clone(), class.to_string());
+            std::thread::Builder::new()
+                .name("idle waker".into())
+                .spawn(move || run(conn, root, &class, &a, &w))
+                .ok()?;
+            Some(Waker { alarm, window })
+        }
+
+        /// Whether the window was found (until then every frame is drawn).
+        pub fn ready(&self) -> bool {
+            self.window.lock().is_ok_and(|w| w.is_some())
+        }
+
+        /// Draws a frame in `seconds`, the pointer at `mouse`.
+        pub fn wake_in(&self, seconds: f64, mouse: (f32, f32)) {
+            let at = std::time::Instant::now() + std::time::Duration::from_secs_f64(seconds);
+            let (lock, signal) = &*self.alarm;
+            if let Ok(mut alarm) = lock.lock() {
+                *alarm = Some((at, mouse));
+                signal.notify_one();
+            }
+        }
+    }
+
+    fn run(
+        conn: x11rb::rust_connection::RustConnection,
+        root: Window,
+        class: &str,
+        alarm: &(Mutex<Alarm>, Condvar),
+        window: &Mutex<Option<Window>>,
+    ) {
+        // The window appears once miniquad has made it.
+        let mine = loop {
+            match own_window(&conn, root, class) {
+                Some(w) => break w,
+                None => std::thread::sleep(std::time::Duration::from_millis(100)),
+            }
+        };
+        if let Ok(mut w) = window.lock() {
+            *w = Some(mine);
+        }
+        let (lock, signal) = alarm;
+        let Ok(mut guard) = lock.lock() else { return };
+        loop {
+            match *guard {
+                None => guard = signal.wait(guard).unwrap_or_else(|e| e.into_inner()),
+                Some((at, mouse)) => {
+                    let now = std::time::Instant::now();
+                    if now < at {
+                        guard = signal
+                            .wait_timeout(guard, at - now)
+                            .map(|(g, _)| g)
+                            .unwrap_or_else(|e| e.into_inner().0);
+                        continue;
+                    }
+                    *guard = None;
+                    if nudge(&conn, mine, mouse).is_err() {
+                        return; // the display is gone: the window closes too
+                    }
+                }
+            }
+        }
+    }
+
+    /// The top-level window of this process with WM_CLASS `class`: the
+    /// X-Resource extension names the process that made each window.
+    fn own_window(conn: &impl Connection, root: Window, class: &str) -> Option<Window> {
+        let pid = std::process::id();
+        let tree = conn.query_tree(root).ok()?.reply().ok()?;
+        tree.children.into_iter().find(|&w| {
+            let named = conn
+                .get_property(false, w, AtomEnum::WM_CLASS, AtomEnum::STRING, 0, 64)
+                .ok()
+                .and_then(|c| c.reply().ok())
+                .is_some_and(|p| p.value.split(|&b| b == 0).any(|s| s == class.as_bytes()));
+            named
+                && conn
+                    .res_query_client_ids(&[ClientIdSpec {
+                        client: w,
+                        mask: ClientIdMask::LOCAL_CLIENT_PID,
+                    }])
+                    .ok()
+                    .and_then(|c| c.reply().ok())
+                    .is_some_and(|r| r.ids.iter().any(|id| id.value.first() == Some(&pid)))
+        })
+    }
+
+    /// Sends `window` a pointer motion to `mouse` (where it already is).
+    fn nudge(conn: &impl Connection, window: Window, mouse: (f32, f32)) -> Result<(), ()> {
+        let (x, y) = (mouse.0.round() as i16, mouse.1.round() as i16);
+        let event = MotionNotifyEvent {
+            response_type: MOTION_NOTIFY_EVENT,
+            detail: 0.into(),
+            sequence: 0,
+            time: x11rb::CURRENT_TIME,
+            root: window,
+            event: window,
+            child: x11rb::NONE,
+            root_x: x,
+            root_y: y,
+            event_x: x,
+            event_y: y,
+            state: 0u16.into(),
+            same_screen: true,
+        };
+        conn.send_event(false, window, EventMask::NO_EVENT, event)
+            .map_err(|_| ())?;
+        conn.flush().map_err(|_| ())
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+mod waker {
+    /// No waker: every frame is drawn.
+    pub struct Waker;
+
+    impl Waker {
+        pub fn start(_class: &str) -> Option<Waker> {
+            None
+        }
+        pub fn ready(&self) -> bool {
+            false
+        }
+        pub fn wake_in(&self, _seconds: f64, _mouse: (f32, f32)) {}
+    }
+}
