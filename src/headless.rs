@@ -61,7 +61,11 @@ struct Summary {
     collisions_over: bool,
     max_overlap: f64,
     momentum: DVec2,
+    /// Of translation; rotation is `rotational_energy`.
     kinetic_energy: f64,
+    rotational_energy: f64,
+    /// About the origin: orbital plus spin (kg·m²/s, counter-clockwise).
+    angular_momentum: f64,
     wall_clock_seconds: f64,
     plan: Plan,
     /// What the method could not promise at the end of the run.
@@ -126,6 +130,8 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         max_overlap,
         momentum: metrics.momentum,
         kinetic_energy: metrics.kinetic_energy,
+        rotational_energy: metrics.rotational_energy,
+        angular_momentum: metrics.angular_momentum,
         wall_clock_seconds: started.elapsed().as_secs_f64(),
         warnings: impulse::warnings::warnings(&world, dt),
         plan,
@@ -210,6 +216,10 @@ fn summary_text(s: &Summary) -> String {
         s.momentum.x, s.momentum.y
     );
     println!("kinetic energy   {:.9} J", s.kinetic_energy);
+    if s.rotational_energy != 0.0 {
+        println!("rotational KE    {:.9} J", s.rotational_energy);
+    }
+    println!("angular momentum {:.9} kg m²/s", s.angular_momentum);
     println!("wall clock       {:.3} s", s.wall_clock_seconds);
     let threads = if s.plan.parallel {
         format!("{} threads", impulse::parallel::threads())

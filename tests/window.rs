@@ -36,6 +36,10 @@ fn main() -> std::process::ExitCode {
             "a_gas_of_many_discs_opens_draws_them_and_reports_frame_times",
             a_gas_of_many_discs_opens_draws_them_and_reports_frame_times,
         ),
+        (
+            "an_idle_window_sleeps_and_wakes_at_the_first_key",
+            an_idle_window_sleeps_and_wakes_at_the_first_key,
+        ),
     ])
 }
 
@@ -286,4 +290,89 @@ fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
         .collect();
     let coloured = img.pixels().filter(|p| palette.contains(&p.0)).count();
     assert!(coloured > 30_000, "{coloured} pixels in disc colours");
+}
+
+/// The CPU time (user + system, s) process `pid` has used so far.
+fn cpu_seconds(pid: u32) -> f64 {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).expect("/proc/PID/stat");
+    // The fields after the command name, which is in parentheses.
+    let rest = &stat[stat.rfind(')').expect("a stat line") + 2..];
+    let fields: Vec<&str> = rest.split_whitespace().collect();
+    let ticks: f64 = fields[11].parse::<f64>().unwrap() + fields[12].parse::<f64>().unwrap();
+    let hz = Command::new("getconf")
+        .arg("CLK_TCK")
+        .output()
+        .ok()
+        .and_then(|o| String::from_utf8(o.stdout).ok())
+        .and_then(|s| s.trim().parse::<f64>().ok())
+        .unwrap_or(100.0);
+    ticks / hz
+}
+
+/// Paused, the window stops drawing after a second: at most one frame a
+/// second and under a tenth of a core; a key then answers at once, not at
+/// the next timer frame; running, it draws at its full rate again; and a
+/// running scene where nothing moves sleeps too.
+fn an_idle_window_sleeps_and_wakes_at_the_first_key() {
+    let x = Xvfb::start("idle");
+    let app = Sandbox::start(&x, &[&asset("preset-1-head-on.toml"), "--paused"]);
+    let deadline = std::time::Instant::now() + Duration::from_secs(10);
+    while app.state()["sleeping"] != true {
+        assert!(std::time::Instant::now() < deadline, "never went idle");
+        sleep(Duration::from_millis(50));
+    }
+    let (before, cpu_before) = (app.state(), cpu_seconds(app.child.id()));
+    let span = 6.0;
+    sleep(Duration::from_secs_f64(span));
+    let (after, cpu_after) = (app.state(), cpu_seconds(app.child.id()));
+    let frames = after["frame"].as_u64().unwrap() - before["frame"].as_u64().unwrap();
+    assert!(
+        frames as f64 <= span + 2.0,
+        "{frames} frames in {span} s while idle"
+    );
+    assert!(frames >= 3, "the idle timer still draws ({frames} frames)");
+    let share = (cpu_after - cpu_before) / span;
+    assert!(
+        share < 0.10,
+        "idle, the window used {:.1} % of a core",
+        share * 100.0
+    );
+
+    // A key after a long idle: seen well before the next timer frame.
+    let pressed = std::time::Instant::now();
+    app.xdo(&["key", "space"]);
+    let answered = loop {
+        let s = app.state();
+        if s["paused"] == false {
+            break pressed.elapsed();
+        }
+        assert!(
+            pressed.elapsed() < Duration::from_secs(5),
+            "Space was not seen"
+        );
+        sleep(Duration::from_millis(10));
+    };
+    assert!(
+        answered < Duration::from_millis(500),
+        "Space answered after {answered:?}"
+    );
+    let start = app.state();
+    sleep(Duration::from_secs(1));
+    let later = app.state();
+    let drawn = later["frame"].as_u64().unwrap() - start["frame"].as_u64().unwrap();
+    assert!(drawn >= 20, "running, {drawn} frames in a second");
+    assert_eq!(later["sleeping"], false);
+    drop(app);
+
+    // Running, but nothing to move: asleep as well.
+    let still = Sandbox::start(&x, &[&asset("empty.toml")]);
+    let deadline = std::time::Instant::now() + Duration::from_secs(10);
+    while still.state()["sleeping"] != true {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "an empty scene never went idle"
+        );
+        sleep(Duration::from_millis(50));
+    }
+    assert_eq!(still.state()["paused"], false);
 }

@@ -117,6 +117,9 @@ mod tests {
             masses: [1.0, 1.0],
             before: [DVec2::new(1.0, 0.0), DVec2::new(-1.0, 0.0)],
             after: [DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0)],
+            radii: [0.5, 0.5],
+            spins_before: [0.0, 0.0],
+            spins_after: [0.0, 0.0],
         });
         let csv = ledger_csv(&ledger);
         let lines: Vec<&str> = csv.lines().collect();

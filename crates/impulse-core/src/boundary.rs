@@ -201,7 +201,7 @@ impl Boundary {
         particles: &mut [Particle],
         (size, walls): (DVec2, Walls),
         gravity: DVec2,
-        wall_restitution: f64,
+        (wall_restitution, rough): (f64, crate::rough::Tangential),
         impact_speed: f64,
     ) -> WallReport {
         match self {
@@ -230,6 +230,27 @@ impl Boundary {
                             }
                         }
                     };
+                    // A rough wall turns the disc's slip along it into spin.
+                    let rub = |p: &mut Particle, axis: usize, was: f64| {
+                        let law = if crate::impact::is_impact(was.abs(), impact_speed) {
+                            Some(rough)
+                        } else {
+                            rough.resting()
+                        };
+                        let Some(law) = law else { return };
+                        let mut into = DVec2::ZERO;
+                        into[axis] = if was < 0.0 { -1.0 } else { 1.0 };
+                        let impulse = p.mass * (p.vel[axis] - was).abs();
+                        let side = crate::rough::Side {
+                            mass: p.mass,
+                            radius: p.radius,
+                            vel: p.vel,
+                            spin: p.spin,
+                        };
+                        if let Some(after) = law.wall(into, impulse, side) {
+                            (p.vel, p.spin) = (after.vel, after.spin);
+                        }
+                    };
                     let (x, y) = (&mut p.pos.x, &mut p.pos.y);
                     let bounced = bounce_axis(
                         x,
@@ -240,6 +261,7 @@ impl Boundary {
                         wall_restitution,
                     );
                     count(bounced, before.x);
+                    let bounced_x = bounced;
                     let bounced = bounce_axis(
                         y,
                         &mut p.vel.y,
@@ -249,6 +271,13 @@ impl Boundary {
                         wall_restitution,
                     );
                     count(bounced, before.y);
+                    if !rough.is_smooth() {
+                        for (axis, hit) in [(0, bounced_x), (1, bounced)] {
+                            if hit {
+                                rub(p, axis, before[axis]);
+                            }
+                        }
+                    }
                     impulse += p.mass * (p.vel - before).abs().element_sum();
                 }
                 WallReport {
@@ -377,7 +406,13 @@ mod tests {
                 Color::palette(0),
             ),
         ];
-        let report = Boundary::Box.apply(&mut discs, (size, walls), DVec2::ZERO, 1.0, 0.0);
+        let report = Boundary::Box.apply(
+            &mut discs,
+            (size, walls),
+            DVec2::ZERO,
+            (1.0, crate::rough::Tangential::SMOOTH),
+            0.0,
+        );
         assert_eq!(report.hits, 1);
         assert_eq!(discs[0].vel.x, 2.0, "no right wall");
         assert_eq!(discs[0].pos.x, 9.9);

@@ -22,6 +22,21 @@ pub struct Laws {
     /// Coefficient of restitution at the walls.
     #[serde(default = "one")]
     pub wall_restitution: f64,
+    /// Tangential restitution β between discs, −1 (smooth: no spin is
+    /// given or taken, the default) to 1 (perfectly rough): the relative
+    /// velocity of the touching points along the contact becomes −β times
+    /// itself (see [`crate::rough`]).
+    #[serde(default = "minus_one", skip_serializing_if = "is_smooth")]
+    pub tangential_restitution: f64,
+    /// Tangential restitution at the walls.
+    #[serde(default = "minus_one", skip_serializing_if = "is_smooth")]
+    pub wall_tangential_restitution: f64,
+    /// Coulomb friction coefficient μ ≥ 0: the tangential impulse of a
+    /// contact is at most μ times its normal impulse, and resting contacts
+    /// under gravity rub with it. Absent: no limit at impacts, and resting
+    /// contacts smooth.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
     /// What the edges do.
     #[serde(default)]
     pub boundary: Boundary,
@@ -37,6 +52,14 @@ fn one() -> f64 {
     1.0
 }
 
+fn minus_one() -> f64 {
+    -1.0
+}
+
+fn is_smooth(beta: &f64) -> bool {
+    *beta == -1.0
+}
+
 fn all_walls(walls: &Walls) -> bool {
     walls.all()
 }
@@ -50,9 +73,28 @@ impl Laws {
             gravity: DVec2::ZERO,
             restitution: 1.0,
             wall_restitution: 1.0,
+            tangential_restitution: -1.0,
+            wall_tangential_restitution: -1.0,
+            friction: None,
             boundary: Boundary::Box,
             walls: Walls::ALL,
             constrain: None,
+        }
+    }
+
+    /// The tangential law between discs.
+    pub fn rough(&self) -> crate::rough::Tangential {
+        crate::rough::Tangential {
+            beta: self.tangential_restitution,
+            friction: self.friction,
+        }
+    }
+
+    /// The tangential law at the walls.
+    pub fn wall_rough(&self) -> crate::rough::Tangential {
+        crate::rough::Tangential {
+            beta: self.wall_tangential_restitution,
+            friction: self.friction,
         }
     }
 

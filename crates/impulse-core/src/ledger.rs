@@ -23,6 +23,12 @@ pub struct Collision {
     pub before: [DVec2; 2],
     /// Velocities just after (m/s).
     pub after: [DVec2; 2],
+    /// Their radii (m).
+    pub radii: [f64; 2],
+    /// Spins just before (rad/s, counter-clockwise).
+    pub spins_before: [f64; 2],
+    /// Spins just after: they differ only where contacts are rough.
+    pub spins_after: [f64; 2],
 }
 
 impl Collision {
@@ -38,6 +44,13 @@ impl Collision {
     pub fn kinetic_energy(&self, k: usize) -> (f64, f64) {
         let e = |v: DVec2| 0.5 * self.masses[k] * v.length_squared();
         (e(self.before[k]), e(self.after[k]))
+    }
+
+    /// Rotational energy ½·I·ω² of disc `k` before and after.
+    pub fn rotational_energy(&self, k: usize) -> (f64, f64) {
+        let inertia = 0.5 * self.masses[k] * self.radii[k] * self.radii[k];
+        let e = |w: f64| 0.5 * inertia * w * w;
+        (e(self.spins_before[k]), e(self.spins_after[k]))
     }
 
     /// Change of the pair's total momentum and kinetic energy.

@@ -46,6 +46,7 @@ pub mod particle;
 pub(crate) mod pipeline;
 pub mod presets;
 pub mod resolution;
+pub mod rough;
 pub mod scene;
 pub mod stats;
 pub mod stress;

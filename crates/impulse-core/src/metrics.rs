@@ -13,8 +13,15 @@ pub struct Metrics {
     pub mass: f64,
     /// Total momentum Σ m·v (kg·m/s).
     pub momentum: DVec2,
-    /// Total kinetic energy Σ ½·m·|v|² (J).
+    /// Total kinetic energy of translation Σ ½·m·|v|² (J).
     pub kinetic_energy: f64,
+    /// Total kinetic energy of rotation Σ ½·I·ω² (J), I = ½·m·r².
+    #[serde(default)]
+    pub rotational_energy: f64,
+    /// Total angular momentum about the origin, orbital Σ m·(x × v) plus
+    /// spin Σ I·ω (kg·m²/s, counter-clockwise positive).
+    #[serde(default)]
+    pub angular_momentum: f64,
     /// Centre of mass Σ m·x / Σ m (m); zero when there are no discs.
     pub center_of_mass: DVec2,
     /// Velocity of the centre of mass, total momentum / total mass (m/s).
@@ -33,6 +40,8 @@ impl Metrics {
             m.mass += p.mass;
             m.momentum += p.momentum();
             m.kinetic_energy += p.kinetic_energy();
+            m.rotational_energy += p.rotational_energy();
+            m.angular_momentum += p.angular_momentum();
             weighted_pos += p.pos * p.mass;
         }
         if m.mass > 0.0 {

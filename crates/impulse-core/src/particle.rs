@@ -1,11 +1,13 @@
-//! A disc: position, velocity, mass, radius and display colour (SI units).
+//! A disc: position, velocity, spin, mass, radius and display colour (SI
+//! units).
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
 
-/// A solid, frictionless disc. Units: metres, metres per second, kilograms.
+/// A solid uniform disc (moment of inertia ½·m·r²). Units: metres, metres
+/// per second, radians, kilograms.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Particle {
     /// Centre, in world coordinates (y up).
@@ -18,6 +20,18 @@ pub struct Particle {
     pub radius: f64,
     /// Display colour; the physics ignores it.
     pub color: Color,
+    /// Angular velocity ω (rad/s), counter-clockwise positive. Only rough
+    /// contacts change it (see [`crate::rough`]).
+    #[serde(default)]
+    pub spin: f64,
+    /// How far the disc has turned (rad, counter-clockwise): drawn as a
+    /// radius line; the physics never reads it.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub angle: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 impl Particle {
@@ -29,7 +43,26 @@ impl Particle {
             mass,
             radius,
             color,
+            spin: 0.0,
+            angle: 0.0,
         }
+    }
+
+    /// Moment of inertia about the centre, ½·m·r² (kg·m²).
+    pub fn moment_of_inertia(&self) -> f64 {
+        0.5 * self.mass * self.radius * self.radius
+    }
+
+    /// Rotational kinetic energy ½·I·ω².
+    pub fn rotational_energy(&self) -> f64 {
+        0.5 * self.moment_of_inertia() * self.spin * self.spin
+    }
+
+    /// Angular momentum about the origin: orbital m·(x × v) plus spin I·ω
+    /// (counter-clockwise positive).
+    pub fn angular_momentum(&self) -> f64 {
+        self.mass * (self.pos.x * self.vel.y - self.pos.y * self.vel.x)
+            + self.moment_of_inertia() * self.spin
     }
 
     /// Momentum m·v.

@@ -122,7 +122,11 @@ impl Pipeline {
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
-        let law = (laws.restitution, crate::impact::threshold(laws.gravity, h));
+        let law = crate::resolution::ContactLaw {
+            restitution: laws.restitution,
+            impact_speed: crate::impact::threshold(laws.gravity, h),
+            tangential: laws.rough(),
+        };
         let (contacts, parallel) = (&self.contacts, self.parallel);
         let report: ResolutionReport = self.banded.resolve(
             particles,
@@ -165,7 +169,8 @@ impl Pipeline {
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
-        let (edges, gravity, e) = ((laws.size, laws.walls), laws.gravity, laws.wall_restitution);
+        let (edges, gravity) = ((laws.size, laws.walls), laws.gravity);
+        let e = (laws.wall_restitution, laws.wall_rough());
         let impact_speed = crate::impact::threshold(gravity, h);
         parallel::map_chunks_mut(
             self.parallel,

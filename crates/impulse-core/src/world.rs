@@ -324,9 +324,12 @@ impl World {
         Metrics::measure(&self.particles)
     }
 
-    /// Kinetic plus gravitational potential energy (J).
+    /// Kinetic (translation and rotation) plus gravitational potential
+    /// energy (J).
     pub fn total_energy(&self) -> f64 {
-        self.metrics().kinetic_energy
+        let m = self.metrics();
+        m.kinetic_energy
+            + m.rotational_energy
             + Metrics::potential_energy(&self.particles, self.laws.gravity)
     }
 

@@ -16,6 +16,7 @@ const LAYERS: &[&[&str]] = &[
         "math",
         "parallel",
         "particle",
+        "rough",
     ],
     &["boundary", "integration", "metrics", "stats"],
     &["broad_phase", "laws"],

@@ -27,6 +27,11 @@
 //!    disc of a near-vertical contact and splits the others by inverse mass;
 //! 5. then positions move (x ← x + v·h) and the walls clamp as usual.
 //!
+//! Rough discs: impacts take the tangential law of [`crate::rough`], and
+//! resting contacts (the sweeps with restitution 0, walls included) rub with
+//! Coulomb friction where μ is given, so a disc sliding on the floor slows
+//! at μ·g and starts to roll.
+//!
 //! Impacts keep the ordinary collision law with restitution e and
 //! inverse-mass shares; momentum is not conserved pair by pair in step 3,
 //! which only matters where the floor holds the discs anyway.
@@ -35,7 +40,8 @@ use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
 use crate::pipeline::Pipeline;
-use crate::resolution::{collision_velocities, push_apart};
+use crate::resolution::{collision_velocities, push_apart, rough_pair, rough_wall};
+use crate::rough::Tangential;
 use crate::stats::{Lap, StepStats};
 use crate::{Boundary, Particle};
 use glam::DVec2;
@@ -125,8 +131,9 @@ pub(crate) fn substep(
             if impact {
                 let (i, j) = (c.i as usize, c.j as usize);
                 let before = [particles[i].vel, particles[j].vel];
+                let spins_before = [particles[i].spin, particles[j].spin];
                 let counted = pass == 0 && approach(particles, c) < 0.0;
-                collide(particles, c, laws.restitution, None);
+                collide(particles, c, laws.restitution, None, Some(laws.rough()));
                 pair_impacts += usize::from(counted);
                 if counted && ledger.is_on() {
                     ledger.push(Collision {
@@ -136,6 +143,9 @@ pub(crate) fn substep(
                         masses: [particles[i].mass, particles[j].mass],
                         before,
                         after: [particles[i].vel, particles[j].vel],
+                        radii: [particles[i].radius, particles[j].radius],
+                        spins_before,
+                        spins_after: [particles[i].spin, particles[j].spin],
                     });
                 }
             }
@@ -145,10 +155,11 @@ pub(crate) fn substep(
     for p in particles.iter_mut() {
         p.vel += laws.gravity * h;
     }
+    let rubbing = laws.rough().resting();
     for _ in 0..PASSES {
         walls.hold(particles, stats, Hold::Resting);
         for c in contacts.iter() {
-            collide(particles, c, 0.0, None);
+            collide(particles, c, 0.0, None, rubbing);
         }
     }
     walls.hold(particles, stats, Hold::Resting);
@@ -158,7 +169,7 @@ pub(crate) fn substep(
     // gained 2 kg·m/s in 300 steps), so there the contacts keep the law.
     let shock = (laws.boundary == Boundary::Box && laws.walls.all()).then_some(down);
     for c in contacts.iter() {
-        collide(particles, c, 0.0, shock);
+        collide(particles, c, 0.0, shock, rubbing);
     }
     stats.pair_collisions += pair_impacts;
     stats.resting_contacts += contacts.len() - pair_impacts + walls.resting(particles);
@@ -170,6 +181,7 @@ pub(crate) fn substep(
     stats.timings.resolution += lap.lap();
     for p in particles.iter_mut() {
         p.pos += p.vel * h;
+        p.angle += p.spin * h;
     }
     stats.timings.integration += lap.elapsed();
     // The sweeps held the discs at the walls: what the wall stage still
@@ -198,10 +210,17 @@ fn lower_upper(c: &Contact, down: DVec2) -> Option<(usize, usize, DVec2)> {
     }
 }
 
-/// The collision law with restitution `e` on one contact if it approaches.
-/// With `shock` (the direction of gravity) the lower disc of a vertical
-/// contact does not move and the upper one takes the whole change.
-fn collide(particles: &mut [Particle], c: &Contact, e: f64, shock: Option<DVec2>) {
+/// The collision law with restitution `e` on one contact if it approaches,
+/// then the tangential law `rub` (if any). With `shock` (the direction of
+/// gravity) the lower disc of a vertical contact does not move and the
+/// upper one takes the whole change.
+fn collide(
+    particles: &mut [Particle],
+    c: &Contact,
+    e: f64,
+    shock: Option<DVec2>,
+    rub: Option<Tangential>,
+) {
     if approach(particles, c) >= 0.0 {
         return;
     }
@@ -209,6 +228,18 @@ fn collide(particles: &mut [Particle], c: &Contact, e: f64, shock: Option<DVec2>
         Some((lower, upper, n)) => {
             let closing = (particles[upper].vel - particles[lower].vel).dot(n);
             particles[upper].vel -= (1.0 + e) * closing * n;
+            if let Some(rub) = rub {
+                let impulse = particles[upper].mass * (1.0 + e) * closing.abs();
+                // The lower disc's surface moves too: rub against it.
+                let below = particles[lower];
+                let mut upper_rel = particles[upper];
+                upper_rel.vel -= below.vel;
+                upper_rel.spin += below.spin * below.radius / upper_rel.radius;
+                rough_wall(&mut upper_rel, -n, impulse, rub);
+                particles[upper].vel = upper_rel.vel + below.vel;
+                particles[upper].spin =
+                    upper_rel.spin - below.spin * below.radius / upper_rel.radius;
+            }
         }
         None => {
             let (i, j) = (c.i as usize, c.j as usize);
@@ -216,6 +247,11 @@ fn collide(particles: &mut [Particle], c: &Contact, e: f64, shock: Option<DVec2>
             let (va, vb) = collision_velocities(a.mass, b.mass, a.vel, b.vel, c.normal, e);
             particles[i].vel = va;
             particles[j].vel = vb;
+            if let Some(rub) = rub {
+                let impulse = a.mass * (va - a.vel).dot(c.normal).abs();
+                let (head, tail) = particles.split_at_mut(j);
+                rough_pair(&mut head[i], &mut tail[0], c.normal, impulse, rub);
+            }
         }
     }
 }
@@ -281,8 +317,19 @@ impl Walls<'_> {
                     };
                     let before = p.vel[axis];
                     p.vel[axis] = -e * before;
-                    stats.wall_impulse += p.mass * (p.vel[axis] - before).abs();
+                    let impulse = p.mass * (p.vel[axis] - before).abs();
+                    stats.wall_impulse += impulse;
                     stats.wall_hits += usize::from(bounce);
+                    let rub = if bounce {
+                        Some(self.laws.wall_rough())
+                    } else {
+                        self.laws.wall_rough().resting()
+                    };
+                    if let Some(rub) = rub {
+                        let mut into = DVec2::ZERO;
+                        into[axis] = if low { -1.0 } else { 1.0 };
+                        rough_wall(p, into, impulse, rub);
+                    }
                 }
             }
         }

@@ -12,6 +12,10 @@
 //! separates is left alone, which is the cure for the seeds' "sticky problem"
 //! (overlapping discs being bounced back into each other every frame).
 //!
+//! Rough discs (a tangential restitution above −1, see [`crate::rough`])
+//! then take a tangential impulse at the contact point, which changes their
+//! spins; a resting contact rubs with Coulomb friction if μ is given.
+//!
 //! Overlap is then removed by moving the discs apart along n̂, each by a share
 //! proportional to its inverse mass, so the centre of mass does not move.
 
@@ -22,7 +26,19 @@ pub use bands::{band_of, Banded, BANDED_MIN_CONTACTS, BANDS};
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
 use crate::particle::Particle;
+use crate::rough::{Side, Tangential};
 use glam::DVec2;
+
+/// The law a step's contacts obey.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactLaw {
+    /// Restitution e between discs.
+    pub restitution: f64,
+    /// Closing speed above which a contact is an impact ([`crate::impact`]).
+    pub impact_speed: f64,
+    /// What impacts do along the contact.
+    pub tangential: Tangential,
+}
 
 /// What resolving one step's contacts did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -95,14 +111,12 @@ impl Rule {
     };
 }
 
-/// Resolves `contacts` in order with the law (restitution, impact speed):
-/// restitution between discs, and the closing speed above which a contact
-/// is an impact ([`crate::impact`]); each impact goes into `ledger` (if it
-/// is on) at time `time`.
+/// Resolves `contacts` in order with `law`; each impact goes into `ledger`
+/// (if it is on) at time `time`.
 pub fn resolve_contacts(
     particles: &mut [Particle],
     contacts: &[Contact],
-    law: (f64, f64),
+    law: ContactLaw,
     rule: Rule,
     ledger: &mut Ledger,
     time: f64,
@@ -121,12 +135,14 @@ fn resolve_contact(
     a: &mut Particle,
     b: &mut Particle,
     c: &Contact,
-    (restitution, impact_speed): (f64, f64),
+    law: ContactLaw,
     rule: Rule,
     (ledger, time): (&mut Ledger, f64),
     report: &mut ResolutionReport,
 ) {
+    let (restitution, impact_speed) = (law.restitution, law.impact_speed);
     let before = [a.vel, b.vel];
+    let spins_before = [a.spin, b.spin];
     let closing = (a.vel - b.vel).dot(c.normal);
     let collided = match rule.velocities {
         Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
@@ -137,6 +153,17 @@ fn resolve_contact(
         Velocities::Never => false,
     };
     let impact = collided && crate::impact::is_impact(closing, impact_speed);
+    if collided {
+        let rubs = if impact {
+            Some(law.tangential)
+        } else {
+            law.tangential.resting()
+        };
+        if let Some(rubs) = rubs {
+            let normal_impulse = a.mass * (a.vel - before[0]).dot(c.normal).abs();
+            rough_pair(a, b, c.normal, normal_impulse, rubs);
+        }
+    }
     report.collisions += usize::from(impact);
     report.resting += usize::from(collided && !impact);
     if impact && ledger.is_on() {
@@ -147,6 +174,9 @@ fn resolve_contact(
             masses: [a.mass, b.mass],
             before,
             after: [a.vel, b.vel],
+            radii: [a.radius, b.radius],
+            spins_before,
+            spins_after: [a.spin, b.spin],
         });
     }
     match rule.push_apart {
@@ -194,6 +224,40 @@ pub fn collision_velocities(
         v1 + (v1n_after - v1n) * normal,
         v2 + (v2n_after - v2n) * normal,
     )
+}
+
+/// The tangential impulse of `law` on a contact along `normal` (from `a`
+/// to `b`) that took `normal_impulse`.
+pub fn rough_pair(
+    a: &mut Particle,
+    b: &mut Particle,
+    normal: DVec2,
+    normal_impulse: f64,
+    law: Tangential,
+) {
+    if let Some((sa, sb)) = law.pair(normal, normal_impulse, side(a), side(b)) {
+        (a.vel, a.spin) = (sa.vel, sa.spin);
+        (b.vel, b.spin) = (sb.vel, sb.spin);
+    }
+}
+
+/// The tangential impulse of `law` on disc `a` against an immovable
+/// support whose normal `into` points from the disc into it, after a
+/// normal impulse `normal_impulse`.
+pub fn rough_wall(a: &mut Particle, into: DVec2, normal_impulse: f64, law: Tangential) {
+    if let Some(sa) = law.wall(into, normal_impulse, side(a)) {
+        (a.vel, a.spin) = (sa.vel, sa.spin);
+    }
+}
+
+/// A disc as one side of a rough contact.
+pub fn side(p: &Particle) -> Side {
+    Side {
+        mass: p.mass,
+        radius: p.radius,
+        vel: p.vel,
+        spin: p.spin,
+    }
 }
 
 /// Moves `a` and `b` apart along `normal` by `depth` in total, split by

@@ -13,6 +13,9 @@
 //! gravity = [0.0, 0.0]         # m/s², default none
 //! restitution = 1.0            # between discs, default 1
 //! wall_restitution = 1.0       # at the walls, default 1
+//! tangential_restitution = -1.0 # β between discs: -1 smooth (default) to 1 rough
+//! wall_tangential_restitution = -1.0 # β at the walls, default -1
+//! friction = 0.3               # optional Coulomb μ ≥ 0 (absent: no limit)
 //! boundary = "box"             # "box", "open" or "periodic"
 //! walls = ["left"]             # a box's sides that have walls; default all four
 //! constrain = "x"              # optional: one dimension, motion along x only
@@ -28,6 +31,7 @@
 //! vel = [2.0, 0.0]
 //! mass = 1.0
 //! radius = 0.5
+//! spin = 0.0                   # optional: rad/s, counter-clockwise
 //! color = "#e69f00"            # optional
 //!
 //! [fill]                       # optional seeded random discs
@@ -154,6 +158,12 @@ pub struct ParticleSpec {
     pub mass: f64,
     /// Radius (m).
     pub radius: f64,
+    /// Angular velocity (rad/s, counter-clockwise); default 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub spin: f64,
+    /// How far it has turned (rad); default 0. Only drawn.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub angle: f64,
     /// Colour; a palette colour when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub color: Option<Color>,
@@ -333,6 +343,23 @@ impl Scene {
                 return Err(bad(field.into(), "must be between 0 and 1"));
             }
         }
+        for (field, beta) in [
+            ("world.tangential_restitution", w.tangential_restitution),
+            (
+                "world.wall_tangential_restitution",
+                w.wall_tangential_restitution,
+            ),
+        ] {
+            if !(-1.0..=1.0).contains(&beta) {
+                return Err(bad(field.into(), "must be between -1 and 1"));
+            }
+        }
+        if w.friction.is_some_and(|mu| !(mu >= 0.0 && mu.is_finite())) {
+            return Err(bad(
+                "world.friction".into(),
+                "must be a finite number of at least 0",
+            ));
+        }
         // The overlap test looks at the 3×3 cells around each disc (a cell
         // at least the widest diameter): O(n), where testing every earlier
         // disc took a minute for 10⁵ discs (`--gas 100000` built its scene so).
@@ -357,6 +384,12 @@ impl Scene {
             if !p.pos.is_finite() {
                 return Err(bad(field("pos"), "must be finite"));
             }
+            if !p.spin.is_finite() {
+                return Err(bad(field("spin"), "must be finite"));
+            }
+            if !p.angle.is_finite() {
+                return Err(bad(field("angle"), "must be finite"));
+            }
             if !limits::within(p.mass, limits::MASS) {
                 return Err(bad(field("mass"), "must be between 1e-12 and 1e12 kg"));
             }
@@ -365,6 +398,9 @@ impl Scene {
             }
             if p.vel.length() > limits::SPEED {
                 return Err(bad(field("vel"), "must be at most 1e8 m/s"));
+            }
+            if p.spin.abs() * p.radius > limits::SPEED {
+                return Err(bad(field("spin"), "must turn the rim at most 1e8 m/s"));
             }
             if p.pos.abs().max_element() > limits::POSITION {
                 return Err(bad(field("pos"), "must be within 1e12 m of the origin"));
@@ -469,7 +505,11 @@ impl Scene {
             .enumerate()
             .map(|(k, p)| {
                 let color = p.color.unwrap_or_else(|| Color::palette(k));
-                Particle::new(p.pos, p.vel, p.mass, p.radius, color)
+                Particle {
+                    spin: p.spin,
+                    angle: p.angle,
+                    ..Particle::new(p.pos, p.vel, p.mass, p.radius, color)
+                }
             })
             .collect();
         if let Some(fill) = &self.fill {
@@ -504,6 +544,8 @@ impl Scene {
                     vel: p.vel,
                     mass: p.mass,
                     radius: p.radius,
+                    spin: p.spin,
+                    angle: p.angle,
                     color: Some(p.color),
                 })
                 .collect(),

@@ -1,10 +1,13 @@
 //! What an event does: a pair collision (alone or with others at the same
-//! instant), a wall hit, a crossing into the next cell.
+//! instant), a wall hit, a crossing into the next cell. Rough contacts add
+//! their tangential impulse ([`crate::rough`]): rotation does not change
+//! when discs touch, only what an impact does to them.
 
 use super::kinematics::CREEP;
 use super::{simultaneous, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
 use crate::ledger::Collision;
 use crate::resolution::collision_velocities;
+use crate::rough::{Side, Tangential};
 use glam::DVec2;
 
 impl Sim {
@@ -41,13 +44,19 @@ impl Sim {
                 || self.now - ib.last_hit < CONTACT_DURATION;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
-            self.record_pair([i, j], normal, [a.vel, b.vel], [va, vb]);
+            let spins = self.spins_of([i, j]);
             for (k, v) in [(i, va), (j, vb)] {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
                 body.gen += 1;
                 self.aux[k as usize].last_hit = self.now;
             }
+            if self.rough {
+                let impulse = ia.mass * (va - a.vel).dot(normal).abs();
+                self.rub_pair(i, j, normal, impulse, self.laws.rough());
+            }
+            let after = [self.bodies[i as usize].vel, self.bodies[j as usize].vel];
+            self.record_pair([i, j], normal, [a.vel, b.vel], after, spins);
             self.count(i, (a.vel - b.vel).dot(normal));
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         }
@@ -55,8 +64,16 @@ impl Sim {
         self.predict(j);
     }
 
-    /// Keeps a pair collision of bodies `k` for the ledger (when it is on).
-    fn record_pair(&mut self, k: [u32; 2], normal: DVec2, before: [DVec2; 2], after: [DVec2; 2]) {
+    /// Keeps a pair collision of bodies `k` for the ledger (when it is on),
+    /// with their spins before it (after it they are the current ones).
+    fn record_pair(
+        &mut self,
+        k: [u32; 2],
+        normal: DVec2,
+        before: [DVec2; 2],
+        after: [DVec2; 2],
+        spins_before: [f64; 2],
+    ) {
         if self.record {
             self.collided.push(Collision {
                 time: self.now,
@@ -65,7 +82,65 @@ impl Sim {
                 masses: k.map(|b| self.aux[b as usize].mass),
                 before,
                 after,
+                radii: k.map(|b| self.bodies[b as usize].radius),
+                spins_before,
+                spins_after: self.spins_of(k),
             });
+        }
+    }
+
+    /// Whether `laws` make any contact rough.
+    pub(super) fn is_rough(laws: &crate::laws::Laws) -> bool {
+        !laws.rough().is_smooth()
+            || !laws.wall_rough().is_smooth()
+            || laws.friction.is_some() && laws.gravity != DVec2::ZERO
+    }
+
+    /// The spins of bodies `k`.
+    fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
+        k.map(|b| self.spins[b as usize].spin)
+    }
+
+    /// Body `k` (at the current time) as one side of a rough contact.
+    fn side(&self, k: u32) -> Side {
+        Side {
+            mass: self.aux[k as usize].mass,
+            radius: self.bodies[k as usize].radius,
+            vel: self.bodies[k as usize].vel,
+            spin: self.spins[k as usize].spin,
+        }
+    }
+
+    /// Gives body `k` (at the current time) the velocity and spin of `side`.
+    fn set_side(&mut self, k: u32, side: Side) {
+        let now = self.now;
+        let body = &mut self.bodies[k as usize];
+        if body.vel != side.vel {
+            body.vel = side.vel;
+            body.gen += 1;
+        }
+        let s = &mut self.spins[k as usize];
+        *s = super::Spin {
+            spin: side.spin,
+            angle: s.angle_at(now),
+            since: now,
+        };
+    }
+
+    /// The tangential impulse of `law` between bodies `i` and `j` (normal
+    /// from `i` to `j`) after a normal impulse `impulse`.
+    fn rub_pair(&mut self, i: u32, j: u32, normal: DVec2, impulse: f64, law: Tangential) {
+        if let Some((a, b)) = law.pair(normal, impulse, self.side(i), self.side(j)) {
+            self.set_side(i, a);
+            self.set_side(j, b);
+        }
+    }
+
+    /// The tangential impulse of `law` on body `i` against a still support
+    /// (a wall, a sleeper) whose normal `into` points from the disc into it.
+    pub(super) fn rub_still(&mut self, i: u32, into: DVec2, impulse: f64, law: Tangential) {
+        if let Some(a) = law.wall(into, impulse, self.side(i)) {
+            self.set_side(i, a);
         }
     }
 
@@ -107,7 +182,7 @@ impl Sim {
         } else {
             (a.vel - (1.0 + e) * closing * normal, DVec2::ZERO)
         };
-        self.record_pair([mover, sleeper], normal, [a.vel, DVec2::ZERO], [vm, vs]);
+        let spins = self.spins_of([mover, sleeper]);
         self.count(mover, closing);
         self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         let body = &mut self.bodies[mover as usize];
@@ -118,12 +193,27 @@ impl Sim {
             let woken = self.wake(sleeper);
             self.bodies[sleeper as usize].vel = vs;
             self.aux[sleeper as usize].last_hit = self.now;
+            if self.rough {
+                let impulse = am.mass * (vm - a.vel).dot(normal).abs();
+                self.rub_pair(mover, sleeper, normal, impulse, self.laws.rough());
+            }
+            let after = [
+                self.bodies[mover as usize].vel,
+                self.bodies[sleeper as usize].vel,
+            ];
+            self.record_pair([mover, sleeper], normal, [a.vel, DVec2::ZERO], after, spins);
             self.predict(mover);
             self.predict(sleeper);
             for k in woken {
                 self.predict(k);
             }
         } else {
+            if self.rough {
+                let impulse = am.mass * (1.0 + e) * closing;
+                self.rub_still(mover, normal, impulse, self.laws.rough());
+            }
+            let after = [self.bodies[mover as usize].vel, DVec2::ZERO];
+            self.record_pair([mover, sleeper], normal, [a.vel, DVec2::ZERO], after, spins);
             self.unwedge(mover);
             self.maybe_sleep(mover);
             self.predict(mover);
@@ -186,6 +276,23 @@ impl Sim {
             })
             .collect();
         let after = simultaneous::simultaneous_velocities(&masses, &velocities, &list, e);
+        let spins_before: Vec<f64> = ids.iter().map(|&k| self.spins[k as usize].spin).collect();
+        for (&k, v) in ids.iter().zip(&after) {
+            let body = &mut self.bodies[k as usize];
+            body.vel = *v;
+            body.gen += 1;
+            self.aux[k as usize].last_hit = self.now;
+        }
+        if self.rough {
+            // Each touch rubs with the normal impulse a two-disc collision
+            // of the same closing speed would have.
+            for t in &list {
+                let (ma, mb) = (masses[t.a], masses[t.b]);
+                let closing = (velocities[t.a] - velocities[t.b]).dot(t.normal).max(0.0);
+                let impulse = (1.0 + e) * closing * ma * mb / (ma + mb);
+                self.rub_pair(ids[t.a], ids[t.b], t.normal, impulse, self.laws.rough());
+            }
+        }
         if self.record {
             for t in &list {
                 self.collided.push(Collision {
@@ -197,15 +304,21 @@ impl Sim {
                     normal: t.normal,
                     masses: [masses[t.a], masses[t.b]],
                     before: [velocities[t.a], velocities[t.b]],
-                    after: [after[t.a], after[t.b]],
+                    after: [
+                        self.bodies[ids[t.a] as usize].vel,
+                        self.bodies[ids[t.b] as usize].vel,
+                    ],
+                    radii: [
+                        self.bodies[ids[t.a] as usize].radius,
+                        self.bodies[ids[t.b] as usize].radius,
+                    ],
+                    spins_before: [spins_before[t.a], spins_before[t.b]],
+                    spins_after: [
+                        self.spins[ids[t.a] as usize].spin,
+                        self.spins[ids[t.b] as usize].spin,
+                    ],
                 });
             }
-        }
-        for (&k, v) in ids.iter().zip(after) {
-            let body = &mut self.bodies[k as usize];
-            body.vel = v;
-            body.gen += 1;
-            self.aux[k as usize].last_hit = self.now;
         }
         for t in &list {
             self.count(ids[t.a], (velocities[t.a] - velocities[t.b]).dot(t.normal));
@@ -241,10 +354,16 @@ impl Sim {
         } else {
             let b = &mut self.bodies[i as usize];
             let aux = &mut self.aux[i as usize];
-            self.wall_impulse += aux.mass * (1.0 + e) * b.vel[axis].abs();
+            let impulse = aux.mass * (1.0 + e) * b.vel[axis].abs();
+            self.wall_impulse += impulse;
             b.vel[axis] *= -e;
             b.gen += 1;
             aux.last_hit = self.now;
+            if self.rough {
+                let mut into = DVec2::ZERO;
+                into[axis] = if upper { 1.0 } else { -1.0 };
+                self.rub_still(i, into, impulse, self.laws.wall_rough());
+            }
             if crate::impact::is_impact(speed, self.impact_speed) {
                 self.wall_hits += 1;
             } else {

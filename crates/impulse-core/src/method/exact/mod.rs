@@ -268,6 +268,28 @@ struct Sim {
     rest: Vec<sleep::Rest>,
     /// How many are asleep.
     sleepers: usize,
+    /// Per body: its spin and how far it has turned ([`Spin`]).
+    spins: Vec<Spin>,
+    /// Whether contacts are rough (between discs or at walls), so that
+    /// collisions change spins.
+    rough: bool,
+}
+
+/// A disc's rotation: read and written only at its collisions.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Spin {
+    /// Angular velocity (rad/s, counter-clockwise).
+    spin: f64,
+    /// How far it had turned (rad) at time `since`.
+    angle: f64,
+    since: f64,
+}
+
+impl Spin {
+    /// How far it has turned at time `t`.
+    fn angle_at(&self, t: f64) -> f64 {
+        self.angle + self.spin * (t - self.since)
+    }
 }
 
 impl Sim {
@@ -398,6 +420,9 @@ impl Sim {
             let p = &mut particles[self.order[k] as usize];
             p.pos = self.written_pos(b);
             p.vel = b.vel;
+            let s = &self.spins[k];
+            p.spin = s.spin;
+            p.angle = s.angle_at(t);
         }
         self.finished_at = t;
     }

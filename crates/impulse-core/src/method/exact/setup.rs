@@ -60,6 +60,8 @@ impl Sim {
             sleeping: Sim::may_sleep(laws),
             rest: vec![super::sleep::Rest::Free; n],
             sleepers: 0,
+            spins: Vec::with_capacity(n),
+            rough: Sim::is_rough(laws),
         };
         let wrap = laws.boundary == Boundary::Periodic;
         let mut keyed: Vec<(usize, u32)> = particles
@@ -96,6 +98,11 @@ impl Sim {
                 mass: p.mass,
                 last_hit: f64::NEG_INFINITY,
                 guess: PairGuess::NONE,
+            });
+            sim.spins.push(super::Spin {
+                spin: p.spin,
+                angle: p.angle,
+                since: 0.0,
             });
             sim.order.push(i);
             sim.grid.insert(&mut sim.bodies, k as u32, cell);
@@ -252,12 +259,15 @@ impl Sim {
                 .order
                 .iter()
                 .zip(self.bodies.iter().zip(&self.aux))
-                .all(|(&i, (b, c))| {
+                .zip(&self.spins)
+                .all(|((&i, (b, c)), s)| {
                     let p = &particles[i as usize];
                     p.pos == self.written_pos(b)
                         && p.vel == b.vel
                         && p.mass == c.mass
                         && p.radius == b.radius
+                        && p.spin == s.spin
+                        && p.angle == s.angle_at(self.finished_at)
                 })
     }
 
@@ -272,8 +282,12 @@ impl Sim {
         for b in &mut self.bodies {
             b.time -= shift;
         }
+        for s in &mut self.spins {
+            s.since -= shift;
+        }
         self.queue.shift_times(shift);
         self.laws = *laws; // restitutions may have changed
+        self.rough = Sim::is_rough(laws);
         self.sleeping = Sim::may_sleep(laws);
         if !self.sleeping && self.sleepers > 0 {
             self.now = 0.0;

@@ -120,7 +120,19 @@ impl Sim {
         if !self.sleeping || pressing <= 0.0 || closing > pressing * CONTACT_DURATION {
             return false;
         }
-        if !self.maybe_sleep(i) && !self.glance(i, out, pressing) {
+        if self.maybe_sleep(i) {
+            return true;
+        }
+        let pressed = self.bodies[i as usize].vel.dot(out);
+        if self.glance(i, out, pressing) {
+            // Rough: the contact rubs with Coulomb friction, μ times the
+            // normal impulse the glance took.
+            if let (true, Some(law)) = (self.rough, self.laws.rough().resting()) {
+                let turned = self.bodies[i as usize].vel.dot(out);
+                let impulse = self.aux[i as usize].mass * (turned - pressed).abs();
+                self.rub_still(i, -out, impulse, law);
+            }
+        } else {
             self.slide_off(i, -out);
         }
         true
@@ -147,6 +159,19 @@ impl Sim {
         true
     }
 
+    /// Stops body `i` (at the current time) turning, as it falls asleep.
+    fn stop_spinning(&mut self, i: u32) {
+        let now = self.now;
+        let s = &mut self.spins[i as usize];
+        if s.spin != 0.0 {
+            *s = super::Spin {
+                spin: 0.0,
+                angle: s.angle_at(now),
+                since: now,
+            };
+        }
+    }
+
     /// The speed below which body `i` may fall asleep (m/s).
     pub(super) fn sleep_speed(&self, i: u32) -> f64 {
         let r = self.bodies[i as usize].radius;
@@ -160,12 +185,15 @@ impl Sim {
             return false;
         }
         let b = self.bodies[i as usize];
-        if b.vel.length() >= self.sleep_speed(i) || !self.is_held(i) {
+        let rolling = self.spins[i as usize].spin.abs() * b.radius;
+        let slow = b.vel.length().max(rolling) < self.sleep_speed(i);
+        if !slow || !self.is_held(i) {
             return false;
         }
         let body = &mut self.bodies[i as usize];
         body.vel = DVec2::ZERO;
         body.gen += 1;
+        self.stop_spinning(i);
         self.set_rest(i, Rest::Asleep);
         true
     }
@@ -293,6 +321,7 @@ impl Sim {
             let body = &mut self.bodies[i as usize];
             body.vel = DVec2::ZERO;
             body.gen += 1;
+            self.stop_spinning(i);
             self.set_rest(i, Rest::Asleep);
             return;
         }
