@@ -98,14 +98,43 @@ fn overlapping_discs_are_refused() {
 fn syntax_errors_and_unknown_fields_give_the_line() {
     let msg = error_of("[world]\nsize = [10.0, 10.0\n");
     assert!(msg.contains("line 2"), "{msg}");
-    let msg = error_of("[world]\nsize = [10.0, 10.0]\nfriction = 0.3\n");
-    assert!(msg.contains("line 3") && msg.contains("friction"), "{msg}");
+    let msg = error_of("[world]\nsize = [10.0, 10.0]\nviscosity = 0.3\n");
+    assert!(msg.contains("line 3") && msg.contains("viscosity"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, -1.0]\n");
     assert!(msg.contains("world.size"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, 10.0]\nrestitution = 1.5\n");
     assert!(msg.contains("world.restitution"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, 10.0]\n[[particles]]\npos = [5.0, 5.0]\nmass = 1.0\nradius = 0.5\ncolor = \"red\"\n");
     assert!(msg.contains("colour") && msg.contains("line"), "{msg}");
+}
+
+#[test]
+fn rough_disc_values_out_of_range_are_refused_with_their_field() {
+    for (line, field) in [
+        ("tangential_restitution = 1.5", "world.tangential_restitution"),
+        ("tangential_restitution = -1.01", "world.tangential_restitution"),
+        ("wall_tangential_restitution = 2.0", "world.wall_tangential_restitution"),
+        ("friction = -0.1", "world.friction"),
+        ("friction = nan", "world.friction"),
+        ("friction = inf", "world.friction"),
+    ] {
+        let msg = error_of(&format!("{WORLD}{line}\n"));
+        assert!(msg.contains(field), "{line}: {msg}");
+    }
+    for spin in ["nan", "inf", "-inf"] {
+        let text = format!(
+            "{WORLD}[[particles]]\npos = [5.0, 5.0]\nmass = 1.0\nradius = 0.5\nspin = {spin}\n"
+        );
+        let msg = error_of(&text);
+        assert!(msg.contains("particles[0].spin"), "{spin}: {msg}");
+    }
+    // In range they load, and a spin is kept.
+    let text = format!(
+        "{WORLD}tangential_restitution = 0.5\nfriction = 0.3\n[[particles]]\npos = [5.0, 5.0]\nmass = 1.0\nradius = 0.5\nspin = -2.5\n"
+    );
+    let world = Scene::parse(&text, "a").unwrap().build("a").unwrap();
+    assert_eq!(world.particles[0].spin, -2.5);
+    assert_eq!(world.laws.friction, Some(0.3));
 }
 
 #[test]

@@ -90,7 +90,9 @@ impl Tangential {
         if p == 0.0 {
             return None;
         }
-        Some((kick(a, t, p), kick(b, t, -p)))
+        // b is pushed by −p·t at its point −r_b·n: torque (−r_b·n) × (−p·t),
+        // the same sign as a's.
+        Some((kick(a, t, p, p), kick(b, t, -p, p)))
     }
 
     /// A disc against a still wall (or any immovable support) whose
@@ -103,7 +105,7 @@ impl Tangential {
         let t = tangent(n);
         let g_t = a.vel.dot(t) + a.spin * a.radius;
         let p = self.impulse(g_t, 3.0 / a.mass, normal_impulse);
-        (p != 0.0).then(|| kick(a, t, p))
+        (p != 0.0).then(|| kick(a, t, p, p))
     }
 }
 
@@ -112,12 +114,12 @@ pub fn tangent(n: DVec2) -> DVec2 {
     n.perp()
 }
 
-/// Disc `a` after the impulse `p`·`t` at its point of contact, which lies
-/// at radius·n with t = n turned +90°: torque r·p.
-fn kick(a: Side, t: DVec2, p: f64) -> Side {
+/// Disc `a` after the impulse `p`·`t` at its point of contact, whose
+/// torque is r·`turn` (I = ½·m·r², so ω changes by 2·turn/(m·r)).
+fn kick(a: Side, t: DVec2, p: f64, turn: f64) -> Side {
     Side {
         vel: a.vel + t * (p / a.mass),
-        spin: a.spin + 2.0 * p / (a.mass * a.radius),
+        spin: a.spin + 2.0 * turn / (a.mass * a.radius),
         ..a
     }
 }
@@ -157,6 +159,14 @@ mod tests {
             let p = a.mass * a.vel + b.mass * b.vel;
             let p2 = a2.mass * a2.vel + b2.mass * b2.vel;
             assert!((p - p2).length() < 1e-12);
+            // Angular momentum about the origin, with a at the origin and
+            // b at (r_a + r_b)·n: orbital plus spin.
+            let xb = (a.radius + b.radius) * n;
+            let l = |a: Side, b: Side| {
+                let inertia = |s: Side| 0.5 * s.mass * s.radius * s.radius;
+                b.mass * xb.perp_dot(b.vel) + inertia(a) * a.spin + inertia(b) * b.spin
+            };
+            assert!((l(a, b) - l(a2, b2)).abs() < 1e-12, "β = {beta}");
         }
     }
 

@@ -425,7 +425,7 @@ mod tests {
                     always_banded().resolve(
                         &mut particles,
                         (&contacts, SIZE.y),
-                        (0.9, 0.0),
+                        super::super::ContactLaw::smooth(0.9, 0.0),
                         Rule::IMPULSE,
                         ledger,
                         parallel,
@@ -442,7 +442,7 @@ mod tests {
             super::super::resolve_contacts(
                 &mut ascending,
                 &contacts,
-                (0.9, 0.0),
+                super::super::ContactLaw::smooth(0.9, 0.0),
                 Rule::IMPULSE,
                 off,
                 0.0,
@@ -473,7 +473,7 @@ mod tests {
             always_banded().resolve(
                 &mut particles,
                 (&contacts, SIZE.y),
-                (1.0, 0.0),
+                super::super::ContactLaw::smooth(1.0, 0.0),
                 Rule::IMPULSE,
                 ledger,
                 true,
@@ -503,7 +503,7 @@ mod tests {
             let a = always_banded().resolve(
                 &mut quiet,
                 (&contacts, SIZE.y),
-                (1.0, 0.0),
+                super::super::ContactLaw::smooth(1.0, 0.0),
                 Rule::IMPULSE,
                 off,
                 true,
@@ -512,7 +512,7 @@ mod tests {
             let b = always_banded().resolve(
                 &mut recorded,
                 (&contacts, SIZE.y),
-                (1.0, 0.0),
+                super::super::ContactLaw::smooth(1.0, 0.0),
                 Rule::IMPULSE,
                 on,
                 true,
@@ -534,7 +534,7 @@ mod tests {
         Banded::default().resolve(
             &mut banded,
             (&contacts, SIZE.y),
-            (0.8, 0.0),
+            super::super::ContactLaw::smooth(0.8, 0.0),
             Rule::SEED,
             off,
             true,
@@ -542,7 +542,7 @@ mod tests {
         super::super::resolve_contacts(
             &mut ascending,
             &contacts,
-            (0.8, 0.0),
+            super::super::ContactLaw::smooth(0.8, 0.0),
             Rule::SEED,
             &mut Ledger::default(),
             0.0,

@@ -40,6 +40,17 @@ pub struct ContactLaw {
     pub tangential: Tangential,
 }
 
+impl ContactLaw {
+    /// Smooth discs with restitution `e`, impacts above `impact_speed`.
+    pub fn smooth(restitution: f64, impact_speed: f64) -> ContactLaw {
+        ContactLaw {
+            restitution,
+            impact_speed,
+            tangential: Tangential::SMOOTH,
+        }
+    }
+}
+
 /// What resolving one step's contacts did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ResolutionReport {
