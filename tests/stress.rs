@@ -180,3 +180,10 @@ fn relaxation() {
     let critical = 1.63 / (n as f64).sqrt();
     check("relaxation", &METHODS, |distance| distance < critical);
 }
+
+#[test]
+fn rough() {
+    // Every method gives rough discs their tangential impulse; verlet's
+    // projection loses most of the energy at any β, as in the long run.
+    check("rough", &[SEED, IMPULSE, EXACT, AUTO], |off| off < 0.03);
+}

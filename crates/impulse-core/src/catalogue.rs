@@ -79,11 +79,13 @@ pub const STRESS_PILE_LARGE: SceneFile = scene_file!("stress-pile-large.toml");
 pub const STRESS_PILE_TALL: SceneFile = scene_file!("stress-pile-tall.toml");
 /// `assets/scenes/stress-relaxation.toml`.
 pub const STRESS_RELAXATION: SceneFile = scene_file!("stress-relaxation.toml");
+/// `assets/scenes/stress-rough.toml`.
+pub const STRESS_ROUGH: SceneFile = scene_file!("stress-rough.toml");
 /// `assets/scenes/stress-three-discs.toml`.
 pub const STRESS_THREE_DISCS: SceneFile = scene_file!("stress-three-discs.toml");
 
 /// Every shipped scene file, in file-name order.
-pub const ALL: [SceneFile; 30] = [
+pub const ALL: [SceneFile; 31] = [
     DEFAULT,
     EMPTY,
     PI_BLOCKS_1,
@@ -113,6 +115,7 @@ pub const ALL: [SceneFile; 30] = [
     STRESS_PILE_TALL,
     STRESS_PILE,
     STRESS_RELAXATION,
+    STRESS_ROUGH,
     STRESS_THREE_DISCS,
 ];
 

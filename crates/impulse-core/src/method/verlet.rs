@@ -3,7 +3,9 @@
 //! The stages in another order: integration first (x ← x + v·h + g·h²),
 //! then broad phase → narrow phase, projection of the overlaps on the
 //! positions only (no velocity changes), velocity implied by the positions
-//! (v = Δx / h), then boundaries. `impulse` and `seed` run the stages in
+//! (v = Δx / h), then boundaries. Rough discs take their tangential
+//! impulse on the implied velocities, with the normal impulse projection
+//! gave each contact. `impulse` and `seed` run the stages in
 //! the usual order in [`crate::world::World::step`].
 //!
 //! For large scenes the per-disc and per-pair stages run on rayon's pool
@@ -50,8 +52,12 @@ pub(crate) fn substep(
     // off the velocities the discs came in with (implied by the last substep).
     let lap = Lap::start();
     let impact_speed = crate::impact::threshold(laws.gravity, h);
+    let mut closings = Vec::new();
     for c in &pipeline.contacts {
         let closing = (particles[c.i as usize].vel - particles[c.j as usize].vel).dot(c.normal);
+        if !laws.rough().is_smooth() {
+            closings.push(closing);
+        }
         if crate::impact::is_impact(closing, impact_speed) {
             stats.pair_collisions += 1;
         } else if closing > 0.0 {
@@ -76,6 +82,27 @@ pub(crate) fn substep(
             particles.iter_mut().zip(previous.iter()).for_each(implied);
         }
     );
+    // Rough discs: each contact that came in approaching rubs with the
+    // normal impulse projection gave it (it stopped the approach).
+    let rough = laws.rough();
+    if !rough.is_smooth() {
+        for (c, closing) in pipeline.contacts.iter().zip(closings) {
+            let (i, j) = (c.i as usize, c.j as usize);
+            let (head, tail) = particles.split_at_mut(j);
+            let (a, b) = (&mut head[i], &mut tail[0]);
+            let impulse = closing.max(0.0) * a.mass * b.mass / (a.mass + b.mass);
+            if impulse > 0.0 {
+                let rubs = if crate::impact::is_impact(closing, impact_speed) {
+                    Some(rough)
+                } else {
+                    rough.resting()
+                };
+                if let Some(rubs) = rubs {
+                    crate::resolution::rough_pair(a, b, c.normal, impulse, rubs);
+                }
+            }
+        }
+    }
     stats.timings.resolution += lap.elapsed();
     pipeline.apply_boundary(particles, laws, h, stats);
 }

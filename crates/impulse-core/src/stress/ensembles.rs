@@ -220,3 +220,44 @@ pub fn rayleigh_ks_distance(world: &World) -> f64 {
         })
         .fold(0.0, f64::max)
 }
+
+const ROUGH_PATH: &str = crate::catalogue::STRESS_ROUGH.path;
+const ROUGH_TEXT: &str = crate::catalogue::STRESS_ROUGH.text;
+
+/// 12. Rough discs share energy with rotation.
+pub(super) const ROUGH: Scenario = Scenario {
+    key: "rough",
+    title: "12. Rough gas: equipartition with rotation",
+    quick_title: None,
+    figure: "|rotation's share of the energy − 1/3|, averaged over the second half",
+    criterion: "a perfectly rough elastic gas (β = 1) that starts without spin gives rotation one third of the energy (one of three degrees of freedom), within 0.03, while the total (translation and rotation) moves by less than 1e-9 of itself",
+    threshold: "pass if < 0.03, energy kept to 1e-9",
+    scene_path: ROUGH_PATH,
+    scene: ROUGH_TEXT,
+    run: rough,
+};
+
+fn rough(method: Setting<Method>, size: Size) -> Result<Outcome, String> {
+    let mut world = load(ROUGH_TEXT, ROUGH_PATH, method)?;
+    let duration = if size == Size::Quick { 10.0 } else { 20.0 };
+    let energy = world.total_energy();
+    let (mut share, mut samples) = (0.0, 0);
+    let run = run_for(&mut world, crate::scene::DEFAULT_DT, duration, |w, _| {
+        if w.time >= 0.5 * duration {
+            let m = w.metrics();
+            share += m.rotational_energy / (m.kinetic_energy + m.rotational_energy);
+            samples += 1;
+        }
+    });
+    if let Err(stall) = run {
+        return Ok(stall.outcome());
+    }
+    let share = share / samples.max(1) as f64;
+    let off = (share - 1.0 / 3.0).abs();
+    let drift = (world.total_energy() - energy).abs() / energy;
+    Ok(Outcome {
+        figure: off,
+        summary: format!("rotation holds {share:.3} of the energy; energy moved {drift:.1e}"),
+        pass: off < 0.03 && drift < 1e-9,
+    })
+}

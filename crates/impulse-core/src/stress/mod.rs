@@ -1,6 +1,6 @@
 //! The stability suite: where each method fails, measured.
 //!
-//! Eleven scenarios, each a scene file in `assets/scenes/stress-*.toml` (so
+//! Twelve scenarios, each a scene file in `assets/scenes/stress-*.toml` (so
 //! it can be watched in the window) and a function here that runs it under a
 //! method and measures one figure against a pass criterion written next to
 //! it. `impulse stress` prints the table and chart; `tests/stress.rs` asserts
@@ -118,6 +118,7 @@ pub fn scenarios() -> Vec<Scenario> {
         one_shot::SYMMETRY,
         one_shot::DEGENERATE,
         ensembles::RELAXATION,
+        ensembles::ROUGH,
     ]
 }
 
