@@ -30,7 +30,10 @@ fn closed_form(
         _ => beta,
     };
     let reduced = a.mass * b.mass / (a.mass + b.mass);
-    let (j_n, j_t) = ((1.0 + e) * reduced * g_n, (1.0 + beta) * reduced * g_t / 3.0);
+    let (j_n, j_t) = (
+        (1.0 + e) * reduced * g_n,
+        (1.0 + beta) * reduced * g_t / 3.0,
+    );
     let impulse = j_n * n + j_t * t; // on b; −impulse on a
     let mut a2 = *a;
     let mut b2 = *b;
@@ -53,7 +56,11 @@ fn rough_world(size: f64, e: f64, beta: f64, mu: Option<f64>, method: Method) ->
 }
 
 fn assert_close(got: &Particle, want: &Particle, what: &str) {
-    let scale = want.vel.length().max(want.spin.abs() * want.radius).max(1.0);
+    let scale = want
+        .vel
+        .length()
+        .max(want.spin.abs() * want.radius)
+        .max(1.0);
     assert!(
         (got.vel - want.vel).length() < 1e-8 * scale,
         "{what}: velocity {} against {}",
@@ -120,7 +127,11 @@ fn wall_impacts_match_the_closed_form() {
             let mut w = rough_world(10.0, e, -1.0, mu, method);
             w.laws.wall_tangential_restitution = beta;
             let r = 0.5;
-            let height = if method == Method::Exact { r + 1.0 } else { r + 1e-3 };
+            let height = if method == Method::Exact {
+                r + 1.0
+            } else {
+                r + 1e-3
+            };
             let a = Particle {
                 spin: 4.0,
                 ..disc([5.0, height], [3.0, -2.0], 2.0, r)
@@ -147,7 +158,9 @@ fn gas(text_world: &str, n: usize, seed: u64, spin: f64) -> World {
     let mut w = Scene::parse(&text, "gas").unwrap().build("gas").unwrap();
     let mut x = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
     for p in &mut w.particles {
-        x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         let u = (x >> 11) as f64 / (1u64 << 53) as f64;
         p.spin = spin * (2.0 * u - 1.0);
     }
@@ -216,7 +229,10 @@ fn energy_is_kept_at_e_1_and_beta_plus_or_minus_1() {
             for _ in 0..steps {
                 w.step(if method == Method::Exact { 0.5 } else { 0.01 });
             }
-            assert!(w.total_pair_collisions > 10_000, "{method:?}: too few collisions");
+            assert!(
+                w.total_pair_collisions > 10_000,
+                "{method:?}: too few collisions"
+            );
             let after = w.total_energy();
             eprintln!(
                 "{method:?}, β = {beta}: {} collisions, energy moved by {:e}",
@@ -237,7 +253,8 @@ fn energy_is_kept_at_e_1_and_beta_plus_or_minus_1() {
 /// ends with a third of it; a smooth gas never touches its spins.
 #[test]
 fn a_rough_gas_relaxes_to_equipartition_and_a_smooth_one_keeps_its_spins() {
-    let rough = "[world]\nsize = [60.0, 60.0]\nboundary = \"periodic\"\ntangential_restitution = 1.0\n";
+    let rough =
+        "[world]\nsize = [60.0, 60.0]\nboundary = \"periodic\"\ntangential_restitution = 1.0\n";
     let n = 4000;
     let mut w = gas(rough, n, 3, 0.0);
     // Relax for 30 collisions per disc, then average over 30 more.
@@ -306,8 +323,15 @@ fn a_disc_sliding_on_the_floor_starts_to_roll_when_the_formula_says() {
             "{method:?}: rolls from {at:.4} s, the formula says {rolls_at:.4} s"
         );
         let p = w.particles[0];
-        assert!((p.vel.x - 2.0 * v0 / 3.0).abs() < 0.01 * v0, "{method:?}: v = {}", p.vel.x);
-        assert!((p.vel.x + p.spin * r).abs() < 1e-3 * v0, "{method:?}: still slipping");
+        assert!(
+            (p.vel.x - 2.0 * v0 / 3.0).abs() < 0.01 * v0,
+            "{method:?}: v = {}",
+            p.vel.x
+        );
+        assert!(
+            (p.vel.x + p.spin * r).abs() < 1e-3 * v0,
+            "{method:?}: still slipping"
+        );
     }
 }
 
@@ -319,10 +343,18 @@ fn a_smooth_world_is_what_it_was_bit_for_bit() {
     assert_eq!(w.laws.tangential_restitution, -1.0);
     assert_eq!(w.laws.wall_tangential_restitution, -1.0);
     assert_eq!(w.laws.friction, None);
-    let mut gas = gas("[world]\nsize = [20.0, 20.0]\nboundary = \"box\"\n", 300, 4, 0.0);
+    let mut gas = gas(
+        "[world]\nsize = [20.0, 20.0]\nboundary = \"box\"\n",
+        300,
+        4,
+        0.0,
+    );
     gas.laws.boundary = Boundary::Box;
     for _ in 0..10 {
         gas.step(0.5);
     }
-    assert!(gas.particles.iter().all(|p| p.spin == 0.0 && p.angle == 0.0));
+    assert!(gas
+        .particles
+        .iter()
+        .all(|p| p.spin == 0.0 && p.angle == 0.0));
 }

@@ -111,9 +111,18 @@ fn syntax_errors_and_unknown_fields_give_the_line() {
 #[test]
 fn rough_disc_values_out_of_range_are_refused_with_their_field() {
     for (line, field) in [
-        ("tangential_restitution = 1.5", "world.tangential_restitution"),
-        ("tangential_restitution = -1.01", "world.tangential_restitution"),
-        ("wall_tangential_restitution = 2.0", "world.wall_tangential_restitution"),
+        (
+            "tangential_restitution = 1.5",
+            "world.tangential_restitution",
+        ),
+        (
+            "tangential_restitution = -1.01",
+            "world.tangential_restitution",
+        ),
+        (
+            "wall_tangential_restitution = 2.0",
+            "world.wall_tangential_restitution",
+        ),
         ("friction = -0.1", "world.friction"),
         ("friction = nan", "world.friction"),
         ("friction = inf", "world.friction"),
