@@ -25,13 +25,14 @@ pub fn totals_csv(samples: &[Sample]) -> String {
 /// Every disc now.
 pub fn particles_csv(world: &World) -> String {
     let mut out = String::from(
-        "disc,x_m,y_m,vx_m_s,vy_m_s,mass_kg,radius_m,px_kg_m_s,py_kg_m_s,kinetic_energy_j\n",
+        "disc,x_m,y_m,vx_m_s,vy_m_s,mass_kg,radius_m,px_kg_m_s,py_kg_m_s,kinetic_energy_j,\
+         spin_rad_s,rotational_energy_j,angular_momentum_kg_m2_s\n",
     );
     for (k, p) in world.particles.iter().enumerate() {
         let m = p.momentum();
         let _ = writeln!(
             out,
-            "{k},{},{},{},{},{},{},{},{},{}",
+            "{k},{},{},{},{},{},{},{},{},{},{},{},{}",
             p.pos.x,
             p.pos.y,
             p.vel.x,
@@ -40,20 +41,26 @@ pub fn particles_csv(world: &World) -> String {
             p.radius,
             m.x,
             m.y,
-            p.kinetic_energy()
+            p.kinetic_energy(),
+            p.spin,
+            p.rotational_energy(),
+            p.angular_momentum()
         );
     }
     out
 }
 
-/// The collision ledger: per collision, both discs' momentum and kinetic
-/// energy before and after, and the change of the totals.
+/// The collision ledger: per collision, both discs' momentum, kinetic
+/// energy, spin and rotational energy before and after, and the change of
+/// the totals.
 pub fn ledger_csv(ledger: &Ledger) -> String {
     let mut out = String::from(
         "time_s,disc_a,disc_b,normal_x,normal_y,\
          pa_before_x,pa_before_y,pa_after_x,pa_after_y,ke_a_before_j,ke_a_after_j,\
+         spin_a_before_rad_s,spin_a_after_rad_s,rke_a_before_j,rke_a_after_j,\
          pb_before_x,pb_before_y,pb_after_x,pb_after_y,ke_b_before_j,ke_b_after_j,\
-         total_dp_x,total_dp_y,total_dke_j\n",
+         spin_b_before_rad_s,spin_b_after_rad_s,rke_b_before_j,rke_b_after_j,\
+         total_dp_x,total_dp_y,total_dke_j,total_drke_j\n",
     );
     for c in ledger.entries() {
         let _ = write!(
@@ -61,13 +68,21 @@ pub fn ledger_csv(ledger: &Ledger) -> String {
             "{},{},{},{},{}",
             c.time, c.discs[0], c.discs[1], c.normal.x, c.normal.y
         );
+        let mut drke = 0.0;
         for k in 0..2 {
             let (p0, p1) = c.momentum(k);
             let (e0, e1) = c.kinetic_energy(k);
-            let _ = write!(out, ",{},{},{},{},{e0},{e1}", p0.x, p0.y, p1.x, p1.y);
+            let (r0, r1) = c.rotational_energy(k);
+            let (w0, w1) = (c.spins_before[k], c.spins_after[k]);
+            drke += r1 - r0;
+            let _ = write!(
+                out,
+                ",{},{},{},{},{e0},{e1},{w0},{w1},{r0},{r1}",
+                p0.x, p0.y, p1.x, p1.y
+            );
         }
         let (dp, dke) = c.total_change();
-        let _ = writeln!(out, ",{},{},{dke}", dp.x, dp.y);
+        let _ = writeln!(out, ",{},{},{dke},{drke}", dp.x, dp.y);
     }
     out
 }
