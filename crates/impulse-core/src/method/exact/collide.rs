@@ -44,7 +44,11 @@ impl Sim {
                 || self.now - ib.last_hit < CONTACT_DURATION;
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
-            let spins = self.spins_of([i, j]);
+            let spins = if self.record {
+                self.spins_of([i, j])
+            } else {
+                [0.0; 2]
+            };
             for (k, v) in [(i, va), (j, vb)] {
                 let body = &mut self.bodies[k as usize];
                 body.vel = v;
@@ -98,7 +102,12 @@ impl Sim {
 
     /// The spins of bodies `k`.
     fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
-        k.map(|b| self.spins[b as usize].spin)
+        k.map(|b| self.spin(b))
+    }
+
+    /// The spin of body `k` (none is kept while nothing turns).
+    pub(super) fn spin(&self, k: u32) -> f64 {
+        self.spins.get(k as usize).map_or(0.0, |s| s.spin)
     }
 
     /// Body `k` (at the current time) as one side of a rough contact.
@@ -107,7 +116,7 @@ impl Sim {
             mass: self.aux[k as usize].mass,
             radius: self.bodies[k as usize].radius,
             vel: self.bodies[k as usize].vel,
-            spin: self.spins[k as usize].spin,
+            spin: self.spin(k),
         }
     }
 
@@ -276,7 +285,7 @@ impl Sim {
             })
             .collect();
         let after = simultaneous::simultaneous_velocities(&masses, &velocities, &list, e);
-        let spins_before: Vec<f64> = ids.iter().map(|&k| self.spins[k as usize].spin).collect();
+        let spins_before: Vec<f64> = ids.iter().map(|&k| self.spin(k)).collect();
         for (&k, v) in ids.iter().zip(&after) {
             let body = &mut self.bodies[k as usize];
             body.vel = *v;
@@ -313,10 +322,7 @@ impl Sim {
                         self.bodies[ids[t.b] as usize].radius,
                     ],
                     spins_before: [spins_before[t.a], spins_before[t.b]],
-                    spins_after: [
-                        self.spins[ids[t.a] as usize].spin,
-                        self.spins[ids[t.b] as usize].spin,
-                    ],
+                    spins_after: [self.spin(ids[t.a]), self.spin(ids[t.b])],
                 });
             }
         }

@@ -268,7 +268,9 @@ struct Sim {
     rest: Vec<sleep::Rest>,
     /// How many are asleep.
     sleepers: usize,
-    /// Per body: its spin and how far it has turned ([`Spin`]).
+    /// Per body: its spin and how far it has turned ([`Spin`]); empty
+    /// while nothing turns (smooth laws, no disc spinning or turned), so a
+    /// smooth world reads and writes no more than before spins existed.
     spins: Vec<Spin>,
     /// Whether contacts are rough (between discs or at walls), so that
     /// collisions change spins.
@@ -420,7 +422,9 @@ impl Sim {
             let p = &mut particles[self.order[k] as usize];
             p.pos = self.written_pos(b);
             p.vel = b.vel;
-            let s = &self.spins[k];
+        }
+        for (s, &i) in self.spins.iter().zip(&self.order) {
+            let p = &mut particles[i as usize];
             p.spin = s.spin;
             p.angle = s.angle_at(t);
         }

@@ -162,7 +162,9 @@ impl Sim {
     /// Stops body `i` (at the current time) turning, as it falls asleep.
     fn stop_spinning(&mut self, i: u32) {
         let now = self.now;
-        let s = &mut self.spins[i as usize];
+        let Some(s) = self.spins.get_mut(i as usize) else {
+            return;
+        };
         if s.spin != 0.0 {
             *s = super::Spin {
                 spin: 0.0,
@@ -185,7 +187,7 @@ impl Sim {
             return false;
         }
         let b = self.bodies[i as usize];
-        let rolling = self.spins[i as usize].spin.abs() * b.radius;
+        let rolling = self.spin(i).abs() * b.radius;
         let slow = b.vel.length().max(rolling) < self.sleep_speed(i);
         if !slow || !self.is_held(i) {
             return false;
