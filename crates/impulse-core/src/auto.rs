@@ -27,6 +27,11 @@
 //!   settling costs it far more than `impulse` (measured 2026-11-23: the
 //!   150-disc pile, 15 s, 2.2 s of wall clock against 0.2 s; the 360-disc
 //!   tall pile 8.3 s against 0.45 s), so it is not the cheaper choice.
+//!   Nor with a few discs: a disc sliding along the floor glances off it
+//!   once per contact duration, 10⁴ events a second, until it stops (1 to
+//!   8 discs thrown into a box, 10 s: 11–88 ms against 0.9–2.0 ms; only a
+//!   ball dropped straight down, which falls asleep, was cheaper, 2.6 ms
+//!   against 5.3 ms for 60 s). Measured 2026-11-23.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
 //!   59 / 52 / 65 / 112 at n = 8 / 16 / 32 / 64 against the grid's 60 / 39 /
