@@ -15,11 +15,10 @@
 //! it). It sends the window an X event instead, a pointer motion to where
 //! the pointer already is, which macroquad answers with a frame on the main
 //! thread. It finds this process's window through the X-Resource
-//! extension. Where that is missing (not X11, the browser), the window
-//! draws every frame as before.
+//! extension. Where that is missing (no X server, no such extension, the
+//! browser), the window draws every frame as before.
 
 use macroquad::prelude::get_time;
-use std::sync::{Arc, Condvar, Mutex};
 
 /// Seconds of frames after the last change or input.
 pub const GRACE: f64 = 1.0;
@@ -49,6 +48,7 @@ impl Idle {
     }
 
     /// Whether a waker runs, so the window may sleep between frames.
+    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     pub fn wakes(&self) -> bool {
         self.waker.is_some()
     }
@@ -84,22 +84,17 @@ impl Idle {
     }
 }
 
-/// Whether the blocking event loop can be used here.
-pub fn blocking() -> bool {
-    cfg!(target_os = "linux") && std::env::var_os("WAYLAND_DISPLAY").is_none()
-}
-
-/// A wake-up asked for: when, and where the pointer is.
-type Alarm = Option<(std::time::Instant, (f32, f32))>;
-
 #[cfg(target_os = "linux")]
 mod waker {
-    use super::*;
+    use std::sync::{Arc, Condvar, Mutex};
     use x11rb::connection::Connection;
     use x11rb::protocol::res::{ClientIdMask, ClientIdSpec, ConnectionExt as _};
     use x11rb::protocol::xproto::{
         AtomEnum, ConnectionExt as _, EventMask, MotionNotifyEvent, Window, MOTION_NOTIFY_EVENT,
     };
+
+    /// A wake-up asked for: when, and where the pointer is.
+    type Alarm = Option<(std::time::Instant, (f32, f32))>;
 
     /// The thread that wakes the window.
     pub struct Waker {
@@ -109,10 +104,9 @@ mod waker {
     }
 
     impl Waker {
+        /// A waker if an X server answers (until it finds the window, or if
+        /// it never does, the window draws every frame).
         pub fn start(class: &str) -> Option<Waker> {
-            if !blocking() {
-                return None;
-            }
             let (conn, screen) = x11rb::connect(None).ok()?;
             let root = conn.setup().roots.get(screen)?.root;
             let alarm: Arc<(Mutex<Alarm>, Condvar)> = Arc::default();
