@@ -29,6 +29,10 @@ fn main() -> std::process::ExitCode {
             "dragging_the_selected_discs_arrow_tip_sets_its_velocity",
             dragging_the_selected_discs_arrow_tip_sets_its_velocity,
         ),
+        (
+            "the_spin_preset_opens_from_the_menu_and_leaves_the_wall_at_its_captions_angle",
+            the_spin_preset_opens_from_the_menu_and_leaves_the_wall_at_its_captions_angle,
+        ),
     ])
 }
 
@@ -326,5 +330,145 @@ fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
         "velocity {got:?}, expected {want:?}"
     );
     assert!(got[1] > 0.0, "dragged up on screen: +y in the world");
+    app.quit();
+}
+
+/// The spin preset's place in the preset menu (after the ten digit keys'
+/// presets and the π blocks at three more mass ratios).
+const SPIN_PRESET: usize = 13;
+
+fn the_spin_preset_opens_from_the_menu_and_leaves_the_wall_at_its_captions_angle() {
+    let file = "preset-spin-off-a-wall.toml";
+    let scene = Scene::load(std::path::Path::new(&asset(file))).unwrap();
+    // The caption promises the angle: "... out at 63.4° to the floor."
+    let caption = scene.description.clone().unwrap();
+    let promised: f64 = caption
+        .split("out at ")
+        .nth(1)
+        .and_then(|rest| rest.split('°').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no outgoing angle in the caption {caption:?}"));
+    let decimals = 1;
+
+    let x = Xvfb::start("spin preset");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 300.0]);
+    // P opens the menu; the wheel scrolls it until the preset is in view.
+    app.xdo(&["key", "p"]);
+    let s = app.wait_for("the preset menu", 60, |s| {
+        s["panel_widgets"]["preset_menu"].is_array()
+    });
+    let name = format!("preset_{SPIN_PRESET}");
+    let menu = s["panel_widgets"]["preset_menu"].clone();
+    let centre = [
+        menu[0].as_f64().unwrap() + 0.5 * menu[2].as_f64().unwrap(),
+        menu[1].as_f64().unwrap() + 0.5 * menu[3].as_f64().unwrap(),
+    ];
+    app.move_to(centre);
+    app.wait_frames(2);
+    let in_view = |s: &serde_json::Value| {
+        let (m, r) = (
+            &s["panel_widgets"]["preset_menu"],
+            &s["panel_widgets"][&name],
+        );
+        let (top, bottom) = (
+            m[1].as_f64().unwrap(),
+            m[1].as_f64().unwrap() + m[3].as_f64().unwrap(),
+        );
+        r[1].as_f64().unwrap() >= top && r[1].as_f64().unwrap() + r[3].as_f64().unwrap() <= bottom
+    };
+    let mut s = app.wait_frames(1);
+    for _ in 0..60 {
+        if in_view(&s) {
+            break;
+        }
+        app.xdo(&["click", "5"]); // the wheel, down a notch
+        s = app.wait_frames(3);
+    }
+    let s = app.wait_still();
+    assert!(
+        in_view(&s),
+        "the wheel did not bring {name} into the menu's view"
+    );
+    app.click(widget(&s, &name, 0.5));
+    let opened = app.wait_for("the spin preset to open", 60, |s| {
+        s["scene_origin"] == format!("assets/scenes/{file}")
+    });
+    assert_eq!(opened["ui"]["presets_open"], false);
+    assert_eq!(
+        opened["spin_shown"], true,
+        "spin lines and values are shown"
+    );
+    let disc = &opened["particles"][0];
+    let spin = disc["spin"]
+        .as_f64()
+        .expect("the dump has each disc's spin");
+    assert_eq!(spin, scene.particles[0].spin);
+    let v_in = vec2(&disc["vel"]);
+    let angle_in = v_in[1].abs().atan2(v_in[0].abs()).to_degrees();
+    assert!((angle_in - 45.0).abs() < 1e-9, "in at {angle_in}°");
+    let energy = opened["total_energy"].as_f64().unwrap();
+    let m = &opened["metrics"];
+    assert!(
+        (m["kinetic_energy"].as_f64().unwrap() + m["rotational_energy"].as_f64().unwrap() - energy)
+            .abs()
+            < 1e-12
+    );
+
+    // Run it until the disc has left the floor (moving up), then pause.
+    app.move_to([5.0, 5.0]);
+    app.xdo(&["key", "space"]);
+    let after = app.wait_for("the bounce off the floor", 3000, |s| {
+        s["particles"][0]["vel"][1].as_f64().unwrap() > 0.0
+    });
+    app.xdo(&["key", "space"]);
+    assert_eq!(after["wall_hits"], 1, "one hit, on the floor");
+    let p = &after["particles"][0];
+    let v = vec2(&p["vel"]);
+    assert!(v[0] < 0.0, "the backspin sends it back: {v:?}");
+    let angle_out = v[1].atan2(v[0].abs()).to_degrees();
+    let shown = format!("{angle_out:.decimals$}");
+    assert_eq!(
+        shown.parse::<f64>().unwrap(),
+        promised,
+        "out at {angle_out}° to the floor; the caption says {promised}°"
+    );
+    assert!(
+        (angle_out - promised).abs() <= 0.05,
+        "{angle_out} vs {promised}"
+    );
+    // The spin is in the dump: the slip reversed, so it turns the other
+    // way, and the disc has turned (its line with it).
+    let spin_out = p["spin"].as_f64().unwrap();
+    assert!(spin_out < 0.0, "spin after the bounce {spin_out}");
+    assert!(p["angle"].as_f64().unwrap_or(0.0) != 0.0, "{p}");
+    // The total energy shown includes the turning, and is kept (β = 1, e = 1).
+    let m = &after["metrics"];
+    assert!(m["rotational_energy"].as_f64().unwrap() > 0.0);
+    assert!(m["angular_momentum"].is_number());
+    let energy_out = after["total_energy"].as_f64().unwrap();
+    assert!(
+        (energy_out - energy).abs() < 1e-9 * energy,
+        "energy {energy} before, {energy_out} after"
+    );
+
+    // Friction is switched on beside the roughness sliders, and undone as
+    // a change of the laws.
+    let s = app.wait_frames(2);
+    assert!(s["friction"].is_null(), "no friction in the scene");
+    assert!(s["panel_widgets"]["tangential_restitution"].is_array());
+    app.click(widget(&s, "friction_on", 0.1));
+    let s = app.wait_for("friction on", 30, |s| s["friction"].is_number());
+    assert_eq!(s["friction"], 0.5);
+    app.move_to([5.0, 5.0]);
+    app.xdo(&["key", "ctrl+z"]);
+    let s = app.wait_for("the undo", 30, |s| s["friction"].is_null());
+    assert!(
+        s["ui"]["message"]
+            .as_str()
+            .is_some_and(|m| m.contains("friction")),
+        "{}",
+        s["ui"]
+    );
     app.quit();
 }

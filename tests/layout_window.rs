@@ -29,6 +29,10 @@ fn main() -> std::process::ExitCode {
             a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view,
         ),
         (
+            "the_rough_presets_fit_with_their_spin_values_at_the_smallest_size_and_both_scales",
+            the_rough_presets_fit_with_their_spin_values_at_the_smallest_size_and_both_scales,
+        ),
+        (
             "a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much",
             a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much,
         ),
@@ -164,6 +168,38 @@ fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_pr
                 }
             }
         }
+        app.quit();
+    }
+}
+
+/// The presets reached only through the menu (P), with spin shown: more
+/// in the top bar, the Discs table's spin columns, the Speeds tab's two
+/// plots. Checked at the smallest window, at scales 1 and 2, with each of
+/// those tabs open.
+fn the_rough_presets_fit_with_their_spin_values_at_the_smallest_size_and_both_scales() {
+    let x = Xvfb::start("rough layout");
+    let window = [1024.0, 768.0];
+    for file in ["preset-spin-off-a-wall.toml", "preset-rough-gas.toml"] {
+        let app = Sandbox::start(&x, &["--size", "1024x768", &asset(file)]);
+        app.move_to([5.0, 5.0]);
+        let s = app.wait_frames(3);
+        assert_eq!(s["spin_shown"], true, "{file}");
+        check_layout(&s, &format!("{file}, scale 1"), 1.0, window);
+        for tab in ["tab_discs", "tab_speeds", "tab_totals"] {
+            app.click(widget(&s, tab, 0.5));
+            let s = app.wait_frames(3);
+            check_layout(&s, &format!("{file}, scale 1, {tab}"), 1.0, window);
+        }
+        app.xdo(&["key", "F2"]);
+        app.wait_frames(2);
+        app.xdo(&["key", "F2"]);
+        let s = app.wait_frames(3);
+        check_layout(&s, &format!("{file}, scale 2"), 2.0, window);
+        // Opened at the projector's scale, the dock still fits.
+        app.click(widget(&s, "tab_speeds", 0.5));
+        let s = app.wait_frames(3);
+        assert_eq!(s["ui"]["dock_expanded"], true, "{file}");
+        check_layout(&s, &format!("{file}, scale 2, Speeds"), 2.0, window);
         app.quit();
     }
 }

@@ -73,6 +73,19 @@ impl Default for Overlays {
     }
 }
 
+/// Whether spin is worth showing: a disc spins, or the laws can make one
+/// spin (a roughness β above −1 between discs or at the walls, or friction,
+/// which rubs resting discs). Only then do discs carry their spin line and
+/// the readouts, the Discs table, the top bar and the Speeds tab their spin
+/// values, so the smooth presets look as they always did.
+pub fn spin_shown(world: &World) -> bool {
+    let laws = &world.laws;
+    laws.tangential_restitution > -1.0
+        || laws.wall_tangential_restitution > -1.0
+        || laws.friction.is_some()
+        || world.particles.iter().any(|p| p.spin != 0.0)
+}
+
 /// How the world is drawn this frame: the theme's colours and the UI scale
 /// (line widths and text grow with it).
 #[derive(Clone, Copy, Debug)]
@@ -153,8 +166,9 @@ fn dashed_line(from: Vec2, to: Vec2, dash: f32, width: f32, color: Color) {
     }
 }
 
-/// Every disc in one instanced draw call (see [`super::discs`]), with a ring
-/// round the selected one.
+/// Every disc in one instanced draw call (see [`super::discs`]), each with
+/// its spin line when spin is shown ([`spin_shown`]), and a ring round the
+/// selected one.
 pub fn draw_discs(
     world: &World,
     camera: &Camera,
@@ -171,6 +185,7 @@ pub fn draw_discs(
         }
     };
     discs::instances(world, camera, disc_color, &mut batch.instances);
+    batch.spin_line = if spin_shown(world) { look.scale } else { 0.0 };
     batch.draw();
     let Some(p) = selected.and_then(|i| world.particles.get(i)) else {
         return;

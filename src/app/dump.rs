@@ -82,8 +82,15 @@ pub struct StateDump<'a> {
     /// Autosave: the recovery file, saves written, the last failure, and
     /// whether an earlier session is being offered.
     pub recovery: RecoveryDump,
-    /// Totals.
+    /// Totals (`kinetic_energy` of moving, `rotational_energy` of turning,
+    /// `angular_momentum` about the origin).
     pub metrics: Metrics,
+    /// Kinetic energy of moving and turning plus gravitational potential
+    /// energy (J), as the top bar's total says.
+    pub total_energy: f64,
+    /// Whether spin is shown: spin lines on the discs, spin values in the
+    /// readouts, the Discs table and the top bar.
+    pub spin_shown: bool,
     /// Every disc.
     pub particles: &'a [Particle],
 }
@@ -199,6 +206,8 @@ impl<'a> StateDump<'a> {
             timing: Default::default(),
             recovery: RecoveryDump::default(),
             metrics: world.metrics(),
+            total_energy: world.total_energy(),
+            spin_shown: super::draw::spin_shown(world),
             particles: &world.particles,
         }
     }

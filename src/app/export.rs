@@ -11,12 +11,19 @@ use std::path::{Path, PathBuf};
 
 /// The totals against time.
 pub fn totals_csv(samples: &[Sample]) -> String {
-    let mut out = String::from("time_s,px_kg_m_s,py_kg_m_s,kinetic_energy_j\n");
+    let mut out = String::from(
+        "time_s,px_kg_m_s,py_kg_m_s,kinetic_energy_j,rotational_energy_j,angular_momentum_kg_m2_s\n",
+    );
     for s in samples {
         let _ = writeln!(
             out,
-            "{},{},{},{}",
-            s.time, s.momentum.x, s.momentum.y, s.kinetic_energy
+            "{},{},{},{},{},{}",
+            s.time,
+            s.momentum.x,
+            s.momentum.y,
+            s.kinetic_energy,
+            s.rotational_energy,
+            s.angular_momentum
         );
     }
     out

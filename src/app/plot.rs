@@ -1,6 +1,7 @@
 //! The data behind the bottom dock's plots, kept apart from drawing: the
-//! recent totals (momentum components and kinetic energy against time, with
-//! their drift) and the speed histogram against Maxwell–Boltzmann.
+//! recent totals (momentum, angular momentum and the energies of moving and
+//! of turning against time, with their drift), the speed histogram against
+//! Maxwell–Boltzmann, and the rim speeds |ω|·r beside it.
 
 use glam::DVec2;
 use impulse::{Metrics, World};
@@ -22,8 +23,29 @@ pub struct Sample {
     pub time: f64,
     /// Total momentum (kg·m/s).
     pub momentum: DVec2,
-    /// Total kinetic energy (J).
+    /// Total kinetic energy of translation (J).
     pub kinetic_energy: f64,
+    /// Total kinetic energy of rotation (J).
+    pub rotational_energy: f64,
+    /// Total angular momentum about the origin (kg·m²/s).
+    pub angular_momentum: f64,
+}
+
+impl Sample {
+    /// Kinetic energy of moving and of turning together (J).
+    pub fn energy(&self) -> f64 {
+        self.kinetic_energy + self.rotational_energy
+    }
+
+    /// The share of that energy in turning (0 to 1; 0 with no energy).
+    pub fn rotation_share(&self) -> f64 {
+        let e = self.energy();
+        if e > 0.0 {
+            self.rotational_energy / e
+        } else {
+            0.0
+        }
+    }
 }
 
 /// The recent totals, and the values they started from.
@@ -48,6 +70,8 @@ impl Totals {
             time,
             momentum: metrics.momentum,
             kinetic_energy: metrics.kinetic_energy,
+            rotational_energy: metrics.rotational_energy,
+            angular_momentum: metrics.angular_momentum,
         };
         while self.samples.back().is_some_and(|s| s.time > sample.time) {
             self.samples.pop_back();
@@ -74,8 +98,9 @@ impl Totals {
         self.first = None;
     }
 
-    /// Drift since recording began: (|Δp| / Σm|v|, ΔKE / KE₀), or `None`
-    /// with nothing recorded. A zero scale gives zero drift.
+    /// Drift since recording began: (|Δp| / Σm|v|, ΔE / E₀) with E the
+    /// kinetic energy of moving and turning, or `None` with nothing
+    /// recorded. A zero scale gives zero drift.
     pub fn drift(&self) -> Option<(f64, f64)> {
         let (first, last) = (self.first?, *self.samples.back()?);
         let relative = |change: f64, scale: f64| if scale > 0.0 { change / scale } else { 0.0 };
@@ -84,10 +109,7 @@ impl Totals {
                 (last.momentum - first.momentum).length(),
                 self.momentum_scale,
             ),
-            relative(
-                last.kinetic_energy - first.kinetic_energy,
-                first.kinetic_energy,
-            ),
+            relative(last.energy() - first.energy(), first.energy()),
         ))
     }
 
@@ -115,6 +137,46 @@ pub struct SpeedHistogram {
 
 /// Speed bins of the histogram.
 pub const BINS: usize = 20;
+
+/// The discs' rim speeds |ω|·r, on the speed histogram's bins, and where
+/// they settle when the energy is shared equally among the two ways of
+/// moving and the one of turning: ω is then normal with variance kT/I, so
+/// for a uniform disc (I = ½·m·r²) the rim speed is half-normal with
+/// variance 2σ², f(u) = exp(−u²/4σ²) / (σ·√π).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RimHistogram {
+    /// Share of the discs per m/s in each bin (the speed histogram's bins).
+    pub density: Vec<f64>,
+    /// σ² of the speed histogram (m²/s²).
+    pub sigma2: f64,
+}
+
+impl RimHistogram {
+    /// The rim speeds of `world` on `speeds`' bins.
+    pub fn of(world: &World, speeds: &SpeedHistogram) -> Self {
+        let n = world.particles.len().max(1);
+        let mut counts = [0usize; BINS];
+        for p in &world.particles {
+            let k = (p.spin.abs() * p.radius / speeds.bin_width) as usize;
+            if k < BINS {
+                counts[k] += 1;
+            }
+        }
+        let density = counts
+            .iter()
+            .map(|&c| c as f64 / (n as f64 * speeds.bin_width))
+            .collect();
+        RimHistogram {
+            density,
+            sigma2: speeds.sigma2,
+        }
+    }
+
+    /// The equal-sharing law's density at rim speed `u` (per m/s).
+    pub fn law(&self, u: f64) -> f64 {
+        (-u * u / (4.0 * self.sigma2)).exp() / (self.sigma2 * std::f64::consts::PI).sqrt()
+    }
+}
 
 impl SpeedHistogram {
     /// The histogram of `world`'s speeds up to 4σ, or `None` for fewer than
@@ -205,5 +267,29 @@ mod tests {
         }
         assert!((integral - 1.0).abs() < 1e-6, "{integral}");
         assert!((h.kt - world.metrics().kinetic_energy / n).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rim_speeds_share_the_bins_and_their_law_integrates_to_one() {
+        let mut world = Gas {
+            count: 100,
+            ..Gas::default()
+        }
+        .build();
+        let speeds = SpeedHistogram::of(&world).unwrap();
+        // Half the discs turn their rims at 1.5 bins' width, half at 5.5
+        // (backwards): bins 1 and 5, half the discs each.
+        let w = speeds.bin_width;
+        for (k, p) in world.particles.iter_mut().enumerate() {
+            p.spin = if k % 2 == 0 { 1.5 * w } else { -5.5 * w } / p.radius;
+        }
+        let rims = RimHistogram::of(&world, &speeds);
+        let share = |k: usize| rims.density[k] * w;
+        assert!((share(1) - 0.5).abs() < 1e-12 && (share(5) - 0.5).abs() < 1e-12);
+        let (mut integral, du) = (0.0, 1e-3 * speeds.sigma2.sqrt());
+        for k in 0..40_000 {
+            integral += rims.law((k as f64 + 0.5) * du) * du;
+        }
+        assert!((integral - 1.0).abs() < 1e-6, "{integral}");
     }
 }

@@ -1,4 +1,5 @@
-//! Text in the world: the per-disc readouts (v, |v|, p, m, KE) and the
+//! Text in the world: the per-disc readouts (v, |v|, p, m, KE; when spin
+//! is shown also the spin ω, rotational KE and angular momentum L) and the
 //! launch preview's speed, in the bundled DejaVu Sans (it has π, °, ² and
 //! the middle dot of kg·m/s). A readout goes where it covers no disc, no
 //! arrow and no other readout ([`super::cull::place_label`]): the selected
@@ -9,7 +10,7 @@ use super::camera::Camera;
 use super::cull::{
     circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
 };
-use super::draw::{color, Look, Overlays, ReadoutScope, ARROW_SECONDS};
+use super::draw::{color, spin_shown, Look, Overlays, ReadoutScope, ARROW_SECONDS};
 use super::ui::numbers::{vector, with_unit};
 use super::ui::theme::MIN_TEXT_POINTS;
 use glam::DVec2;
@@ -75,10 +76,11 @@ impl WorldText {
     }
 }
 
-/// Readout lines for one disc.
-pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
+/// Readout lines for one disc; with `spin`, two more: its spin and
+/// rotational KE, and its angular momentum about the origin.
+pub fn readout_lines(p: &impulse::Particle, spin: bool) -> Vec<String> {
     let v = p.vel;
-    [
+    let mut lines = vec![
         format!(
             "v = {}   |v| = {}",
             vector(v, 2, "m/s"),
@@ -90,14 +92,26 @@ pub fn readout_lines(p: &impulse::Particle) -> [String; 3] {
             with_unit(p.mass, 3, "kg"),
             with_unit(p.kinetic_energy(), 3, "J")
         ),
-    ]
+    ];
+    if spin {
+        lines.push(format!(
+            "spin ω = {}   rotational KE = {}",
+            with_unit(p.spin, 2, "rad/s"),
+            with_unit(p.rotational_energy(), 3, "J")
+        ));
+        lines.push(format!(
+            "angular momentum about (0, 0): L = {}",
+            with_unit(p.angular_momentum(), 3, "kg·m²/s")
+        ));
+    }
+    lines
 }
 
 /// One placed label.
 struct Label {
     rect: [f64; 4],
     leader: Option<(DVec2, DVec2)>,
-    lines: [String; 3],
+    lines: Vec<String>,
 }
 
 /// What labels must keep clear of: every disc on screen and every arrow drawn.
@@ -158,7 +172,9 @@ pub fn draw_readouts(
     let size = MIN_TEXT_POINTS * look.scale;
     let pad = 0.35 * size;
     let line_height = 1.25 * size;
-    let height = f64::from(3.0 * line_height + 2.0 * pad);
+    let spin = spin_shown(world);
+    let rows = if spin { 5.0 } else { 3.0 };
+    let height = f64::from(rows * line_height + 2.0 * pad);
     let typical = DVec2::new(f64::from(22.0 * size), height);
     let Some(obstacles) = obstacles(world, camera, overlays, look, typical.y) else {
         return;
@@ -182,7 +198,7 @@ pub fn draw_readouts(
         {
             continue;
         }
-        let lines = readout_lines(p);
+        let lines = readout_lines(p, spin);
         let width = lines
             .iter()
             .map(|l| text.measure(l, size).x)

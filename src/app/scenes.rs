@@ -32,8 +32,9 @@ macro_rules! preset {
 }
 
 /// The presets, in menu order: the digit keys' ten, the π blocks at their
-/// other mass ratios (menu only), and the empty box last (Ctrl+N).
-pub const PRESETS: [Preset; 14] = [
+/// other mass ratios and the rough discs (menu only), and the empty box
+/// last (Ctrl+N).
+pub const PRESETS: [Preset; 16] = [
     preset!("1", PRESET_1_HEAD_ON),
     preset!("2", PRESET_2_HEAVY_HITS_LIGHT),
     preset!("3", PRESET_3_LIGHT_HITS_HEAVY),
@@ -47,6 +48,8 @@ pub const PRESETS: [Preset; 14] = [
     preset!("", PI_BLOCKS_1),
     preset!("", PI_BLOCKS_10000),
     preset!("", PI_BLOCKS_1000000),
+    preset!("", PRESET_SPIN_OFF_A_WALL),
+    preset!("", PRESET_ROUGH_GAS),
     preset!("Ctrl+N", PRESET_EMPTY),
 ];
 
@@ -136,13 +139,20 @@ impl App {
         let Some(preset) = PRESETS.get(index) else {
             return;
         };
-        // The gas preset is about the speed distribution: show it.
+        // The gas presets are about the speed distribution: show it.
         if preset.path.contains("gas") {
             self.ui.tab = super::ui::DockTab::Speeds;
         }
         match Scene::parse(preset.text, preset.path) {
             Ok(scene) => {
-                let _ = self.open_scene(scene, preset.path.to_string()); // reported
+                if self.open_scene(scene, preset.path.to_string()).is_ok()
+                    && preset.path == impulse::catalogue::PRESET_SPIN_OFF_A_WALL.path
+                {
+                    // The spin preset is about the angle and the spin: its
+                    // disc's path traced, its values (ω among them) beside it.
+                    self.trails.on = true;
+                    self.selected = Some(0);
+                }
             }
             Err(e) => self.report(format!("Cannot open {}: {e}", preset.path)),
         }

@@ -53,6 +53,10 @@ pub const PRESET_8_GAS: SceneFile = scene_file!("preset-8-gas.toml");
 pub const PRESET_9_BILLIARDS: SceneFile = scene_file!("preset-9-billiards.toml");
 /// `assets/scenes/preset-empty.toml`.
 pub const PRESET_EMPTY: SceneFile = scene_file!("preset-empty.toml");
+/// `assets/scenes/preset-rough-gas.toml`.
+pub const PRESET_ROUGH_GAS: SceneFile = scene_file!("preset-rough-gas.toml");
+/// `assets/scenes/preset-spin-off-a-wall.toml`.
+pub const PRESET_SPIN_OFF_A_WALL: SceneFile = scene_file!("preset-spin-off-a-wall.toml");
 /// `assets/scenes/stress-bullet.toml`.
 pub const STRESS_BULLET: SceneFile = scene_file!("stress-bullet.toml");
 /// `assets/scenes/stress-collapse.toml`.
@@ -85,7 +89,7 @@ pub const STRESS_ROUGH: SceneFile = scene_file!("stress-rough.toml");
 pub const STRESS_THREE_DISCS: SceneFile = scene_file!("stress-three-discs.toml");
 
 /// Every shipped scene file, in file-name order.
-pub const ALL: [SceneFile; 31] = [
+pub const ALL: [SceneFile; 33] = [
     DEFAULT,
     EMPTY,
     PI_BLOCKS_1,
@@ -102,6 +106,8 @@ pub const ALL: [SceneFile; 31] = [
     PRESET_8_GAS,
     PRESET_9_BILLIARDS,
     PRESET_EMPTY,
+    PRESET_ROUGH_GAS,
+    PRESET_SPIN_OFF_A_WALL,
     STRESS_BULLET,
     STRESS_COLLAPSE,
     STRESS_CORNER,

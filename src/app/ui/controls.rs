@@ -257,6 +257,7 @@ impl App {
             "wall_restitution",
             &r.on_hover_text("W / Shift+W: ±0.1"),
         );
+        self.roughness_sliders(ui);
         // The slider shows |g| and sets it pointing down; a scene's sideways
         // gravity is only replaced once the slider is moved.
         let w = &mut self.world;
@@ -296,6 +297,71 @@ impl App {
                     }
                 }
             });
+    }
+
+    /// Roughness β between discs and at the walls, and friction μ (off:
+    /// no limit), beside restitution; changes are undone like restitution's.
+    fn roughness_sliders(&mut self, ui: &mut Ui) {
+        const ROUGH: &str = "How the touching edges grip in a collision: −1 smooth \
+            (no spin given or taken), 0 their slipping stops, 1 perfectly rough (the \
+            slipping reverses and no energy is lost)";
+        let w = &mut self.world;
+        let mut beta = w.laws.tangential_restitution;
+        let (r, changed) = slider(
+            ui,
+            "Roughness β between discs (−1 smooth … 1 rough)",
+            &mut beta,
+            -1.0..=1.0,
+            false,
+            2,
+            "",
+        );
+        if changed {
+            w.laws.tangential_restitution = (beta * 100.0).round() / 100.0;
+        }
+        self.widget(ui, "tangential_restitution", &r.on_hover_text(ROUGH));
+        let w = &mut self.world;
+        let mut beta = w.laws.wall_tangential_restitution;
+        let (r, changed) = slider(
+            ui,
+            "Roughness β at the walls",
+            &mut beta,
+            -1.0..=1.0,
+            false,
+            2,
+            "",
+        );
+        if changed {
+            w.laws.wall_tangential_restitution = (beta * 100.0).round() / 100.0;
+        }
+        self.widget(ui, "wall_tangential_restitution", &r.on_hover_text(ROUGH));
+        // μ is off (no limit) or a number: a tick turns it on at the
+        // slider's value, which is kept while it is off.
+        let w = &mut self.world;
+        let mut on = w.laws.friction.is_some();
+        let r = ui
+            .checkbox(&mut on, "Friction μ limits the grip")
+            .on_hover_text(
+                "Coulomb friction: the sideways push at a contact is at most μ times the \
+                 head-on push, so fast slipping is only slowed; it also makes discs \
+                 lying on each other rub. Off: no limit.",
+            );
+        self.widget(ui, "friction_on", &r);
+        if r.changed() {
+            self.world.laws.friction = on.then_some(self.ui.friction);
+        }
+        let mut mu = self.world.laws.friction.unwrap_or(self.ui.friction);
+        let (r, changed) = ui
+            .add_enabled_ui(on, |ui| {
+                slider(ui, "Friction μ", &mut mu, 0.0..=2.0, false, 2, "")
+            })
+            .inner;
+        if changed && on {
+            let mu = (mu * 100.0).round() / 100.0;
+            self.ui.friction = mu;
+            self.world.laws.friction = Some(mu);
+        }
+        self.widget(ui, "friction", &r);
     }
 
     fn show_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {

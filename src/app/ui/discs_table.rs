@@ -1,5 +1,6 @@
 //! The Discs tab: every disc's mass, position, velocity, speed, momentum and
-//! kinetic energy in a table (like PhET's "more data"), with the mass and
+//! kinetic energy in a table (like PhET's "more data"; when spin is shown
+//! also its spin ω, rotational KE and angular momentum L), with the mass and
 //! the velocity editable in place. An edit is checked before it touches the
 //! disc ([`parse_disc_edit`]); a bad one keeps the disc as it was and says
 //! why above the table, where it is seen without scrolling.
@@ -139,6 +140,23 @@ pub struct TableState {
     pub note: Option<Note>,
 }
 
+/// The spin columns' headings, with units on a second line, and what they
+/// mean.
+const SPIN_HEADINGS: [(&str, &str); 3] = [
+    (
+        "spin ω\n(rad/s)",
+        "how fast the disc turns: radians per second, anticlockwise positive",
+    ),
+    (
+        "rotational\nKE (J)",
+        "the energy of its turning, ½·I·ω² with I = ½·m·r²",
+    ),
+    (
+        "L\n(kg·m²/s)",
+        "angular momentum about the corner (0, 0): m·(x·v_y − y·v_x) of its moving plus I·ω of its turning",
+    ),
+];
+
 /// Column headings, with units.
 const HEADINGS: [&str; 9] = [
     "disc",
@@ -179,101 +197,144 @@ impl App {
         let selected = self.selected;
         let mut select = None;
         let mut focused = false;
-        TableBuilder::new(ui)
-            .id_salt("discs_table")
-            .striped(true)
-            .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
-            .column(Column::auto().at_least(60.0))
-            .columns(Column::auto().at_least(90.0), 8)
-            .header(row_height, |mut header| {
-                for h in HEADINGS {
-                    header.col(|ui| {
-                        ui.strong(h);
-                    });
-                }
-            })
-            .body(|body| {
-                body.rows(row_height, particles.len(), |mut row| {
-                    let i = row.index();
-                    let p = &particles[i];
-                    row.set_selected(selected == Some(i));
-                    row.col(|ui| {
-                        let c = p.color;
-                        let (rect, _) =
-                            ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-                        ui.painter().circle_filled(
-                            rect.center(),
-                            7.0,
-                            Color32::from_rgb(c.r, c.g, c.b),
-                        );
-                        if ui
-                            .selectable_label(selected == Some(i), format!("{i}"))
-                            .clicked()
-                        {
-                            select = Some(i);
+        let spin = crate::app::draw::spin_shown(&self.world);
+        let spin_columns = if spin { SPIN_HEADINGS.len() } else { 0 };
+        // With the spin columns, narrower ones (units under the names), so
+        // that all twelve fit the dock of a 1280-pixel window.
+        let (column_width, cell_width, header_height) = if spin {
+            (64.0, 62.0, 2.0 * row_height)
+        } else {
+            (90.0, 84.0, row_height)
+        };
+        // Wider than the dock with the spin columns: it scrolls sideways
+        // then (only then, as its bar would lie over the last row). The rows
+        // scroll within the dock's height, with room for two of them at
+        // least: the table's own least height (200 points) grew a short dock
+        // over the world when there were many discs.
+        let height = ui.available_height();
+        let two_rows = 2.0 * (row_height + ui.spacing().item_spacing.y);
+        egui::ScrollArea::horizontal()
+            .id_salt("discs_table_scroll")
+            .enable_scrolling(spin)
+            .show(ui, |ui| {
+                TableBuilder::new(ui)
+                    .id_salt("discs_table")
+                    .min_scrolled_height(two_rows)
+                    .max_scroll_height((height - header_height).max(two_rows))
+                    .striped(true)
+                    .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
+                    .column(Column::auto().at_least(60.0))
+                    .columns(Column::auto().at_least(column_width), 8 + spin_columns)
+                    .header(header_height, |mut header| {
+                        for h in HEADINGS {
+                            let h = if spin {
+                                h.replacen(" (", "\n(", 1)
+                            } else {
+                                h.to_string()
+                            };
+                            header.col(|ui| {
+                                ui.strong(h);
+                            });
                         }
-                    });
-                    let values = [
-                        p.mass,
-                        p.pos.x,
-                        p.pos.y,
-                        p.vel.x,
-                        p.vel.y,
-                        p.vel.length(),
-                        p.momentum().length(),
-                        p.kinetic_energy(),
-                    ];
-                    for (column, value) in values.into_iter().enumerate() {
-                        // Editable: mass (column 0), v_x (3), v_y (4).
-                        let field_index = match column {
-                            0 => Some(0),
-                            3 => Some(2),
-                            4 => Some(3),
-                            _ => None,
-                        };
-                        row.col(|ui| match field_index {
-                            None => {
-                                ui.label(plain(value, 3));
-                            }
-                            Some(f) => {
-                                let mine = editing
-                                    .as_ref()
-                                    .is_some_and(|e| e.disc == i && e.field == f);
-                                let mut shown = plain(value, 3).replace('−', "-");
-                                let text = if mine { &mut edit_text } else { &mut shown };
-                                let bad =
-                                    mine && self.ui.table.note.as_ref().is_some_and(|n| n.error);
-                                let mut edit = egui::TextEdit::singleline(text).desired_width(84.0);
-                                if bad {
-                                    edit = edit.text_color(Color32::from_rgb(220, 40, 30));
+                        for (h, meaning) in &SPIN_HEADINGS[..spin_columns] {
+                            header.col(|ui| {
+                                ui.strong(*h).on_hover_text(*meaning);
+                            });
+                        }
+                    })
+                    .body(|body| {
+                        body.rows(row_height, particles.len(), |mut row| {
+                            let i = row.index();
+                            let p = &particles[i];
+                            row.set_selected(selected == Some(i));
+                            row.col(|ui| {
+                                let c = p.color;
+                                let (rect, _) = ui.allocate_exact_size(
+                                    egui::vec2(14.0, 14.0),
+                                    egui::Sense::hover(),
+                                );
+                                ui.painter().circle_filled(
+                                    rect.center(),
+                                    7.0,
+                                    Color32::from_rgb(c.r, c.g, c.b),
+                                );
+                                if ui
+                                    .selectable_label(selected == Some(i), format!("{i}"))
+                                    .clicked()
+                                {
+                                    select = Some(i);
                                 }
-                                let r = ui.add(edit);
-                                select_all_on_focus(ui, &r, text);
-                                focused |= r.has_focus();
-                                let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
-                                cells.push((format!("{name}_{i}"), r.rect));
-                                if r.changed() && !mine {
-                                    start = Some(CellEdit {
-                                        disc: i,
-                                        field: f,
-                                        text: text.clone(),
-                                    });
-                                }
-                                if r.lost_focus() {
-                                    if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
-                                        cancel = true;
-                                    } else if mine || r.changed() {
-                                        commit = Some(CellEdit {
-                                            disc: i,
-                                            field: f,
-                                            text: text.clone(),
-                                        });
+                            });
+                            let values = [
+                                p.mass,
+                                p.pos.x,
+                                p.pos.y,
+                                p.vel.x,
+                                p.vel.y,
+                                p.vel.length(),
+                                p.momentum().length(),
+                                p.kinetic_energy(),
+                            ];
+                            for (column, value) in values.into_iter().enumerate() {
+                                // Editable: mass (column 0), v_x (3), v_y (4).
+                                let field_index = match column {
+                                    0 => Some(0),
+                                    3 => Some(2),
+                                    4 => Some(3),
+                                    _ => None,
+                                };
+                                row.col(|ui| match field_index {
+                                    None => {
+                                        ui.label(plain(value, 3));
                                     }
+                                    Some(f) => {
+                                        let mine = editing
+                                            .as_ref()
+                                            .is_some_and(|e| e.disc == i && e.field == f);
+                                        let mut shown = plain(value, 3).replace('−', "-");
+                                        let text = if mine { &mut edit_text } else { &mut shown };
+                                        let bad = mine
+                                            && self.ui.table.note.as_ref().is_some_and(|n| n.error);
+                                        let mut edit = egui::TextEdit::singleline(text)
+                                            .desired_width(cell_width);
+                                        if bad {
+                                            edit = edit.text_color(Color32::from_rgb(220, 40, 30));
+                                        }
+                                        let r = ui.add(edit);
+                                        select_all_on_focus(ui, &r, text);
+                                        focused |= r.has_focus();
+                                        let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
+                                        cells.push((format!("{name}_{i}"), r.rect));
+                                        if r.changed() && !mine {
+                                            start = Some(CellEdit {
+                                                disc: i,
+                                                field: f,
+                                                text: text.clone(),
+                                            });
+                                        }
+                                        if r.lost_focus() {
+                                            if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
+                                                cancel = true;
+                                            } else if mine || r.changed() {
+                                                commit = Some(CellEdit {
+                                                    disc: i,
+                                                    field: f,
+                                                    text: text.clone(),
+                                                });
+                                            }
+                                        }
+                                    }
+                                });
+                            }
+                            if spin {
+                                for value in [p.spin, p.rotational_energy(), p.angular_momentum()] {
+                                    row.col(|ui| {
+                                        ui.label(plain(value, 3));
+                                    });
                                 }
                             }
                         });
-                    }
-                });
+                    });
             });
         self.ui.text_focus |= focused;
         for (name, rect) in cells {

@@ -1,21 +1,29 @@
 //! The bottom dock: a strip of tabs and the chosen one below it. *Totals*
-//! plots p_x, p_y and KE against time; *Collisions* is the ledger;
+//! plots p_x, p_y, the angular momentum L and KE against time (with spin
+//! shown also the rotational KE and their sum); *Collisions* is the ledger;
 //! *Discs* the table of every disc ([`super::discs_table`]); *Speeds* the
-//! histogram against Maxwell–Boltzmann; *Momenta* every disc's momentum tip
-//! to tail and their sum. At the projector's scale it starts folded to its
-//! tab strip.
+//! histogram against Maxwell–Boltzmann (with spin shown also the rim
+//! speeds |ω|·r, and the shares of the energy in moving and turning over
+//! time); *Momenta* every disc's momentum tip to tail and their sum. At the
+//! projector's scale it starts folded to its tab strip.
 
 use super::numbers::{plain, vector, with_unit};
 use super::DockTab;
-use crate::app::plot::{SpeedHistogram, DIAGRAM_MAX_DISCS};
+use crate::app::draw::spin_shown;
+use crate::app::plot::{RimHistogram, SpeedHistogram, DIAGRAM_MAX_DISCS};
 use crate::app::App;
 use egui::{Color32, RichText};
-use egui_plot::{Arrows, Bar, BarChart, Corner, Legend, Line, Plot, PlotPoints, Points};
+use egui_plot::{
+    Arrows, Bar, BarChart, Corner, HLine, Legend, Line, LineStyle, Plot, PlotPoints, Points,
+};
 
 /// Colours of the plotted totals (Okabe–Ito).
 const PX_COLOR: Color32 = Color32::from_rgb(86, 180, 233); // sky blue
 const PY_COLOR: Color32 = Color32::from_rgb(230, 159, 0); // orange
 const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
+const ROT_COLOR: Color32 = Color32::from_rgb(213, 94, 0); // vermillion
+const L_COLOR: Color32 = Color32::from_rgb(204, 121, 167); // reddish purple
+const RIM_COLOR: Color32 = L_COLOR;
 /// Below this height (points) a plot has no room for its legend box.
 const COMPACT_PLOT_HEIGHT: f32 = 110.0;
 
@@ -86,24 +94,51 @@ impl App {
 
     fn totals_tab(&mut self, ui: &mut egui::Ui) {
         let samples: Vec<_> = self.totals.samples().copied().collect();
-        let drift = match (self.totals.drift(), samples.first(), samples.last()) {
-            (Some(_), Some(a), Some(b)) => format!(
-                "change since {}: momentum {}, kinetic energy {}",
-                with_unit(a.time, 2, "s"),
-                vector(b.momentum - a.momentum, 3, "kg·m/s"),
-                with_unit(b.kinetic_energy - a.kinetic_energy, 3, "J")
-            ),
-            _ => "No record yet: run the simulation.".to_string(),
-        };
+        let spin = spin_shown(&self.world);
         // A short dock (a laptop's browser) leaves the plots too low for a
         // legend box inside them, which then covered the line above: the
         // series are named in coloured words beside it instead (p in
-        // kg·m/s, KE in J, as the line says).
+        // kg·m/s, L in kg·m²/s, energies in J, as the line says), and the
+        // line is put in symbols, so that both fit on one line.
         let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
+        let energy_name = match (compact, spin) {
+            (true, _) => "ΔE",
+            (false, true) => "energy",
+            (false, false) => "kinetic energy",
+        };
+        let (p_name, l_name) = if compact {
+            ("Δp", "ΔL")
+        } else {
+            ("momentum", "angular momentum L")
+        };
+        let drift = match (self.totals.drift(), samples.first(), samples.last()) {
+            (Some(_), Some(a), Some(b)) => format!(
+                "change since {}: {p_name} {}, {l_name} {}, {energy_name} {}",
+                with_unit(a.time, 2, "s"),
+                vector(b.momentum - a.momentum, 3, "kg·m/s"),
+                with_unit(b.angular_momentum - a.angular_momentum, 3, "kg·m²/s"),
+                with_unit(b.energy() - a.energy(), 3, "J")
+            ),
+            _ => "No record yet: run the simulation.".to_string(),
+        };
+        let total_color = ui.visuals().strong_text_color();
+        // Each energy plotted: its name in the legend, in the compact line
+        // of names, and its colour.
+        let mut energies = vec![("KE", "KE", KE_COLOR)];
+        if spin {
+            energies.push(("rotational KE", "rotational KE", ROT_COLOR));
+            energies.push(("KE + rotational KE", "sum", total_color));
+        }
         ui.horizontal_wrapped(|ui| {
-            ui.label(drift);
+            ui.label(drift).on_hover_text(
+                "p: momentum. L: angular momentum about the corner (0, 0) of the box; \
+                 collisions between discs keep it, a wall's push can change it. \
+                 E: kinetic energy, with spin KE + rotational KE.",
+            );
             if compact {
-                for (name, color) in [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("KE", KE_COLOR)] {
+                let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
+                let short = energies.iter().map(|&(_, name, color)| (name, color));
+                for (name, color) in names.into_iter().chain(short) {
                     ui.label(RichText::new(format!("— {name}")).color(color).strong());
                 }
             }
@@ -113,12 +148,17 @@ impl App {
         let series = |value: fn(&crate::app::plot::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
         };
-        let (px, py, ke) = (
+        let (px, py, l) = (
             series(|s| s.momentum.x),
             series(|s| s.momentum.y),
-            series(|s| s.kinetic_energy),
+            series(|s| s.angular_momentum),
         );
-        ui.columns(2, |columns| {
+        let energy_series = [
+            series(|s| s.kinetic_energy),
+            series(|s| s.rotational_energy),
+            series(|s| s.energy()),
+        ];
+        ui.columns(3, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
             let plot = still_plot("momentum_plot").height(height);
             let plot = match legend(Corner::RightBottom) {
@@ -147,26 +187,54 @@ impl App {
                             .width(2.5),
                     );
                 });
-            let (lo, hi) = padded_range(ke.iter().map(|p| p[1]));
+            let (lo, hi) = padded_range(l.iter().map(|p| p[1]));
+            let plot = still_plot("angular_momentum_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
+                .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
+                .include_y(lo)
+                .include_y(hi)
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} kg·m²/s", plain(v.x, 2), plain(v.y, 3))
+                })
+                .show(&mut columns[1], |plot| {
+                    plot.line(
+                        Line::new(PlotPoints::from(l))
+                            .name("L")
+                            .color(L_COLOR)
+                            .width(2.5),
+                    );
+                });
+            let shown = &energy_series[..energies.len()];
+            let (lo, hi) = padded_range(shown.iter().flatten().map(|p| p[1]));
             let plot = still_plot("energy_plot").height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
             plot.x_axis_label("time (s)")
-                .y_axis_label(if compact { "" } else { "KE (J)" })
+                .y_axis_label(match (compact, spin) {
+                    (true, _) => "",
+                    (false, true) => "energy (J)",
+                    (false, false) => "KE (J)",
+                })
                 .include_y(lo)
                 .include_y(hi)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
                 })
-                .show(&mut columns[1], |plot| {
-                    plot.line(
-                        Line::new(PlotPoints::from(ke))
-                            .name("KE")
-                            .color(KE_COLOR)
-                            .width(2.5),
-                    );
+                .show(&mut columns[2], |plot| {
+                    for ((name, _, color), points) in energies.iter().zip(shown) {
+                        plot.line(
+                            Line::new(PlotPoints::from(points.clone()))
+                                .name(*name)
+                                .color(*color)
+                                .width(2.5),
+                        );
+                    }
                 });
         });
     }
@@ -274,37 +342,90 @@ impl App {
             ui.label("Too few moving discs for a distribution: try preset 8, a gas.");
             return;
         };
-        ui.label(format!(
-            "Bars: the discs' speeds. Curve: Maxwell–Boltzmann at the same temperature, kT = KE/N = {}.",
-            with_unit(h.kt, 3, "J")
-        ));
-        let bars: Vec<Bar> = h
-            .density
-            .iter()
-            .enumerate()
-            .map(|(k, &d)| Bar::new((k as f64 + 0.5) * h.bin_width, d).width(h.bin_width * 0.9))
-            .collect();
-        let top = h.bin_width * h.density.len() as f64;
-        let law: Vec<[f64; 2]> = (0..=200)
-            .map(|k| top * k as f64 / 200.0)
-            .map(|v| [v, h.law(v)])
-            .collect();
-        still_plot("speeds_plot")
-            .height(ui.available_height())
-            .legend(Legend::default().position(Corner::RightTop))
-            .x_axis_label("speed (m/s)")
-            .y_axis_label("per m/s")
-            .include_y(0.0)
-            .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
-            .show(ui, |plot| {
-                plot.bar_chart(BarChart::new(bars).name("discs").color(PX_COLOR));
-                plot.line(
-                    Line::new(PlotPoints::from(law))
-                        .name("Maxwell–Boltzmann")
-                        .color(PY_COLOR)
-                        .width(3.0),
+        if !spin_shown(&self.world) {
+            ui.label(format!(
+                "Bars: the discs' speeds. Curve: Maxwell–Boltzmann at the same temperature, kT = KE/N = {}.",
+                with_unit(h.kt, 3, "J")
+            ));
+            let height = ui.available_height();
+            speed_plot(ui, &h, None, height, true);
+            return;
+        }
+        // Rough discs: the rim speeds beside the speeds, and how the energy
+        // is shared between moving and turning. Each plot is named by a
+        // line of coloured words above it, not a legend box, which in a
+        // short dock covered the bars.
+        let rims = RimHistogram::of(&self.world, &h);
+        let samples: Vec<_> = self.totals.samples().copied().collect();
+        let kt = with_unit(h.kt, 3, "J");
+        ui.columns(2, |columns| {
+            let ui = &mut columns[0];
+            ui.horizontal_wrapped(|ui| {
+                // Each name stays whole; a narrow column moves it down.
+                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+                let meaning = format!(
+                    "Bars: how many discs move (or turn their edge) at each speed, per m/s. \
+                     Curves: where they settle when the energy is shared equally, at the \
+                     temperature kT = KE/N = {kt}: Maxwell–Boltzmann for the speeds (solid), \
+                     and for the rim speeds (dashed)."
+                );
+                named(ui, "■ speeds |v|", PX_COLOR).on_hover_text(&meaning);
+                named(ui, "■ rim speeds |ω|·r", RIM_COLOR).on_hover_text(&meaning);
+            });
+            let height = ui.available_height();
+            speed_plot(ui, &h, Some(&rims), height, false);
+            let ui = &mut columns[1];
+            ui.horizontal_wrapped(|ui| {
+                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+                ui.label("energy:")
+                    .on_hover_text("the share of the energy (%) in moving and in turning");
+                named(ui, "— moving", KE_COLOR);
+                named(ui, "— turning", ROT_COLOR);
+                named(ui, "- - one third", ROT_COLOR).on_hover_text(
+                    "Shared equally among the three ways a disc holds energy (moving along x, \
+                     along y, turning), turning gets one third",
                 );
             });
+            let height = ui.available_height();
+            let moving: Vec<[f64; 2]> = samples
+                .iter()
+                .map(|s| [s.time, 100.0 * (1.0 - s.rotation_share())])
+                .collect();
+            let turning: Vec<[f64; 2]> = samples
+                .iter()
+                .map(|s| [s.time, 100.0 * s.rotation_share()])
+                .collect();
+            still_plot("shares_plot")
+                .height(height)
+                .x_axis_label("time (s)")
+                .y_axis_label("%")
+                .include_y(0.0)
+                .include_y(100.0)
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} %", plain(v.x, 2), plain(v.y, 1))
+                })
+                .show(ui, |plot| {
+                    plot.hline(
+                        HLine::new(100.0 / 3.0)
+                            .name("one third")
+                            .color(ROT_COLOR)
+                            .style(LineStyle::dashed_loose())
+                            .width(1.5),
+                    );
+                    plot.line(
+                        Line::new(PlotPoints::from(moving))
+                            .name("moving (KE)")
+                            .color(KE_COLOR)
+                            .width(2.5),
+                    );
+                    plot.line(
+                        Line::new(PlotPoints::from(turning))
+                            .name("turning (rotational KE)")
+                            .color(ROT_COLOR)
+                            .width(2.5),
+                    );
+                });
+        });
     }
 
     fn momenta_tab(&mut self, ui: &mut egui::Ui) {
@@ -368,10 +489,98 @@ impl App {
     }
 }
 
+/// The speed histogram against Maxwell–Boltzmann; with `rims`, each bin's
+/// rim-speed bar beside its speed bar, and the rim speeds' law.
+fn speed_plot(
+    ui: &mut egui::Ui,
+    h: &SpeedHistogram,
+    rims: Option<&RimHistogram>,
+    height: f32,
+    legend: bool,
+) {
+    // Side by side within a bin when both are drawn.
+    let (offset, width) = if rims.is_some() {
+        (0.28, 0.42)
+    } else {
+        (0.5, 0.9)
+    };
+    let bars: Vec<Bar> = h
+        .density
+        .iter()
+        .enumerate()
+        .map(|(k, &d)| Bar::new((k as f64 + offset) * h.bin_width, d).width(h.bin_width * width))
+        .collect();
+    let top = h.bin_width * h.density.len() as f64;
+    let curve = |law: &dyn Fn(f64) -> f64| -> Vec<[f64; 2]> {
+        (0..=200)
+            .map(|k| top * k as f64 / 200.0)
+            .map(|v| [v, law(v)])
+            .collect()
+    };
+    let law = curve(&|v| h.law(v));
+    let rim = rims.map(|r| {
+        let bars: Vec<Bar> = r
+            .density
+            .iter()
+            .enumerate()
+            .map(|(k, &d)| {
+                Bar::new((k as f64 + 1.0 - offset) * h.bin_width, d).width(h.bin_width * width)
+            })
+            .collect();
+        (bars, curve(&|u| r.law(u)))
+    });
+    let (x_label, speed_name) = if rim.is_some() {
+        ("speed, rim speed (m/s)", "speeds |v|")
+    } else {
+        ("speed (m/s)", "discs")
+    };
+    let plot = still_plot("speeds_plot").height(height);
+    let plot = if legend {
+        plot.legend(Legend::default().position(Corner::RightTop))
+    } else {
+        plot
+    };
+    plot.x_axis_label(x_label)
+        .y_axis_label("per m/s")
+        .include_y(0.0)
+        .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
+        .show(ui, |plot| {
+            plot.bar_chart(BarChart::new(bars).name(speed_name).color(PX_COLOR));
+            plot.line(
+                Line::new(PlotPoints::from(law))
+                    .name("Maxwell–Boltzmann")
+                    .color(PY_COLOR)
+                    .width(3.0),
+            );
+            if let Some((bars, law)) = rim {
+                plot.bar_chart(
+                    BarChart::new(bars)
+                        .name("rim speeds |ω|·r")
+                        .color(RIM_COLOR),
+                );
+                plot.line(
+                    Line::new(PlotPoints::from(law))
+                        .name("rim speeds, shared equally")
+                        .color(RIM_COLOR)
+                        .style(LineStyle::dashed_loose())
+                        .width(3.0),
+                );
+            }
+        });
+}
+
+/// A plot's series named in its colour, in the line above the plot.
+fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
+    ui.label(RichText::new(name).color(color).strong())
+}
+
 /// A plot that holds still: no scrolling, dragging or zooming, which in a
 /// live plot would only lose the view (hover still reads values).
 fn still_plot(id: &str) -> Plot<'static> {
     Plot::new(id)
+        // Never taller than the dock leaves it (egui_plot's least is 64
+        // points, which grew a short dock over the world).
+        .min_size(egui::vec2(40.0, 16.0))
         .allow_scroll(false)
         .allow_drag(false)
         .allow_zoom(false)

@@ -171,6 +171,8 @@ pub struct UiState {
     /// The scene path field and how the last open or save went.
     pub path: String,
     pub scene_note: Option<Note>,
+    /// The friction slider's μ, kept while friction is off.
+    pub friction: f64,
 }
 
 impl UiState {
@@ -196,6 +198,7 @@ impl UiState {
             table: Default::default(),
             path,
             scene_note: None,
+            friction: 0.5,
         }
     }
 
@@ -263,6 +266,12 @@ impl Laws {
             Some("restitution")
         } else if now.wall_restitution != was.wall_restitution {
             Some("wall restitution")
+        } else if now.tangential_restitution != was.tangential_restitution {
+            Some("roughness")
+        } else if now.wall_tangential_restitution != was.wall_tangential_restitution {
+            Some("wall roughness")
+        } else if now.friction != was.friction {
+            Some("friction")
         } else if now.gravity != was.gravity {
             Some("gravity")
         } else if now.boundary != was.boundary || now.walls != was.walls {

@@ -134,7 +134,17 @@ pub fn apply(ctx: &egui::Context, pixels_per_point: f32, theme: Theme) {
     style.spacing.item_spacing = egui::vec2(8.0, 5.0);
     style.spacing.slider_width = 130.0;
     ctx.set_style_of(preference, style);
+    // A wheel's notch scrolls a panel (the preset menu, the side dock) by a
+    // line: on X11 miniquad reports a notch as 1, which egui-macroquad
+    // divides by 90 (it expects Windows' 120), so egui's 40 points a line
+    // came to 0.44 of a point and the wheel seemed not to scroll at all.
+    if cfg!(all(target_os = "linux", not(target_arch = "wasm32"))) {
+        ctx.options_mut(|o| o.line_scroll_speed = X11_LINE_SCROLL_POINTS);
+    }
 }
+
+/// egui's 40 points a line, times egui-macroquad's divisor of 90.
+const X11_LINE_SCROLL_POINTS: f32 = 40.0 * 90.0;
 
 /// The smallest text size egui draws with now, in points.
 pub fn min_text_points(ctx: &egui::Context) -> f32 {

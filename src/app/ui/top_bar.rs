@@ -1,17 +1,23 @@
 //! The top bar: what a class reads from the back row. The scene's name, the
 //! simulated time, RUNNING or PAUSED (never hidden, not even by Tab), the
-//! total momentum and kinetic energy with their units, the collision count,
-//! and, when it applies, that the simulation runs slower than asked, that
-//! the view is a rewound moment, or what the method cannot promise.
+//! total momentum and kinetic energy with their units (when spin is shown
+//! the KE of moving and of turning and their sum, and where there is room
+//! the angular momentum L), the collision count, and, when it applies, that
+//! the simulation runs slower than asked, that the view is a rewound
+//! moment, or what the method cannot promise.
 
 use super::numbers::{plain, vector, with_unit};
 use crate::app::App;
 use egui::{Color32, RichText};
 
+/// The top bar names the angular momentum from this width (points) up.
+const L_MIN_WIDTH: f32 = 1200.0;
+
 impl App {
     /// Draws the top bar; returns its rectangle (points).
     pub(super) fn top_bar(&mut self, ctx: &egui::Context) -> egui::Rect {
         let m = self.world.metrics();
+        let spin = crate::app::draw::spin_shown(&self.world);
         let dark = ctx.style().visuals.dark_mode;
         let (running, paused) = if dark {
             (
@@ -43,7 +49,21 @@ impl App {
                     ui.label(RichText::new(slow).color(paused));
                 }
                 ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
-                ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
+                if spin {
+                    // One item, so that a 1024-pixel window keeps one line.
+                    ui.label(format!(
+                        "KE {} + rotational {} = {}",
+                        plain(m.kinetic_energy, 3),
+                        plain(m.rotational_energy, 3),
+                        with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
+                    ))
+                    .on_hover_text(
+                        "kinetic energy of moving, ½·m·v², plus of turning, ½·I·ω² with \
+                         I = ½·m·r², summed over the discs",
+                    );
+                } else {
+                    ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
+                }
                 if self.lesson.com_view.is_some() {
                     // The totals above are the box's; in the view's frame
                     // the momentum is zero and less energy moves.
@@ -59,13 +79,37 @@ impl App {
                         .color(paused),
                     );
                 }
-                if self.world.laws.gravity != glam::DVec2::ZERO {
-                    // With gravity, kinetic energy alone seems to vanish in a fall.
+                let gravity = self.world.laws.gravity != glam::DVec2::ZERO;
+                // L where the bar has room for it (at least 1200 points
+                // wide); it is always in the Totals tab and the readouts.
+                if spin && ctx.screen_rect().width() >= L_MIN_WIDTH {
                     ui.label(format!(
-                        "KE + PE = {}",
+                        "L = {}",
+                        with_unit(m.angular_momentum, 3, "kg·m²/s")
+                    ))
+                    .on_hover_text(
+                        "angular momentum about the corner (0, 0), of moving and of turning: \
+                         collisions between discs keep it, walls change it",
+                    );
+                }
+                if gravity {
+                    // With gravity, kinetic energy alone seems to vanish in a fall.
+                    let (name, hover) = if spin {
+                        (
+                            "KE + rotational KE + PE",
+                            "kinetic energy of moving and of turning, plus gravitational potential energy (zero at the bottom edge of the box)",
+                        )
+                    } else {
+                        (
+                            "KE + PE",
+                            "kinetic plus gravitational potential energy (zero at the bottom edge of the box)",
+                        )
+                    };
+                    ui.label(format!(
+                        "{name} = {}",
                         with_unit(self.world.total_energy(), 3, "J")
                     ))
-                    .on_hover_text("kinetic plus gravitational potential energy (zero at the bottom edge of the box)");
+                    .on_hover_text(hover);
                 }
                 match crate::app::lesson::pi_result(&self.world) {
                     Some(result) => ui.label(RichText::new(result).strong()),
