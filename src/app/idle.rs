@@ -18,7 +18,9 @@
 //! extension. Where that is missing (no X server, no such extension, the
 //! browser), the window draws every frame as before.
 
-use macroquad::prelude::get_time;
+use super::interaction::Gesture;
+use glam::DVec2;
+use macroquad::prelude::*;
 
 /// Seconds of frames after the last change or input.
 pub const GRACE: f64 = 1.0;
@@ -81,6 +83,34 @@ impl Idle {
             Some(_) => macroquad::miniquad::window::schedule_update(),
             None => {}
         }
+    }
+}
+
+impl super::App {
+    /// Whether this frame showed a change or took input, so the next one
+    /// follows at once (see this module; it also notices the pointer moving):
+    /// discs moving or turning, a button or key held, a gesture or a message
+    /// on screen. (egui's own repaint requests are not asked: every input event
+    /// makes one, the idle timer's too. Its animations end within the
+    /// grace period after the input that started them.)
+    pub(super) fn busy(&self, was_running: bool) -> bool {
+        let moving = (was_running || !self.clock.paused)
+            && self
+                .world
+                .particles
+                .iter()
+                .any(|p| p.vel != DVec2::ZERO || p.spin != 0.0);
+        let input = mouse_wheel() != (0.0, 0.0)
+            || !get_keys_down().is_empty()
+            || [MouseButton::Left, MouseButton::Right, MouseButton::Middle]
+                .into_iter()
+                .any(is_mouse_button_down)
+            || !touches().is_empty();
+        moving
+            || input
+            || !matches!(self.gesture, Gesture::Idle)
+            || self.toast.is_some()
+            || self.frame < 2
     }
 }
 

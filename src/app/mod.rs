@@ -474,32 +474,6 @@ impl App {
         self.write_frame_stats();
     }
 
-    /// Whether this frame showed a change or took input, so the next one
-    /// follows at once (see [`idle`]; it also notices the pointer moving):
-    /// discs moving or turning, a button or key held, a gesture or a message
-    /// on screen. (egui's own repaint requests are not asked: every input event
-    /// makes one, the idle timer's too. Its animations end within the
-    /// grace period after the input that started them.)
-    fn busy(&self, was_running: bool) -> bool {
-        let moving = (was_running || !self.clock.paused)
-            && self
-                .world
-                .particles
-                .iter()
-                .any(|p| p.vel != DVec2::ZERO || p.spin != 0.0);
-        let input = mouse_wheel() != (0.0, 0.0)
-            || !get_keys_down().is_empty()
-            || [MouseButton::Left, MouseButton::Right, MouseButton::Middle]
-                .into_iter()
-                .any(is_mouse_button_down)
-            || !touches().is_empty();
-        moving
-            || input
-            || !matches!(self.gesture, Gesture::Idle)
-            || self.toast.is_some()
-            || self.frame < 2
-    }
-
     /// This frame's record, its frame and present times still to come.
     fn frame_times(&self, step_ms: f64, draw_ms: f64) -> frame_stats::FrameTimes {
         frame_stats::FrameTimes {

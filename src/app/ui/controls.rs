@@ -9,13 +9,10 @@ use super::discs_table::{parse_disc_edit, FIELDS};
 use super::numbers::{field, plain, with_unit};
 use super::theme::{next_scale, Theme, UI_SCALE_RANGE};
 use super::{show_note, Action, Note};
-use crate::app::clock::TIME_SCALES;
 use crate::app::draw::ReadoutScope;
 use crate::app::input::{BROAD_PHASES, METHODS, SUBSTEPS};
 use crate::app::{scenes, App};
 use egui::{CollapsingHeader, ComboBox, Slider, Ui};
-use glam::DVec2;
-use impulse::Boundary;
 use std::fmt::Display;
 
 /// Earth's gravity, where the gravity slider sticks (m/s²).
@@ -48,7 +45,7 @@ const FIELD_KEYS: [&str; 4] = ["disc_mass", "disc_radius", "disc_vx", "disc_vy"]
 
 /// A combo box over `list`, showing `current` even when it is not in the
 /// list (a scene may ask for 3 substeps); returns the new choice.
-fn setting_combo<T: Copy + PartialEq + Display>(
+pub(super) fn setting_combo<T: Copy + PartialEq + Display>(
     ui: &mut Ui,
     label: &str,
     list: &[T],
@@ -74,7 +71,7 @@ fn setting_combo<T: Copy + PartialEq + Display>(
 /// (and unit) in a box beside it that can also be dragged or typed into.
 /// Returns the track's response, so its rectangle is the track's, and
 /// whether the value changed.
-fn slider(
+pub(super) fn slider(
     ui: &mut Ui,
     label: &str,
     value: &mut f64,
@@ -160,7 +157,7 @@ impl App {
         panel.response.rect
     }
 
-    fn widget(&mut self, ui: &Ui, name: &str, response: &egui::Response) {
+    pub(super) fn widget(&mut self, ui: &Ui, name: &str, response: &egui::Response) {
         self.ui
             .note_widget(name, response.rect, super::px_per_point(ui.ctx()));
     }
@@ -220,148 +217,6 @@ impl App {
                 self.ui.help_open = !self.ui.help_open;
             }
         });
-    }
-
-    fn laws_section(&mut self, ui: &mut Ui) {
-        let w = &mut self.world;
-        let mut e = w.laws.restitution;
-        let (r, changed) = slider(
-            ui,
-            "Restitution e between discs (1: elastic, 0: they stick)",
-            &mut e,
-            0.0..=1.0,
-            false,
-            2,
-            "",
-        );
-        if changed {
-            w.laws.restitution = (e * 100.0).round() / 100.0;
-        }
-        self.widget(ui, "restitution", &r.on_hover_text("E / Shift+E: ±0.1"));
-        let w = &mut self.world;
-        let mut e = w.laws.wall_restitution;
-        let (r, changed) = slider(
-            ui,
-            "Restitution e at the walls",
-            &mut e,
-            0.0..=1.0,
-            false,
-            2,
-            "",
-        );
-        if changed {
-            w.laws.wall_restitution = (e * 100.0).round() / 100.0;
-        }
-        self.widget(
-            ui,
-            "wall_restitution",
-            &r.on_hover_text("W / Shift+W: ±0.1"),
-        );
-        self.roughness_sliders(ui);
-        // The slider shows |g| and sets it pointing down; a scene's sideways
-        // gravity is only replaced once the slider is moved.
-        let w = &mut self.world;
-        let mut g = w.laws.gravity.length();
-        let (r, changed) = slider(
-            ui,
-            "Gravity, pointing down",
-            &mut g,
-            0.0..=20.0,
-            false,
-            2,
-            " m/s²",
-        );
-        if changed {
-            w.laws.gravity = DVec2::new(0.0, -snap_gravity(g));
-        }
-        self.widget(ui, "gravity", &r.on_hover_text("G: 9.81 m/s² down, or off"));
-        let w = &mut self.world;
-        if let Some(b) = setting_combo(
-            ui,
-            "edges",
-            &Boundary::ALL.map(Boundary::name),
-            w.laws.boundary.name(),
-        ) {
-            if let Some(&k) = Boundary::ALL.iter().find(|k| k.name() == b) {
-                w.laws.boundary = k;
-            }
-        }
-        let scales = TIME_SCALES.map(|s| format!("×{s}"));
-        let index = self.clock.time_scale_index();
-        ComboBox::from_label("time scale")
-            .selected_text(scales[index].clone())
-            .show_ui(ui, |ui| {
-                for (k, label) in scales.iter().enumerate() {
-                    if ui.selectable_label(k == index, label).clicked() {
-                        self.clock.set_time_scale_index(k);
-                    }
-                }
-            });
-    }
-
-    /// Roughness β between discs and at the walls, and friction μ (off:
-    /// no limit), beside restitution; changes are undone like restitution's.
-    fn roughness_sliders(&mut self, ui: &mut Ui) {
-        const ROUGH: &str = "How the touching edges grip in a collision: −1 smooth \
-            (no spin given or taken), 0 their slipping stops, 1 perfectly rough (the \
-            slipping reverses and no energy is lost)";
-        let w = &mut self.world;
-        let mut beta = w.laws.tangential_restitution;
-        let (r, changed) = slider(
-            ui,
-            "Roughness β between discs (−1 smooth … 1 rough)",
-            &mut beta,
-            -1.0..=1.0,
-            false,
-            2,
-            "",
-        );
-        if changed {
-            w.laws.tangential_restitution = (beta * 100.0).round() / 100.0;
-        }
-        self.widget(ui, "tangential_restitution", &r.on_hover_text(ROUGH));
-        let w = &mut self.world;
-        let mut beta = w.laws.wall_tangential_restitution;
-        let (r, changed) = slider(
-            ui,
-            "Roughness β at the walls",
-            &mut beta,
-            -1.0..=1.0,
-            false,
-            2,
-            "",
-        );
-        if changed {
-            w.laws.wall_tangential_restitution = (beta * 100.0).round() / 100.0;
-        }
-        self.widget(ui, "wall_tangential_restitution", &r.on_hover_text(ROUGH));
-        // μ is off (no limit) or a number: a tick turns it on at the
-        // slider's value, which is kept while it is off.
-        let w = &mut self.world;
-        let mut on = w.laws.friction.is_some();
-        let r = ui
-            .checkbox(&mut on, "Friction μ limits the grip")
-            .on_hover_text(
-                "Coulomb friction: the sideways push at a contact is at most μ times the \
-                 head-on push, so fast slipping is only slowed; it also makes discs \
-                 lying on each other rub. Off: no limit.",
-            );
-        self.widget(ui, "friction_on", &r);
-        if r.changed() {
-            self.world.laws.friction = on.then_some(self.ui.friction);
-        }
-        let mut mu = self.world.laws.friction.unwrap_or(self.ui.friction);
-        let (r, changed) = ui
-            .add_enabled_ui(on, |ui| {
-                slider(ui, "Friction μ", &mut mu, 0.0..=2.0, false, 2, "")
-            })
-            .inner;
-        if changed && on {
-            let mu = (mu * 100.0).round() / 100.0;
-            self.ui.friction = mu;
-            self.world.laws.friction = Some(mu);
-        }
-        self.widget(ui, "friction", &r);
     }
 
     fn show_section(&mut self, ui: &mut Ui, actions: &mut Vec<Action>) {

@@ -22,6 +22,7 @@
 mod controls;
 pub mod discs_table;
 mod dock;
+mod laws;
 pub mod numbers;
 mod popups;
 mod strip;
