@@ -38,10 +38,14 @@ impl Sim {
         } else {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
+        if self.rests_on_held([i, j], normal) && self.join_held([i, j]) {
+            return; // a flying disc resting on a held one: held too
+        }
         if (b.vel - a.vel).dot(normal) < -CREEP {
             let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
             let rapid = self.now - ia.last_hit < CONTACT_DURATION
                 || self.now - ib.last_hit < CONTACT_DURATION;
+            let closing = (a.vel - b.vel).dot(normal);
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             let spins = if self.record {
@@ -61,7 +65,7 @@ impl Sim {
             }
             let after = [self.bodies[i as usize].vel, self.bodies[j as usize].vel];
             self.record_pair([i, j], normal, [a.vel, b.vel], after, spins);
-            self.count(i, (a.vel - b.vel).dot(normal));
+            self.count(i, closing);
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         }
         self.predict(i);
@@ -330,6 +334,7 @@ impl Sim {
             self.count(ids[t.a], (velocities[t.a] - velocities[t.b]).dot(t.normal));
         }
         for &k in &ids {
+            self.let_go(k);
             self.predict(k);
         }
     }
@@ -428,6 +433,8 @@ impl Sim {
         self.grid.remove(&mut self.bodies, i, from);
         self.grid.insert(&mut self.bodies, i, to);
         self.bodies[i as usize].cell = to;
-        self.predict_after_crossing(i, axis, upper);
+        if !self.let_go_unless_clear(i) {
+            self.predict_after_crossing(i, axis, upper);
+        }
     }
 }

@@ -55,6 +55,7 @@ use grid::Grid;
 
 mod collide;
 mod grid;
+mod held;
 mod kinematics;
 mod predict;
 mod queue;
@@ -124,6 +125,7 @@ impl Exact {
         sim.record = ledger.is_on();
         sim.stop_at_collision = self.stop_at_collision;
         sim.stopped = false;
+        sim.hold(dt);
         sim.run();
         sim.count_sleepers();
         let impact_speed = sim.impact_speed;
@@ -139,6 +141,7 @@ impl Exact {
         } else {
             sim.end
         };
+        sim.pay_back(end);
         sim.finish(end, particles);
         stats.pair_collisions += sim.collisions;
         stats.wall_hits += sim.wall_hits;
@@ -266,8 +269,22 @@ struct Sim {
     sleeping: bool,
     /// Per body: moving freely or asleep ([`sleep`]).
     rest: Vec<sleep::Rest>,
-    /// How many are asleep.
+    /// How many are asleep or held.
     sleepers: usize,
+    /// Per body: collisions in this step ([`held`]).
+    hits: Vec<u32>,
+    /// Total energy at the start of a step with held discs ([`held`]).
+    energy_at_start: Option<f64>,
+    /// Per body: steps in a row it has been held and barely moving
+    /// ([`held`]).
+    quiet: Vec<u32>,
+    /// Per held body: the velocity its step's energy was paid for
+    /// ([`held`]).
+    paid: Vec<DVec2>,
+    /// Per body: changes in the running [`held`] settle (zero between).
+    fix_counts: Vec<u8>,
+    /// Last step's contact impulses of held discs, by contact ([`held`]).
+    warm: Vec<(u64, f64)>,
     /// Per body: its spin and how far it has turned ([`Spin`]); empty
     /// while nothing turns (smooth laws, no disc spinning or turned), so a
     /// smooth world reads and writes no more than before spins existed.
@@ -328,14 +345,24 @@ impl Sim {
                         self.advance_to(i, self.now);
                         self.predict(i);
                     } else {
+                        self.tally(i);
+                        self.tally(partner);
+                        let gens = [i, partner].map(|k| self.bodies[k as usize].gen);
                         self.collide_pair(i, partner);
+                        self.let_go_if_moved([i, partner], gens);
+                        self.hold_if_busy([i, partner]);
                         if self.stop_at_collision && self.collisions > 0 {
                             self.stopped = true;
                             break;
                         }
                     }
                 }
-                Kind::Wall { axis, upper } => self.hit_wall(i, usize::from(axis), upper),
+                Kind::Wall { axis, upper } => {
+                    self.tally(i);
+                    let gen = self.bodies[i as usize].gen;
+                    self.hit_wall(i, usize::from(axis), upper);
+                    self.let_go_if_moved([i, i], [gen, gen]);
+                }
                 Kind::Cell { axis, upper } => self.cross_cell(i, usize::from(axis), upper),
                 Kind::Leave => self.rebuild_grid(),
             }

@@ -144,8 +144,10 @@ impl Sim {
                 }
                 if resting && (my_rest != Rest::Free || self.rest[j as usize] != Rest::Free) {
                     let its_rest = self.rest[j as usize];
-                    if my_rest == Rest::Asleep && its_rest == Rest::Asleep {
-                        continue; // neither moves
+                    if my_rest == its_rest && my_rest != Rest::Free {
+                        // Neither moves, or both are held: held discs meet
+                        // through the contact solve ([`super::held`]).
+                        continue;
                     }
                     let (mine, its) = (self.accel(i), self.accel(j));
                     let tau = now - other.time;

@@ -60,6 +60,12 @@ impl Sim {
             sleeping: Sim::may_sleep(laws),
             rest: vec![super::sleep::Rest::Free; n],
             sleepers: 0,
+            hits: vec![0; n],
+            warm: Vec::new(),
+            fix_counts: Vec::new(),
+            quiet: vec![0; n],
+            paid: vec![DVec2::ZERO; n],
+            energy_at_start: None,
             spins: Vec::new(),
             rough: Sim::is_rough(laws),
         };

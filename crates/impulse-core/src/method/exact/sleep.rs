@@ -49,6 +49,10 @@ pub(super) enum Rest {
     Free,
     /// Still, without gravity, until woken.
     Asleep,
+    /// Flying, in lasting contact with other held discs: they meet without
+    /// events, through a contact solve at the start of each step (see
+    /// [`super::held`]).
+    Held,
 }
 
 /// A disc sleeps below the speed that would lift it this fraction of its
@@ -89,12 +93,13 @@ impl Sim {
         }
         match self.rest[i as usize] {
             Rest::Free => g,
-            Rest::Asleep => DVec2::ZERO,
+            // Held discs take the step's gravity at once ([`super::held`]).
+            Rest::Held | Rest::Asleep => DVec2::ZERO,
         }
     }
 
     /// Sets body `i`'s way of moving, keeping the count of resting ones.
-    fn set_rest(&mut self, i: u32, rest: Rest) {
+    pub(super) fn set_rest(&mut self, i: u32, rest: Rest) {
         let was = std::mem::replace(&mut self.rest[i as usize], rest);
         match (was == Rest::Free, rest == Rest::Free) {
             (true, false) => self.sleepers += 1,
@@ -192,12 +197,17 @@ impl Sim {
         if !slow || !self.is_held(i) {
             return false;
         }
+        self.sleep_now(i);
+        true
+    }
+
+    /// Puts body `i` to sleep where it is.
+    pub(super) fn sleep_now(&mut self, i: u32) {
         let body = &mut self.bodies[i as usize];
         body.vel = DVec2::ZERO;
         body.gen += 1;
         self.stop_spinning(i);
         self.set_rest(i, Rest::Asleep);
-        true
     }
 
     /// After body `i` bounced off a still support, takes out whatever of
@@ -286,7 +296,13 @@ impl Sim {
     /// [`SUPPORT_GAP`]) can carry its weight without friction: the upward
     /// direction lies in the cone of their normals.
     fn is_held(&self, i: u32) -> bool {
-        let up = -self.laws.gravity.normalize();
+        self.can_bear(i, -self.laws.gravity.normalize())
+    }
+
+    /// Whether body `i`'s supports (as in [`Sim::is_held`]) can push it
+    /// along the unit vector `up` without friction: a load the other way
+    /// is carried.
+    pub(super) fn can_bear(&self, i: u32, up: DVec2) -> bool {
         let me = self.bodies[i as usize];
         let normals = self.still_supports(i, SUPPORT_GAP * me.radius, |dist, mine, its| {
             dist - mine - its <= SUPPORT_GAP * mine.min(its)
