@@ -334,8 +334,11 @@ impl Sim {
             self.count(ids[t.a], (velocities[t.a] - velocities[t.b]).dot(t.normal));
         }
         for &k in &ids {
-            self.let_go(k);
-            self.predict(k);
+            // A held one whose new course is not clear flies again (it is
+            // predicted then).
+            if !self.let_go_unless_clear(k) {
+                self.predict(k);
+            }
         }
     }
 
