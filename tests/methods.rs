@@ -241,9 +241,23 @@ fn auto_models_no_more_than_the_scene_needs() {
     w.broad_phase = Setting::Auto;
     w.substeps = Setting::Auto;
     assert_eq!(w.plan_for(0.01).method, Method::Exact);
-    // A settling pile: impulse, never exact.
+    // A settling pile: exact, which holds and then puts to sleep discs in
+    // lasting contact, where impulse solves every contact on every step.
     w.laws.gravity = DVec2::new(0.0, -9.81);
     w.laws.restitution = 0.5;
+    let plan = w.plan_for(0.01);
+    assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
+    assert!(plan.reason.contains("rest"), "{}", plan.reason);
+    // A pile too hot for exact's events to beat impulse's substeps: impulse.
+    let mut storm = w.clone();
+    for p in &mut storm.particles {
+        p.vel *= 1e4;
+    }
+    let plan = storm.plan_for(0.01);
+    assert_eq!(plan.method, Method::Impulse, "{}", plan.reason);
+    // Rough discs: exact cannot hold them (no friction in its contact
+    // solve), so impulse.
+    w.laws.tangential_restitution = 0.0;
     let plan = w.plan_for(0.01);
     assert_eq!(plan.method, Method::Impulse);
     assert!(plan.reason.contains("rest"), "{}", plan.reason);

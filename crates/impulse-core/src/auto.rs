@@ -22,16 +22,21 @@
 //!   keeps 1.4 µs, between the two, as it was measured when the first
 //!   calendar queue made it 7–10·10⁵ at 10⁴ discs and 4·10⁵ at 10⁵; at
 //!   0.9 µs `auto` would choose `exact` for scenes about 1.5 times as busy.
-//!   Not where discs will come to rest in contact (gravity with
-//!   restitution below 1): `exact` gets there (its discs fall asleep), but
-//!   settling costs it far more than `impulse` (measured 2026-11-23: the
-//!   150-disc pile, 15 s, 2.2 s of wall clock against 0.2 s; the 360-disc
-//!   tall pile 8.3 s against 0.45 s), so it is not the cheaper choice.
-//!   Nor with a few discs: a disc sliding along the floor glances off it
-//!   once per contact duration, 10⁴ events a second, until it stops (1 to
-//!   8 discs thrown into a box, 10 s: 11–88 ms against 0.9–2.0 ms; only a
-//!   ball dropped straight down, which falls asleep, was cheaper, 2.6 ms
-//!   against 5.3 ms for 60 s). Measured 2026-11-23.
+//!   Where discs will come to rest in contact (gravity with restitution
+//!   below 1), `exact` when it holds them ([`crate::method::exact::holds_discs`]:
+//!   smooth discs in a box) and its estimate above stays within what
+//!   `impulse` spends on its contacts, n·K·[`IMPULSE_RESTING_NS`]/dt for K
+//!   substeps; `impulse` otherwise (rough discs: `exact` has no contact
+//!   solve with friction, and its events alone stall in a pile). Settling
+//!   costs both about the same; once settled, `exact`'s discs sleep and cost
+//!   [`EXACT_SETUP_NS`] a step, while `impulse` solves every contact on
+//!   every step. Measured 2026-11-25 (wall clock, medians of 3, `exact`
+//!   against `impulse`): 15 s of the 150-disc pile 0.16 against 0.14 s, of
+//!   the 300-disc pile 0.35 / 0.30, of the 360-disc tall pile 0.43 / 0.46,
+//!   10 s of the 10⁴-disc pile 12.9 / 9.6 s; 60 s of the same small piles
+//!   0.18 / 0.59, 0.40 / 1.28, 0.47 / 1.99 s, the mass-ratio stacks 4 / 33
+//!   ms, 8 discs thrown into a box 6 / 18 ms. After settling a step costs
+//!   `exact` 12–15 ns per disc, `impulse` 175–390 ns.
 //! - **Broad phase.** `brute` up to [`BRUTE_MAX_DISCS`] discs, `grid` above.
 //!   Measured (`impulse bench`, 1 core, ns per particle-step, impulse): brute
 //!   59 / 52 / 65 / 112 at n = 8 / 16 / 32 / 64 against the grid's 60 / 39 /
@@ -89,6 +94,9 @@ pub const EXACT_SETUP_NS: f64 = 20.0;
 /// first calendar queue; today's measurements, 0.9 µs at 10⁴ discs and
 /// 1.7 µs at 10⁵, lie on either side (see the module doc).
 pub const EXACT_COLLISION_NS: f64 = 1400.0;
+/// Measured cost of `impulse` per disc and substep in a resting pile, its
+/// contacts solved every step (ns; 175–390 measured, see the module doc).
+pub const IMPULSE_RESTING_NS: f64 = 250.0;
 /// Most wall-clock seconds per simulated second `auto` spends on `exact`.
 pub const EXACT_BUDGET: f64 = 0.25;
 /// Mass ratio above which accuracy needs `exact` (budget ×4).
@@ -187,6 +195,20 @@ pub fn exact_cost_per_second(particles: &[Particle], laws: &Laws, dt: f64) -> f6
     n * (EXACT_SETUP_NS / dt + frequency * EXACT_COLLISION_NS) * 1e-9
 }
 
+/// Substeps that keep the fastest disc (its speed plus a step of gravity)
+/// within [`MAX_TRAVEL_PER_SUBSTEP`] of the smallest radius per substep.
+fn substeps_needed(max_speed: f64, min_r: f64, laws: &Laws, dt: f64, n: usize) -> f64 {
+    let fastest = max_speed + laws.gravity.length() * dt;
+    let allowed = MAX_TRAVEL_PER_SUBSTEP * min_r;
+    if n == 0 || allowed <= 0.0 {
+        1.0
+    } else {
+        (fastest * dt / allowed)
+            .ceil()
+            .clamp(1.0, f64::from(MAX_SUBSTEPS))
+    }
+}
+
 /// Resolves every `auto` setting of `choices` for these discs under these
 /// laws, for a step of `dt`.
 pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> Plan {
@@ -208,11 +230,26 @@ pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> P
             let dissipative = laws.restitution < 1.0 || laws.wall_restitution < 1.0;
             let resting = laws.gravity != glam::DVec2::ZERO && dissipative;
             if resting {
-                reasons.push(
-                    "impulse: discs will rest in contact (gravity, e < 1), where exact costs 10–20× more"
-                        .to_string(),
-                );
-                Method::Impulse
+                let exact = exact_cost_per_second(particles, laws, dt);
+                let substeps = substeps_needed(max_speed, min_r, laws, dt, n);
+                let impulse = n as f64 * substeps * IMPULSE_RESTING_NS / dt * 1e-9;
+                if !crate::method::exact::holds_discs(laws) {
+                    reasons.push(
+                        "impulse: discs will rest in contact, which exact cannot hold here (rough discs or no box)"
+                            .to_string(),
+                    );
+                    Method::Impulse
+                } else if exact <= impulse {
+                    reasons.push(format!(
+                        "exact: discs will rest in contact; held, then asleep, they cost less than impulse's {impulse:.2} s/s"
+                    ));
+                    Method::Exact
+                } else {
+                    reasons.push(format!(
+                        "impulse: exact would cost {exact:.2} s/s > impulse's {impulse:.2} while discs fly"
+                    ));
+                    Method::Impulse
+                }
             } else {
                 let cost = exact_cost_per_second(particles, laws, dt);
                 let extreme = mass_ratio >= EXTREME_MASS_RATIO;
@@ -265,15 +302,8 @@ pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> P
         match choices.substeps {
             Setting::Fixed(k) => k.max(1),
             Setting::Auto => {
+                let k = substeps_needed(max_speed, min_r, laws, dt, n);
                 let fastest = max_speed + laws.gravity.length() * dt;
-                let allowed = MAX_TRAVEL_PER_SUBSTEP * min_r;
-                let k = if n == 0 || allowed <= 0.0 {
-                    1.0
-                } else {
-                    (fastest * dt / allowed)
-                        .ceil()
-                        .clamp(1.0, f64::from(MAX_SUBSTEPS))
-                };
                 reasons.push(format!(
                     "{k} substeps (travel {:.2} r)",
                     fastest * dt / min_r.max(1e-300)

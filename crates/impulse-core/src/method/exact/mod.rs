@@ -63,6 +63,8 @@ mod setup;
 mod simultaneous;
 pub mod sleep;
 
+pub use held::holds_discs;
+
 use predict::PairGuess;
 use queue::EventQueue;
 

@@ -73,6 +73,14 @@ pub const QUIET_TIME: f64 = 0.1;
 /// Sweeps of the contact solve.
 pub const HOLD_SWEEPS: usize = 20;
 
+/// Whether `exact` holds discs in lasting contact under these laws: under
+/// gravity with restitution below 1 (where discs come to rest), in a box,
+/// smooth (the contact solve has no friction). Elsewhere it runs on events
+/// alone, as before.
+pub fn holds_discs(laws: &crate::laws::Laws) -> bool {
+    Sim::may_sleep(laws) && !Sim::is_rough(laws) && laws.boundary == crate::boundary::Boundary::Box
+}
+
 impl Sim {
     /// Counts a collision of body `i` towards [`HOLD_HITS`].
     #[inline]
@@ -85,7 +93,7 @@ impl Sim {
     /// Whether this world holds discs at all: under gravity, with walls,
     /// smooth (the solve has no friction).
     fn holds(&self) -> bool {
-        self.sleeping && !self.rough && self.laws.boundary == crate::boundary::Boundary::Box
+        holds_discs(&self.laws)
     }
 
     /// The walls within `reach` of a disc at `pos` of `radius`: for each,
