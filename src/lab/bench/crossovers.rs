@@ -174,3 +174,58 @@ pub(super) fn crowded_resolution(
     }
     out
 }
+
+/// Resting piles, `exact` (held discs, then sleeping ones) against `impulse`:
+/// wall-clock seconds for the whole run, medians of 3, and the deepest
+/// overlap either left. The measurement behind `auto`'s choice for scenes
+/// where discs come to rest, and the target (`exact` within 3× of
+/// `impulse` on the 10⁴-disc pile).
+pub(super) fn resting_piles(quick: bool) -> String {
+    use impulse::catalogue::{PRESET_0_PILE, STRESS_PILE, STRESS_PILE_LARGE, STRESS_PILE_TALL};
+    let mut runs = vec![(PRESET_0_PILE, 15.0), (STRESS_PILE, 15.0), (STRESS_PILE, 60.0)];
+    if !quick {
+        runs.extend([(STRESS_PILE_TALL, 15.0), (STRESS_PILE_LARGE, 10.0)]);
+    }
+    let mut out = String::from(
+        "\n| resting pile | n | simulated | exact s (median of 3) | impulse s | exact ÷ impulse | deepest overlap met, exact (r) | impulse (r) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for (file, seconds) in runs {
+        let Ok(scene) = impulse::Scene::parse(file.text, file.path) else {
+            continue;
+        };
+        let time = |method: Method| -> Option<(f64, f64, usize)> {
+            let mut walls = Vec::new();
+            let mut overlap = 0.0f64;
+            let mut n = 0;
+            for _ in 0..3 {
+                let mut world = scene.build(file.path).ok()?;
+                world.method = Setting::Fixed(method);
+                n = world.particles.len();
+                let min_r = world.particles.iter().map(|p| p.radius).fold(f64::INFINITY, f64::min);
+                let dt = impulse::scene::DEFAULT_DT;
+                let start = std::time::Instant::now();
+                for _ in 0..(seconds / dt).round() as usize {
+                    let stats = world.step(dt);
+                    overlap = overlap.max(stats.max_overlap / min_r);
+                }
+                walls.push(start.elapsed().as_secs_f64());
+            }
+            Some((super::median(&mut walls), overlap, n))
+        };
+        let (Some(exact), Some(impulse)) = (time(Method::Exact), time(Method::Impulse)) else {
+            continue;
+        };
+        let name = file.path.trim_start_matches("assets/scenes/");
+        let _ = writeln!(
+            out,
+            "| {name} | {} | {seconds} s | {:.3} | {:.3} | {:.2} | {:.0e} | {:.0e} |",
+            exact.2,
+            exact.0,
+            impulse.0,
+            exact.0 / impulse.0,
+            exact.1,
+            impulse.1
+        );
+    }
+    out
+}

@@ -24,7 +24,7 @@ mod crossovers;
 
 use super::chart::{write_chart, Chart, Series};
 use crate::progress;
-use crossovers::{crossovers, crowded_resolution, thread_crossover};
+use crossovers::{crossovers, crowded_resolution, resting_piles, thread_crossover};
 use impulse::alloc_count::live_bytes;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
@@ -148,6 +148,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     }
     bar.finish_and_clear();
     let mut crossovers = crossovers(batch_seconds);
+    crossovers += &resting_piles(args.quick);
     if threads > 1 {
         let sizes: &[usize] = if args.quick {
             &[1_000, 10_000]
