@@ -58,9 +58,16 @@ fn a_pile_settles_under_exact_without_overlap_stall_or_energy_gain() {
     // criterion made ten thousand times stricter: kinetic energy under
     // 1e-6·m·g·r per disc.
     let g = w.laws.gravity.length();
-    let bound: f64 = w.particles.iter().map(|p| 1e-6 * p.mass * g * p.radius).sum();
+    let bound: f64 = w
+        .particles
+        .iter()
+        .map(|p| 1e-6 * p.mass * g * p.radius)
+        .sum();
     let kinetic = w.metrics().kinetic_energy;
-    assert!(kinetic < bound, "kinetic energy {kinetic:e} J >= {bound:e} J");
+    assert!(
+        kinetic < bound,
+        "kinetic energy {kinetic:e} J >= {bound:e} J"
+    );
     assert_eq!(w.resting_contacts, w.particles.len(), "all counted resting");
 }
 

@@ -182,7 +182,11 @@ pub(super) fn crowded_resolution(
 /// `impulse` on the 10⁴-disc pile).
 pub(super) fn resting_piles(quick: bool) -> String {
     use impulse::catalogue::{PRESET_0_PILE, STRESS_PILE, STRESS_PILE_LARGE, STRESS_PILE_TALL};
-    let mut runs = vec![(PRESET_0_PILE, 15.0), (STRESS_PILE, 15.0), (STRESS_PILE, 60.0)];
+    let mut runs = vec![
+        (PRESET_0_PILE, 15.0),
+        (STRESS_PILE, 15.0),
+        (STRESS_PILE, 60.0),
+    ];
     if !quick {
         runs.extend([(STRESS_PILE_TALL, 15.0), (STRESS_PILE_LARGE, 10.0)]);
     }
@@ -201,7 +205,11 @@ pub(super) fn resting_piles(quick: bool) -> String {
                 let mut world = scene.build(file.path).ok()?;
                 world.method = Setting::Fixed(method);
                 n = world.particles.len();
-                let min_r = world.particles.iter().map(|p| p.radius).fold(f64::INFINITY, f64::min);
+                let min_r = world
+                    .particles
+                    .iter()
+                    .map(|p| p.radius)
+                    .fold(f64::INFINITY, f64::min);
                 let dt = impulse::scene::DEFAULT_DT;
                 let start = std::time::Instant::now();
                 for _ in 0..(seconds / dt).round() as usize {
