@@ -46,7 +46,9 @@
 //! What it changes, measured (docs/lab/NOTES.md): a held disc falls on a
 //! straight line within a step instead of a parabola (at most ½·g·dt² off,
 //! 85 µm at 240 steps a second); lasting contacts do not bounce; settled
-//! piles are looser than with events alone.
+//! piles are looser than with events alone (the 300-disc pile's centre of
+//! mass 6.6 % higher, 8 seeds; area fraction 0.81 against 0.85), not in
+//! full static equilibrium: given to `impulse` they sink back.
 
 mod events;
 mod solve;
