@@ -145,17 +145,17 @@ fn a_rain_of_fast_discs_onto_a_settling_pile_keeps_every_promise() {
 fn only_smooth_discs_resting_in_a_box_are_held_and_auto_takes_exact_for_them() {
     let pile = scene("stress-pile.toml");
     assert!(holds_discs(&pile.laws));
-    let mut rough = pile.laws.clone();
+    let mut rough = pile.laws;
     rough.tangential_restitution = 0.0;
     assert!(!holds_discs(&rough));
-    let mut elastic = pile.laws.clone();
+    let mut elastic = pile.laws;
     elastic.restitution = 1.0;
     elastic.wall_restitution = 1.0;
     assert!(!holds_discs(&elastic));
-    let mut weightless = pile.laws.clone();
+    let mut weightless = pile.laws;
     weightless.gravity = DVec2::ZERO;
     assert!(!holds_discs(&weightless));
-    let mut periodic = pile.laws.clone();
+    let mut periodic = pile.laws;
     periodic.boundary = impulse::Boundary::Periodic;
     assert!(!holds_discs(&periodic));
 
