@@ -5,17 +5,14 @@
 
 use impulse::method::exact::sleep::SLEEP_LIFT;
 use impulse::method::{Method, Setting};
-use impulse::{Color, DVec2, Particle, Scene, World};
+use impulse::{Color, DVec2, Particle, World};
+
+mod common;
 
 const DT: f64 = impulse::scene::DEFAULT_DT;
 
 fn preset(file: &str) -> World {
-    let path = format!("{}/assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
-    let mut w = Scene::load(std::path::Path::new(&path))
-        .and_then(|s| s.build(&path))
-        .unwrap();
-    w.method = Setting::Fixed(Method::Exact);
-    w
+    common::scene_with(file, Method::Exact)
 }
 
 /// The deepest overlap of any two discs, as a fraction of the smaller radius.

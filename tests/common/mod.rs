@@ -54,3 +54,14 @@ pub fn periodic_gas(n: usize, seed: u64, restitution: f64) -> World {
 pub fn rel(a: f64, b: f64, scale: f64) -> f64 {
     (a - b).abs() / scale
 }
+
+/// The shipped scene `assets/scenes/{file}`, built, with its method fixed to
+/// `method`.
+pub fn scene_with(file: &str, method: impulse::method::Method) -> World {
+    let path = format!("{}/assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    let mut w = impulse::Scene::load(std::path::Path::new(&path))
+        .and_then(|s| s.build(&path))
+        .unwrap();
+    w.method = impulse::method::Setting::Fixed(method);
+    w
+}
