@@ -338,7 +338,13 @@ fn an_idle_window_sleeps_and_wakes_at_the_first_key() {
         share * 100.0
     );
 
-    // A key after a long idle: seen well before the next timer frame.
+    // A key after a long idle: seen well before the next timer frame. It is
+    // pressed as a timer frame is drawn (just after its dump is written), the
+    // moment a key used to wait for the next one.
+    let frame = after["frame"].as_u64().unwrap();
+    while app.state()["frame"].as_u64().unwrap() == frame {
+        sleep(Duration::from_millis(2));
+    }
     let pressed = std::time::Instant::now();
     app.xdo(&["key", "space"]);
     let answered = loop {

@@ -17,6 +17,12 @@
 //! thread. It finds this process's window through the X-Resource
 //! extension. Where that is missing (no X server, no such extension, the
 //! browser), the window draws every frame as before.
+//!
+//! A second thread watches keys and button releases on its own connection
+//! and nudges the window until a frame has seen them. miniquad's blocking
+//! loop reads one event more than it has queued, so a key that arrives while
+//! a frame is drawn (press and release both queued) would otherwise wait for
+//! the next timer frame, up to a second.
 
 use super::interaction::Gesture;
 use glam::DVec2;
@@ -71,6 +77,9 @@ impl Idle {
         if busy || moved || self.waker.is_none() {
             self.last_busy = now;
         }
+        if let Some(waker) = &self.waker {
+            waker.frame_drawn();
+        }
         match &self.waker {
             Some(waker) if waker.ready() && now - self.last_busy >= GRACE => {
                 self.idle_frames += 1;
@@ -116,12 +125,17 @@ impl super::App {
 
 #[cfg(target_os = "linux")]
 mod waker {
+    use super::IDLE_FRAME;
+    use std::sync::atomic::{AtomicU64, Ordering};
     use std::sync::{Arc, Condvar, Mutex};
+    use std::time::Duration;
     use x11rb::connection::Connection;
     use x11rb::protocol::res::{ClientIdMask, ClientIdSpec, ConnectionExt as _};
     use x11rb::protocol::xproto::{
-        AtomEnum, ConnectionExt as _, EventMask, MotionNotifyEvent, Window, MOTION_NOTIFY_EVENT,
+        AtomEnum, ChangeWindowAttributesAux, ConnectionExt as _, EventMask, MotionNotifyEvent,
+        Window, MOTION_NOTIFY_EVENT,
     };
+    use x11rb::protocol::Event;
 
     /// A wake-up asked for: when, and where the pointer is.
     type Alarm = Option<(std::time::Instant, (f32, f32))>;
@@ -131,7 +145,12 @@ mod waker {
         alarm: Arc<(Mutex<Alarm>, Condvar)>,
         /// This process's window, once found.
         window: Arc<Mutex<Option<Window>>>,
+        /// Frames drawn so far (the input watcher waits for them).
+        drawn: Arc<AtomicU64>,
     }
+
+    /// How often the input watcher nudges until a frame has seen the input.
+    const RETRY: Duration = Duration::from_millis(25);
 
     impl Waker {
         /// A waker if an X server answers (until it finds the window, or if
@@ -141,17 +160,28 @@ mod waker {
             let root = conn.setup().roots.get(screen)?.root;
             let alarm: Arc<(Mutex<Alarm>, Condvar)> = Arc::default();
             let window = Arc::new(Mutex::new(None));
-            let (a, w, class) = (alarm.clone(), window.clone(), class.to_string());
+            let drawn = Arc::new(AtomicU64::new(0));
+            let (a, w, d) = (alarm.clone(), window.clone(), drawn.clone());
+            let class = class.to_string();
             std::thread::Builder::new()
                 .name("idle waker".into())
-                .spawn(move || run(conn, root, &class, &a, &w))
+                .spawn(move || run(conn, root, &class, &a, &w, d))
                 .ok()?;
-            Some(Waker { alarm, window })
+            Some(Waker {
+                alarm,
+                window,
+                drawn,
+            })
         }
 
         /// Whether the window was found (until then every frame is drawn).
         pub fn ready(&self) -> bool {
             self.window.lock().is_ok_and(|w| w.is_some())
+        }
+
+        /// Counts a frame drawn.
+        pub fn frame_drawn(&self) {
+            self.drawn.fetch_add(1, Ordering::Release);
         }
 
         /// Draws a frame in `seconds`, the pointer at `mouse`.
@@ -171,6 +201,7 @@ mod waker {
         class: &str,
         alarm: &(Mutex<Alarm>, Condvar),
         window: &Mutex<Option<Window>>,
+        drawn: Arc<AtomicU64>,
     ) {
         // The window appears once miniquad has made it.
         let mine = loop {
@@ -182,6 +213,9 @@ mod waker {
         if let Ok(mut w) = window.lock() {
             *w = Some(mine);
         }
+        let _ = std::thread::Builder::new()
+            .name("idle input watcher".into())
+            .spawn(move || watch_input(mine, &drawn));
         let (lock, signal) = alarm;
         let Ok(mut guard) = lock.lock() else { return };
         loop {
@@ -228,6 +262,53 @@ mod waker {
         })
     }
 
+    /// Makes sure a frame follows each key press or release and button
+    /// release on `window` (ButtonPress belongs to one client only, miniquad).
+    /// Input that arrives while a frame is drawn is read by miniquad in one
+    /// batch with everything else queued, and a nudge sent at once would be
+    /// in that batch too; so after the input it nudges every [`RETRY`] until
+    /// two frames have ended (the one being drawn when the input came, and
+    /// one begun after it), or [`IDLE_FRAME`] has passed. Returns when the
+    /// display or the window is gone.
+    fn watch_input(window: Window, drawn: &AtomicU64) {
+        let Ok((conn, _)) = x11rb::connect(None) else {
+            return;
+        };
+        let mask = EventMask::KEY_PRESS | EventMask::KEY_RELEASE | EventMask::BUTTON_RELEASE;
+        let selected = conn
+            .change_window_attributes(window, &ChangeWindowAttributesAux::new().event_mask(mask))
+            .ok()
+            .and_then(|c| c.check().ok());
+        if selected.is_none() {
+            return;
+        }
+        let pointer = |event: &Event| match event {
+            Event::KeyPress(e) | Event::KeyRelease(e) => Some((e.event_x, e.event_y)),
+            Event::ButtonRelease(e) => Some((e.event_x, e.event_y)),
+            _ => None,
+        };
+        while let Ok(event) = conn.wait_for_event() {
+            let Some(mut at) = pointer(&event) else {
+                continue;
+            };
+            let (seen, since) = (drawn.load(Ordering::Acquire), std::time::Instant::now());
+            loop {
+                if nudge(&conn, window, (at.0 as f32, at.1 as f32)).is_err() {
+                    return;
+                }
+                std::thread::sleep(RETRY);
+                while let Ok(Some(later)) = conn.poll_for_event() {
+                    at = pointer(&later).unwrap_or(at);
+                }
+                if drawn.load(Ordering::Acquire) >= seen + 2
+                    || since.elapsed().as_secs_f64() > IDLE_FRAME
+                {
+                    break;
+                }
+            }
+        }
+    }
+
     /// Sends `window` a pointer motion to `mouse` (where it already is).
     fn nudge(conn: &impl Connection, window: Window, mouse: (f32, f32)) -> Result<(), ()> {
         let (x, y) = (mouse.0.round() as i16, mouse.1.round() as i16);
@@ -265,5 +346,6 @@ mod waker {
             false
         }
         pub fn wake_in(&self, _seconds: f64, _mouse: (f32, f32)) {}
+        pub fn frame_drawn(&self) {}
     }
 }
