@@ -20,22 +20,15 @@ impl Sim {
             return false;
         }
         let mut near = Vec::new();
-        self.grid.for_each_neighbour(me.cell, |c, _| {
-            near.extend(self.grid.members(&self.bodies, c));
-        });
+        self.gather_near(k, &mut near);
         near.into_iter().all(|j| {
-            if j == k || self.rest[j as usize] == Rest::Free {
+            if self.rest[j as usize] == Rest::Free {
                 return true;
             }
             let other = self.bodies[j as usize];
             let pos = other.pos + other.vel * (self.now - other.time);
-            let d = self.laws.boundary.separation(me.pos, pos, self.laws.size);
-            let dist = d.length();
-            dist > 0.0
-                && clear(
-                    dist - me.radius - other.radius,
-                    (me.vel - other.vel).dot(d / dist),
-                )
+            self.normal_and_gap(me.pos, me.radius, pos, other.radius)
+                .is_some_and(|(normal, gap)| clear(gap, (me.vel - other.vel).dot(normal)))
         })
     }
 

@@ -122,6 +122,26 @@ impl Sim {
         walls
     }
 
+    /// The discs in the grid cells around disc `i`, `i` left out, into
+    /// `near` (emptied first).
+    fn gather_near(&self, i: u32, near: &mut Vec<u32>) {
+        near.clear();
+        self.grid
+            .for_each_neighbour(self.bodies[i as usize].cell, |c, _| {
+                near.extend(self.grid.members(&self.bodies, c).filter(|&k| k != i));
+            });
+    }
+
+    /// Between a disc at `a` of radius `ra` and one at `b` of radius `rb`:
+    /// the unit normal along the boundary's separation of `a` from `b`, and
+    /// the gap between their surfaces (negative: they overlap); `None` where
+    /// their centres coincide.
+    fn normal_and_gap(&self, a: DVec2, ra: f64, b: DVec2, rb: f64) -> Option<(DVec2, f64)> {
+        let d = self.laws.boundary.separation(a, b, self.laws.size);
+        let dist = d.length();
+        (dist > 0.0).then(|| (d / dist, dist - ra - rb))
+    }
+
     /// Kinetic plus potential energy of the translations (J), every body
     /// at the current time.
     fn energy_now(&self) -> f64 {
@@ -410,24 +430,19 @@ impl Sim {
         let mut near = Vec::new();
         for &i in held {
             let me = self.bodies[i as usize];
-            near.clear();
-            self.grid.for_each_neighbour(me.cell, |c, _| {
-                near.extend(self.grid.members(&self.bodies, c));
-            });
+            self.gather_near(i, &mut near);
             for &k in &near {
                 if chosen[k as usize] || self.rest[k as usize] != Rest::Free {
                     continue;
                 }
                 let other = self.bodies[k as usize];
-                let d = self
-                    .laws
-                    .boundary
-                    .separation(me.pos, other.pos, self.laws.size);
-                let dist = d.length();
-                let gap = dist - me.radius - other.radius;
-                if dist > 0.0
-                    && gap <= HOLD_SKIN * me.radius.min(other.radius)
-                    && (me.vel - other.vel).dot(d / dist).abs() < self.impact_speed
+                let Some((normal, gap)) =
+                    self.normal_and_gap(me.pos, me.radius, other.pos, other.radius)
+                else {
+                    continue;
+                };
+                if gap <= HOLD_SKIN * me.radius.min(other.radius)
+                    && (me.vel - other.vel).dot(normal).abs() < self.impact_speed
                 {
                     chosen[k as usize] = true;
                     joining.push(k);

@@ -144,28 +144,21 @@ impl Sim {
                     pushes.push((u32::MAX, normal, 0.5 * gap.max(0.0) / left));
                 }
             }
-            near.clear();
-            self.grid.for_each_neighbour(me.cell, |c, _| {
-                near.extend(self.grid.members(&self.bodies, c));
-            });
+            self.gather_near(i, &mut near);
             for &k in &near {
                 let its = self.rest[k as usize];
-                if k == i || its == Rest::Free {
+                if its == Rest::Free {
                     continue;
                 }
                 self.advance_to(k, self.now);
                 let other = self.bodies[k as usize];
-                let d = self
-                    .laws
-                    .boundary
-                    .separation(me.pos, other.pos, self.laws.size);
-                let dist = d.length();
-                if dist <= 0.0 {
+                let Some((normal, gap)) =
+                    self.normal_and_gap(me.pos, me.radius, other.pos, other.radius)
+                else {
                     continue;
-                }
-                let normal = d / dist;
+                };
                 let closing = (me.vel - other.vel).dot(normal);
-                let gap = (dist - me.radius - other.radius).max(0.0);
+                let gap = gap.max(0.0);
                 if closing > 0.0 && closing * left >= gap {
                     let k = if its == Rest::Held { k } else { u32::MAX };
                     pushes.push((k, normal, 0.5 * gap / left));
@@ -220,6 +213,7 @@ impl Sim {
     /// other, with sleepers and with walls.
     pub(super) fn contacts_of(&mut self, held: &[u32], dt: f64) -> Vec<Contact> {
         let mut contacts = Vec::new();
+        let mut near = Vec::new();
         let up = -self.laws.gravity.normalize_or_zero();
         for &i in held {
             let me = self.bodies[i as usize];
@@ -235,35 +229,27 @@ impl Sim {
                     height: (me.pos + me.radius * normal).dot(up),
                 });
             }
-            let mut near = Vec::new();
-            self.grid.for_each_neighbour(me.cell, |c, _| {
-                near.extend(self.grid.members(&self.bodies, c).filter(|&k| k != i));
-            });
-            for k in near {
+            self.gather_near(i, &mut near);
+            for &k in &near {
                 let its = self.rest[k as usize];
                 // Each pair of held discs once; flying ones meet by events.
                 if its == Rest::Free || (its == Rest::Held && k < i) {
                     continue;
                 }
                 let other = self.bodies[k as usize];
-                let d = self
-                    .laws
-                    .boundary
-                    .separation(me.pos, other.pos, self.laws.size);
-                let dist = d.length();
-                let gap = dist - me.radius - other.radius;
+                let Some((normal, gap)) =
+                    self.normal_and_gap(me.pos, me.radius, other.pos, other.radius)
+                else {
+                    continue;
+                };
                 let vb = if its == Rest::Held {
                     other.vel
                 } else {
                     DVec2::ZERO
                 };
-                let closing = if dist > 0.0 {
-                    (me.vel - vb).dot(d / dist)
-                } else {
-                    0.0
-                };
+                let closing = (me.vel - vb).dot(normal);
                 let reach = (HOLD_SKIN * me.radius.min(other.radius)).max(2.0 * closing * dt);
-                if dist <= 0.0 || gap > reach {
+                if gap > reach {
                     continue;
                 }
                 let mass = if its == Rest::Held {
@@ -272,7 +258,6 @@ impl Sim {
                 } else {
                     ma
                 };
-                let normal = d / dist;
                 contacts.push(Contact {
                     a: i,
                     b: k,
