@@ -40,6 +40,10 @@ fn main() -> std::process::ExitCode {
             "an_idle_window_sleeps_and_wakes_at_the_first_key",
             an_idle_window_sleeps_and_wakes_at_the_first_key,
         ),
+        (
+            "switching_an_impulse_pile_to_exact_says_what_it_separated",
+            switching_an_impulse_pile_to_exact_says_what_it_separated,
+        ),
     ])
 }
 
@@ -381,4 +385,45 @@ fn an_idle_window_sleeps_and_wakes_at_the_first_key() {
         sleep(Duration::from_millis(50));
     }
     assert_eq!(still.state()["paused"], false);
+}
+
+fn switching_an_impulse_pile_to_exact_says_what_it_separated() {
+    // The pile preset under impulse, whose resting discs overlap a little.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("pile-impulse.toml");
+    let text = std::fs::read_to_string(asset("preset-0-pile.toml")).unwrap();
+    assert!(
+        !text.contains("[simulation]"),
+        "the preset leaves the method to auto"
+    );
+    let text = format!("{text}\n[simulation]\nmethod = \"impulse\"\n");
+    std::fs::write(&scene, text).unwrap();
+    let x = Xvfb::start("takeover");
+    let app = Sandbox::start(&x, &[scene.to_str().unwrap()]);
+    app.wait_for("two seconds of settling", 2_000, |s| {
+        s["time"].as_f64().unwrap() > 2.0
+    });
+    assert_eq!(app.state()["plan"]["method"], "impulse");
+    app.move_to([640.0, 400.0]);
+    // Y: impulse -> verlet -> exact.
+    app.xdo(&["key", "y"]);
+    app.xdo(&["key", "y"]);
+    let s = app.wait_for("the switch to exact", 60, |s| {
+        s["plan"]["method"] == "exact" && s["ui"]["message"].is_string()
+    });
+    let message = s["ui"]["message"].as_str().unwrap();
+    assert!(
+        message.starts_with("exact needs discs apart: it separated ")
+            && message.contains(" overlapping pairs of discs"),
+        "{message}"
+    );
+    // Lifting discs off the floor raises the energy: the number is positive.
+    let joules: f64 = message
+        .rsplit("raised the energy by ")
+        .next()
+        .and_then(|t| t.strip_suffix(" J"))
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("an energy in {message:?}"));
+    assert!(joules > 0.0, "{message}");
+    app.quit();
 }

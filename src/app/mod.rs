@@ -528,6 +528,9 @@ impl App {
                 let now = self.world.metrics();
                 self.totals.push(&self.world, &now);
             }
+            if stats.separated_pairs > 0 {
+                self.toast_separated(stats.separated_pairs, stats.separation_energy);
+            }
             self.gesture.pin_held(&mut self.world);
             self.step_micros
                 .push_back(stats.timings.total().as_secs_f64() * 1e6);
@@ -558,6 +561,28 @@ impl App {
             "running at {}× real time",
             ui::numbers::plain(rate, digits)
         ))
+    }
+
+    /// Says that `exact` pushed `pairs` overlapping pairs apart as it took
+    /// the discs over, and the potential energy that added (J): the energy
+    /// readout jumps, and this is why.
+    fn toast_separated(&mut self, pairs: usize, energy: f64) {
+        let pairs = if pairs == 1 {
+            "1 overlapping pair".to_string()
+        } else {
+            format!("{pairs} overlapping pairs")
+        };
+        let energy = if energy.abs() < 1e-9 {
+            String::new()
+        } else if energy > 0.0 {
+            format!(", which raised the energy by {energy:.3} J")
+        } else {
+            format!(", which lowered the energy by {:.3} J", -energy)
+        };
+        self.toast_for(
+            format!("exact needs discs apart: it separated {pairs} of discs{energy}"),
+            6.0,
+        );
     }
 
     fn toast(&mut self, message: impl Into<String>) {

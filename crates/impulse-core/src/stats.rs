@@ -74,6 +74,13 @@ pub struct StepStats {
     pub events: usize,
     /// The exact method hit its per-step event cap and stopped early.
     pub truncated: bool,
+    /// Overlapping pairs the exact method pushed apart before the step, as
+    /// it took the discs over (after another method, an edit, or a scene
+    /// that starts overlapping); 0 when it continued its last step.
+    pub separated_pairs: usize,
+    /// Potential energy those moves added (J): discs put back inside the
+    /// walls rise (the pushes themselves keep each pair's centre of mass).
+    pub separation_energy: f64,
     /// Per-stage wall-clock time.
     pub timings: StageTimings,
 }

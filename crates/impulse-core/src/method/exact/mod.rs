@@ -91,9 +91,13 @@ pub const SIMULTANEOUS_TOLERANCE: f64 = 1e-9;
 /// (20 pairs of runs), 3.52 → 3.65 (16 pairs, a busier hour). Below, the
 /// discs mostly fit the cache and the prefetches only cost instructions.
 pub const PREFETCH_MIN_DISCS: usize = 30_000;
-/// Most sweeps of push-apart per set-up; what is left waits for the next
-/// step, which starts afresh.
+/// Sweeps of push-apart per set-up while they make little progress; what
+/// is left waits for the next step, which starts afresh (see
+/// `Sim::separate_overlaps`).
 pub const SEPARATION_SWEEPS: usize = 100;
+/// Most disc-visits of push-apart per set-up when sweeps keep making
+/// progress (a sweep visits every disc): 10⁷, about half a second.
+pub const SEPARATION_WORK: usize = 10_000_000;
 
 /// The exact method's state between steps. While nobody edits the world,
 /// the next step continues the event calendar where the last one stopped
@@ -152,6 +156,8 @@ impl Exact {
         stats.events += sim.events;
         stats.truncated |= sim.truncated;
         stats.max_overlap = stats.max_overlap.max(sim.max_overlap);
+        stats.separated_pairs += sim.separated;
+        stats.separation_energy += sim.separation_energy;
         self.sim = Some(sim);
         // Detection, resolution and flight interleave event by event, so the
         // whole step is booked as resolution.
@@ -255,6 +261,10 @@ struct Sim {
     impact_speed: f64,
     wall_impulse: f64,
     max_overlap: f64,
+    /// Overlapping pairs the set-up pushed apart (0 on a continuing step).
+    separated: usize,
+    /// Potential energy the set-up's moves added (J; 0 on a continuing step).
+    separation_energy: f64,
     truncated: bool,
     /// The time [`Sim::finish`] put every disc at.
     finished_at: f64,
