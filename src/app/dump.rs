@@ -342,4 +342,39 @@ impl super::App {
             crate::web::report_state(&json);
         }
     }
+
+    /// Saves the last frame where `--screenshot` asked.
+    pub(super) fn save_screenshot(&self, image: &ScreenImage) {
+        let Some(path) = &self.options.screenshot else {
+            return;
+        };
+        let (w, h, rgba) = image;
+        match write_png(path, *w, *h, rgba) {
+            Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
+            Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
+        }
+    }
+
+    /// Saves the frame F12 asked for and says where (in the browser:
+    /// downloads it).
+    pub(super) fn save_screenshot_key(&mut self, image: &ScreenImage, path: &std::path::Path) {
+        let (w, h, rgba) = image;
+        let dir = path.parent().unwrap_or(std::path::Path::new("."));
+        let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+        let saved = png_bytes(*w, *h, rgba)
+            .map_err(|e| e.to_string())
+            .and_then(|png| super::scenes::keep_file(dir, &stem, "png", &png));
+        match saved {
+            Ok(path) => {
+                eprintln!("impulse: screenshot saved to {}", path.display());
+                let verb = if cfg!(target_arch = "wasm32") {
+                    "downloaded as"
+                } else {
+                    "saved to"
+                };
+                self.toast(format!("Screenshot {verb} {}", path.display()));
+            }
+            Err(e) => self.report(format!("Screenshot not saved: {e}")),
+        }
+    }
 }
