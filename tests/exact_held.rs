@@ -17,24 +17,6 @@ fn scene(file: &str) -> World {
     common::scene_with(file, Method::Exact)
 }
 
-/// The deepest overlap of two discs or of a disc and a wall, as a fraction
-/// of the smaller radius (all pairs: a few hundred discs).
-fn deepest_overlap(w: &World) -> f64 {
-    let ps = &w.particles;
-    let mut worst = 0.0f64;
-    for (i, p) in ps.iter().enumerate() {
-        for q in &ps[i + 1..] {
-            let depth = p.radius + q.radius - (p.pos - q.pos).length();
-            worst = worst.max(depth / p.radius.min(q.radius));
-        }
-        let lo = p.pos - DVec2::splat(p.radius);
-        let hi = w.laws.size - p.pos - DVec2::splat(p.radius);
-        worst = worst.max(-lo.min_element() / p.radius);
-        worst = worst.max(-hi.min_element() / p.radius);
-    }
-    worst
-}
-
 /// Steps `w` for `seconds`, checking at every step that none was cut
 /// short, that no two discs overlap by 1e-9 of a radius, and that the
 /// total energy never rises by more than 1e-12 of itself.
@@ -50,7 +32,7 @@ fn run_checked(w: &mut World, seconds: f64) {
             (now - energy) / energy.abs()
         );
         energy = now;
-        let overlap = deepest_overlap(w);
+        let overlap = common::deepest_pair_overlap(w).max(common::deepest_wall_overlap(w));
         assert!(
             overlap < 1e-9,
             "step {step}: overlap {overlap:e} of a radius"

@@ -15,20 +15,6 @@ fn preset(file: &str) -> World {
     common::scene_with(file, Method::Exact)
 }
 
-/// The deepest overlap of any two discs, as a fraction of the smaller radius.
-fn deepest_overlap(w: &World) -> f64 {
-    let ps = &w.particles;
-    let mut worst = 0.0f64;
-    for i in 0..ps.len() {
-        for j in i + 1..ps.len() {
-            let d = (ps[i].pos - ps[j].pos).length();
-            let depth = ps[i].radius + ps[j].radius - d;
-            worst = worst.max(depth / ps[i].radius.min(ps[j].radius));
-        }
-    }
-    worst
-}
-
 #[test]
 fn a_pile_settles_under_exact_without_overlap_stall_or_energy_gain() {
     let mut w = preset("stress-pile.toml");
@@ -44,11 +30,11 @@ fn a_pile_settles_under_exact_without_overlap_stall_or_energy_gain() {
         );
         energy = now;
         if step % 240 == 0 {
-            let o = deepest_overlap(&w);
+            let o = common::deepest_pair_overlap(&w);
             assert!(o < 1e-9, "step {step}: overlap {o:e} of a radius");
         }
     }
-    assert!(deepest_overlap(&w) < 1e-9);
+    assert!(common::deepest_pair_overlap(&w) < 1e-9);
     // At rest: every disc asleep or held. Frictionless discs keep finding
     // room now and then (one disc at a time slides a little further into a
     // gap, millimetres per second), so "at rest" is the stability suite's
@@ -145,6 +131,6 @@ fn a_resting_pile_still_answers_a_hit() {
         .filter(|(b, p)| (**b - p.pos).length() > 1e-3)
         .count();
     assert!(moved >= 3, "only {moved} discs of the pile moved");
-    assert!(deepest_overlap(&w) < 1e-9);
+    assert!(common::deepest_pair_overlap(&w) < 1e-9);
     assert_eq!(momentum, DVec2::ZERO);
 }

@@ -74,29 +74,18 @@ fn switching_a_settled_impulse_pile_to_exact_reports_the_overlaps_it_removes() {
     for _ in 0..(3.0 / DT) as usize {
         w.step(DT);
     }
-    let deepest = |w: &World| {
-        let ps = &w.particles;
-        let mut worst = 0.0f64;
-        for (i, p) in ps.iter().enumerate() {
-            for q in &ps[i + 1..] {
-                worst = worst
-                    .max((p.radius + q.radius - (p.pos - q.pos).length()) / (p.radius + q.radius));
-            }
-        }
-        worst
-    };
-    let before = deepest(&w);
+    let before = common::deepest_pair_overlap(&w);
     assert!(
         before > OVERLAP_TOLERANCE,
-        "impulse's pile overlaps ({before:e} of the two radii)"
+        "impulse's pile overlaps ({before:e} of a radius)"
     );
     w.method = Setting::Fixed(Method::Exact);
     let first = w.step(DT);
     assert!(first.separated_pairs >= 1, "the overlaps were pushed apart");
     assert!(
-        deepest(&w) < 1e-9,
+        common::deepest_pair_overlap(&w) < 1e-9,
         "none left after exact's first step: {:e}",
-        deepest(&w)
+        common::deepest_pair_overlap(&w)
     );
     assert!(
         first.separation_energy >= -1e-9,

@@ -65,3 +65,30 @@ pub fn scene_with(file: &str, method: impulse::method::Method) -> World {
     w.method = impulse::method::Setting::Fixed(method);
     w
 }
+
+/// The deepest overlap of any two discs, as a fraction of the smaller
+/// radius (all pairs: for a few hundred discs).
+pub fn deepest_pair_overlap(w: &World) -> f64 {
+    let ps = &w.particles;
+    let mut worst = 0.0f64;
+    for (i, p) in ps.iter().enumerate() {
+        for q in &ps[i + 1..] {
+            let depth = p.radius + q.radius - (p.pos - q.pos).length();
+            worst = worst.max(depth / p.radius.min(q.radius));
+        }
+    }
+    worst
+}
+
+/// The deepest a disc reaches past a wall of the box, as a fraction of its
+/// radius.
+pub fn deepest_wall_overlap(w: &World) -> f64 {
+    let mut worst = 0.0f64;
+    for p in &w.particles {
+        let lo = p.pos - DVec2::splat(p.radius);
+        let hi = w.laws.size - p.pos - DVec2::splat(p.radius);
+        worst = worst.max(-lo.min_element() / p.radius);
+        worst = worst.max(-hi.min_element() / p.radius);
+    }
+    worst
+}
