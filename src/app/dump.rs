@@ -1,7 +1,7 @@
 //! Files the window writes for tests and documentation: a JSON state dump
 //! and PNG screenshots, both written atomically (temporary file, then rename).
 
-use super::camera::Camera;
+use super::model::camera::Camera;
 use crate::files::write_atomically;
 use impulse::{Metrics, Particle, World};
 use macroquad::prelude::get_screen_data;
@@ -100,6 +100,8 @@ pub struct StateDump<'a> {
 pub struct UiDump {
     pub docks_open: bool,
     pub side_open: bool,
+    /// The side dock's drawer is open (where it is a drawer).
+    pub drawer_open: bool,
     pub dock_expanded: bool,
     pub tab: String,
     pub help_open: bool,
@@ -207,7 +209,7 @@ impl<'a> StateDump<'a> {
             recovery: RecoveryDump::default(),
             metrics: world.metrics(),
             total_energy: world.total_energy(),
-            spin_shown: super::draw::spin_shown(world),
+            spin_shown: super::model::overlays::spin_shown(world),
             particles: &world.particles,
         }
     }
@@ -272,66 +274,64 @@ impl super::App {
         else {
             return;
         };
+        let m = &self.model;
         #[cfg(target_arch = "wasm32")]
-        if self.world.particles.len() > 2_000 && self.frame % 30 != 1 {
+        if m.world.particles.len() > 2_000 && self.frame % 30 != 1 {
             return;
         }
-        let mut state = StateDump::of(&self.world, &self.camera);
+        let mut state = StateDump::of(&m.world, &m.view.camera);
         state.frame = self.frame;
         state.sleeping = self.idle.sleeping();
         state.idle_frames = self.idle.idle_frames;
-        state.paused = self.clock.paused;
-        state.time_scale = self.clock.time_scale();
-        state.dt = self.clock.dt;
-        state.warnings = impulse::warnings::warnings(&self.world, self.clock.dt);
-        state.pi_result = super::lesson::pi_result(&self.world);
-        state.selected = self.selected;
-        state.history_len = self.history.len();
-        state.history_cursor = self.history.cursor();
-        state.collisions_recorded = self.world.ledger.recorded;
-        state.held = self.gesture.held();
-        state.scene_name = self.scene.name.clone();
-        state.scene_origin = self.scene_origin.clone();
-        state.panel_visible = self.ui.docks_open && self.ui.side_open;
-        state.panel_widgets = self.ui.widgets.clone();
+        state.paused = m.clock.paused;
+        state.time_scale = m.clock.time_scale();
+        state.dt = m.clock.dt;
+        state.warnings = impulse::warnings::warnings(&m.world, m.clock.dt);
+        state.pi_result = super::model::lesson::pi_result(&m.world);
+        state.selected = m.selected;
+        state.history_len = m.record.history.len();
+        state.history_cursor = m.record.history.cursor();
+        state.collisions_recorded = m.world.ledger.recorded;
+        state.held = m.pointer.gesture.held();
+        state.scene_name = m.open.scene.name.clone();
+        state.scene_origin = m.open.origin.clone();
+        state.panel_visible = m.panels.docks_open && m.panels.side_open;
+        state.panel_widgets = self.panels.marks.widgets.clone();
         state.timing = self.frame_stats.recent();
-        let mut layout = self.ui.layout.clone();
-        if let Some(world_px) = self.world_text.as_ref().and_then(|t| t.smallest()) {
+        let mut layout = self.panels.layout.clone();
+        if let Some(world_px) = self.painter.smallest_text() {
             layout.min_text_px = layout.min_text_px.min(world_px);
         }
         state.layout = layout;
         state.ui = UiDump {
-            docks_open: self.ui.docks_open,
-            side_open: self.ui.side_open,
-            dock_expanded: self.ui.dock_expanded,
-            tab: self.ui.tab.title().to_string(),
-            help_open: self.ui.help_open,
-            presets_open: self.ui.presets_open,
-            theme: self.ui.theme.name().to_string(),
-            typing: self.ui.typing,
-            panel_keyboard: self.ui.panel_keyboard,
-            undo_levels: self.undo.levels().into(),
-            scene_edited: self.scene_edited,
-            center_of_mass_view: self.lesson.com_view.is_some(),
-            size_follows_mass: self.size_follows_mass,
-            table_note: self.ui.table.note.as_ref().map(|n| n.text.clone()),
-            message: self
-                .toast
-                .as_ref()
-                .filter(|(_, until)| macroquad::time::get_time() < *until)
-                .map(|(m, _)| m.clone()),
+            docks_open: m.panels.docks_open,
+            side_open: m.panels.side_open,
+            drawer_open: m.panels.drawer_open,
+            dock_expanded: m.panels.dock_expanded,
+            tab: m.panels.tab.title().to_string(),
+            help_open: m.panels.help_open,
+            presets_open: m.panels.presets_open,
+            theme: m.panels.theme.name().to_string(),
+            typing: self.panels.typing,
+            panel_keyboard: self.panels.panel_keyboard,
+            undo_levels: m.undo.levels().into(),
+            scene_edited: m.open.edited,
+            center_of_mass_view: m.overlays.com_view.is_some(),
+            size_follows_mass: m.new_discs.size_follows_mass,
+            table_note: m.messages.table.as_ref().map(|n| n.text.clone()),
+            message: m.message().map(str::to_string),
         };
         state.realtime = RealtimeDump {
-            ratio: self.sim_rate(),
-            shown: self.slow_note(),
-            steps_last_frame: self.steps_last_frame,
-            steps_dropped: self.steps_dropped,
+            ratio: m.sim_rate(),
+            shown: m.slow_note(),
+            steps_last_frame: m.steps.steps_last_frame,
+            steps_dropped: m.steps.steps_dropped,
         };
         state.recovery = RecoveryDump {
-            file: self.recovery.path().display().to_string(),
-            saves: self.recovery.saves,
-            error: self.recovery.error.clone(),
-            offered: self.recovery.offered.is_some(),
+            file: m.recovery.path().display().to_string(),
+            saves: m.recovery.saves,
+            error: m.recovery.error.clone(),
+            offered: m.recovery.offered.is_some(),
         };
         #[cfg(not(target_arch = "wasm32"))]
         if let Err(e) = write_state(path, &state) {
@@ -358,12 +358,13 @@ impl super::App {
     /// Saves the frame F12 asked for and says where (in the browser:
     /// downloads it).
     pub(super) fn save_screenshot_key(&mut self, image: &ScreenImage, path: &std::path::Path) {
+        let model = &mut self.model;
         let (w, h, rgba) = image;
         let dir = path.parent().unwrap_or(std::path::Path::new("."));
         let stem = path.file_stem().unwrap_or_default().to_string_lossy();
         let saved = png_bytes(*w, *h, rgba)
             .map_err(|e| e.to_string())
-            .and_then(|png| super::scenes::keep_file(dir, &stem, "png", &png));
+            .and_then(|png| super::model::scenes::keep_file(dir, &stem, "png", &png));
         match saved {
             Ok(path) => {
                 eprintln!("impulse: screenshot saved to {}", path.display());
@@ -372,9 +373,9 @@ impl super::App {
                 } else {
                     "saved to"
                 };
-                self.toast(format!("Screenshot {verb} {}", path.display()));
+                model.toast(format!("Screenshot {verb} {}", path.display()));
             }
-            Err(e) => self.report(format!("Screenshot not saved: {e}")),
+            Err(e) => model.report(format!("Screenshot not saved: {e}")),
         }
     }
 }

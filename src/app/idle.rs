@@ -24,7 +24,7 @@
 //! a frame is drawn (press and release both queued) would otherwise wait for
 //! the next timer frame, up to a second.
 
-use super::interaction::Gesture;
+use super::model::gesture::Gesture;
 use glam::DVec2;
 use macroquad::prelude::*;
 
@@ -103,9 +103,9 @@ impl super::App {
     /// makes one, the idle timer's too. Its animations end within the
     /// grace period after the input that started them.)
     pub(super) fn busy(&self, was_running: bool) -> bool {
-        let moving = (was_running || !self.clock.paused)
-            && self
-                .world
+        let m = &self.model;
+        let moving = (was_running || !m.clock.paused)
+            && m.world
                 .particles
                 .iter()
                 .any(|p| p.vel != DVec2::ZERO || p.spin != 0.0);
@@ -117,8 +117,8 @@ impl super::App {
             || !touches().is_empty();
         moving
             || input
-            || !matches!(self.gesture, Gesture::Idle)
-            || self.toast.is_some()
+            || !matches!(m.pointer.gesture, Gesture::Idle)
+            || m.messages.toast.is_some()
             || self.frame < 2
     }
 }

@@ -1,42 +1,32 @@
-//! The sandbox window: a fixed-step loop around a [`World`], with a camera,
-//! mouse gestures and overlays in the world (macroquad) and docked panels
-//! around it (egui, [`ui`]). Everything here is presentation; the physics
-//! lives in the `impulse` library.
+//! The sandbox window: the model ([`model::Sandbox`], no window in it) and
+//! around it what only a window has. Each frame: the panels ([`ui`]) are
+//! laid out ([`layout`]) and drawn and say what was clicked; keys, the mouse
+//! and touches become commands ([`input`], through the bindings table);
+//! the model applies them and ticks; the world is drawn ([`drawing`]) in
+//! the rectangle the layout gave it; the state dump is written ([`dump`]).
+//! Everything here is presentation; the physics lives in the `impulse`
+//! library.
 
-mod camera;
-mod clock;
-mod cull;
-mod discs;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod display;
-mod draw;
+mod drawing;
 mod dump;
-mod export;
 mod frame_stats;
 mod idle;
 mod input;
-mod interaction;
-mod lesson;
-mod plot;
-mod readouts;
-mod recovery;
-mod scenes;
-mod share;
-mod trails;
+pub mod layout;
+mod look;
+pub mod model;
+pub mod numbers;
 mod ui;
-mod undo;
 
-use camera::Camera;
-use clock::{FixedStepClock, RealtimeMeter};
-use draw::{Look, Overlays};
 use glam::DVec2;
 use impulse::{Scene, World};
-use interaction::{Gesture, NewDisc};
 use macroquad::miniquad::conf::Conf;
 #[cfg(not(target_arch = "wasm32"))]
 use macroquad::miniquad::conf::{LinuxBackend, Platform};
 use macroquad::prelude::*;
-use std::collections::VecDeque;
+use model::Sandbox;
 use std::path::PathBuf;
 
 /// Options for the window, from the command line.
@@ -73,7 +63,7 @@ pub struct WindowOptions {
     /// Seconds between autosaves of the sandbox to the recovery file, which
     /// the next start offers to restore if this window does not close
     /// normally; 0 turns autosave off.
-    #[arg(long, value_name = "SECONDS", default_value_t = recovery::DEFAULT_EVERY,
+    #[arg(long, value_name = "SECONDS", default_value_t = model::recovery::DEFAULT_EVERY,
           value_parser = crate::cli::non_negative_seconds)]
     pub autosave: f64,
     /// Window size in pixels, WIDTHxHEIGHT.
@@ -86,6 +76,10 @@ pub struct WindowOptions {
     /// Start in the light theme (for a projector in a bright room).
     #[arg(long)]
     pub light: bool,
+    /// Open straight on the scene, without the start screen's tiles (which
+    /// a start without a scene file shows).
+    #[arg(long)]
+    pub no_start: bool,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -143,7 +137,8 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
         None => "Impulse".to_string(),
     };
     let (width, height) = options.size;
-    let app = App::new(options, scene, origin, world);
+    let plain = options.scene.is_none() && options.gas.is_none();
+    let app = App::new(options, scene, origin, world, plain);
     let conf = Conf {
         window_title: title,
         window_width: width,
@@ -199,7 +194,8 @@ pub fn run_in_browser() {
         (scene, origin)
     };
     // A shared link opens its scene; a damaged one says so over the default.
-    let (mut scene, mut origin, mut problem) = match share::scene_in(&crate::web::fragment()) {
+    let (mut scene, mut origin, mut problem) = match model::share::scene_in(&crate::web::fragment())
+    {
         Some(Ok(scene)) => (scene, "the shared link".to_string(), None),
         Some(Err(why)) => {
             let (scene, origin) = default();
@@ -228,8 +224,11 @@ pub fn run_in_browser() {
         sample_count: 4,
         ..Default::default()
     };
-    let mut app = App::new(options, scene, origin, world);
-    app.pending_report = problem.or(app.pending_report.take());
+    let plain = problem.is_none() && origin == "built-in default scene";
+    let mut app = App::new(options, scene, origin, world, plain);
+    if let Some(problem) = problem {
+        app.model.report(problem);
+    }
     macroquad::Window::from_config(conf, app.run());
 }
 
@@ -258,191 +257,112 @@ fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64
 /// The window's WM_CLASS on X11 (the idle waker finds the window by it).
 const WM_CLASS: &str = "impulse";
 
-/// The window's whole state.
+/// The window: the model and what only a window has.
 struct App {
     options: WindowOptions,
-    scene: Scene,
-    scene_origin: String,
-    world: World,
-    camera: Camera,
-    /// The view shows the whole box: it is fitted again when the world's
-    /// rectangle changes (until the user zooms or pans).
-    camera_fitted: bool,
-    clock: FixedStepClock,
-    gesture: Gesture,
-    overlays: Overlays,
-    selected: Option<usize>,
-    new_disc: NewDisc,
-    toast: Option<(String, f64)>,
-    /// Recent per-step wall-clock times (µs) for the Details section.
-    step_micros: VecDeque<f64>,
-    steps_last_frame: u32,
-    /// Steps the clock asked for last frame that the frame budget dropped.
-    steps_dropped: u32,
-    /// Simulated seconds per real second, lately.
-    realtime: RealtimeMeter,
+    model: Sandbox,
+    panels: ui::Panels,
+    painter: drawing::Painter,
+    input: input::Input,
     frame: u64,
-    last_mouse: DVec2,
-    fullscreen: bool,
-    quit: bool,
-    ui: ui::UiState,
-    lesson: lesson::LessonOverlays,
-    totals: plot::Totals,
-    history: impulse::history::History,
-    trails: trails::Trails,
-    /// F12 asked for a screenshot of the next frame, to this file.
-    screenshot_request: Option<PathBuf>,
     /// Timings of the frames drawn so far.
     frame_stats: frame_stats::FrameStats,
-    /// The discs' GPU batch, made at the first frame (it needs the window).
-    disc_batch: Option<discs::DiscBatch>,
-    /// The world's font, loaded at the first frame.
-    world_text: Option<readouts::WorldText>,
-    /// Autosave, and the offer to restore an earlier session.
-    recovery: recovery::Recovery,
-    /// Undo and redo of changes to the scene.
-    undo: undo::Undo,
-    /// The scene when the left button went down in the world, remembered
-    /// for undo if the gesture changes it.
-    press_moment: Option<undo::Moment>,
-    /// The discs were edited since the scene opened: its caption may no
-    /// longer hold.
-    scene_edited: bool,
-    /// New discs and mass edits take the radius of one density.
-    size_follows_mass: bool,
-    /// A problem found before the window opened, shown in its first frame.
-    pending_report: Option<String>,
-    /// Two fingers down on a touch screen: where they were last frame.
-    pinch: Option<[DVec2; 2]>,
     /// Whether the window draws its next frame at once or sleeps.
     idle: idle::Idle,
 }
 
 impl App {
-    fn new(options: WindowOptions, scene: Scene, scene_origin: String, world: World) -> Self {
-        let dt = scene.step_for(options.dt);
-        let mut clock = FixedStepClock::new(dt, 64);
-        clock.paused = options.paused;
-        let size = world.laws.size;
+    /// The window on `scene`; `plain` when nothing chose it (no file, no
+    /// gas, no shared link): then the start screen shows, unless
+    /// `--no-start`.
+    fn new(
+        options: WindowOptions,
+        scene: Scene,
+        origin: String,
+        world: World,
+        plain: bool,
+    ) -> Self {
         let path = options.scene.as_ref().map(|p| p.display().to_string());
-        let options_keep_all = options.frame_stats.is_some();
-        let (recovery, recovery_problem) =
-            recovery::Recovery::new(&recovery::folder(&options.out), options.autosave);
-        let mut ui = ui::UiState::new(path.unwrap_or_default());
-        ui.set_scale(options.ui_scale);
-        if options.light {
-            ui.theme = ui::theme::Theme::Light;
-        }
-        let mut app = App {
-            options,
+        let keep_all = options.frame_stats.is_some();
+        let model = Sandbox::new(model::Start {
             scene,
-            scene_origin,
-            camera: Camera::fitting(size, DVec2::new(1280.0, 800.0), 30.0),
-            camera_fitted: true,
+            origin,
             world,
-            clock,
-            gesture: Gesture::Idle,
-            overlays: Overlays::default(),
-            selected: None,
-            new_disc: NewDisc {
-                radius: 0.4,
-                mass: 1.0,
+            paused: options.paused,
+            dt: options.dt,
+            out: options.out.clone(),
+            recovery: (model::recovery::folder(&options.out), options.autosave),
+            scale: options.ui_scale,
+            start_screen: plain && !options.no_start,
+            theme: if options.light {
+                model::Theme::Light
+            } else {
+                model::Theme::Dark
             },
-            toast: None,
-            step_micros: VecDeque::new(),
-            steps_last_frame: 0,
-            steps_dropped: 0,
-            realtime: RealtimeMeter::default(),
-            frame: 0,
-            last_mouse: DVec2::ZERO,
-            fullscreen: false,
-            quit: false,
-            ui,
-            lesson: lesson::LessonOverlays::default(),
-            totals: plot::Totals::default(),
-            history: impulse::history::History::default(),
-            trails: trails::Trails::default(),
-            screenshot_request: None,
-            frame_stats: frame_stats::FrameStats::new(options_keep_all),
-            disc_batch: None,
-            world_text: None,
-            recovery,
-            undo: undo::Undo::default(),
-            press_moment: None,
-            scene_edited: false,
-            size_follows_mass: false,
-            pending_report: None,
-            pinch: None,
-            idle: idle::Idle::new(WM_CLASS),
-        };
-        // Shown once the window exists (the toast reads its clock).
-        app.pending_report = recovery_problem;
-        if app.recovery.offered.is_some() {
+        });
+        if model.recovery.offered.is_some() {
             eprintln!(
                 "impulse: an earlier session did not close normally; R restores it ({})",
-                app.recovery.path().display()
+                model.recovery.path().display()
             );
         }
-        app
+        App {
+            options,
+            model,
+            panels: ui::Panels::new(path.unwrap_or_default()),
+            painter: drawing::Painter::default(),
+            input: input::Input::default(),
+            frame: 0,
+            frame_stats: frame_stats::FrameStats::new(keep_all),
+            idle: idle::Idle::new(WM_CLASS),
+        }
     }
 
     async fn run(mut self) {
         prevent_quit();
         let mut pending: Option<(impulse::clock::Instant, frame_stats::FrameTimes)> = None;
         let mut previous = (0.0, 0.0); // the last frame's time and its physics (s)
-        let mut time_scale = self.clock.time_scale();
         loop {
-            if self.clock.time_scale() != time_scale {
-                time_scale = self.clock.time_scale();
-                self.realtime.clear(); // measured against the scale asked for
-            }
             let frame_start = impulse::clock::Instant::now();
             if let Some((start, mut times)) = pending.take() {
                 times.frame_ms = ms_since(start, frame_start);
                 previous = (times.frame_ms / 1e3, times.step_ms / 1e3);
                 self.frame_stats.push(times);
             }
+            self.model.begin_frame(get_time());
             let (mx, my) = mouse_position();
             let mouse = DVec2::new(mx as f64, my as f64);
-            self.ui_pass(mouse);
+            let mut commands = self.panels.pass(&self.model, mouse);
+            if let Some(rects) = &self.panels.rects {
+                self.model.place_world(rects.world.as_array());
+            }
             if self.frame == 0 {
-                self.fit_camera();
+                self.model.fit_camera();
                 #[cfg(not(target_arch = "wasm32"))]
                 display::mark_open();
-                if let Some(problem) = self.pending_report.take() {
-                    self.report(problem);
-                }
             }
-            self.handle_keys();
-            self.handle_touches();
-            if !self.pinching() {
-                self.handle_mouse(mouse);
+            commands.extend(self.input.commands(&mut self.panels, &self.model, mouse));
+            let running = !self.model.clock.paused;
+            for command in commands {
+                self.model.apply(command);
             }
-            self.open_dropped_files();
+            self.carry_out_requests();
             let step_start = impulse::clock::Instant::now();
-            let budget = clock::physics_budget(previous.0, previous.1);
-            let running = !self.clock.paused;
-            self.advance_physics(get_frame_time() as f64, budget);
-            if self.camera_fitted && self.follows_discs() {
-                self.fit_camera();
-            }
+            let budget = model::clock::physics_budget(previous.0, previous.1);
+            self.model.tick(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
-            self.realtime
-                .push(get_time(), self.world.time, running && !self.clock.paused);
             let timed_out = self
                 .options
                 .exit_after
                 .is_some_and(|limit| get_time() >= limit);
-            let closing = self.quit || is_quit_requested() || timed_out;
+            let closing = self.model.requests.quit || is_quit_requested() || timed_out;
             if closing {
-                self.recovery.finish();
-            } else {
-                self.autosave();
+                self.model.recovery.finish();
             }
-            let requested = self.screenshot_request.take();
+            let requested = self.model.requests.screenshot.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
             let draw_start = impulse::clock::Instant::now();
-            self.draw();
+            self.painter.draw(&mut self.model, mouse);
             egui_macroquad::draw();
             // The whole frame, panels included, read back before it is shown.
             let capture = wanted.then(dump::screen_image);
@@ -474,15 +394,24 @@ impl App {
         self.write_frame_stats();
     }
 
+    /// What only the window can do, as the model asked.
+    fn carry_out_requests(&mut self) {
+        if std::mem::take(&mut self.model.requests.fullscreen) {
+            self.input.fullscreen = !self.input.fullscreen;
+            set_fullscreen(self.input.fullscreen);
+        }
+    }
+
     /// This frame's record, its frame and present times still to come.
     fn frame_times(&self, step_ms: f64, draw_ms: f64) -> frame_stats::FrameTimes {
+        let overlays = &self.model.overlays;
         frame_stats::FrameTimes {
             frame: self.frame,
-            discs: self.world.particles.len(),
-            velocity: self.overlays.velocity,
-            momentum: self.overlays.momentum,
-            readouts: self.overlays.readouts.name(),
-            steps: self.steps_last_frame,
+            discs: self.model.world.particles.len(),
+            velocity: overlays.velocity,
+            momentum: overlays.momentum,
+            readouts: overlays.readouts.name(),
+            steps: self.model.steps.steps_last_frame,
             frame_ms: 0.0,
             step_ms,
             draw_ms,
@@ -504,185 +433,5 @@ impl App {
             ),
             Err(e) => eprintln!("impulse: cannot write frame times {}: {e}", path.display()),
         }
-    }
-
-    /// Runs the steps the clock asks for, as long as they fit in `budget`
-    /// seconds of wall clock (at least one); the rest are dropped, so a
-    /// machine that cannot keep up runs the simulation slower instead of
-    /// dropping frames.
-    fn advance_physics(&mut self, frame_seconds: f64, budget: f64) {
-        let due = self.clock.advance(frame_seconds);
-        let start = impulse::clock::Instant::now();
-        let mut steps = 0;
-        // Small scenes: the totals just before and after each step with an
-        // impact, so the plot drops at the instant of an inelastic collision.
-        let sample_collisions = self.world.particles.len() <= plot::SAMPLE_COLLISIONS_MAX_DISCS;
-        while steps < due {
-            if steps > 0 && start.elapsed().as_secs_f64() >= budget {
-                break;
-            }
-            let before = sample_collisions.then(|| (self.world.time, self.world.metrics()));
-            let stats = self.world.step(self.clock.dt);
-            if let Some((t, m)) = before.filter(|_| stats.pair_collisions + stats.wall_hits > 0) {
-                self.totals.push_at(t, &self.world, &m);
-                let now = self.world.metrics();
-                self.totals.push(&self.world, &now);
-            }
-            if stats.separated_pairs > 0 {
-                self.toast_separated(stats.separated_pairs, stats.separation_energy);
-            }
-            self.gesture.pin_held(&mut self.world);
-            self.step_micros
-                .push_back(stats.timings.total().as_secs_f64() * 1e6);
-            if self.step_micros.len() > 240 {
-                self.step_micros.pop_front();
-            }
-            steps += 1;
-        }
-        self.steps_last_frame = steps;
-        self.steps_dropped = due - steps;
-        self.after_steps(steps);
-    }
-
-    /// Simulated seconds per real second lately, while running.
-    fn sim_rate(&self) -> Option<f64> {
-        self.realtime.ratio()
-    }
-
-    /// "running at 0.31× real time" when the simulation goes more than 10 %
-    /// slower than the time scale asks.
-    fn slow_note(&self) -> Option<String> {
-        let rate = self.sim_rate()?;
-        if self.clock.paused || rate >= 0.9 * self.clock.time_scale() {
-            return None;
-        }
-        let digits = if rate < 0.1 { 3 } else { 2 };
-        Some(format!(
-            "running at {}× real time",
-            ui::numbers::plain(rate, digits)
-        ))
-    }
-
-    /// Says that `exact` pushed `pairs` overlapping pairs apart as it took
-    /// the discs over, and the potential energy that added (J): the energy
-    /// readout jumps, and this is why.
-    fn toast_separated(&mut self, pairs: usize, energy: f64) {
-        let pairs = if pairs == 1 {
-            "1 overlapping pair".to_string()
-        } else {
-            format!("{pairs} overlapping pairs")
-        };
-        let energy = if energy.abs() < 1e-9 {
-            String::new()
-        } else if energy > 0.0 {
-            format!(", which raised the energy by {energy:.3} J")
-        } else {
-            format!(", which lowered the energy by {:.3} J", -energy)
-        };
-        self.toast_for(
-            format!("exact needs discs apart: it separated {pairs} of discs{energy}"),
-            6.0,
-        );
-    }
-
-    fn toast(&mut self, message: impl Into<String>) {
-        self.toast_for(message, 4.0);
-    }
-
-    fn toast_for(&mut self, message: impl Into<String>, seconds: f64) {
-        self.toast = Some((message.into(), get_time() + seconds));
-    }
-
-    fn reset_scene(&mut self) {
-        match self.scene.build(&self.scene_origin) {
-            Ok(world) => {
-                self.remember("reset");
-                self.scene_edited = self.scene.edited;
-                self.world = world;
-                self.forget_past();
-                self.selected = None;
-                self.gesture = Gesture::Idle;
-                self.toast("Scene reset");
-            }
-            Err(e) => self.toast(format!("Cannot reset: {e}")),
-        }
-    }
-
-    /// The theme's colours and the UI scale, for the world's drawing.
-    fn look(&self) -> Look {
-        Look {
-            colors: self.ui.theme.world(),
-            scale: self.ui.scale,
-        }
-    }
-
-    fn draw(&mut self) {
-        let look = self.look();
-        // The centre-of-mass view draws a copy with relative velocities.
-        let seen = self.world_as_seen();
-        let world = seen.as_ref().unwrap_or(&self.world);
-        clear_background(draw::color(look.colors.background));
-        let text = self.world_text.get_or_insert_with(readouts::WorldText::new);
-        text.begin_frame();
-        draw::draw_boundary(world, &self.camera, look);
-        self.trails.draw(&self.camera, look.scale);
-        let batch = self.disc_batch.get_or_insert_with(discs::DiscBatch::new);
-        draw::draw_discs(
-            world,
-            &self.camera,
-            self.selected,
-            &self.overlays,
-            batch,
-            look,
-        );
-        draw::draw_arrows(world, &self.camera, &self.overlays, look);
-        self.draw_lesson();
-        let Some(text) = self.world_text.as_ref() else {
-            return;
-        };
-        readouts::draw_readouts(
-            world,
-            &self.camera,
-            &self.overlays,
-            self.selected,
-            look,
-            text,
-        );
-        if let Gesture::Launching { start, .. } = self.gesture {
-            let cursor = self.camera.screen_to_world(self.last_mouse);
-            draw::draw_launch_preview(
-                &self.world,
-                &self.camera,
-                start,
-                cursor,
-                self.new_disc_now(),
-                look,
-                text,
-            );
-        }
-    }
-
-    /// "impulse ×4 / grid (auto: ...)": what the steps use, and why.
-    fn method_line(&self) -> String {
-        let plan = self
-            .world
-            .plan()
-            .cloned()
-            .unwrap_or_else(|| self.world.plan_for(self.clock.dt));
-        let substeps = if plan.method.uses_substeps() {
-            format!(" ×{}", plan.substeps)
-        } else {
-            String::new()
-        };
-        let broad = if plan.method == impulse::method::Method::Exact {
-            "cells"
-        } else {
-            plan.broad_phase.name()
-        };
-        let mut line = format!("in use: {}{substeps} / {broad}", plan.method.name());
-        if !plan.reason.is_empty() {
-            line.push_str(&format!(" (auto: {})", plan.reason));
-        }
-        line
     }
 }

@@ -181,10 +181,23 @@ impl Sandbox {
         Sandbox::start_in(x, args, state, dir)
     }
 
+    /// The window as a plain start opens it: on the start screen.
+    pub fn start_plain(x: &Xvfb, args: &[&str]) -> Sandbox {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let state = dir.path().to_path_buf();
+        Sandbox::start_in(x, &[&["--start-screen"], args].concat(), &state, dir)
+    }
+
     fn start_in(x: &Xvfb, args: &[&str], state: &Path, dir: tempfile::TempDir) -> Sandbox {
         let dump = dir.path().join("state.json");
+        // The start screen only where a test asks for it (start_plain).
+        let (args, start): (Vec<&str>, bool) = match args.split_first() {
+            Some((&"--start-screen", rest)) => (rest.to_vec(), true),
+            _ => (args.to_vec(), false),
+        };
         let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
-            .args(args)
+            .args(&args)
+            .args(if start { &[][..] } else { &["--no-start"][..] })
             .arg("--dump-state")
             .arg(&dump)
             .args(["--exit-after", "120"])

@@ -9,7 +9,11 @@
 //!
 //! A box may leave sides open ([`Walls`]): a disc crosses an open side and
 //! flies on, as in open space.
+//!
+//! The wall stage can also hand each hit to the ledger as a
+//! [`crate::ledger::WallHit`]; the pipeline does when the ledger is on.
 
+use crate::ledger::{Wall, WallHit};
 use crate::particle::Particle;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -199,10 +203,26 @@ impl Boundary {
     pub fn apply(
         self,
         particles: &mut [Particle],
+        edges: (DVec2, Walls),
+        gravity: DVec2,
+        wall_law: (f64, crate::rough::Tangential),
+        impact_speed: f64,
+    ) -> WallReport {
+        self.apply_recording(particles, edges, gravity, wall_law, impact_speed, None)
+    }
+
+    /// [`Boundary::apply`], which with `record` = (`hits`, `time`) also
+    /// adds each hit to `hits` as a [`WallHit`] at `time`, its disc an
+    /// index into `particles`; see [`record_hits`] for a disc that meets
+    /// two walls at once.
+    pub(crate) fn apply_recording(
+        self,
+        particles: &mut [Particle],
         (size, walls): (DVec2, Walls),
         gravity: DVec2,
         (wall_restitution, rough): (f64, crate::rough::Tangential),
         impact_speed: f64,
+        mut record: Option<(&mut Vec<WallHit>, f64)>,
     ) -> WallReport {
         match self {
             Boundary::Open => WallReport::default(),
@@ -217,42 +237,11 @@ impl Boundary {
                 WallReport::default()
             }
             Boundary::Box => {
-                let (mut hits, mut resting) = (0, 0);
-                let mut impulse = 0.0;
-                for p in particles {
-                    let before = p.vel;
-                    let mut count = |bounced: bool, speed: f64| {
-                        if bounced {
-                            if crate::impact::is_impact(speed.abs(), impact_speed) {
-                                hits += 1;
-                            } else {
-                                resting += 1;
-                            }
-                        }
-                    };
-                    // A rough wall turns the disc's slip along it into spin.
-                    let rub = |p: &mut Particle, axis: usize, was: f64| {
-                        let law = if crate::impact::is_impact(was.abs(), impact_speed) {
-                            Some(rough)
-                        } else {
-                            rough.resting()
-                        };
-                        let Some(law) = law else { return };
-                        let mut into = DVec2::ZERO;
-                        into[axis] = if was < 0.0 { -1.0 } else { 1.0 };
-                        let impulse = p.mass * (p.vel[axis] - was).abs();
-                        let side = crate::rough::Side {
-                            mass: p.mass,
-                            radius: p.radius,
-                            vel: p.vel,
-                            spin: p.spin,
-                        };
-                        if let Some(after) = law.wall(into, impulse, side) {
-                            (p.vel, p.spin) = (after.vel, after.spin);
-                        }
-                    };
+                let mut report = WallReport::default();
+                for (k, p) in particles.iter_mut().enumerate() {
+                    let (before, spin_before) = (p.vel, p.spin);
                     let (x, y) = (&mut p.pos.x, &mut p.pos.y);
-                    let bounced = bounce_axis(
+                    let bounced_x = bounce_axis(
                         x,
                         &mut p.vel.x,
                         p.radius,
@@ -260,9 +249,8 @@ impl Boundary {
                         gravity.x,
                         wall_restitution,
                     );
-                    count(bounced, before.x);
-                    let bounced_x = bounced;
-                    let bounced = bounce_axis(
+                    let after_x = p.vel;
+                    let bounced_y = bounce_axis(
                         y,
                         &mut p.vel.y,
                         p.radius,
@@ -270,23 +258,110 @@ impl Boundary {
                         gravity.y,
                         wall_restitution,
                     );
-                    count(bounced, before.y);
+                    let bounced = [bounced_x, bounced_y];
+                    let hit = [0, 1].map(|axis| {
+                        bounced[axis] && crate::impact::is_impact(before[axis].abs(), impact_speed)
+                    });
+                    for axis in 0..2 {
+                        report.hits += usize::from(hit[axis]);
+                        report.resting += usize::from(bounced[axis] && !hit[axis]);
+                    }
+                    // What each wall did: its bounce, then its rub.
+                    let mut change = [(after_x - before, 0.0), (p.vel - after_x, 0.0)];
                     if !rough.is_smooth() {
-                        for (axis, hit) in [(0, bounced_x), (1, bounced)] {
-                            if hit {
-                                rub(p, axis, before[axis]);
+                        for axis in 0..2 {
+                            if bounced[axis] {
+                                let (vel, spin) = (p.vel, p.spin);
+                                rub(p, axis, before[axis], hit[axis], rough);
+                                change[axis].0 += p.vel - vel;
+                                change[axis].1 += p.spin - spin;
                             }
                         }
                     }
-                    impulse += p.mass * (p.vel - before).abs().element_sum();
+                    report.impulse += p.mass * (p.vel - before).abs().element_sum();
+                    if let Some((hits, time)) = record.as_mut() {
+                        if hit[0] || hit[1] {
+                            let start = (before, spin_before);
+                            record_hits(hits, (*time, k), p, start, hit, change);
+                        }
+                    }
                 }
-                WallReport {
-                    hits,
-                    resting,
-                    impulse,
-                }
+                report
             }
         }
+    }
+}
+
+/// A rough wall turns the disc's slip along it into spin: the tangential
+/// law after the bounce of `axis`, where the disc came in at `was` along
+/// it (an impact if `impact`, else resting).
+fn rub(p: &mut Particle, axis: usize, was: f64, impact: bool, rough: crate::rough::Tangential) {
+    let law = if impact { Some(rough) } else { rough.resting() };
+    let Some(law) = law else { return };
+    let mut into = DVec2::ZERO;
+    into[axis] = if was < 0.0 { -1.0 } else { 1.0 };
+    let impulse = p.mass * (p.vel[axis] - was).abs();
+    let side = crate::rough::Side {
+        mass: p.mass,
+        radius: p.radius,
+        vel: p.vel,
+        spin: p.spin,
+    };
+    if let Some(after) = law.wall(into, impulse, side) {
+        (p.vel, p.spin) = (after.vel, after.spin);
+    }
+}
+
+/// Adds disc `k`'s wall hits of one boundary stage to `hits`, at `time`.
+/// `start` is its velocity and spin before the stage, `p` the disc after
+/// it, and `change` what each axis's wall did (velocity, spin); `hit` says
+/// which of them were impacts.
+///
+/// Each entry carries exactly its own wall's change, so its
+/// [`WallHit::wall_impulse`] is that wall's; the last one ends at the
+/// disc's state after the stage. What a wall that was not hit did (a
+/// resting contact, a disc put back inside) goes into the first entry's
+/// "before". A disc in a corner makes two entries, x then y, the second
+/// starting where the first ended. The stage bounces off both walls before
+/// either rubs, so with rough walls that start is a velocity the disc never
+/// had: it holds the x wall's rub, which is along y, and the second
+/// entry's closing speed is off by it (its impulse is not).
+fn record_hits(
+    hits: &mut Vec<WallHit>,
+    (time, k): (f64, usize),
+    p: &Particle,
+    (came_in, spin_before): (DVec2, f64),
+    hit: [bool; 2],
+    change: [(DVec2, f64); 2],
+) {
+    let (mut vel, mut spin) = (came_in, spin_before);
+    for axis in 0..2 {
+        let (dv, dw) = change[axis];
+        if !hit[axis] && (dv != DVec2::ZERO || dw != 0.0) {
+            (vel, spin) = (vel + dv, spin + dw);
+        }
+    }
+    let last = if hit[1] { 1 } else { 0 };
+    for axis in (0..2).filter(|&axis| hit[axis]) {
+        let (dv, dw) = change[axis];
+        let (after, spin_after) = if axis == last {
+            (p.vel, p.spin)
+        } else {
+            (vel + dv, spin + dw)
+        };
+        hits.push(WallHit {
+            time,
+            disc: k,
+            // Came in moving up the axis: the upper wall.
+            wall: Wall::at(axis, came_in[axis] > 0.0),
+            mass: p.mass,
+            radius: p.radius,
+            before: vel,
+            after,
+            spin_before: spin,
+            spin_after,
+        });
+        (vel, spin) = (after, spin_after);
     }
 }
 
@@ -431,6 +506,66 @@ mod tests {
         assert_eq!(Walls::from_names(&Walls::NAMES).unwrap(), Walls::ALL);
         let err = Walls::from_names(&["floor"]).unwrap_err();
         assert!(err.contains("floor") && err.contains("bottom"), "{err}");
+    }
+
+    #[test]
+    fn the_ledgers_walls_are_named_as_the_sides() {
+        assert_eq!(Wall::ALL.map(Wall::name), Walls::NAMES);
+        for w in Wall::ALL {
+            let only = Walls::from_names(&[w.name()]).unwrap();
+            assert!(only.at(w.axis(), w.is_upper()));
+        }
+    }
+
+    #[test]
+    fn a_disc_in_a_corner_records_each_walls_own_impulse() {
+        // Past the bottom-right corner, moving out through both walls:
+        // two hits, each wall giving (1 + e)·m·vₙ along its normal, and
+        // with rough walls the two entries still add up to the whole change.
+        let size = DVec2::new(10.0, 10.0);
+        for beta in [-1.0, 1.0] {
+            let rough = crate::rough::Tangential {
+                beta,
+                friction: None,
+            };
+            let (v0, w0, m, e) = (DVec2::new(3.0, -2.0), 1.5, 2.0, 0.5);
+            let mut discs = [Particle::new(
+                DVec2::new(9.6, 0.4),
+                v0,
+                m,
+                0.5,
+                Color::palette(0),
+            )];
+            discs[0].spin = w0;
+            let mut hits = Vec::new();
+            let report = Boundary::Box.apply_recording(
+                &mut discs,
+                (size, Walls::ALL),
+                DVec2::ZERO,
+                (e, rough),
+                0.0,
+                Some((&mut hits, 7.0)),
+            );
+            assert_eq!(report.hits, 2);
+            let [x, y] = hits[..] else {
+                panic!("two entries: {hits:?}")
+            };
+            assert_eq!((x.wall, y.wall), (Wall::Right, Wall::Bottom));
+            assert_eq!((x.time, x.disc), (7.0, 0));
+            assert_eq!((x.before, x.spin_before), (v0, w0));
+            assert_eq!((y.before, y.spin_before), (x.after, x.spin_after));
+            assert_eq!((y.after, y.spin_after), (discs[0].vel, discs[0].spin));
+            for (h, came_in) in [(x, v0.x), (y, -v0.y)] {
+                let along_normal = h.wall_impulse().dot(h.normal());
+                let expected = (1.0 + e) * m * came_in;
+                assert!((along_normal - expected).abs() < 1e-12, "{h:?}");
+            }
+            let total = x.wall_impulse() + y.wall_impulse();
+            assert!((total - m * (discs[0].vel - v0)).length() < 1e-12);
+            if beta == -1.0 {
+                assert_eq!(x.after, DVec2::new(-1.5, -2.0), "smooth: x only");
+            }
+        }
     }
 
     #[test]

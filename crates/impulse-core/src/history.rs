@@ -4,7 +4,7 @@
 //! different laws if the user changes them first).
 //!
 //! A snapshot holds what changes while stepping: the discs, the clock, the
-//! running totals and the ledger of the last collisions, so that after a
+//! running totals and the ledger of the last impacts, so that after a
 //! rewind the counters and the ledger still agree. The laws (restitution, gravity, boundary, method)
 //! are not restored: they belong to the user, who may rewind precisely to
 //! try the same moment with another restitution.
@@ -62,7 +62,7 @@ impl Snapshot {
     fn bytes(&self) -> usize {
         std::mem::size_of::<Snapshot>()
             + self.particles.len() * std::mem::size_of::<Particle>()
-            + self.ledger.entries().count() * std::mem::size_of::<crate::ledger::Collision>()
+            + self.ledger.len() * std::mem::size_of::<crate::ledger::Impact>()
     }
 }
 

@@ -8,7 +8,7 @@
 use crate::boundary::WallReport;
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::laws::Laws;
-use crate::ledger::Ledger;
+use crate::ledger::{Ledger, WallHit};
 use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
 use crate::parallel;
 use crate::particle::Particle;
@@ -27,8 +27,9 @@ pub(crate) struct Pipeline {
     pub(crate) parallel: bool,
     /// Scratch: the narrow phase's contacts per chunk of pairs.
     contact_chunks: Vec<Vec<Contact>>,
-    /// Scratch: what the walls did per chunk of discs.
-    walls: Vec<WallReport>,
+    /// Scratch: what the walls did per chunk of discs, and the hits for
+    /// the ledger (disc indices within the chunk; none while it is off).
+    walls: Vec<(WallReport, Vec<WallHit>)>,
     /// Scratch: large contact lists grouped into bands for resolution.
     banded: crate::resolution::Banded,
 }
@@ -158,31 +159,46 @@ impl Pipeline {
     }
 
     /// The boundary stage after a (sub)step of `h` seconds, adding what the
-    /// walls did to `stats`. It runs
+    /// walls did to `stats` and, when the ledger is on, each wall hit to it
+    /// at `time` (the end of the (sub)step, when the walls act). It runs
     /// chunk by chunk, serially too, and the chunks' wall impulses are
-    /// added in chunk order, so the sum does not depend on the threads.
+    /// added in chunk order, so the sum does not depend on the threads;
+    /// the hits go into the ledger in chunk order too.
     pub(crate) fn apply_boundary(
         &mut self,
         particles: &mut [Particle],
         laws: &Laws,
         h: f64,
+        (ledger, time): (&mut Ledger, f64),
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
         let (edges, gravity) = ((laws.size, laws.walls), laws.gravity);
         let e = (laws.wall_restitution, laws.wall_rough());
         let impact_speed = crate::impact::threshold(gravity, h);
+        let recording = ledger.is_on();
         parallel::map_chunks_mut(
             self.parallel,
             particles,
-            |chunk| laws.boundary.apply(chunk, edges, gravity, e, impact_speed),
+            |chunk| {
+                let mut hits = Vec::new();
+                let record = recording.then_some((&mut hits, time));
+                let boundary = laws.boundary;
+                let report =
+                    boundary.apply_recording(chunk, edges, gravity, e, impact_speed, record);
+                (report, hits)
+            },
             &mut self.walls,
         );
         let mut impulse = 0.0;
-        for w in &self.walls {
+        for (chunk, (w, hits)) in self.walls.iter().enumerate() {
             stats.wall_hits += w.hits;
             stats.resting_contacts += w.resting;
             impulse += w.impulse;
+            for hit in hits {
+                let disc = chunk * parallel::CHUNK + hit.disc;
+                ledger.push(WallHit { disc, ..*hit });
+            }
         }
         stats.wall_impulse += impulse;
         stats.timings.boundary += lap.elapsed();

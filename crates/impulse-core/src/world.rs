@@ -5,7 +5,7 @@ use crate::auto::{self, Plan};
 use crate::boundary::{Boundary, Walls};
 use crate::broad_phase::BroadPhaseKind;
 pub use crate::laws::Laws;
-use crate::ledger::{Collision, Ledger};
+use crate::ledger::{Collision, Impact, Ledger};
 use crate::method::{resting, verlet, Method, MethodState, Setting};
 use crate::metrics::Metrics;
 use crate::parallel;
@@ -46,7 +46,8 @@ pub struct World {
     pub resting_contacts: usize,
     /// Momentum transferred by the walls since the world was made (kg·m/s).
     pub total_wall_impulse: f64,
-    /// The last collisions, when turned on (`ledger.keep(n)`).
+    /// The last impacts, pair collisions and wall hits, when turned on
+    /// (`ledger.keep(n)`).
     pub ledger: Ledger,
     pipeline: Pipeline,
     methods: MethodState,
@@ -64,6 +65,16 @@ struct PlanKey {
     dt: u64,
     laws: Laws,
     particles: usize,
+}
+
+/// What [`World::run_to_next_collision`] and [`World::run_to_next_impact`]
+/// run to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Next {
+    /// A pair collision.
+    Collision,
+    /// A pair collision or a wall hit.
+    Impact,
 }
 
 /// Most discs [`World::collisions_over`] looks at (it checks every pair).
@@ -177,14 +188,16 @@ impl World {
         stats: &mut StepStats,
     ) {
         let (pipeline, particles) = (&mut self.pipeline, &mut self.particles[..]);
-        let ledger = (&mut self.ledger, time);
+        let ledger = &mut self.ledger;
         let rule = match method {
             Method::Verlet => {
                 let previous = &mut self.methods.previous_positions;
-                return verlet::substep(pipeline, previous, particles, laws, h, stats);
+                let ledger = (ledger, time);
+                return verlet::substep(pipeline, previous, particles, laws, h, stats, ledger);
             }
             Method::Impulse if resting::applies(laws) => {
                 let scratch = &mut self.methods.resting;
+                let ledger = (ledger, time);
                 return resting::substep(pipeline, scratch, particles, laws, h, stats, ledger);
             }
             Method::Seed => Rule::SEED,
@@ -192,9 +205,9 @@ impl World {
         };
         pipeline.broad_phase(particles, laws, stats);
         pipeline.narrow_phase(particles, laws, stats);
-        pipeline.resolve(particles, (laws, h), rule, ledger, stats);
+        pipeline.resolve(particles, (laws, h), rule, (&mut *ledger, time), stats);
         pipeline.integrate(particles, laws.gravity, h, stats);
-        pipeline.apply_boundary(particles, laws, h, stats);
+        pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
     }
 
     /// Plans again when anything `auto` looks at may have changed (the
@@ -260,26 +273,63 @@ impl World {
     /// Steps until the next pair collision (for at most `limit` seconds) and
     /// returns it; the world is left just after it: with `exact` at the very
     /// instant of impact (the step is cut there), with the discrete methods
-    /// at the end of the step that resolved it. Turns the ledger on if it
-    /// was off.
+    /// at the end of the step that resolved it (the newest of that step's
+    /// collisions is returned). Wall hits do not stop it. Turns the ledger
+    /// on if it was off. `verlet` records no pair collisions (see
+    /// [`crate::ledger`]), so with it this runs to the limit.
     pub fn run_to_next_collision(&mut self, dt: f64, limit: f64) -> Option<Collision> {
+        match self.run_to_next(Next::Collision, dt, limit)? {
+            Impact::Pair(c) => Some(c),
+            Impact::Wall(_) => None,
+        }
+    }
+
+    /// Steps until the next impact, a pair collision or a wall hit (for at
+    /// most `limit` seconds), and returns it; the world is left just after
+    /// it: with `exact` at the very instant of impact, with the discrete
+    /// methods at the end of the step that resolved it (the newest of that
+    /// step's impacts is returned). Turns the ledger on if it was off.
+    pub fn run_to_next_impact(&mut self, dt: f64, limit: f64) -> Option<Impact> {
+        self.run_to_next(Next::Impact, dt, limit)
+    }
+
+    /// Steps of `dt` until the ledger records the `next` thing looked for,
+    /// or `limit` seconds have passed, or a step makes no progress.
+    fn run_to_next(&mut self, next: Next, dt: f64, limit: f64) -> Option<Impact> {
         if !self.ledger.is_on() {
             self.ledger.keep(1);
         }
-        let before = self.ledger.recorded;
+        let keep = self.ledger.capacity();
+        let seen = |ledger: &Ledger| match next {
+            Next::Collision => ledger.recorded,
+            Next::Impact => ledger.recorded_impacts(),
+        };
+        let before = seen(&self.ledger);
         let until = self.time + limit.max(0.0);
         self.methods.exact.stop_at_collision = true;
-        while self.ledger.recorded == before && self.time < until {
+        self.methods.exact.stop_at_wall = next == Next::Impact;
+        let mut found = None;
+        while found.is_none() && self.time < until {
             let time_before = self.time;
+            // Within a step, later entries must not push out the one looked
+            // for (with room for one, a wall hit after a pair collision
+            // would); the ledger goes back to its size after the step.
+            self.ledger.keep(usize::MAX);
             self.step(dt.min(until - self.time).max(f64::MIN_POSITIVE));
-            if self.time == time_before && self.ledger.recorded == before {
+            if seen(&self.ledger) > before {
+                found = match next {
+                    Next::Collision => self.ledger.last().copied().map(Impact::Pair),
+                    Next::Impact => self.ledger.last_impact().copied(),
+                };
+            }
+            self.ledger.keep(keep);
+            if self.time == time_before && found.is_none() {
                 break; // no progress (the event cap)
             }
         }
         self.methods.exact.stop_at_collision = false;
-        (self.ledger.recorded > before)
-            .then(|| self.ledger.last().copied())
-            .flatten()
+        self.methods.exact.stop_at_wall = false;
+        found
     }
 
     /// Whether no collision can ever happen again, with a wall or between

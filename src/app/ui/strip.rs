@@ -1,73 +1,72 @@
 //! The strip under the world: a scale bar of a round number of metres on
 //! the left, then one line that says what the scene shows (its caption), or,
-//! for a few seconds, the latest message (opened, saved, an error).
+//! for a few seconds, the latest message (opened, saved, an error). Its
+//! height is fixed (one line): a long caption is cut, with the whole of it
+//! on hover, so the world never moves.
 
-use crate::app::App;
+use super::{Cx, View};
+use crate::app::model::lesson::pi_result;
 use egui::{Color32, RichText, Stroke};
 
 /// Longest scale bar (points).
 const BAR_POINTS: f64 = 120.0;
 
-impl App {
-    /// Draws the strip; returns its rectangle (points).
-    pub(super) fn strip(&mut self, ctx: &egui::Context) -> egui::Rect {
-        let ppp = f64::from(super::px_per_point(ctx));
-        let metres = nice_length(BAR_POINTS * ppp / self.camera.scale);
-        let bar = (metres * self.camera.scale / ppp) as f32;
-        let message = self
-            .toast
-            .as_ref()
-            .filter(|(_, until)| macroquad::time::get_time() < *until)
-            .map(|(m, _)| m.clone());
-        let result = crate::app::lesson::pi_result(&self.world);
-        let caption = self.scene.description.clone().map(|d| {
-            if self.scene_edited {
+/// The strip (no state of its own).
+pub struct Strip;
+
+impl View for Strip {
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
+        let model = cx.model;
+        let ppp = f64::from(cx.marks.ppp);
+        let camera = &model.view.camera;
+        let metres = nice_length(BAR_POINTS * ppp / camera.scale);
+        let bar = (metres * camera.scale / ppp) as f32;
+        let result = pi_result(&model.world);
+        let caption = model.open.scene.description.clone().map(|d| {
+            if model.open.edited {
                 format!("Edited since it opened, so this may no longer hold: {d}")
             } else {
                 d
             }
         });
-        let panel = egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
-            ui.horizontal(|ui| {
-                let height = ui.text_style_height(&egui::TextStyle::Body);
-                let (rect, _) =
-                    ui.allocate_exact_size(egui::vec2(bar + 4.0, height), egui::Sense::hover());
-                let color = ui.visuals().strong_text_color();
-                let stroke = Stroke::new(2.0, color);
-                let (l, r, y) = (rect.left() + 2.0, rect.left() + 2.0 + bar, rect.center().y);
+        ui.horizontal_centered(|ui| {
+            let height = ui.text_style_height(&egui::TextStyle::Body);
+            let (rect, _) =
+                ui.allocate_exact_size(egui::vec2(bar + 4.0, height), egui::Sense::hover());
+            let color = ui.visuals().strong_text_color();
+            let stroke = Stroke::new(2.0, color);
+            let (l, r, y) = (rect.left() + 2.0, rect.left() + 2.0 + bar, rect.center().y);
+            ui.painter()
+                .line_segment([egui::pos2(l, y), egui::pos2(r, y)], stroke);
+            for x in [l, r] {
                 ui.painter()
-                    .line_segment([egui::pos2(l, y), egui::pos2(r, y)], stroke);
-                for x in [l, r] {
-                    ui.painter()
-                        .line_segment([egui::pos2(x, y - 6.0), egui::pos2(x, y + 6.0)], stroke);
+                    .line_segment([egui::pos2(x, y - 6.0), egui::pos2(x, y + 6.0)], stroke);
+            }
+            ui.label(format_metres(metres));
+            ui.separator();
+            // One line whatever it says: a long one is cut with "…", the
+            // whole of it on hover.
+            let (text, name) = match (result, model.message(), caption) {
+                (Some(result), _, _) => (RichText::new(result).strong(), "pi_result"),
+                (None, Some(message), _) => {
+                    let color = if ui.visuals().dark_mode {
+                        Color32::from_rgb(255, 215, 120)
+                    } else {
+                        Color32::from_rgb(120, 60, 0)
+                    };
+                    (RichText::new(message).color(color), "message")
                 }
-                ui.label(format_metres(metres));
-                ui.separator();
-                match (message, caption) {
-                    _ if result.is_some() => {
-                        let line = result.clone().unwrap_or_default();
-                        let r = ui.add(egui::Label::new(RichText::new(line).strong()).wrap());
-                        self.ui
-                            .note_widget("pi_result", r.rect, super::px_per_point(ctx));
-                    }
-                    (Some(message), _) => {
-                        let color = if ui.visuals().dark_mode {
-                            Color32::from_rgb(255, 215, 120)
-                        } else {
-                            Color32::from_rgb(120, 60, 0)
-                        };
-                        ui.add(egui::Label::new(RichText::new(message).color(color)).wrap());
-                    }
-                    (None, Some(caption)) => {
-                        ui.add(egui::Label::new(caption).wrap());
-                    }
-                    (None, None) => {
-                        ui.label("Drag on empty space to launch a disc; H lists every key.");
-                    }
-                }
-            });
+                (None, None, Some(caption)) => (RichText::new(caption), "caption"),
+                (None, None, None) => (
+                    RichText::new("Drag on empty space to launch a disc; H lists every key."),
+                    "caption",
+                ),
+            };
+            let whole = text.text().to_string();
+            let r = ui.add(egui::Label::new(text).truncate());
+            let r = r.on_hover_text(whole);
+            cx.note(name, &r);
         });
-        panel.response.rect
     }
 }
 
@@ -91,7 +90,7 @@ pub fn format_metres(m: f64) -> String {
         m if m >= 1.0 => format!("{m} m"),
         m if m >= 0.01 => format!("{} cm", (m * 100.0).round()),
         m if m >= 0.001 => format!("{} mm", (m * 1000.0).round()),
-        m => format!("{} mm", super::numbers::adaptive(m * 1000.0, 0)),
+        m => format!("{} mm", crate::app::numbers::adaptive(m * 1000.0, 0)),
     }
 }
 

@@ -1,24 +1,70 @@
-//! The top bar: what a class reads from the back row. The scene's name, the
-//! simulated time, RUNNING or PAUSED (never hidden, not even by Tab), the
-//! total momentum and kinetic energy with their units (when spin is shown
-//! the KE of moving and of turning and their sum, and where there is room
-//! the angular momentum L), the collision count, and, when it applies, that
-//! the simulation runs slower than asked, that the view is a rewound
-//! moment, or what the method cannot promise.
+//! The top bar: what a class reads from the back row, on one line. The
+//! scene's name, the simulated time and RUNNING or PAUSED are always there
+//! (not even Tab hides them); then, as far as the line reaches, the total
+//! momentum (with a note while the walls have changed it) and energy, the
+//! impacts between discs and on walls counted apart, and what the method
+//! cannot promise. What does not fit is under "… more", on hover.
 
-use super::numbers::{plain, vector, with_unit};
-use crate::app::App;
-use egui::{Color32, RichText};
+use super::{Cx, View};
+use crate::app::model::lesson::pi_result;
+use crate::app::model::overlays::spin_shown;
+use crate::app::model::Command;
+use crate::app::numbers::{plain, vector, with_unit};
+use egui::{Color32, RichText, WidgetText};
+use std::sync::Arc;
 
-/// The top bar names the angular momentum from this width (points) up.
-const L_MIN_WIDTH: f32 = 1200.0;
+/// The top bar (no state of its own).
+pub struct TopBar;
 
-impl App {
-    /// Draws the top bar; returns its rectangle (points).
-    pub(super) fn top_bar(&mut self, ctx: &egui::Context) -> egui::Rect {
-        let m = self.world.metrics();
-        let spin = crate::app::draw::spin_shown(&self.world);
-        let dark = ctx.style().visuals.dark_mode;
+/// One item of the line: its text, what hovering it says, and its name in
+/// the state dump.
+struct Item {
+    text: RichText,
+    hover: Option<String>,
+    name: Option<String>,
+}
+
+impl Item {
+    fn new(text: impl Into<RichText>) -> Self {
+        Item {
+            text: text.into(),
+            hover: None,
+            name: None,
+        }
+    }
+
+    fn hover(mut self, text: impl Into<String>) -> Self {
+        self.hover = Some(text.into());
+        self
+    }
+
+    fn named(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+}
+
+/// "collisions: 1 between discs · 13 with walls" (the π blocks' count once
+/// it is final instead).
+pub fn count_line(world: &impulse::World) -> String {
+    let pairs = world.total_pair_collisions;
+    let walls = world.total_wall_hits;
+    let with_walls =
+        world.laws.boundary == impulse::Boundary::Box && !world.laws.walls.names().is_empty();
+    if with_walls {
+        format!("collisions: {pairs} between discs · {walls} with walls")
+    } else {
+        format!("collisions: {pairs} between discs")
+    }
+}
+
+impl View for TopBar {
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
+        let model = cx.model;
+        let world = &model.world;
+        let m = world.metrics();
+        let spin = spin_shown(world);
+        let dark = ui.visuals().dark_mode;
         let (running, paused) = if dark {
             (
                 Color32::from_rgb(120, 230, 140),
@@ -27,130 +73,233 @@ impl App {
         } else {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
-        let name = self.scene.name.clone().unwrap_or_else(|| "Sandbox".into());
-        let panel = egui::TopBottomPanel::top("top_bar").show(ctx, |ui| {
-            ui.horizontal_wrapped(|ui| {
-                ui.spacing_mut().item_spacing.x = 18.0;
-                // Each item stays whole; a narrow window moves it to the next line.
-                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                ui.label(RichText::new(name).strong());
-                ui.label(format!("t = {}", with_unit(self.world.time, 2, "s")));
-                let state = if self.history.cursor().is_some() {
-                    RichText::new("⏸ REWOUND").color(paused)
-                } else if self.clock.paused {
-                    RichText::new("⏸ PAUSED").color(paused)
-                } else {
-                    RichText::new(format!("▶ RUNNING ×{}", self.clock.time_scale())).color(running)
-                };
-                let state = ui.label(state.strong());
-                self.ui
-                    .note_widget("run_state", state.rect, super::px_per_point(ctx));
-                if let Some(slow) = self.slow_note() {
-                    ui.label(RichText::new(slow).color(paused));
-                }
-                ui.label(format!("p = {}", vector(m.momentum, 3, "kg·m/s")));
-                if spin {
-                    // One item, so that a 1024-pixel window keeps one line.
-                    ui.label(format!(
-                        "KE {} + rotational {} = {}",
-                        plain(m.kinetic_energy, 3),
-                        plain(m.rotational_energy, 3),
-                        with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
-                    ))
-                    .on_hover_text(
-                        "kinetic energy of moving, ½·m·v², plus of turning, ½·I·ω² with \
-                         I = ½·m·r², summed over the discs",
-                    );
-                } else {
-                    ui.label(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")));
-                }
-                if self.lesson.com_view.is_some() {
-                    // The totals above are the box's; in the view's frame
-                    // the momentum is zero and less energy moves.
-                    let v = m.center_of_mass_velocity;
-                    let total_mass: f64 = self.world.particles.iter().map(|p| p.mass).sum();
-                    let relative_ke = m.kinetic_energy - 0.5 * total_mass * v.length_squared();
-                    ui.label(
-                        RichText::new(format!(
-                            "centre-of-mass view: p = {}, KE = {}",
-                            vector(glam::DVec2::ZERO, 3, "kg·m/s"),
-                            with_unit(relative_ke.max(0.0), 3, "J")
-                        ))
-                        .color(paused),
-                    );
-                }
-                let gravity = self.world.laws.gravity != glam::DVec2::ZERO;
-                // L where the bar has room for it (at least 1200 points
-                // wide); it is always in the Totals tab and the readouts.
-                if spin && ctx.screen_rect().width() >= L_MIN_WIDTH {
-                    ui.label(format!(
-                        "L = {}",
-                        with_unit(m.angular_momentum, 3, "kg·m²/s")
-                    ))
-                    .on_hover_text(
-                        "angular momentum about the corner (0, 0), of moving and of turning: \
+        let name = model
+            .open
+            .scene
+            .name
+            .clone()
+            .unwrap_or_else(|| "Sandbox".into());
+        let state = if model.record.history.cursor().is_some() {
+            RichText::new("⏸ REWOUND").color(paused)
+        } else if model.clock.paused {
+            RichText::new("⏸ PAUSED").color(paused)
+        } else {
+            RichText::new(format!("▶ RUNNING ×{}", model.clock.time_scale())).color(running)
+        };
+        // Always shown, in this order.
+        let essential = [
+            Item::new(RichText::new(name.clone()).strong()).hover(name),
+            Item::new(format!("t = {}", with_unit(world.time, 2, "s"))),
+            Item::new(state.strong()).named("run_state"),
+        ];
+        // Shown as far as the line reaches, in this order.
+        let mut optional = Vec::new();
+        if let Some(slow) = model.slow_note() {
+            optional.push(Item::new(RichText::new(slow).color(paused)));
+        }
+        if let (Some(k), Some((oldest, newest))) =
+            (model.record.history.cursor(), model.record.history.span())
+        {
+            optional.push(Item::new(format!(
+                "rewound to snapshot {} of {} ({} to {} s): Space resumes",
+                k + 1,
+                model.record.history.len(),
+                plain(oldest, 2),
+                plain(newest, 2)
+            )));
+        }
+        let mut momentum = Item::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s")))
+            .hover("total momentum of the discs");
+        if walls_pushed(cx) {
+            momentum = Item::new(
+                RichText::new(format!("p = {} (walls push)", vector(m.momentum, 3, "kg·m/s")))
+                    .color(paused),
+            )
+            .hover("walls push: the discs' momentum changes only at the walls; between discs it is kept")
+            .named("walls_push");
+        }
+        optional.push(momentum);
+        if spin {
+            optional.push(
+                Item::new(format!(
+                    "KE {} + turning {} = {}",
+                    plain(m.kinetic_energy, 3),
+                    plain(m.rotational_energy, 3),
+                    with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
+                ))
+                .hover(
+                    "energy of moving, ½·m·v², plus of turning, ½·I·ω² with I = ½·m·r², \
+                     summed over the discs",
+                ),
+            );
+        } else {
+            optional.push(
+                Item::new(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")))
+                    .hover("kinetic energy: the energy of moving, ½·m·v², summed over the discs"),
+            );
+        }
+        optional.push(match pi_result(world) {
+            Some(result) => Item::new(RichText::new(result).strong()),
+            None => Item::new(count_line(world))
+                .hover("impacts between two discs, and of a disc on a wall, counted apart")
+                .named("count"),
+        });
+        if model.overlays.com_view.is_some() {
+            // The totals above are the box's; in the view's frame the
+            // momentum is zero and less energy moves.
+            let v = m.center_of_mass_velocity;
+            let total_mass: f64 = world.particles.iter().map(|p| p.mass).sum();
+            let relative_ke = m.kinetic_energy - 0.5 * total_mass * v.length_squared();
+            optional.push(Item::new(
+                RichText::new(format!(
+                    "centre-of-mass view: p = {}, KE = {}",
+                    vector(glam::DVec2::ZERO, 3, "kg·m/s"),
+                    with_unit(relative_ke.max(0.0), 3, "J")
+                ))
+                .color(paused),
+            ));
+        }
+        if world.laws.gravity != glam::DVec2::ZERO {
+            // With gravity, kinetic energy alone seems to vanish in a fall.
+            optional.push(
+                Item::new(format!(
+                    "KE + PE = {}",
+                    with_unit(world.total_energy(), 3, "J")
+                ))
+                .hover("energy of moving (and turning) plus the energy of height, zero at the bottom edge of the box"),
+            );
+        }
+        if spin {
+            optional.push(
+                Item::new(format!(
+                    "L = {}",
+                    with_unit(m.angular_momentum, 3, "kg·m²/s")
+                ))
+                .hover(
+                    "angular momentum about the corner (0, 0), of moving and of turning: \
                          collisions between discs keep it, walls change it",
-                    );
-                }
-                if gravity {
-                    // With gravity, kinetic energy alone seems to vanish in a fall.
-                    let (name, hover) = if spin {
-                        (
-                            "KE + rotational KE + PE",
-                            "kinetic energy of moving and of turning, plus gravitational potential energy (zero at the bottom edge of the box)",
-                        )
-                    } else {
-                        (
-                            "KE + PE",
-                            "kinetic plus gravitational potential energy (zero at the bottom edge of the box)",
-                        )
-                    };
-                    ui.label(format!(
-                        "{name} = {}",
-                        with_unit(self.world.total_energy(), 3, "J")
-                    ))
-                    .on_hover_text(hover);
-                }
-                match crate::app::lesson::pi_result(&self.world) {
-                    Some(result) => ui.label(RichText::new(result).strong()),
-                    None => ui.label(format!(
-                        "collisions: {}",
-                        self.world.total_pair_collisions + self.world.total_wall_hits
-                    )),
+                ),
+            );
+        }
+        if world.resting_contacts > 0 {
+            optional.push(
+                Item::new(format!("resting contacts: {}", world.resting_contacts))
+                    .hover("discs lying on each other or on a wall: not counted as collisions"),
+            );
+        }
+        for warning in impulse::warnings::warnings(world, model.clock.dt) {
+            optional.push(
+                Item::new(RichText::new(format!("⚠ {}", warning.text)).color(paused))
+                    .named(format!("warning_{}", warning.code)),
+            );
+        }
+        self.line(ui, cx, essential, optional);
+    }
+}
+
+/// Whether the walls have changed the discs' total momentum since the
+/// record began (a box with walls, and a change beyond rounding).
+fn walls_pushed(cx: &Cx) -> bool {
+    let model = cx.model;
+    let world = &model.world;
+    if world.total_wall_hits == 0 {
+        return false;
+    }
+    let Some(first) = model.record.totals.first() else {
+        return false;
+    };
+    let scale: f64 = world
+        .particles
+        .iter()
+        .map(|p| p.mass * p.vel.length())
+        .sum::<f64>()
+        .max(1e-300);
+    (world.metrics().momentum - first.momentum).length() > 1e-9 * scale
+}
+
+impl TopBar {
+    /// Lays the items out on one line: the essential ones, then the others
+    /// while they fit, then "⋯ more" with the rest on hover, and the
+    /// buttons at the right end.
+    fn line(&self, ui: &mut egui::Ui, cx: &mut Cx, essential: [Item; 3], optional: Vec<Item>) {
+        let spacing = 18.0;
+        let galley = |ui: &egui::Ui, text: &RichText| -> Arc<egui::Galley> {
+            WidgetText::from(text.clone()).into_galley(
+                ui,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Body,
+            )
+        };
+        let mut buttons: Vec<(&str, Command, &str)> = vec![("Start", Command::ShowStart, "start")];
+        if cx.drawer && cx.model.panels.docks_open {
+            buttons.push(("☰ Controls", Command::ToggleDrawer, "drawer_toggle"));
+        }
+        if !cx.model.panels.docks_open {
+            buttons.push(("Show panels", Command::ToggleDocks, "show_panels"));
+        }
+        let button_width: f32 = buttons
+            .iter()
+            .map(|(label, ..)| galley(ui, &RichText::new(*label)).size().x + 16.0 + spacing)
+            .sum();
+        let more = RichText::new("… more");
+        let more_width = galley(ui, &more).size().x + spacing;
+        let mut room = ui.available_width() - button_width;
+        ui.horizontal(|ui| {
+            ui.spacing_mut().item_spacing.x = spacing;
+            ui.set_clip_rect(ui.max_rect());
+            for (k, item) in essential.into_iter().enumerate() {
+                let g = galley(ui, &item.text);
+                let w = g.size().x;
+                // The name gives way first: it truncates, with the whole on hover.
+                let r = if k == 0 && w > room * 0.45 {
+                    let width = (room * 0.45).max(40.0);
+                    room -= width + spacing;
+                    ui.add_sized(
+                        [width, ui.available_height()],
+                        egui::Label::new(item.text).truncate(),
+                    )
+                } else {
+                    room -= w + spacing;
+                    ui.label(g)
                 };
-                if self.world.resting_contacts > 0 {
-                    ui.label(format!("resting contacts: {}", self.world.resting_contacts))
-                        .on_hover_text(
-                            "discs lying on each other or on a wall: not counted as collisions",
-                        );
+                let r = match item.hover {
+                    Some(h) => r.on_hover_text(h),
+                    None => r,
+                };
+                if let Some(name) = item.name {
+                    cx.note(name, &r);
                 }
-                for warning in impulse::warnings::warnings(&self.world, self.clock.dt) {
-                    let r = ui.label(RichText::new(format!("⚠ {}", warning.text)).color(paused));
-                    self.ui.note_widget(
-                        format!("warning_{}", warning.code),
-                        r.rect,
-                        super::px_per_point(ctx),
-                    );
+            }
+            let mut hidden = Vec::new();
+            let count = optional.len();
+            for (k, item) in optional.into_iter().enumerate() {
+                let g = galley(ui, &item.text);
+                let last = k + 1 == count;
+                let need = g.size().x + spacing + if last { 0.0 } else { more_width };
+                if !hidden.is_empty() || need > room {
+                    hidden.push(item.text.text().to_string());
+                    continue;
                 }
-                if !self.ui.docks_open {
-                    // Tab's on-screen twin, for a touch screen.
-                    if ui.button("Show panels").on_hover_text("Tab").clicked() {
-                        self.ui.docks_open = true;
-                    }
+                room -= g.size().x + spacing;
+                let r = ui.label(g);
+                let r = match item.hover {
+                    Some(h) => r.on_hover_text(h),
+                    None => r,
+                };
+                if let Some(name) = item.name {
+                    cx.note(name, &r);
                 }
-                if let (Some(k), Some((oldest, newest))) =
-                    (self.history.cursor(), self.history.span())
-                {
-                    ui.label(format!(
-                        "rewound to snapshot {} of {} ({} to {} s): Space resumes",
-                        k + 1,
-                        self.history.len(),
-                        plain(oldest, 2),
-                        plain(newest, 2)
-                    ));
+            }
+            if !hidden.is_empty() {
+                let r = ui.label(more).on_hover_text(hidden.join("\n"));
+                cx.note("top_bar_more", &r);
+            }
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                for (label, command, name) in buttons {
+                    super::widgets::command_button(ui, cx, label, command, Some(name));
                 }
             });
         });
-        panel.response.rect
     }
 }

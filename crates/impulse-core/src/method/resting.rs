@@ -27,6 +27,11 @@
 //!    disc of a near-vertical contact and splits the others by inverse mass;
 //! 5. then positions move (x ← x + v·h) and the walls clamp as usual.
 //!
+//! The ledger gets the impacts of step 1, pairs and walls, at the
+//! substep's start, and the wall hits step 5 catches at its end; the
+//! sweeps of step 2 and the shock sweep are resting contact and record
+//! nothing.
+//!
 //! Rough discs: impacts take the tangential law of [`crate::rough`], and
 //! resting contacts (the sweeps with restitution 0, walls included) rub with
 //! Coulomb friction where μ is given, so a disc sliding on the floor slows
@@ -37,7 +42,7 @@
 //! which only matters where the floor holds the discs anyway.
 
 use crate::laws::Laws;
-use crate::ledger::{Collision, Ledger};
+use crate::ledger::{Collision, Ledger, Wall, WallHit};
 use crate::narrow_phase::Contact;
 use crate::pipeline::Pipeline;
 use crate::resolution::{collision_velocities, push_apart, rough_pair, rough_wall};
@@ -126,7 +131,7 @@ pub(crate) fn substep(
     // pair still approaches when its turn comes.
     let mut pair_impacts = 0;
     for pass in 0..PASSES {
-        walls.hold(particles, stats, Hold::Impacts);
+        walls.hold(particles, stats, Hold::Impacts, (&mut *ledger, time));
         for (c, &impact) in contacts.iter().zip(impacts.iter()) {
             if impact {
                 let (i, j) = (c.i as usize, c.j as usize);
@@ -157,12 +162,12 @@ pub(crate) fn substep(
     }
     let rubbing = laws.rough().resting();
     for _ in 0..PASSES {
-        walls.hold(particles, stats, Hold::Resting);
+        walls.hold(particles, stats, Hold::Resting, (&mut *ledger, time));
         for c in contacts.iter() {
             collide(particles, c, 0.0, None, rubbing);
         }
     }
-    walls.hold(particles, stats, Hold::Resting);
+    walls.hold(particles, stats, Hold::Resting, (&mut *ledger, time));
     // The shock sweep treats the lower disc as immovable, which is right
     // only when a floor holds the stack: with open or periodic edges it
     // changed the total momentum (a falling e = 0 cluster in an open world
@@ -188,7 +193,7 @@ pub(crate) fn substep(
     // catches is a disc that moved into a wall during this substep, counted
     // there as an impact if fast; its resting contacts are counted above.
     let resting = stats.resting_contacts;
-    pipeline.apply_boundary(particles, laws, h, stats);
+    pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
     stats.resting_contacts = resting;
 }
 
@@ -293,13 +298,19 @@ impl Walls<'_> {
 
     /// Stops discs that touch a wall from moving into it, as `which` says.
     /// The impulse is booked every time (it is all given by the wall), a
-    /// hit only for impacts.
-    fn hold(&self, particles: &mut [Particle], stats: &mut StepStats, which: Hold) {
+    /// hit only for impacts, and each hit goes into the ledger at `time`.
+    fn hold(
+        &self,
+        particles: &mut [Particle],
+        stats: &mut StepStats,
+        which: Hold,
+        (ledger, time): (&mut Ledger, f64),
+    ) {
         if self.laws.boundary != Boundary::Box {
             return;
         }
         let size = self.laws.size;
-        for (p, fast) in particles.iter_mut().zip(self.fast) {
+        for (k, (p, fast)) in particles.iter_mut().zip(self.fast).enumerate() {
             let slack = SLOP * p.radius;
             for axis in 0..2 {
                 let walls = self.laws.walls;
@@ -315,6 +326,7 @@ impl Walls<'_> {
                     } else {
                         0.0
                     };
+                    let came_in = (p.vel, p.spin);
                     let before = p.vel[axis];
                     p.vel[axis] = -e * before;
                     let impulse = p.mass * (p.vel[axis] - before).abs();
@@ -329,6 +341,19 @@ impl Walls<'_> {
                         let mut into = DVec2::ZERO;
                         into[axis] = if low { -1.0 } else { 1.0 };
                         rough_wall(p, into, impulse, rub);
+                    }
+                    if bounce && ledger.is_on() {
+                        ledger.push(WallHit {
+                            time,
+                            disc: k,
+                            wall: Wall::at(axis, high),
+                            mass: p.mass,
+                            radius: p.radius,
+                            before: came_in.0,
+                            after: p.vel,
+                            spin_before: came_in.1,
+                            spin_after: p.spin,
+                        });
                     }
                 }
             }

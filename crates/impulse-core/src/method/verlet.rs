@@ -24,8 +24,13 @@ use glam::DVec2;
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
-/// One position-Verlet substep of length `h`; `previous` is scratch for
-/// the positions it started from.
+/// One position-Verlet substep of length `h` starting at `time`;
+/// `previous` is scratch for the positions it started from. The ledger
+/// gets the wall hits (the wall stage reflects the implied velocity, as in
+/// the other methods) but no pair collisions: projection moves positions
+/// only, and the velocity a disc leaves with comes out of all its contacts
+/// of the substep and the walls together, so there is no before and after
+/// of one collision to record.
 pub(crate) fn substep(
     pipeline: &mut Pipeline,
     previous: &mut Vec<DVec2>,
@@ -33,6 +38,7 @@ pub(crate) fn substep(
     laws: &Laws,
     h: f64,
     stats: &mut StepStats,
+    (ledger, time): (&mut Ledger, f64),
 ) {
     let lap = Lap::start();
     previous.clear();
@@ -65,7 +71,7 @@ pub(crate) fn substep(
         }
     }
     stats.timings.resolution += lap.elapsed();
-    // Nothing to record: projection changes no velocity.
+    // No pair to record: projection changes no velocity.
     let no_ledger = (&mut Ledger::default(), 0.0);
     pipeline.resolve(particles, (laws, h), Rule::PROJECTION, no_ledger, stats);
     let lap = Lap::start();
@@ -104,5 +110,5 @@ pub(crate) fn substep(
         }
     }
     stats.timings.resolution += lap.elapsed();
-    pipeline.apply_boundary(particles, laws, h, stats);
+    pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
 }

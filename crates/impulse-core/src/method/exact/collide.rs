@@ -5,7 +5,7 @@
 
 use super::kinematics::CREEP;
 use super::{simultaneous, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
-use crate::ledger::Collision;
+use crate::ledger::{Collision, Impact, Wall, WallHit};
 use crate::resolution::collision_velocities;
 use crate::rough::{Side, Tangential};
 use glam::DVec2;
@@ -83,7 +83,7 @@ impl Sim {
         spins_before: [f64; 2],
     ) {
         if self.record {
-            self.collided.push(Collision {
+            self.impacts.push(Impact::Pair(Collision {
                 time: self.now,
                 discs: k.map(|b| self.order[b as usize] as usize),
                 normal,
@@ -93,7 +93,26 @@ impl Sim {
                 radii: k.map(|b| self.bodies[b as usize].radius),
                 spins_before,
                 spins_after: self.spins_of(k),
-            });
+            }));
+        }
+    }
+
+    /// Keeps a wall hit of body `i` on `wall` for the ledger (when it is
+    /// on), with its velocity and spin before it (after it they are the
+    /// current ones).
+    fn record_wall(&mut self, i: u32, wall: Wall, (before, spin_before): (DVec2, f64)) {
+        if self.record {
+            self.impacts.push(Impact::Wall(WallHit {
+                time: self.now,
+                disc: self.order[i as usize] as usize,
+                wall,
+                mass: self.aux[i as usize].mass,
+                radius: self.bodies[i as usize].radius,
+                before,
+                after: self.bodies[i as usize].vel,
+                spin_before,
+                spin_after: self.spin(i),
+            }));
         }
     }
 
@@ -308,7 +327,7 @@ impl Sim {
         }
         if self.record {
             for t in &list {
-                self.collided.push(Collision {
+                self.impacts.push(Impact::Pair(Collision {
                     time: self.now,
                     discs: [
                         self.order[ids[t.a] as usize] as usize,
@@ -327,7 +346,7 @@ impl Sim {
                     ],
                     spins_before: [spins_before[t.a], spins_before[t.b]],
                     spins_after: [self.spin(ids[t.a]), self.spin(ids[t.b])],
-                });
+                }));
             }
         }
         for t in &list {
@@ -366,6 +385,7 @@ impl Sim {
             self.wall_impulse += self.aux[i as usize].mass * speed;
             self.rested(i);
         } else {
+            let came_in = (self.bodies[i as usize].vel, self.spin(i));
             let b = &mut self.bodies[i as usize];
             let aux = &mut self.aux[i as usize];
             let impulse = aux.mass * (1.0 + e) * b.vel[axis].abs();
@@ -378,6 +398,9 @@ impl Sim {
                 into[axis] = if upper { 1.0 } else { -1.0 };
                 self.rub_still(i, into, impulse, self.laws.wall_rough());
             }
+            // Recorded either way; `Exact::advance` keeps the impacts
+            // for the ledger, as it does with pairs.
+            self.record_wall(i, Wall::at(axis, upper), came_in);
             if crate::impact::is_impact(speed, self.impact_speed) {
                 self.wall_hits += 1;
             } else {

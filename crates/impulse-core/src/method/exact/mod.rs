@@ -47,7 +47,7 @@
 use crate::boundary::Boundary;
 use crate::clock::Instant;
 use crate::laws::Laws;
-use crate::ledger::{Collision, Ledger};
+use crate::ledger::{Impact, Ledger};
 use crate::particle::Particle;
 use crate::stats::StepStats;
 use glam::DVec2;
@@ -107,6 +107,8 @@ pub struct Exact {
     sim: Option<Sim>,
     /// End a step at its first pair collision, at the instant of impact.
     pub stop_at_collision: bool,
+    /// End a step at its first wall hit, at the instant of impact.
+    pub stop_at_wall: bool,
 }
 
 impl Exact {
@@ -130,16 +132,21 @@ impl Exact {
         };
         sim.record = ledger.is_on();
         sim.stop_at_collision = self.stop_at_collision;
+        sim.stop_at_wall = self.stop_at_wall;
         sim.stopped = false;
         sim.hold(dt);
         sim.run();
         sim.count_sleepers();
+        // Recorded as they happened; the ledger takes the impacts, sorted
+        // out with the threshold the counters use.
         let impact_speed = sim.impact_speed;
-        for mut c in sim.collided.drain(..) {
-            let closing = (c.before[0] - c.before[1]).dot(c.normal);
-            if crate::impact::is_impact(closing, impact_speed) {
-                c.time += start;
-                ledger.push(c);
+        for mut impact in sim.impacts.drain(..) {
+            if crate::impact::is_impact(impact.closing_speed(), impact_speed) {
+                match &mut impact {
+                    Impact::Pair(c) => c.time += start,
+                    Impact::Wall(w) => w.time += start,
+                }
+                ledger.push(impact);
             }
         }
         let end = if sim.truncated || sim.stopped {
@@ -272,11 +279,14 @@ struct Sim {
     overlapping: bool,
     /// End the step at the first pair collision (run to the next collision).
     stop_at_collision: bool,
+    /// End the step at the first wall hit (run to the next impact).
+    stop_at_wall: bool,
     /// The step ended there.
     stopped: bool,
-    /// Collisions of this step, for the ledger (when it is on).
+    /// Whether to keep this step's collisions and wall hits for the ledger
+    /// (when it is on), in `impacts`.
     record: bool,
-    collided: Vec<Collision>,
+    impacts: Vec<Impact>,
     /// Whether discs may fall asleep under these laws ([`sleep`]).
     sleeping: bool,
     /// Per body: moving freely or asleep ([`sleep`]).
@@ -374,6 +384,10 @@ impl Sim {
                     let gen = self.bodies[i as usize].gen;
                     self.hit_wall(i, usize::from(axis), upper);
                     self.let_go_if_moved([i, i], [gen, gen]);
+                    if self.stop_at_wall && self.wall_hits > 0 {
+                        self.stopped = true;
+                        break;
+                    }
                 }
                 Kind::Cell { axis, upper } => self.cross_cell(i, usize::from(axis), upper),
                 Kind::Leave => self.rebuild_grid(),

@@ -1,14 +1,12 @@
-//! How the screen looks: one UI scale for every text and line (F2 cycles
-//! 1.0, 1.5, 2.0, for the back row of a classroom), one table of text sizes,
-//! and a dark and a light (bright-room) theme, for egui's panels and for the
-//! world macroquad draws alike.
+//! How the screen looks, read by the panels and the world's drawing alike:
+//! one UI scale for every text and control (F2 cycles 1.0, 1.5, 2.0, for the
+//! back row of a classroom), one table of text sizes, and a dark and a light
+//! (bright-room) theme with the world's colours and their names.
 
 use egui::{Color32, FontFamily, FontId, TextStyle};
 
-/// The scales F2 cycles through; 2.0 is the projector's.
-pub const UI_SCALES: [f32; 3] = [1.0, 1.5, 2.0];
-/// The range of the scale slider.
-pub const UI_SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.5;
+pub use crate::app::model::Theme;
+
 /// The smallest text anywhere on screen at scale 1, in points (= pixels at
 /// scale 1): 16, so scale 1.5 gives 24 px and the projector's 2.0 gives 32.
 pub const MIN_TEXT_POINTS: f32 = 16.0;
@@ -25,78 +23,106 @@ pub fn text_sizes() -> [(TextStyle, f32); 5] {
     ]
 }
 
-/// The next of [`UI_SCALES`] after `scale` (back to the first after the last).
-pub fn next_scale(scale: f32) -> f32 {
-    UI_SCALES
-        .iter()
-        .copied()
-        .find(|&s| s > scale + 1e-3)
-        .unwrap_or(UI_SCALES[0])
-}
-
-/// Dark (the default, for a screen) or light (for a projector in a bright room).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Theme {
-    Dark,
-    Light,
-}
-
-impl Theme {
-    /// "dark" or "light".
-    pub fn name(self) -> &'static str {
-        match self {
-            Theme::Dark => "dark",
-            Theme::Light => "light",
-        }
-    }
-}
-
 /// What the world is drawn in, per theme (RGBA, 0–1).
 #[derive(Clone, Copy, Debug)]
 pub struct WorldColors {
     pub background: [f32; 4],
     pub inside: [f32; 4],
     pub wall: [f32; 4],
+    /// The rail of a one-dimensional scene: never the velocity's colour.
+    pub rail: [f32; 4],
     pub velocity: [f32; 4],
     pub momentum: [f32; 4],
     /// The change of momentum in a collision.
     pub delta_p: [f32; 4],
+    /// Drawn round the Δp arrows, so they read on every disc colour.
+    pub outline: [f32; 4],
     pub selected: [f32; 4],
     pub text: [f32; 4],
     pub label_background: [f32; 4],
     pub leader: [f32; 4],
 }
 
-impl Theme {
-    /// The world's colours in this theme.
-    pub fn world(self) -> WorldColors {
-        match self {
-            Theme::Dark => WorldColors {
-                background: [0.09, 0.10, 0.14, 1.0],
-                inside: [1.0, 1.0, 1.0, 0.03],
-                wall: [0.85, 0.88, 0.95, 1.0],
-                velocity: [1.0, 1.0, 1.0, 0.95],
-                momentum: [1.0, 0.35, 0.75, 1.0],
-                delta_p: [1.0, 0.78, 0.15, 1.0],
-                selected: [1.0, 1.0, 1.0, 1.0],
-                text: [1.0, 1.0, 1.0, 1.0],
-                label_background: [0.03, 0.04, 0.07, 0.88],
-                leader: [0.85, 0.88, 0.95, 0.8],
-            },
-            Theme::Light => WorldColors {
-                background: [0.97, 0.97, 0.95, 1.0],
-                inside: [1.0, 1.0, 1.0, 1.0],
-                wall: [0.10, 0.10, 0.12, 1.0],
-                velocity: [0.05, 0.05, 0.08, 1.0],
-                momentum: [0.75, 0.0, 0.45, 1.0],
-                delta_p: [0.72, 0.42, 0.0, 1.0],
-                selected: [0.0, 0.0, 0.0, 1.0],
-                text: [0.0, 0.0, 0.0, 1.0],
-                label_background: [1.0, 1.0, 1.0, 0.92],
-                leader: [0.15, 0.15, 0.2, 0.8],
-            },
+/// The names of the arrows' colours in a theme, for the labels that name
+/// them ("velocity arrows (white)").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArrowNames {
+    pub velocity: &'static str,
+    pub momentum: &'static str,
+    pub delta_p: &'static str,
+}
+
+/// The arrows' colour names in `theme`, matching [`world_colors`].
+pub fn arrow_names(theme: Theme) -> ArrowNames {
+    match theme {
+        Theme::Dark => ArrowNames {
+            velocity: "white",
+            momentum: "pink",
+            delta_p: "amber, outlined",
+        },
+        Theme::Light => ArrowNames {
+            velocity: "black",
+            momentum: "purple",
+            delta_p: "brown, outlined",
+        },
+    }
+}
+
+/// The world's colours in `theme`.
+pub fn world_colors(theme: Theme) -> WorldColors {
+    match theme {
+        Theme::Dark => WorldColors {
+            background: [0.09, 0.10, 0.14, 1.0],
+            inside: [1.0, 1.0, 1.0, 0.03],
+            wall: [0.85, 0.88, 0.95, 1.0],
+            rail: [0.45, 0.50, 0.60, 1.0],
+            velocity: [1.0, 1.0, 1.0, 0.95],
+            momentum: [1.0, 0.35, 0.75, 1.0],
+            delta_p: [1.0, 0.78, 0.15, 1.0],
+            outline: [0.0, 0.0, 0.0, 1.0],
+            selected: [1.0, 1.0, 1.0, 1.0],
+            text: [1.0, 1.0, 1.0, 1.0],
+            label_background: [0.03, 0.04, 0.07, 0.88],
+            leader: [0.85, 0.88, 0.95, 0.8],
+        },
+        Theme::Light => WorldColors {
+            background: [0.97, 0.97, 0.95, 1.0],
+            inside: [1.0, 1.0, 1.0, 1.0],
+            wall: [0.10, 0.10, 0.12, 1.0],
+            rail: [0.60, 0.62, 0.68, 1.0],
+            velocity: [0.05, 0.05, 0.08, 1.0],
+            momentum: [0.75, 0.0, 0.45, 1.0],
+            delta_p: [0.55, 0.30, 0.0, 1.0],
+            outline: [1.0, 1.0, 1.0, 1.0],
+            selected: [0.0, 0.0, 0.0, 1.0],
+            text: [0.0, 0.0, 0.0, 1.0],
+            label_background: [1.0, 1.0, 1.0, 0.92],
+            leader: [0.15, 0.15, 0.2, 0.8],
+        },
+    }
+}
+
+/// How the world is drawn this frame: the theme's colours, and the UI
+/// scale for its text (lines keep their width in pixels).
+#[derive(Clone, Copy, Debug)]
+pub struct Look {
+    pub colors: WorldColors,
+    pub text_scale: f32,
+}
+
+impl Look {
+    /// The look of `theme` at UI scale `text_scale`.
+    pub fn of(theme: Theme, text_scale: f32) -> Look {
+        Look {
+            colors: world_colors(theme),
+            text_scale,
         }
     }
+}
+
+/// A theme colour as macroquad's.
+pub fn color(c: [f32; 4]) -> macroquad::color::Color {
+    macroquad::color::Color::new(c[0], c[1], c[2], c[3])
 }
 
 /// Sets egui's device pixels per point (the screen's pixel density times
@@ -160,6 +186,7 @@ pub fn min_text_points(ctx: &egui::Context) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::model::{next_scale, UI_SCALES};
 
     #[test]
     fn f2_cycles_the_three_scales() {

@@ -1,12 +1,10 @@
 //! Trails: each disc's recent path, drawn fading, so a class can see where
 //! the discs came from and how a collision bent their paths, with a dot
 //! every [`DOT_SECONDS`] of simulated time: the spacing of the dots reads
-//! as the speed (PhET's path traces).
+//! as the speed (PhET's path traces). Recorded here; drawn by the world's drawing.
 
-use super::camera::Camera;
 use glam::DVec2;
 use impulse::World;
-use macroquad::prelude::*;
 use std::collections::VecDeque;
 
 /// Points kept per disc (one per frame: about 3 s at 60 fps).
@@ -82,31 +80,15 @@ impl Trails {
         }
     }
 
-    /// Fading lines, oldest faintest.
-    pub fn draw(&self, camera: &Camera, scale: f32) {
-        if !self.on {
-            return;
-        }
-        let width = 1.5 * scale;
-        for (color, path) in &self.paths {
-            let n = path.len();
-            for (k, pair) in path.iter().zip(path.iter().skip(1)).enumerate() {
-                let (a, b) = (
-                    camera.world_to_screen(*pair.0),
-                    camera.world_to_screen(*pair.1),
-                );
-                let alpha = 0.7 * (k + 1) as f32 / n as f32;
-                let c = Color::from_rgba(color.r, color.g, color.b, (alpha * 255.0) as u8);
-                draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, width, c);
-            }
-        }
-        for ((color, _), dots) in self.paths.iter().zip(&self.dots) {
-            let c = Color::from_rgba(color.r, color.g, color.b, 230);
-            for d in dots {
-                let at = camera.world_to_screen(*d);
-                draw_circle(at.x as f32, at.y as f32, 2.5 * scale, c);
-            }
-        }
+    /// Each disc's recent path (its colour, oldest point first) and its
+    /// dots, for drawing.
+    pub fn paths(
+        &self,
+    ) -> impl Iterator<Item = (impulse::Color, &VecDeque<DVec2>, &VecDeque<DVec2>)> {
+        self.paths
+            .iter()
+            .zip(&self.dots)
+            .map(|((color, path), dots)| (*color, path, dots))
     }
 
     /// The dots of disc `k`, oldest first.

@@ -113,6 +113,11 @@ impl Totals {
         ))
     }
 
+    /// The first sample since recording began.
+    pub fn first(&self) -> Option<&Sample> {
+        self.first.as_ref()
+    }
+
     /// The samples, oldest first.
     pub fn samples(&self) -> impl Iterator<Item = &Sample> {
         self.samples.iter()

@@ -1,10 +1,9 @@
-//! Opening and saving scenes from the window: the classroom presets on the
-//! number keys (and a menu), and Ctrl+S, which saves the current state as a
-//! scene file that reopens exactly.
+//! Opening and saving scenes: the classroom presets on the number keys (and
+//! a menu), files by path or dropped, Ctrl+S, which saves the current state
+//! as a scene file that reopens exactly, a shared link, and undo and redo.
 
-use super::interaction::Gesture;
-use super::ui::Note;
-use super::App;
+use super::undo::Moment;
+use super::{DockTab, Note, Sandbox};
 #[cfg(not(target_arch = "wasm32"))]
 use crate::files::write_durably;
 use impulse::Scene;
@@ -133,24 +132,26 @@ pub fn free_file(dir: &Path, stem: &str, ext: &str) -> PathBuf {
     path
 }
 
-impl App {
+impl Sandbox {
     /// Opens preset `index` of [`PRESETS`].
     pub(super) fn open_preset(&mut self, index: usize) {
         let Some(preset) = PRESETS.get(index) else {
             return;
         };
-        // The gas presets are about the speed distribution: show it.
-        if preset.path.contains("gas") {
-            self.ui.tab = super::ui::DockTab::Speeds;
-        }
+        self.panels.presets_open = false;
         match Scene::parse(preset.text, preset.path) {
             Ok(scene) => {
-                if self.open_scene(scene, preset.path.to_string()).is_ok()
-                    && preset.path == impulse::catalogue::PRESET_SPIN_OFF_A_WALL.path
-                {
+                if self.open_scene(scene, preset.path.to_string()).is_err() {
+                    return;
+                }
+                // The gas presets are about the speed distribution: show it.
+                if preset.path.contains("gas") {
+                    self.panels.tab = DockTab::Speeds;
+                }
+                if preset.path == impulse::catalogue::PRESET_SPIN_OFF_A_WALL.path {
                     // The spin preset is about the angle and the spin: its
                     // disc's path traced, its values (ω among them) beside it.
-                    self.trails.on = true;
+                    self.record.trails.on = true;
                     self.selected = Some(0);
                 }
             }
@@ -164,18 +165,17 @@ impl App {
     pub(super) fn open_scene(&mut self, scene: Scene, origin: String) -> Result<(), String> {
         match scene.build(&origin) {
             Ok(world) => {
-                self.remember("open a scene");
                 self.world = world;
-                self.scene_edited = scene.edited;
+                self.open.edited = scene.edited;
                 self.forget_past();
-                self.realtime.clear();
-                self.clock.dt = scene.step_for(self.options.dt);
-                self.fit_camera();
+                self.steps.realtime.clear();
+                self.clock.dt = scene.step_for(self.session.dt);
                 self.selected = None;
-                self.gesture = Gesture::Idle;
+                self.pointer.cancel();
                 let name = scene.name.clone().unwrap_or_else(|| origin.clone());
-                self.scene = scene;
-                self.scene_origin = origin;
+                self.open.scene = scene;
+                self.open.origin = origin;
+                self.fit_camera();
                 self.toast(format!("Opened {name}"));
                 Ok(())
             }
@@ -187,13 +187,75 @@ impl App {
         }
     }
 
+    /// The scene as it opened, again.
+    pub(super) fn reset_scene(&mut self) {
+        match self.open.scene.build(&self.open.origin) {
+            Ok(world) => {
+                self.open.edited = self.open.scene.edited;
+                self.world = world;
+                self.forget_past();
+                self.selected = None;
+                self.pointer.cancel();
+                self.toast("Scene reset");
+            }
+            Err(e) => self.toast(format!("Cannot reset: {e}")),
+        }
+    }
+
+    /// Removes every disc.
+    pub(super) fn clear_discs(&mut self) {
+        self.world.particles.clear();
+        self.forget_past();
+        self.selected = None;
+        self.pointer.cancel();
+        self.toast("Cleared: drag on empty space to launch discs");
+    }
+
+    /// Opens the scene file at `path` (the path field); a bad file is
+    /// reported and the current scene stays.
+    pub(super) fn open_file(&mut self, path: &str) {
+        let path = path.trim().to_string();
+        if path.is_empty() {
+            self.messages.scene = Some(Note::error("Type the path of a scene file first"));
+            return;
+        }
+        let result = match Scene::load(Path::new(&path)) {
+            Ok(scene) => self.open_scene(scene, path.clone()),
+            Err(e) => {
+                let message = format!("{e} (kept the current scene)");
+                self.report(message.clone());
+                Err(message)
+            }
+        };
+        self.messages.scene = Some(match result {
+            Ok(()) => Note::ok(format!("Opened {path}")),
+            Err(e) => Note::error(e),
+        });
+    }
+
+    /// Opens a scene from its text (a dropped file); a bad one is reported
+    /// and the scene kept.
+    pub(super) fn open_text(&mut self, name: &str, text: &Result<String, String>) {
+        let scene = text
+            .as_ref()
+            .map_err(Clone::clone)
+            .and_then(|text| Scene::parse(text, name).map_err(|e| e.to_string()));
+        match scene {
+            Ok(scene) => {
+                let _ = self.open_scene(scene, name.to_string()); // reported
+            }
+            Err(e) => self.report(format!("{e} (kept the current scene)")),
+        }
+    }
+
     /// Saves the current state as a scene file in the output folder; the
     /// write is atomic, so a failure leaves any older file as it was.
-    /// Returns the file written, or what was reported.
+    /// Returns the file written, or what was reported; the scene section
+    /// says the same under its buttons.
     pub(super) fn save_scene(&mut self) -> Result<PathBuf, String> {
-        let name = self.scene.name.clone();
+        let name = self.open.scene.name.clone();
         let scene = self.current_scene();
-        let dir = self.options.out.clone();
+        let dir = self.session.out.clone();
         let stem = slug(name.as_deref().unwrap_or("scene"));
         let result = keep_file(&dir, &stem, "toml", scene.to_toml().as_bytes());
         match result {
@@ -205,11 +267,13 @@ impl App {
                     "Saved"
                 };
                 self.toast(format!("{verb} {}", path.display()));
+                self.messages.scene = Some(Note::ok(format!("Saved {}", path.display())));
                 Ok(path)
             }
             Err(e) => {
                 let message = format!("Not saved: {e}");
                 self.report(message.clone());
+                self.messages.scene = Some(Note::error(message.clone()));
                 Err(message)
             }
         }
@@ -232,82 +296,26 @@ impl App {
         }
     }
 
-    /// Opens the scene files dropped on the window (bytes in the browser,
-    /// a path on the desktop); a bad one is reported and the scene kept.
-    pub(super) fn open_dropped_files(&mut self) {
-        for file in macroquad::input::get_dropped_files() {
-            let name = file
-                .path
-                .as_ref()
-                .map_or_else(|| "dropped file".to_string(), |p| p.display().to_string());
-            let text = match (&file.bytes, &file.path) {
-                (Some(bytes), _) => {
-                    String::from_utf8(bytes.clone()).map_err(|_| format!("{name}: not a text file"))
-                }
-                (None, Some(path)) => {
-                    std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))
-                }
-                (None, None) => Err("a dropped file without content".to_string()),
-            };
-            let scene = text.and_then(|text| Scene::parse(&text, &name).map_err(|e| e.to_string()));
-            match scene {
-                Ok(scene) => {
-                    let _ = self.open_scene(scene, name); // reported
-                }
-                Err(e) => self.report(format!("{e} (kept the current scene)")),
-            }
-        }
-    }
-
     /// The sandbox as it is now, as a scene that reopens exactly.
-    pub(super) fn current_scene(&self) -> Scene {
+    pub fn current_scene(&self) -> Scene {
         let mut scene = Scene::from_world(
             &self.world,
-            self.scene.name.clone(),
-            self.scene.description.clone(),
+            self.open.scene.name.clone(),
+            self.open.scene.description.clone(),
         );
         scene.simulation.dt = Some(self.clock.dt);
-        scene.edited = self.scene_edited;
+        scene.edited = self.open.edited;
         scene
     }
 
     /// The scene as it is now, for undo.
-    pub(super) fn moment(&self) -> super::undo::Moment {
-        super::undo::Moment {
+    pub(super) fn moment(&self) -> Moment {
+        Moment {
             world: self.world.clone(),
-            scene: self.scene.clone(),
-            origin: self.scene_origin.clone(),
-            edited: self.scene_edited,
+            scene: self.open.scene.clone(),
+            origin: self.open.origin.clone(),
+            edited: self.open.edited,
         }
-    }
-
-    /// Remembers the scene before a change of kind `what` (see
-    /// [`super::undo`]).
-    pub(super) fn remember(&mut self, what: &'static str) {
-        let now = macroquad::time::get_time();
-        let (world, scene, origin, edited) = (
-            &self.world,
-            &self.scene,
-            &self.scene_origin,
-            self.scene_edited,
-        );
-        self.undo.remember(
-            || super::undo::Moment {
-                world: world.clone(),
-                scene: scene.clone(),
-                origin: origin.clone(),
-                edited,
-            },
-            what,
-            now,
-        );
-    }
-
-    /// Remembers a change to the discs themselves (masses, velocities, a
-    /// disc added or removed): the scene's caption may no longer hold.
-    pub(super) fn remember_edit(&mut self, what: &'static str) {
-        self.remember(what);
-        self.scene_edited = true;
     }
 
     /// Ctrl+Z: the scene as it was before the last change.
@@ -334,73 +342,35 @@ impl App {
         }
     }
 
-    fn put_back(&mut self, moment: super::undo::Moment) {
+    fn put_back(&mut self, moment: Moment) {
         let resized = moment.world.laws.size != self.world.laws.size;
         self.world = moment.world;
-        self.scene = moment.scene;
-        self.scene_origin = moment.origin;
-        self.scene_edited = moment.edited;
+        self.open = super::OpenScene {
+            scene: moment.scene,
+            origin: moment.origin,
+            edited: moment.edited,
+        };
         // The rewind history and the plot belong to the undone timeline;
         // the ledger came back with the world.
-        self.history.clear();
-        self.totals.clear();
-        self.gesture = Gesture::Idle;
-        if self
-            .selected
-            .is_some_and(|i| i >= self.world.particles.len())
-        {
+        self.record.history.clear();
+        self.record.totals.clear();
+        self.pointer.cancel();
+        if self.selected_disc().is_none() {
             self.selected = None;
         }
-        if resized && self.camera_fitted {
+        if resized && self.view.fitted {
             self.fit_camera();
         }
-    }
-
-    /// Opens the file named in the path field; a bad file is reported and
-    /// the current scene stays.
-    pub(super) fn open_from_panel(&mut self) {
-        let path = self.ui.path.trim().to_string();
-        if path.is_empty() {
-            self.ui.scene_note = Some(Note::error("Type the path of a scene file first"));
-            return;
-        }
-        let result = match Scene::load(Path::new(&path)) {
-            Ok(scene) => self.open_scene(scene, path.clone()),
-            Err(e) => {
-                let message = format!("{e} (kept the current scene)");
-                self.report(message.clone());
-                Err(message)
-            }
-        };
-        self.ui.scene_note = Some(match result {
-            Ok(()) => Note::ok(format!("Opened {path}")),
-            Err(e) => Note::error(e),
-        });
-    }
-
-    /// Saves the scene and says where it went, or what went wrong.
-    pub(super) fn save_from_panel(&mut self) {
-        self.ui.scene_note = Some(match self.save_scene() {
-            Ok(path) => Note::ok(format!("Saved {}", path.display())),
-            Err(e) => Note::error(e),
-        });
     }
 
     /// Deletes the selected disc (its button and the Delete key).
     pub(super) fn delete_selected(&mut self) {
         if let Some(i) = self.selected.take() {
             if i < self.world.particles.len() {
-                self.remember("delete");
                 self.world.particles.remove(i);
-                self.gesture.on_removed(i);
+                self.pointer.on_removed(i);
             }
         }
-    }
-
-    /// A message for both the window and the terminal.
-    pub(super) fn report(&mut self, message: String) {
-        eprintln!("impulse: {message}");
-        self.toast_for(message, 8.0);
     }
 }
 

@@ -1,5 +1,5 @@
 //! Undo and redo of every change to the scene (Ctrl+Z, Ctrl+Shift+Z or
-//! Ctrl+Y): before a change the window remembers the whole scene as it was,
+//! Ctrl+Y): before a change the sandbox remembers the whole scene as it was,
 //! discs, laws and time included, and undo puts it back. Many levels are
 //! kept within a memory budget (fewer for huge scenes, always one).
 
@@ -49,16 +49,29 @@ impl Undo {
     /// a change of the same kind right after the last is the same change.
     /// Forgets the undone future.
     pub fn remember(&mut self, moment: impl FnOnce() -> Moment, what: &'static str, now: f64) {
-        let same = self
-            .last
-            .is_some_and(|(kind, at)| kind == what && now - at < COALESCE_SECONDS);
+        let same = self.would_merge(what, now);
         self.last = Some((what, now));
-        if same && !self.past.is_empty() {
+        if same {
             return;
         }
         self.future.clear();
         self.past.push((moment(), what));
         self.trim();
+    }
+
+    /// Whether a change of kind `what` at `now` would be part of the last
+    /// one (so the moment before it need not be kept).
+    pub fn would_merge(&self, what: &'static str, now: f64) -> bool {
+        !self.past.is_empty()
+            && self
+                .last
+                .is_some_and(|(kind, at)| kind == what && now - at < COALESCE_SECONDS)
+    }
+
+    /// A change of kind `what` at `now` that [`Undo::would_merge`] into the
+    /// last: it only extends it.
+    pub fn merge(&mut self, what: &'static str, now: f64) {
+        self.last = Some((what, now));
     }
 
     /// The moment before the last change, in exchange for the present.

@@ -6,13 +6,13 @@
 //! disc's always (moved out on a leader line when crowded), every other
 //! disc's only where there is room. Backgrounds first, then all text.
 
-use super::camera::Camera;
 use super::cull::{
     circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
 };
-use super::draw::{color, spin_shown, Look, Overlays, ReadoutScope, ARROW_SECONDS};
-use super::ui::numbers::{vector, with_unit};
-use super::ui::theme::MIN_TEXT_POINTS;
+use crate::app::look::{color, Look, MIN_TEXT_POINTS};
+use crate::app::model::camera::Camera;
+use crate::app::model::overlays::{spin_shown, Overlays, ReadoutScope, ARROW_SECONDS};
+use crate::app::numbers::{vector, with_unit};
 use glam::DVec2;
 use impulse::World;
 use macroquad::prelude::*;
@@ -33,7 +33,7 @@ pub struct WorldText {
 impl WorldText {
     /// Loads the bundled font (needs the window).
     pub fn new() -> Self {
-        let font = load_ttf_font_from_bytes(include_bytes!("../../assets/fonts/DejaVuSans.ttf"))
+        let font = load_ttf_font_from_bytes(include_bytes!("../../../assets/fonts/DejaVuSans.ttf"))
             .expect("the bundled DejaVu Sans loads");
         WorldText {
             font,
@@ -115,19 +115,13 @@ struct Label {
 }
 
 /// What labels must keep clear of: every disc on screen and every arrow drawn.
-fn obstacles(
-    world: &World,
-    camera: &Camera,
-    overlays: &Overlays,
-    look: Look,
-    cell: f64,
-) -> Option<Obstacles> {
+fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, cell: f64) -> Option<Obstacles> {
     let rect = camera.screen_rect();
     let mut o = Obstacles::new(cell);
     let mean_mass =
         world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64;
     let mut on_screen = 0;
-    let half = f64::from(4.0 * look.scale) * 2.4;
+    let half = 4.0 * 2.4; // the momentum arrow's half width, in px
     for p in &world.particles {
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius).max(1.0);
@@ -169,18 +163,18 @@ pub fn draw_readouts(
     if world.particles.is_empty() {
         return;
     }
-    let size = MIN_TEXT_POINTS * look.scale;
+    let size = MIN_TEXT_POINTS * look.text_scale;
     let pad = 0.35 * size;
     let line_height = 1.25 * size;
     let spin = spin_shown(world);
     let rows = if spin { 5.0 } else { 3.0 };
     let height = f64::from(rows * line_height + 2.0 * pad);
     let typical = DVec2::new(f64::from(22.0 * size), height);
-    let Some(obstacles) = obstacles(world, camera, overlays, look, typical.y) else {
+    let Some(obstacles) = obstacles(world, camera, overlays, typical.y) else {
         return;
     };
     let mut placer = LabelPlacer::new(typical);
-    let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.scale));
+    let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.text_scale));
     let mut labels = Vec::new();
     // The selected disc first, so its label is never crowded out.
     let others = (0..world.particles.len()).filter(|&i| all && Some(i) != selected);
@@ -226,14 +220,7 @@ pub fn draw_readouts(
     let leader = color(look.colors.leader);
     for l in &labels {
         if let Some((a, b)) = l.leader {
-            draw_line(
-                a.x as f32,
-                a.y as f32,
-                b.x as f32,
-                b.y as f32,
-                1.5 * look.scale,
-                leader,
-            );
+            draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, 1.5, leader);
         }
         let r = l.rect.map(|v| v as f32);
         draw_rectangle(r[0], r[1], r[2], r[3], background);
@@ -252,7 +239,7 @@ pub fn draw_readouts(
 
 /// The launch preview's label: the speed, or that there is no room.
 pub fn launch_label(text: &WorldText, label: &str, tip: Vec2, look: Look) {
-    let size = MIN_TEXT_POINTS * look.scale;
+    let size = MIN_TEXT_POINTS * look.text_scale;
     let extent = text.measure(label, size);
     let at = tip + vec2(8.0, -8.0 - extent.y);
     draw_rectangle(

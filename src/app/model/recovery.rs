@@ -12,9 +12,8 @@
 //! In the browser the same names are keys of the page's local storage
 //! ([`keep`]); a scene too large for it is reported the same way.
 
-use super::App;
+use super::Sandbox;
 use impulse::Scene;
-use macroquad::prelude::{get_time, is_key_pressed, KeyCode};
 use std::path::{Path, PathBuf};
 
 /// Seconds between autosaves, unless `--autosave` says otherwise.
@@ -224,10 +223,10 @@ mod keep {
     }
 }
 
-impl App {
+impl Sandbox {
     /// Writes the recovery file when a save is due and the state moved.
     pub(super) fn autosave(&mut self) {
-        let now = get_time();
+        let now = self.session.now;
         if !self.recovery.due(now) {
             return;
         }
@@ -241,28 +240,14 @@ impl App {
         }
     }
 
-    /// While an earlier session is offered: `R` restores it, `Esc` sets it
-    /// aside. Returns whether one of them was pressed (and so used up).
-    pub(super) fn answer_recovery_offer(&mut self) -> bool {
-        if self.recovery.offered.is_none() {
-            return false;
-        }
-        if is_key_pressed(KeyCode::R) {
-            self.restore_recovery();
-            return true;
-        }
-        if is_key_pressed(KeyCode::Escape) {
-            self.set_recovery_aside();
-            return true;
-        }
-        false
-    }
-
     /// Opens the session that was offered (its Restore button, or `R`).
     pub(super) fn restore_recovery(&mut self) {
         if let Some(scene) = self.recovery.take_offer() {
             let origin = format!("recovered from {}", self.recovery.path().display());
             let _ = self.open_scene(scene, origin); // a failure is reported
+                                                    // The kept sandbox is what the person wanted: no start screen.
+            self.panels.start_open = false;
+            self.resume_after_modal();
         }
     }
 
@@ -275,10 +260,11 @@ impl App {
             Ok(to) => self.toast(format!("Earlier session kept in {}", to.display())),
             Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
         }
+        self.resume_after_modal();
     }
 
     /// The line shown while an earlier session is offered.
-    pub(super) fn recovery_prompt(&self) -> Option<String> {
+    pub fn recovery_prompt(&self) -> Option<String> {
         self.recovery.offered.as_ref().map(|scene| {
             let name = scene.name.as_deref().unwrap_or("sandbox");
             let n = scene.particles.len();

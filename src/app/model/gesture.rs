@@ -62,6 +62,8 @@ pub enum Gesture {
         trail: VecDeque<(f64, DVec2)>,
         /// The disc's velocity when it was grabbed.
         velocity_before: DVec2,
+        /// Its position when it was grabbed.
+        position_before: DVec2,
         /// Where the press happened (world).
         pressed_at: DVec2,
         /// Whether the cursor has gone further than `slop` from `pressed_at`.
@@ -76,6 +78,10 @@ pub enum Gesture {
         index: usize,
         /// Seconds of travel the arrow shows.
         seconds: f64,
+        /// Its velocity before; kept if the tip is let go where it was taken.
+        velocity_before: DVec2,
+        /// Whether the tip has been dragged at all.
+        dragged: bool,
     },
 }
 
@@ -90,6 +96,9 @@ pub enum Released {
     NoRoom,
     /// A held disc was let go with this velocity.
     Flung(usize, DVec2),
+    /// A disc was pressed and let go without moving: it is selected, and
+    /// left exactly as it was.
+    Clicked(usize),
     /// A disc's velocity was set by its arrow's tip.
     Aimed(usize, DVec2),
 }
@@ -124,6 +133,7 @@ impl Gesture {
                     offset: p.pos - at,
                     trail: VecDeque::from([(now, at)]),
                     velocity_before: p.vel,
+                    position_before: p.pos,
                     pressed_at: at,
                     dragged: false,
                     slop,
@@ -139,8 +149,14 @@ impl Gesture {
 
     /// Starts dragging the tip of disc `index`'s velocity arrow (drawn
     /// `seconds` long).
-    pub fn press_arrow_tip(&mut self, index: usize, seconds: f64) {
-        *self = Gesture::Aiming { index, seconds };
+    pub fn press_arrow_tip(&mut self, world: &World, index: usize, seconds: f64) {
+        let velocity_before = world.particles.get(index).map_or(DVec2::ZERO, |p| p.vel);
+        *self = Gesture::Aiming {
+            index,
+            seconds,
+            velocity_before,
+            dragged: false,
+        };
     }
 
     /// Whether screen point `cursor` is within `reach` pixels of the tip of
@@ -152,9 +168,17 @@ impl Gesture {
 
     /// Follows the cursor; a held disc moves with it (inside the walls).
     pub fn drag(&mut self, world: &mut World, at: DVec2, now: f64) {
-        if let Gesture::Aiming { index, seconds } = *self {
-            if let Some(p) = world.particles.get_mut(index) {
-                p.vel = (at - p.pos) / seconds;
+        if let Gesture::Aiming {
+            index,
+            seconds,
+            dragged,
+            ..
+        } = self
+        {
+            if let Some(p) = world.particles.get_mut(*index) {
+                let vel = (at - p.pos) / *seconds;
+                *dragged |= vel != p.vel;
+                p.vel = vel;
             }
             return;
         }
@@ -207,9 +231,19 @@ impl Gesture {
     pub fn release(&mut self, world: &mut World, at: DVec2, new_disc: NewDisc) -> Released {
         match std::mem::take(self) {
             Gesture::Idle => Released::Nothing,
-            Gesture::Aiming { index, seconds } => match world.particles.get_mut(index) {
+            Gesture::Aiming {
+                index,
+                seconds,
+                velocity_before,
+                dragged,
+            } => match world.particles.get_mut(index) {
                 Some(p) => {
-                    p.vel = (at - p.pos) / seconds;
+                    let vel = (at - p.pos) / seconds;
+                    if !dragged && (vel - velocity_before).length() * seconds < 1e-9 {
+                        p.vel = velocity_before; // taken and let go: nothing set
+                        return Released::Nothing;
+                    }
+                    p.vel = vel;
                     Released::Aimed(index, p.vel)
                 }
                 None => Released::Nothing,
@@ -236,20 +270,21 @@ impl Gesture {
                 index,
                 trail,
                 velocity_before,
+                position_before,
                 dragged,
                 ..
             } => {
-                let velocity = if dragged {
-                    trail_velocity(&trail)
-                } else {
-                    velocity_before // a click selects; it does not stop the disc
+                let Some(p) = world.particles.get_mut(index) else {
+                    return Released::Nothing;
                 };
-                match world.particles.get_mut(index) {
-                    Some(p) => {
-                        p.vel = velocity;
-                        Released::Flung(index, velocity)
-                    }
-                    None => Released::Nothing,
+                if dragged {
+                    p.vel = trail_velocity(&trail);
+                    Released::Flung(index, p.vel)
+                } else {
+                    // A click selects; it neither stops nor moves the disc.
+                    p.vel = velocity_before;
+                    p.pos = position_before;
+                    Released::Clicked(index)
                 }
             }
         }
@@ -452,11 +487,13 @@ mod tests {
         assert_eq!(g.press(&w, DVec2::new(5.2, 5.0), 0.0, SLOP), Some(0));
         g.drag(&mut w, DVec2::new(5.21, 5.0), 0.2);
         let r = g.release(&mut w, DVec2::new(5.21, 5.0), NEW);
+        assert_eq!(r, Released::Clicked(0), "a click is a click");
         assert_eq!(
-            r,
-            Released::Flung(0, DVec2::new(1.0, -2.0)),
-            "a click keeps the velocity"
+            w.particles[0].vel,
+            DVec2::new(1.0, -2.0),
+            "it keeps the velocity"
         );
+        assert_eq!(w.particles[0].pos, DVec2::new(5.0, 5.0), "and the place");
     }
 
     #[test]
@@ -484,12 +521,18 @@ mod tests {
             10.0
         ));
         let mut g = Gesture::default();
-        g.press_arrow_tip(0, 0.5);
+        g.press_arrow_tip(&w, 0, 0.5);
         g.drag(&mut w, centre + DVec2::new(1.0, 0.0), 0.0);
         assert_eq!(w.particles[0].vel, DVec2::new(2.0, 0.0));
         let r = g.release(&mut w, centre + DVec2::new(0.5, 0.5), NEW);
         assert_eq!(r, Released::Aimed(0, DVec2::new(1.0, 1.0)));
         assert_eq!(w.particles[0].vel, DVec2::new(1.0, 1.0));
         assert_eq!(w.particles[0].pos, centre, "aiming moves nothing");
+        // Taken and let go where it was: nothing is set.
+        let before = w.particles[0].vel;
+        g.press_arrow_tip(&w, 0, 0.5);
+        let r = g.release(&mut w, centre + before * 0.5, NEW);
+        assert_eq!(r, Released::Nothing);
+        assert_eq!(w.particles[0].vel, before);
     }
 }

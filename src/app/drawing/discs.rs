@@ -10,8 +10,8 @@
 //! macroquad's own batches (flushed first), so screenshots, the side panel
 //! and everything drawn before and after keep their order.
 
-use super::camera::Camera;
 use super::cull::{circle_on_screen, MIN_DISC_PIXELS};
+use crate::app::model::camera::Camera;
 use impulse::World;
 use macroquad::miniquad::{
     Bindings, BlendFactor, BlendState, BlendValue, BufferLayout, BufferSource, BufferType,

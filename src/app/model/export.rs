@@ -2,7 +2,7 @@
 //! and the collision ledger as CSV files, written atomically into the
 //! output folder the window names.
 
-use super::plot::Sample;
+use super::totals::Sample;
 use crate::files::write_atomically;
 use impulse::ledger::Ledger;
 use impulse::World;

@@ -1,0 +1,471 @@
+//! Drawing the world, from the model: walls, discs (batched, [`discs`]),
+//! velocity and momentum arrows (only readable ones, [`cull`]), the trails,
+//! the centre of mass, the contact at an impact and the launch preview; the
+//! readouts are in [`readouts`]. Everything goes through the camera. Lines
+//! keep their width in screen pixels whatever the UI scale (which enlarges
+//! text and controls, not arrows); colours come from the theme ([`look`]).
+
+pub mod cull;
+pub mod discs;
+pub mod readouts;
+
+use crate::app::look::{color, Look};
+use crate::app::model::camera::Camera;
+use crate::app::model::gesture::{launch_velocity, Gesture, NewDisc};
+use crate::app::model::overlays::{spin_shown, Overlays, ARROW_SECONDS};
+use crate::app::model::Sandbox;
+use cull::{arrow_readable, circle_on_screen, MIN_DISC_PIXELS};
+use discs::DiscBatch;
+use glam::DVec2;
+use impulse::{Boundary, World};
+use macroquad::prelude::*;
+use readouts::WorldText;
+
+/// What drawing keeps between frames: the discs' GPU batch and the world's
+/// font, made at the first frame (they need the window).
+#[derive(Default)]
+pub struct Painter {
+    batch: Option<DiscBatch>,
+    text: Option<WorldText>,
+}
+
+impl Painter {
+    /// The smallest text drawn in the world this frame (px), if any.
+    pub fn smallest_text(&self) -> Option<f32> {
+        self.text.as_ref().and_then(WorldText::smallest)
+    }
+
+    /// Draws the world as the model has it, the pointer at `mouse`.
+    pub fn draw(&mut self, model: &mut Sandbox, mouse: DVec2) {
+        let look = Look::of(model.panels.theme, model.panels.scale);
+        // The centre-of-mass view draws a copy with relative velocities.
+        let seen = model.world_as_seen();
+        let model = &*model;
+        let world = seen.as_ref().unwrap_or(&model.world);
+        let camera = &model.view.camera;
+        clear_background(color(look.colors.background));
+        let text = self.text.get_or_insert_with(WorldText::new);
+        text.begin_frame();
+        draw_boundary(world, camera, look);
+        draw_trails(&model.record.trails, camera);
+        let batch = self.batch.get_or_insert_with(DiscBatch::new);
+        draw_discs(world, camera, model.selected, &model.overlays, batch, look);
+        draw_arrows(world, camera, &model.overlays, look);
+        if model.overlays.center_of_mass {
+            draw_center_of_mass(world, camera, ARROW_SECONDS, look);
+        }
+        if model.overlays.contact {
+            if let Some(c) = model.world.ledger.last() {
+                if (model.world.time - c.time).abs() < 1e-9 {
+                    draw_contact(c, world, camera);
+                }
+            }
+        }
+        let Some(text) = self.text.as_ref() else {
+            return;
+        };
+        readouts::draw_readouts(world, camera, &model.overlays, model.selected, look, text);
+        if let Gesture::Launching { start, .. } = model.pointer.gesture {
+            let cursor = camera.screen_to_world(mouse);
+            let disc = model.new_disc_now();
+            draw_launch_preview(&model.world, camera, start, cursor, disc, look, text);
+        }
+    }
+}
+
+/// Fading lines, oldest faintest, and a dot every 0.1 s.
+fn draw_trails(trails: &crate::app::model::trails::Trails, camera: &Camera) {
+    if !trails.on {
+        return;
+    }
+    for (c, path, dots) in trails.paths() {
+        let n = path.len();
+        for (k, pair) in path.iter().zip(path.iter().skip(1)).enumerate() {
+            let (a, b) = (
+                camera.world_to_screen(*pair.0),
+                camera.world_to_screen(*pair.1),
+            );
+            let alpha = 0.7 * (k + 1) as f32 / n as f32;
+            let line = Color::from_rgba(c.r, c.g, c.b, (alpha * 255.0) as u8);
+            draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, 1.5, line);
+        }
+        let dot = Color::from_rgba(c.r, c.g, c.b, 230);
+        for d in dots {
+            let at = camera.world_to_screen(*d);
+            draw_circle(at.x as f32, at.y as f32, 2.5, dot);
+        }
+    }
+}
+
+/// At the instant of impact: the normal (orange) and tangent (blue) lines
+/// through the contact point.
+fn draw_contact(c: &impulse::ledger::Collision, world: &World, camera: &Camera) {
+    let (Some(a), Some(b)) = (
+        world.particles.get(c.discs[0]),
+        world.particles.get(c.discs[1]),
+    ) else {
+        return;
+    };
+    let contact = a.pos + c.normal * a.radius;
+    let reach = 1.5 * a.radius.max(b.radius);
+    let line = |dir: DVec2, color: Color| {
+        let (p, q) = (
+            camera.world_to_screen(contact - dir * reach),
+            camera.world_to_screen(contact + dir * reach),
+        );
+        draw_line(p.x as f32, p.y as f32, q.x as f32, q.y as f32, 3.0, color);
+    };
+    line(c.normal, Color::new(0.84, 0.37, 0.0, 1.0));
+    line(c.normal.perp(), Color::new(0.34, 0.71, 0.91, 1.0));
+}
+
+fn px(v: DVec2) -> Vec2 {
+    vec2(v.x as f32, v.y as f32)
+}
+
+/// The walls (solid for a box, dashed for periodic, faint for open space).
+pub fn draw_boundary(world: &World, camera: &Camera, look: Look) {
+    let a = px(camera.world_to_screen(DVec2::new(0.0, world.laws.size.y)));
+    let b = px(camera.world_to_screen(DVec2::new(world.laws.size.x, 0.0)));
+    let (w, h) = (b.x - a.x, b.y - a.y);
+    draw_rectangle(a.x, a.y, w, h, color(look.colors.inside));
+    let wall = color(look.colors.wall);
+    let faint = Color { a: 0.45, ..wall };
+    // Sides in the order left, right, bottom, top (screen y grows down).
+    let sides = [
+        (a, vec2(a.x, b.y)),
+        (vec2(b.x, a.y), b),
+        (vec2(a.x, b.y), b),
+        (a, vec2(b.x, a.y)),
+    ];
+    let walled = match world.laws.boundary {
+        Boundary::Box => world.laws.walls.sides(),
+        Boundary::Periodic | Boundary::Open => [false; 4],
+    };
+    // One dimension: a rail through the discs' line (drawn under them, like
+    // beads on a wire), and only the walls at its ends (the sides along it
+    // play no part).
+    let mut skip = [false; 4];
+    if let (Some(axis), Some(first)) = (world.laws.constrain, world.particles.first()) {
+        let along = axis.index();
+        let at = first.pos;
+        let mut from = at;
+        from[along] = 0.0;
+        let mut to = at;
+        to[along] = world.laws.size[along];
+        let (a, b) = (
+            px(camera.world_to_screen(from)),
+            px(camera.world_to_screen(to)),
+        );
+        draw_line(a.x, a.y, b.x, b.y, 3.0, color(look.colors.rail));
+        skip = if along == 0 {
+            [false, false, true, true]
+        } else {
+            [true, true, false, false]
+        };
+    }
+    for (((from, to), solid), skipped) in sides.into_iter().zip(walled).zip(skip) {
+        if skipped {
+            continue;
+        }
+        if solid {
+            draw_line(from.x, from.y, to.x, to.y, 3.0, wall);
+        } else {
+            dashed_line(from, to, 12.0, 2.0, faint);
+        }
+    }
+}
+
+fn dashed_line(from: Vec2, to: Vec2, dash: f32, width: f32, color: Color) {
+    let length = from.distance(to);
+    let dashes = ((length / dash) as usize).min(2000);
+    for k in (0..dashes).step_by(2) {
+        let s = from.lerp(to, k as f32 / dashes as f32);
+        let e = from.lerp(to, (k + 1) as f32 / dashes as f32);
+        draw_line(s.x, s.y, e.x, e.y, width, color);
+    }
+}
+
+/// Every disc in one instanced draw call (see [`super::discs`]), each with
+/// its spin line when spin is shown ([`spin_shown`]), and a ring round the
+/// selected one.
+pub fn draw_discs(
+    world: &World,
+    camera: &Camera,
+    selected: Option<usize>,
+    overlays: &Overlays,
+    batch: &mut DiscBatch,
+    look: Look,
+) {
+    let disc_color = |i: usize| {
+        if overlays.safe_palette {
+            impulse::Color::palette(i)
+        } else {
+            world.particles[i].color
+        }
+    };
+    discs::instances(world, camera, disc_color, &mut batch.instances);
+    batch.spin_line = if spin_shown(world) { 1.0 } else { 0.0 };
+    batch.draw();
+    let Some(p) = selected.and_then(|i| world.particles.get(i)) else {
+        return;
+    };
+    let c = camera.world_to_screen(p.pos);
+    let r = camera.length_in_pixels(p.radius).max(MIN_DISC_PIXELS);
+    if circle_on_screen(c, r + 3.0, camera.screen_rect()) {
+        let sides = (r * 0.8).clamp(12.0, 90.0) as u8;
+        let width = 2.5;
+        let c = px(c);
+        draw_poly_lines(
+            c.x,
+            c.y,
+            sides,
+            r as f32 + 3.0,
+            0.0,
+            width,
+            color(look.colors.selected),
+        );
+    }
+}
+
+/// Where arrows are cut: the box's rectangle on screen, for a box with
+/// four walls (an arrow may not run out through a wall); elsewhere none.
+fn arrow_clip(world: &World, camera: &Camera) -> Option<(DVec2, DVec2)> {
+    let walled = world.laws.boundary == Boundary::Box && world.laws.walls.all();
+    walled.then(|| {
+        let a = camera.world_to_screen(DVec2::new(0.0, world.laws.size.y));
+        let b = camera.world_to_screen(DVec2::new(world.laws.size.x, 0.0));
+        (a.min(b), a.max(b))
+    })
+}
+
+/// The part of the arrow from `a` to `b` inside `clip` (all of it without
+/// one), and whether its tip is inside (only then is the head drawn).
+fn clipped(a: DVec2, b: DVec2, clip: Option<(DVec2, DVec2)>) -> Option<(DVec2, DVec2, bool)> {
+    match clip {
+        None => Some((a, b, true)),
+        Some((lo, hi)) => {
+            let (p, q) = cull::clip_segment(a, b, lo, hi)?;
+            Some((p, q, q == b))
+        }
+    }
+}
+
+/// An arrow between two screen points, its head only if `head`; nothing if
+/// shorter than a pixel.
+pub fn arrow(from: Vec2, to: Vec2, thickness: f32, color: Color, head: bool) {
+    let d = to - from;
+    let len = d.length();
+    if len < 1.0 {
+        return;
+    }
+    let dir = d / len;
+    if !head {
+        draw_line(from.x, from.y, to.x, to.y, thickness, color);
+        return;
+    }
+    let size = (4.0 * thickness).min(0.5 * len).max(4.0);
+    let base = to - dir * size;
+    let side = vec2(-dir.y, dir.x) * size * 0.5;
+    draw_line(from.x, from.y, base.x, base.y, thickness, color);
+    draw_triangle(to, base + side, base - side, color);
+}
+
+/// The outline of [`arrow`]`(from, to, thickness, …)`, `line` wide all
+/// round, drawn under it.
+fn arrow_outline(from: Vec2, to: Vec2, thickness: f32, line: f32, color: Color, head: bool) {
+    let d = to - from;
+    let len = d.length();
+    if len < 1.0 {
+        return;
+    }
+    let dir = d / len;
+    let back = from - dir * line;
+    if !head {
+        let end = to + dir * line;
+        draw_line(back.x, back.y, end.x, end.y, thickness + 2.0 * line, color);
+        return;
+    }
+    let size = (4.0 * thickness).min(0.5 * len).max(4.0);
+    let base = to - dir * size;
+    let side = vec2(-dir.y, dir.x);
+    draw_line(
+        back.x,
+        back.y,
+        base.x,
+        base.y,
+        thickness + 2.0 * line,
+        color,
+    );
+    let grow = 2.2 * line;
+    draw_triangle(
+        to + dir * grow,
+        base - dir * line + side * (size * 0.5 + grow),
+        base - dir * line - side * (size * 0.5 + grow),
+        color,
+    );
+}
+
+/// The outline of a wide arrow between two screen points (a shaft
+/// `2 × half_width` wide and a head), drawn hollow so that a thin arrow
+/// drawn along it stays visible: the momentum arrow under the velocity arrow
+/// of a disc of average mass, where the two coincide exactly.
+pub fn hollow_arrow(from: Vec2, to: Vec2, half_width: f32, line: f32, color: Color, head: bool) {
+    let d = to - from;
+    let len = d.length();
+    if len < 1.0 {
+        return;
+    }
+    let dir = d / len;
+    let side = vec2(-dir.y, dir.x);
+    if !head {
+        for k in [-1.0, 1.0] {
+            let (a, b) = (from + side * k * half_width, to + side * k * half_width);
+            draw_line(a.x, a.y, b.x, b.y, line, color);
+        }
+        return;
+    }
+    let head = (5.0 * half_width).min(0.6 * len);
+    let base = to - dir * head;
+    let outline = [
+        from + side * half_width,
+        base + side * half_width,
+        base + side * 2.4 * half_width,
+        to,
+        base - side * 2.4 * half_width,
+        base - side * half_width,
+        from - side * half_width,
+        from + side * half_width,
+    ];
+    for edge in outline.windows(2) {
+        draw_line(edge[0].x, edge[0].y, edge[1].x, edge[1].y, line, color);
+    }
+}
+
+/// Velocity and momentum arrows, as toggled; only those long enough to read
+/// ([`super::cull::MIN_ARROW_PIXELS`]) and crossing the world's rectangle.
+/// Momentum arrows are wide and hollow and drawn first, so a velocity arrow
+/// lying along one shows inside it.
+pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Look) {
+    if !(overlays.velocity || overlays.momentum) || world.particles.is_empty() {
+        return;
+    }
+    // Momentum arrows share the velocity scale for a disc of average mass.
+    let mean_mass =
+        world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
+    let rect = camera.screen_rect();
+    let clip = arrow_clip(world, camera);
+    if overlays.momentum {
+        let pink = color(look.colors.momentum);
+        for p in &world.particles {
+            let c = camera.world_to_screen(p.pos);
+            let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
+            if arrow_readable(c, tip, rect) {
+                if let Some((a, b, whole)) = clipped(c, tip, clip) {
+                    hollow_arrow(px(a), px(b), 4.0, 2.0, pink, whole);
+                }
+            }
+        }
+    }
+    if overlays.delta_p {
+        draw_momentum_changes(world, camera, mean_mass, look, clip);
+    }
+    if overlays.velocity {
+        let white = color(look.colors.velocity);
+        for p in &world.particles {
+            let c = camera.world_to_screen(p.pos);
+            let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
+            if arrow_readable(c, tip, rect) {
+                if let Some((a, b, whole)) = clipped(c, tip, clip) {
+                    arrow(px(a), px(b), 2.0, white, whole);
+                }
+            }
+        }
+    }
+}
+
+/// How long a collision's Δp arrows stay (simulated seconds).
+pub const DELTA_P_SECONDS: f64 = 1.0;
+
+/// For [`DELTA_P_SECONDS`] after each recorded collision, each of its two
+/// discs carries its change of momentum m·(v′ − v), fading, on the momentum
+/// arrows' scale.
+fn draw_momentum_changes(
+    world: &World,
+    camera: &Camera,
+    mean_mass: f64,
+    look: Look,
+    clip: Option<(DVec2, DVec2)>,
+) {
+    let mut outline = color(look.colors.outline);
+    for c in world.ledger.entries() {
+        let age = world.time - c.time;
+        if !(0.0..=DELTA_P_SECONDS).contains(&age) {
+            continue;
+        }
+        let fade = (1.0 - 0.7 * age / DELTA_P_SECONDS) as f32;
+        let mut amber = color(look.colors.delta_p);
+        amber.a *= fade;
+        outline.a = fade;
+        for k in 0..2 {
+            let Some(p) = world.particles.get(c.discs[k]) else {
+                continue;
+            };
+            let dp = c.masses[k] * (c.after[k] - c.before[k]);
+            let from = camera.world_to_screen(p.pos);
+            let tip = from + camera.vector_to_screen(dp / mean_mass * ARROW_SECONDS);
+            if from.distance(tip) >= 4.0 {
+                if let Some((a, b, whole)) = clipped(from, tip, clip) {
+                    // An outline under it, so it reads on an orange disc too.
+                    arrow_outline(px(a), px(b), 4.0, 2.0, outline, whole);
+                    arrow(px(a), px(b), 4.0, amber, whole);
+                }
+            }
+        }
+    }
+}
+
+/// The centre of mass as a cross in a circle, with its velocity arrow.
+pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64, _look: Look) {
+    if world.particles.is_empty() {
+        return;
+    }
+    const COM_COLOR: Color = Color::new(0.94, 0.89, 0.26, 1.0); // yellow
+    let m = world.metrics();
+    let c = camera.world_to_screen(m.center_of_mass);
+    let (x, y, s) = (c.x as f32, c.y as f32, 1.0);
+    draw_circle_lines(x, y, 9.0 * s, 2.0 * s, COM_COLOR);
+    draw_line(x - 12.0 * s, y, x + 12.0 * s, y, 2.0 * s, COM_COLOR);
+    draw_line(x, y - 12.0 * s, x, y + 12.0 * s, 2.0 * s, COM_COLOR);
+    let tip = c + camera.vector_to_screen(m.center_of_mass_velocity * arrow_seconds);
+    arrow(vec2(x, y), px(tip), 3.0 * s, COM_COLOR, true);
+}
+
+/// The disc about to be launched, its arrow and speed.
+pub fn draw_launch_preview(
+    world: &World,
+    camera: &Camera,
+    start: DVec2,
+    cursor: DVec2,
+    new_disc: NewDisc,
+    look: Look,
+    text: &WorldText,
+) {
+    let spot = world.free_spot_near(start, new_disc.radius);
+    let at = px(camera.world_to_screen(spot.unwrap_or(start)));
+    let r = camera.length_in_pixels(new_disc.radius).max(1.0) as f32;
+    let ghost = if spot.is_some() {
+        Color::new(1.0, 1.0, 1.0, 0.35)
+    } else {
+        Color::new(1.0, 0.2, 0.2, 0.5)
+    };
+    draw_poly(at.x, at.y, 40, r, 0.0, ghost);
+    let velocity = launch_velocity(start, cursor);
+    let tip = camera.world_to_screen(start) + camera.vector_to_screen(velocity * ARROW_SECONDS);
+    arrow(at, px(tip), 3.0, Color::new(1.0, 0.75, 0.0, 1.0), true);
+    let label = match spot {
+        Some(_) => crate::app::numbers::with_unit(velocity.length(), 2, "m/s"),
+        None => "no room here".to_string(),
+    };
+    readouts::launch_label(text, &label, px(tip), look);
+}

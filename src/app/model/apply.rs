@@ -1,0 +1,373 @@
+//! Carrying a command out: the one place where a person's action changes
+//! the sandbox. A command that may change the scene is checked before and
+//! after; only a real change is remembered for undo.
+
+use super::command::{Command, Dir, Law};
+use super::{next_scale, scenes, Sandbox};
+use crate::app::numbers::vector;
+use glam::DVec2;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use std::hash::{Hash, Hasher};
+
+/// Zoom factor per wheel notch or key press.
+pub const ZOOM_STEP: f64 = 1.15;
+/// Gravity G switches on (m/s², downwards).
+pub const EARTH_GRAVITY: f64 = 9.81;
+
+pub const METHODS: [Setting<Method>; 5] = [
+    Setting::Auto,
+    Setting::Fixed(Method::Seed),
+    Setting::Fixed(Method::Impulse),
+    Setting::Fixed(Method::Verlet),
+    Setting::Fixed(Method::Exact),
+];
+pub const BROAD_PHASES: [Setting<BroadPhaseKind>; 5] = [
+    Setting::Auto,
+    Setting::Fixed(BroadPhaseKind::Brute),
+    Setting::Fixed(BroadPhaseKind::Grid),
+    Setting::Fixed(BroadPhaseKind::Sap),
+    Setting::Fixed(BroadPhaseKind::Quadtree),
+];
+pub const SUBSTEPS: [Setting<u32>; 6] = [
+    Setting::Auto,
+    Setting::Fixed(1),
+    Setting::Fixed(2),
+    Setting::Fixed(4),
+    Setting::Fixed(8),
+    Setting::Fixed(16),
+];
+
+/// The entry after `current` in `list` (the first if `current` is not in it).
+fn cycle<T: PartialEq + Copy>(list: &[T], current: T) -> T {
+    let next = list.iter().position(|&x| x == current).map_or(0, |k| k + 1);
+    list[next % list.len()]
+}
+
+/// `e` moved by one tenth up or down, kept in `range`.
+fn nudge(e: f64, dir: Dir, (lo, hi): (f64, f64)) -> f64 {
+    let tenths = (e * 10.0).round() + if dir == Dir::Up { 1.0 } else { -1.0 };
+    (tenths / 10.0).clamp(lo, hi)
+}
+
+impl Law {
+    /// The law's value in `laws`.
+    pub fn of(self, laws: &mut impulse::laws::Laws) -> &mut f64 {
+        match self {
+            Law::Restitution => &mut laws.restitution,
+            Law::WallRestitution => &mut laws.wall_restitution,
+            Law::Roughness => &mut laws.tangential_restitution,
+            Law::WallRoughness => &mut laws.wall_tangential_restitution,
+        }
+    }
+
+    /// What its control offers.
+    pub fn range(self) -> (f64, f64) {
+        match self {
+            Law::Restitution | Law::WallRestitution => (0.0, 1.0),
+            Law::Roughness | Law::WallRoughness => (-1.0, 1.0),
+        }
+    }
+
+    /// Its name in a message.
+    pub fn name(self) -> &'static str {
+        match self {
+            Law::Restitution => "Restitution e",
+            Law::WallRestitution => "Wall restitution",
+            Law::Roughness => "Roughness β",
+            Law::WallRoughness => "Wall roughness β",
+        }
+    }
+}
+
+impl Sandbox {
+    /// Carries out `command`. A command that may change the scene is
+    /// remembered for undo only if it did; while a modal question waits,
+    /// only its answers and what changes no state go through.
+    pub fn apply(&mut self, command: Command) {
+        let Some(command) = self.under_modal(command) else {
+            return;
+        };
+        let Some(kind) = command.edit_kind() else {
+            return self.carry_out(command);
+        };
+        let now = self.session.now;
+        let merge = self.undo.would_merge(kind, now);
+        let before = (!merge).then(|| self.moment());
+        let print = self.fingerprint();
+        let edits_discs = command.edits_discs();
+        self.carry_out(command);
+        if self.fingerprint() == print {
+            return;
+        }
+        match before {
+            Some(moment) => self.undo.remember(move || moment, kind, now),
+            None => self.undo.merge(kind, now),
+        }
+        if edits_discs {
+            self.open.edited = true;
+        }
+    }
+
+    /// What a command means while the recovery question is open: R and
+    /// Esc answer it; what only changes the view goes through; the rest
+    /// waits.
+    fn under_modal(&self, command: Command) -> Option<Command> {
+        if !self.modal_open() {
+            return Some(command);
+        }
+        use Command::*;
+        let question = self.recovery.offered.is_some();
+        match command {
+            Reset | RestoreRecovery if question => Some(RestoreRecovery),
+            Escape | SetRecoveryAside if question => Some(SetRecoveryAside),
+            // The start screen: a tile, a preset's key, or Esc for the
+            // scene that is open.
+            StartWith(_) | OpenPreset(_) | OpenEmpty | CloseStart if !question => Some(command),
+            Escape if !question => Some(CloseStart),
+            Quit
+            | Fullscreen
+            | SetScale(_)
+            | NextScale
+            | SetTheme(_)
+            | ToggleHelp
+            | Fit
+            | ZoomIn
+            | ZoomOut
+            | ZoomAt { .. }
+            | Pan(_)
+            | Pinch { .. } => Some(command),
+            _ => None,
+        }
+    }
+
+    /// A hash of everything undo brings back: the discs, the laws and the
+    /// choices, the time, and which scene is open.
+    pub fn fingerprint(&self) -> u64 {
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        let w = &self.world;
+        w.time.to_bits().hash(&mut h);
+        w.particles.len().hash(&mut h);
+        for p in &w.particles {
+            let numbers = [p.pos.x, p.pos.y, p.vel.x, p.vel.y, p.mass, p.radius, p.spin];
+            for x in numbers {
+                x.to_bits().hash(&mut h);
+            }
+            p.color.hash(&mut h);
+        }
+        format!("{:?} {:?}", w.laws, w.choices()).hash(&mut h);
+        self.open.origin.hash(&mut h);
+        self.open.scene.name.hash(&mut h);
+        h.finish()
+    }
+
+    fn carry_out(&mut self, command: Command) {
+        use Command::*;
+        match command {
+            TogglePause => self.clock.paused = !self.clock.paused,
+            Step => self.clock.single_step(),
+            Slower | Faster => {
+                self.clock
+                    .change_time_scale(if command == Slower { -1 } else { 1 });
+                self.steps.realtime.clear();
+                self.toast(format!("Time scale ×{}", self.clock.time_scale()));
+            }
+            SetTimeScale(k) => {
+                self.clock.set_time_scale_index(k);
+                self.steps.realtime.clear();
+            }
+            NextCollision => self.run_to_next_collision(),
+            Scrub(k) => self.scrub(k),
+            OpenPreset(k) => self.open_preset_from_menu(k),
+            OpenEmpty => self.open_preset_from_menu(scenes::PRESETS.len() - 1),
+            OpenFile(path) => self.open_file(&path),
+            OpenText { name, text } => self.open_text(&name, &text),
+            Reset => self.reset_scene(),
+            Clear => self.clear_discs(),
+            Save => {
+                let _ = self.save_scene(); // said in the window and on the terminal
+            }
+            Share => self.share_link(),
+            Export => self.export_data(),
+            Screenshot => self.request_screenshot(),
+            Undo => self.undo_change(),
+            Redo => self.redo_change(),
+            RestoreRecovery => self.restore_recovery(),
+            SetRecoveryAside => self.set_recovery_aside(),
+            ShowStart => {
+                self.panels.start_open = true;
+                self.pause_for_modal();
+            }
+            StartWith(tile) => self.start_with(tile),
+            CloseStart => {
+                self.panels.start_open = false;
+                self.resume_after_modal();
+            }
+            ShowAllControls => self.panels.focus = super::start::Tile::FreePlay,
+            SetLaw(law, v) => {
+                let (lo, hi) = law.range();
+                *law.of(&mut self.world.laws) = ((v * 100.0).round() / 100.0).clamp(lo, hi);
+            }
+            NudgeLaw(law, dir) => {
+                let value = law.of(&mut self.world.laws);
+                *value = nudge(*value, dir, law.range());
+                let v = *value;
+                self.toast(format!("{} = {v:.1}", law.name()));
+            }
+            SetFriction(mu) => {
+                self.world.laws.friction = mu.map(|m| (m * 100.0).round() / 100.0);
+            }
+            SetGravity(g) => self.world.laws.gravity = DVec2::new(0.0, -g.abs()),
+            ToggleGravity => {
+                let on = self.world.laws.gravity == DVec2::ZERO;
+                self.world.laws.gravity = DVec2::new(0.0, if on { -EARTH_GRAVITY } else { 0.0 });
+                let g = self.world.laws.gravity.length();
+                self.toast(format!("Gravity {g:.2} m/s²"));
+            }
+            SetBoundary(b) => self.world.laws.boundary = b,
+            SetMethod(m) => self.world.method = m,
+            SetBroadPhase(b) => self.world.broad_phase = b,
+            SetSubsteps(k) => self.world.substeps = k,
+            CycleMethod => {
+                self.world.method = cycle(&METHODS, self.world.method);
+                self.toast(format!("Method: {}", self.world.method));
+            }
+            CycleBroadPhase => {
+                self.world.broad_phase = cycle(&BROAD_PHASES, self.world.broad_phase);
+                self.toast(format!("Broad phase: {}", self.world.broad_phase));
+            }
+            CycleSubsteps => {
+                self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
+                self.toast(format!("Substeps: {}", self.world.substeps));
+            }
+            SetNewRadius(r) => {
+                self.new_discs.disc.radius = r.clamp(0.01, self.biggest_radius());
+            }
+            SetNewMass(m) => self.new_discs.disc.mass = m.clamp(1e-3, 1e6),
+            StepNewRadius(dir) => {
+                let factor = if dir == Dir::Up { 1.25 } else { 0.8 };
+                let r = self.new_discs.disc.radius * factor;
+                self.new_discs.disc.radius = r.clamp(0.01, self.biggest_radius());
+                let r = self.new_discs.disc.radius;
+                self.toast(format!("New discs: radius {r:.2} m"));
+            }
+            StepNewMass(dir) => {
+                let factor = if dir == Dir::Up { 2.0 } else { 0.5 };
+                let m = (self.new_discs.disc.mass * factor).clamp(1e-3, 1e6);
+                self.new_discs.disc.mass = m;
+                self.toast(format!("New discs: mass {m:.3} kg"));
+            }
+            SizeFollowsMass(on) => self.new_discs.size_follows_mass = on,
+            Select(i) => self.selected = i.filter(|&i| i < self.world.particles.len()),
+            EditDisc { disc, text, from } => self.edit_disc(disc, &text, from),
+            DeleteSelected => self.delete_selected(),
+            PointerDown(at) => self.pointer_down(at),
+            PointerMove(at) => self.pointer_move(at),
+            PointerUp(at) => self.pointer_up(at),
+            ToggleVelocity => self.overlays.velocity = !self.overlays.velocity,
+            ToggleMomentum => self.overlays.momentum = !self.overlays.momentum,
+            ToggleDeltaP => self.overlays.delta_p = !self.overlays.delta_p,
+            CycleReadouts => self.overlays.readouts = self.overlays.readouts.next(),
+            SetReadouts(scope) => self.overlays.readouts = scope,
+            ToggleCenterOfMass => {
+                self.overlays.center_of_mass = !self.overlays.center_of_mass;
+            }
+            ToggleTrails => self.record.trails.on = !self.record.trails.on,
+            TogglePalette => {
+                self.overlays.safe_palette = !self.overlays.safe_palette;
+                let which = if self.overlays.safe_palette {
+                    "colour-blind-safe palette (Okabe-Ito, by disc number)"
+                } else {
+                    "the scene's colours"
+                };
+                self.toast(format!("Discs in {which}"));
+            }
+            ToggleCenterOfMassView => self.toggle_center_of_mass_view(),
+            ZoomIn | ZoomOut => {
+                let factor = if command == ZoomIn {
+                    ZOOM_STEP
+                } else {
+                    1.0 / ZOOM_STEP
+                };
+                let centre = self.view.camera.screen_center();
+                self.zoom_at(centre, factor);
+            }
+            ZoomAt { at, factor } => self.zoom_at(at, factor),
+            Pan(pixels) => {
+                self.view.camera.pan_pixels(pixels);
+                self.view.fitted = false;
+            }
+            Pinch { before, after } => {
+                self.view.camera.pinch(before, after);
+                self.view.fitted = false;
+                self.pointer.cancel();
+            }
+            Fit => self.fit_camera(),
+            ShowTab(tab) => self.panels.show_tab(tab),
+            ClickTab(tab) => {
+                let p = &mut self.panels;
+                if p.tab == tab && p.dock_expanded {
+                    p.dock_expanded = false;
+                } else {
+                    p.tab = tab;
+                    p.dock_expanded = true;
+                }
+            }
+            ToggleDockExpanded => self.panels.dock_expanded = !self.panels.dock_expanded,
+            ToggleDocks => self.panels.docks_open = !self.panels.docks_open,
+            ToggleSide => self.panels.side_open = !self.panels.side_open,
+            ToggleDrawer => self.panels.drawer_open = !self.panels.drawer_open,
+            ToggleHelp => self.panels.help_open = !self.panels.help_open,
+            TogglePresets => self.panels.presets_open = !self.panels.presets_open,
+            Escape => {
+                let p = &mut self.panels;
+                if p.presets_open {
+                    p.presets_open = false;
+                } else if p.help_open {
+                    p.help_open = false;
+                } else if p.drawer_open {
+                    p.drawer_open = false;
+                } else {
+                    self.selected = None;
+                    self.pointer.cancel();
+                }
+            }
+            SetScale(s) => self.panels.set_scale(s),
+            NextScale => {
+                self.panels.set_scale(next_scale(self.panels.scale));
+                self.toast(format!("Text size ×{}", self.panels.scale));
+            }
+            SetTheme(t) => self.panels.theme = t,
+            Fullscreen => self.requests.fullscreen = true,
+            Quit => self.requests.quit = true,
+        }
+    }
+
+    /// A preset opened by its key or the menu: all controls, and the start
+    /// screen (if open) gives way.
+    fn open_preset_from_menu(&mut self, k: usize) {
+        self.open_preset(k);
+        self.panels.focus = super::start::Tile::FreePlay;
+        if std::mem::take(&mut self.panels.start_open) {
+            self.clock.paused = false;
+            self.resume_after_modal();
+        }
+    }
+
+    /// Z: the centre-of-mass view on or off. The camera moves with the
+    /// centre of mass and arrows and readouts show velocities relative to
+    /// it; the discs' velocities are never changed.
+    fn toggle_center_of_mass_view(&mut self) {
+        if self.overlays.com_view.take().is_some() {
+            self.toast("Centre-of-mass view off: velocities as seen from the box");
+            return;
+        }
+        let m = self.world.metrics();
+        self.overlays.com_view = Some(self.view.camera.center - m.center_of_mass);
+        self.view.fitted = false;
+        self.toast(format!(
+            "Centre-of-mass view: moving with the centre of mass at {}; Z again to leave",
+            vector(m.center_of_mass_velocity, 3, "m/s")
+        ));
+    }
+}

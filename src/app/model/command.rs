@@ -1,0 +1,209 @@
+//! Every action a person can take, by key, button, menu or gesture, as one
+//! enum. The window turns input into these; [`super::Sandbox::apply`]
+//! carries them out.
+
+use super::overlays::ReadoutScope;
+use super::{DockTab, Theme};
+use glam::DVec2;
+use impulse::broad_phase::BroadPhaseKind;
+use impulse::method::{Method, Setting};
+use impulse::Boundary;
+
+/// A law of the collisions that a control sets.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Law {
+    /// Restitution e between discs.
+    Restitution,
+    /// Restitution at the walls.
+    WallRestitution,
+    /// Roughness β between discs.
+    Roughness,
+    /// Roughness β at the walls.
+    WallRoughness,
+}
+
+/// Where a disc edit was typed: its answer goes back there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EditPlace {
+    /// The side dock's fields for the selected disc.
+    Fields,
+    /// A cell of the Discs table.
+    Table,
+}
+
+/// Which way a stepped control moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dir {
+    Down,
+    Up,
+}
+
+/// One action.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    // Time.
+    TogglePause,
+    /// One step, paused.
+    Step,
+    Slower,
+    Faster,
+    /// One of the clock's time scales, by index.
+    SetTimeScale(usize),
+    /// Run to the next impact (between discs or on a wall) and pause there.
+    NextCollision,
+    /// Back (negative) or forward through the recorded past.
+    Scrub(isize),
+
+    // Scenes.
+    OpenPreset(usize),
+    /// The empty box.
+    OpenEmpty,
+    /// A scene file by its path (the path field).
+    OpenFile(String),
+    /// A scene's text, named (a dropped file), or why it could not be read.
+    OpenText {
+        name: String,
+        text: Result<String, String>,
+    },
+    Reset,
+    Clear,
+    Save,
+    Share,
+    Export,
+    Screenshot,
+    Undo,
+    Redo,
+    RestoreRecovery,
+    SetRecoveryAside,
+    /// The start screen (the top bar's Start button).
+    ShowStart,
+    /// A tile of the start screen.
+    StartWith(super::start::Tile),
+    /// Leave the start screen with the scene that is open.
+    CloseStart,
+    /// Every control in the side dock, not only the lesson's.
+    ShowAllControls,
+
+    // Laws and method.
+    SetLaw(Law, f64),
+    NudgeLaw(Law, Dir),
+    /// Friction μ, or none (no limit).
+    SetFriction(Option<f64>),
+    /// |g| pointing down (0: off).
+    SetGravity(f64),
+    ToggleGravity,
+    SetBoundary(Boundary),
+    SetMethod(Setting<Method>),
+    SetBroadPhase(Setting<BroadPhaseKind>),
+    SetSubsteps(Setting<u32>),
+    CycleMethod,
+    CycleBroadPhase,
+    CycleSubsteps,
+
+    // New discs and the discs themselves.
+    SetNewRadius(f64),
+    SetNewMass(f64),
+    StepNewRadius(Dir),
+    StepNewMass(Dir),
+    SizeFollowsMass(bool),
+    Select(Option<usize>),
+    /// New values typed for disc `disc`, in [`super::edit::FIELDS`] order
+    /// (`None`: untouched); read and checked by the model.
+    EditDisc {
+        disc: usize,
+        text: [Option<String>; 4],
+        from: EditPlace,
+    },
+    DeleteSelected,
+    /// The left button or a finger went down, moved, came up (window px).
+    PointerDown(DVec2),
+    PointerMove(DVec2),
+    PointerUp(DVec2),
+
+    // What is drawn.
+    ToggleVelocity,
+    ToggleMomentum,
+    ToggleDeltaP,
+    CycleReadouts,
+    SetReadouts(ReadoutScope),
+    ToggleCenterOfMass,
+    ToggleTrails,
+    TogglePalette,
+    ToggleCenterOfMassView,
+
+    // The view.
+    ZoomIn,
+    ZoomOut,
+    /// Zoom by `factor` keeping window point `at` still.
+    ZoomAt {
+        at: DVec2,
+        factor: f64,
+    },
+    /// Pan by window pixels.
+    Pan(DVec2),
+    /// Two fingers moved: from `before` to `after` (window px).
+    Pinch {
+        before: [DVec2; 2],
+        after: [DVec2; 2],
+    },
+    Fit,
+
+    // Panels.
+    ShowTab(DockTab),
+    /// A tab clicked in the tab row: chosen, or folded when it was open.
+    ClickTab(DockTab),
+    ToggleDockExpanded,
+    ToggleDocks,
+    ToggleSide,
+    ToggleDrawer,
+    ToggleHelp,
+    TogglePresets,
+    /// Esc: closes what is open, else deselects.
+    Escape,
+    SetScale(f32),
+    NextScale,
+    SetTheme(Theme),
+    Fullscreen,
+    Quit,
+}
+
+impl Command {
+    /// The kind of change to the scene this command may make, as undo names
+    /// it; `None` for commands that never change the scene. Whether it did
+    /// is seen after it ran: only then is the scene remembered.
+    pub fn edit_kind(&self) -> Option<&'static str> {
+        use Command::*;
+        Some(match self {
+            OpenPreset(_)
+            | OpenEmpty
+            | OpenFile(_)
+            | OpenText { .. }
+            | RestoreRecovery
+            | StartWith(_) => "open a scene",
+            Reset => "reset",
+            Clear => "clear",
+            SetLaw(Law::Restitution, _) | NudgeLaw(Law::Restitution, _) => "restitution",
+            SetLaw(Law::WallRestitution, _) | NudgeLaw(Law::WallRestitution, _) => {
+                "wall restitution"
+            }
+            SetLaw(Law::Roughness, _) | NudgeLaw(Law::Roughness, _) => "roughness",
+            SetLaw(Law::WallRoughness, _) | NudgeLaw(Law::WallRoughness, _) => "wall roughness",
+            SetFriction(_) => "friction",
+            SetGravity(_) | ToggleGravity => "gravity",
+            SetBoundary(_) => "edges",
+            SetMethod(_) | CycleMethod => "method",
+            SetBroadPhase(_) | CycleBroadPhase => "broad phase",
+            SetSubsteps(_) | CycleSubsteps => "substeps",
+            EditDisc { .. } => "edit a disc",
+            DeleteSelected => "delete",
+            // A gesture's release names its own change (pointer.rs).
+            _ => return None,
+        })
+    }
+
+    /// Whether a change this command makes to the discs means the scene's
+    /// caption may no longer hold (a law change keeps the discs).
+    pub fn edits_discs(&self) -> bool {
+        matches!(self, Command::EditDisc { .. } | Command::DeleteSelected)
+    }
+}

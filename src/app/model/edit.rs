@@ -1,0 +1,251 @@
+//! An edit of a disc typed in a field or a table cell: read, checked, and
+//! applied, or refused with one short line that says why (the disc stays as
+//! it was).
+
+use super::command::EditPlace;
+use super::{Note, Sandbox};
+use crate::app::numbers::{field, plain};
+use impulse::Particle;
+
+/// The selected disc's editable quantities, in field order.
+pub const FIELDS: [&str; 4] = ["mass", "radius", "v_x", "v_y"];
+
+/// An edit of a disc's quantities; `None` leaves one as it is.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DiscEdit {
+    /// Mass (kg).
+    pub mass: Option<f64>,
+    /// Radius (m).
+    pub radius: Option<f64>,
+    /// Velocity, x (m/s).
+    pub vx: Option<f64>,
+    /// Velocity, y (m/s).
+    pub vy: Option<f64>,
+}
+
+impl DiscEdit {
+    /// Whether nothing would change.
+    pub fn is_empty(&self) -> bool {
+        *self == DiscEdit::default()
+    }
+
+    /// Writes the new values into `p`.
+    pub fn apply(&self, p: &mut Particle) {
+        p.mass = self.mass.unwrap_or(p.mass);
+        p.radius = self.radius.unwrap_or(p.radius);
+        p.vel.x = self.vx.unwrap_or(p.vel.x);
+        p.vel.y = self.vy.unwrap_or(p.vel.y);
+    }
+}
+
+/// Reads the fields the user changed (`None`: untouched, in [`FIELDS`]
+/// order). Every value must be a finite number; mass and radius positive,
+/// the radius at most `max_radius`. The error is one short line.
+pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<DiscEdit, String> {
+    let mut values = [None; 4];
+    for (k, text) in changed.into_iter().enumerate() {
+        let Some(text) = text else { continue };
+        let name = FIELDS[k];
+        let text = text.trim();
+        if text.is_empty() {
+            return Err(format!("{name}: type a number"));
+        }
+        let v = text
+            .replace('−', "-")
+            .parse::<f64>()
+            .map_err(|_| format!("{name}: “{text}” is not a number"))?;
+        if !v.is_finite() {
+            return Err(format!("{name} must be a finite number"));
+        }
+        if k < 2 && v <= 0.0 {
+            return Err(format!("{name} must be more than 0"));
+        }
+        if k == 1 && v > max_radius {
+            return Err(format!(
+                "radius must be at most {} m here",
+                field(max_radius)
+            ));
+        }
+        values[k] = Some(v);
+    }
+    Ok(DiscEdit {
+        mass: values[0],
+        radius: values[1],
+        vx: values[2],
+        vy: values[3],
+    })
+}
+
+impl Sandbox {
+    /// Applies an edit typed for `disc`, or keeps it and says what is wrong,
+    /// where it was typed.
+    pub(super) fn edit_disc(&mut self, disc: usize, text: &[Option<String>; 4], from: EditPlace) {
+        if disc >= self.world.particles.len() {
+            return;
+        }
+        let changed: [Option<&str>; 4] = std::array::from_fn(|k| text[k].as_deref());
+        let max_radius = match from {
+            EditPlace::Fields => self.biggest_radius(),
+            EditPlace::Table => f64::INFINITY,
+        };
+        let edit = parse_disc_edit(changed, max_radius).and_then(|e| self.sized_edit(disc, e));
+        let note = match edit {
+            Ok(edit) if edit.is_empty() => Note::ok("Nothing changed: type a new value first"),
+            Ok(edit) => {
+                let p = &mut self.world.particles[disc];
+                edit.apply(p);
+                self.record.totals.clear();
+                Note::ok(match from {
+                    EditPlace::Fields => format!("Applied to disc {disc}"),
+                    EditPlace::Table => {
+                        let what = [
+                            (edit.mass, "mass", "kg"),
+                            (edit.radius, "radius", "m"),
+                            (edit.vx, "v_x", "m/s"),
+                            (edit.vy, "v_y", "m/s"),
+                        ];
+                        let said: Vec<String> = what
+                            .iter()
+                            .filter_map(|(v, name, unit)| {
+                                v.map(|v| {
+                                    format!("{name} = {} {unit}", crate::app::numbers::field(v))
+                                })
+                            })
+                            .collect();
+                        format!("Disc {disc}: {}", said.join(", "))
+                    }
+                })
+            }
+            Err(e) => Note::error(match from {
+                EditPlace::Fields => e,
+                EditPlace::Table => format!("Disc {disc}: {e}; nothing changed"),
+            }),
+        };
+        match from {
+            EditPlace::Fields => self.messages.fields = Some(note),
+            EditPlace::Table => self.messages.table = Some(note),
+        }
+    }
+
+    /// With "size follows mass", a new mass brings its radius, refused if
+    /// the disc would then overlap another or cross a wall; otherwise the
+    /// edit as it is.
+    pub fn sized_edit(&self, i: usize, mut edit: DiscEdit) -> Result<DiscEdit, String> {
+        let (Some(m), true) = (edit.mass, self.new_discs.size_follows_mass) else {
+            return Ok(edit);
+        };
+        let r = super::gesture::radius_for_mass(m);
+        let w = &self.world;
+        let Some(p) = w.particles.get(i) else {
+            return Ok(edit);
+        };
+        let size = plain(r, 2);
+        let overlapped = w.particles.iter().enumerate().find(|&(j, q)| {
+            j != i
+                && w.laws
+                    .boundary
+                    .separation(q.pos, p.pos, w.laws.size)
+                    .length()
+                    < r + q.radius
+        });
+        if let Some((j, _)) = overlapped {
+            return Err(format!(
+                "at {} kg the disc would be {size} m in radius (size follows mass) and overlap disc {j}",
+                plain(m, 3)
+            ));
+        }
+        if !w.laws.boundary.admits(w.laws.walls, w.laws.size, p.pos, r) {
+            return Err(format!(
+                "at {} kg the disc would be {size} m in radius (size follows mass) and cross a wall",
+                plain(m, 3)
+            ));
+        }
+        edit.radius = Some(r);
+        Ok(edit)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+    use impulse::Color as DiscColor;
+
+    #[test]
+    fn edits_parse_only_what_changed_and_refuse_bad_numbers() {
+        let edit = parse_disc_edit([Some("2.5"), None, Some(" -1e-3 "), None], 4.0).unwrap();
+        assert_eq!(
+            edit,
+            DiscEdit {
+                mass: Some(2.5),
+                radius: None,
+                vx: Some(-1e-3),
+                vy: None
+            }
+        );
+        assert!(parse_disc_edit([None; 4], 4.0).unwrap().is_empty());
+        let error = |fields| parse_disc_edit(fields, 4.0).unwrap_err();
+        assert_eq!(
+            error([Some("abc"), None, None, None]),
+            "mass: “abc” is not a number"
+        );
+        assert_eq!(
+            error([Some("0"), None, None, None]),
+            "mass must be more than 0"
+        );
+        assert_eq!(
+            error([None, Some("-1"), None, None]),
+            "radius must be more than 0"
+        );
+        assert_eq!(
+            error([None, Some("5"), None, None]),
+            "radius must be at most 4 m here"
+        );
+        assert_eq!(
+            error([None, None, Some("inf"), None]),
+            "v_x must be a finite number"
+        );
+        assert_eq!(
+            error([None, None, None, Some("1e999")]),
+            "v_y must be a finite number"
+        );
+        assert_eq!(
+            error([None, None, None, Some("NaN")]),
+            "v_y must be a finite number"
+        );
+        assert_eq!(error([None, None, Some("  "), None]), "v_x: type a number");
+        assert_eq!(
+            error([None, Some("1,5"), None, None]),
+            "radius: “1,5” is not a number"
+        );
+        assert_eq!(
+            parse_disc_edit([None, None, Some("−2"), None], 4.0)
+                .unwrap()
+                .vx,
+            Some(-2.0),
+            "a typographic minus"
+        );
+    }
+
+    #[test]
+    fn an_edit_changes_only_its_quantities() {
+        let mut p = Particle::new(
+            DVec2::new(1.0, 2.0),
+            DVec2::new(3.0, 4.0),
+            1.0,
+            0.5,
+            DiscColor::rgb(1, 2, 3),
+        );
+        DiscEdit {
+            radius: Some(0.25),
+            vy: Some(-1.0),
+            ..DiscEdit::default()
+        }
+        .apply(&mut p);
+        assert_eq!(
+            (p.mass, p.radius, p.vel),
+            (1.0, 0.25, DVec2::new(3.0, -1.0))
+        );
+        assert_eq!(p.pos, DVec2::new(1.0, 2.0));
+    }
+}

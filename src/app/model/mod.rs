@@ -1,0 +1,495 @@
+//! The sandbox as a class acts on it, with no window in it: the world and
+//! its scene, the selection, the overlays and settings, undo and the rewind
+//! history, the ledger's view, the trails and the totals' series.
+//!
+//! A person's action is a [`Command`]; [`Sandbox::apply`] is the one place
+//! where one changes anything, and it remembers the scene for undo only
+//! when the command changed it (a click that selects is not an edit).
+//! Time passing is [`Sandbox::tick`]: the physics steps, the totals, the
+//! trails, the rewind history and autosave. Keys map to commands through
+//! one table ([`bindings`]). The window (`super`) turns keys, clicks and
+//! gestures into commands and draws what is here; no macroquad or egui
+//! type appears in this module, so it is tested headlessly like the core.
+//!
+//! - [`command`]: every action, and which of them edit the scene.
+//! - [`apply`]: carrying a command out.
+//! - [`tick`]: time passing; next collision; rewind.
+//! - [`scenes`]: presets, opening, saving, sharing, undo.
+//! - [`pointer`]: mouse and touch gestures on the world; the camera.
+//! - pure parts: [`camera`], [`clock`], [`gesture`], [`undo`], [`totals`],
+//!   [`trails`], [`overlays`], [`lesson`], [`export`], [`share`],
+//!   [`recovery`].
+
+pub mod apply;
+pub mod bindings;
+pub mod camera;
+pub mod clock;
+pub mod command;
+pub mod edit;
+pub mod export;
+pub mod gesture;
+pub mod lesson;
+pub mod overlays;
+pub mod pointer;
+pub mod recovery;
+pub mod scenes;
+pub mod share;
+pub mod start;
+pub mod tick;
+pub mod totals;
+pub mod trails;
+pub mod undo;
+
+pub use command::Command;
+
+use crate::app::numbers::plain;
+use camera::Camera;
+use clock::{FixedStepClock, RealtimeMeter};
+use gesture::NewDisc;
+use glam::DVec2;
+use impulse::{Scene, World};
+use overlays::Overlays;
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+/// The bottom dock's tabs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DockTab {
+    Totals,
+    Collisions,
+    Discs,
+    Speeds,
+    Momenta,
+}
+
+impl DockTab {
+    /// The tab's title.
+    pub fn title(self) -> &'static str {
+        match self {
+            DockTab::Totals => "Totals",
+            DockTab::Collisions => "Collisions",
+            DockTab::Discs => "Discs",
+            DockTab::Speeds => "Speeds",
+            DockTab::Momenta => "Momenta",
+        }
+    }
+}
+
+/// Dark (the default, for a screen) or light (for a projector in a bright room).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Theme {
+    Dark,
+    Light,
+}
+
+impl Theme {
+    /// "dark" or "light".
+    pub fn name(self) -> &'static str {
+        match self {
+            Theme::Dark => "dark",
+            Theme::Light => "light",
+        }
+    }
+
+    /// The other one.
+    pub fn other(self) -> Theme {
+        match self {
+            Theme::Dark => Theme::Light,
+            Theme::Light => Theme::Dark,
+        }
+    }
+}
+
+/// The scales F2 cycles through; 2.0 is the projector's.
+pub const UI_SCALES: [f32; 3] = [1.0, 1.5, 2.0];
+/// The range of the scale slider.
+pub const UI_SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.5;
+
+/// The next of [`UI_SCALES`] after `scale` (back to the first after the last).
+pub fn next_scale(scale: f32) -> f32 {
+    UI_SCALES
+        .iter()
+        .copied()
+        .find(|&s| s > scale + 1e-3)
+        .unwrap_or(UI_SCALES[0])
+}
+
+/// A line of feedback under a control.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Note {
+    pub text: String,
+    pub error: bool,
+}
+
+impl Note {
+    pub fn ok(text: impl Into<String>) -> Self {
+        Note {
+            text: text.into(),
+            error: false,
+        }
+    }
+    pub fn error(text: impl Into<String>) -> Self {
+        Note {
+            text: text.into(),
+            error: true,
+        }
+    }
+}
+
+/// The scene that is open: its file (name, caption, the discs as they
+/// opened), where it came from, and whether its discs were edited since.
+#[derive(Clone)]
+pub struct OpenScene {
+    pub scene: Scene,
+    pub origin: String,
+    /// The discs were edited since the scene opened: its caption may no
+    /// longer hold.
+    pub edited: bool,
+}
+
+/// Which panels, tabs and popups are open, and how large everything is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Panels {
+    /// Scale of every text and control (F2, the slider).
+    pub scale: f32,
+    /// Dark or light.
+    pub theme: Theme,
+    /// The side and bottom docks (Tab hides both for a full-size world).
+    pub docks_open: bool,
+    /// The side dock (L).
+    pub side_open: bool,
+    /// Where the side dock is a drawer (a small window): whether it is open.
+    pub drawer_open: bool,
+    /// The bottom dock's chosen tab.
+    pub tab: DockTab,
+    /// Whether the bottom dock shows its tab or only the tab row.
+    pub dock_expanded: bool,
+    /// The key list.
+    pub help_open: bool,
+    /// The preset menu.
+    pub presets_open: bool,
+    /// The start screen's tiles.
+    pub start_open: bool,
+    /// The lesson chosen on the start screen: which controls the side dock
+    /// shows (Free play: all).
+    pub focus: start::Tile,
+    /// The simulation was running when a modal screen paused it.
+    pub paused_by_modal: bool,
+}
+
+impl Panels {
+    fn new(scale: f32, theme: Theme) -> Self {
+        let mut panels = Panels {
+            scale: 1.0,
+            theme,
+            docks_open: true,
+            side_open: true,
+            drawer_open: false,
+            tab: DockTab::Totals,
+            dock_expanded: true,
+            help_open: false,
+            presets_open: false,
+            start_open: false,
+            focus: start::Tile::FreePlay,
+            paused_by_modal: false,
+        };
+        panels.set_scale(scale);
+        panels
+    }
+
+    /// Sets the UI scale (kept in [`UI_SCALE_RANGE`]).
+    pub fn set_scale(&mut self, scale: f32) {
+        let scale = if scale.is_finite() { scale } else { 1.0 };
+        self.scale = scale.clamp(*UI_SCALE_RANGE.start(), *UI_SCALE_RANGE.end());
+    }
+
+    /// Opens the bottom dock on `tab`; the same tab again folds it.
+    pub fn show_tab(&mut self, tab: DockTab) {
+        if self.docks_open && self.dock_expanded && self.tab == tab {
+            self.dock_expanded = false;
+        } else {
+            self.docks_open = true;
+            self.dock_expanded = true;
+            self.tab = tab;
+        }
+    }
+}
+
+/// The view of the world: the camera, whether it is fitted to the box, and
+/// the centre-of-mass view.
+#[derive(Clone, Debug)]
+pub struct WorldView {
+    pub camera: Camera,
+    /// The view shows the whole box: it is fitted again when the world's
+    /// rectangle changes (until the user zooms or pans).
+    pub fitted: bool,
+}
+
+/// The disc a launch makes, and whether its size follows its mass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NewDiscs {
+    pub disc: NewDisc,
+    /// New discs and mass edits take the radius of one density.
+    pub size_follows_mass: bool,
+}
+
+/// What was recorded as time went on: the totals' series, the rewind
+/// history and the trails.
+#[derive(Clone, Default)]
+pub struct Record {
+    pub totals: totals::Totals,
+    pub history: impulse::history::History,
+    pub trails: trails::Trails,
+}
+
+/// How the last frames' physics went, for the Details section and the top
+/// bar's "running slower" note.
+#[derive(Clone, Debug, Default)]
+pub struct StepReport {
+    /// Recent per-step wall-clock times (µs).
+    pub step_micros: VecDeque<f64>,
+    pub steps_last_frame: u32,
+    /// Steps the clock asked for last frame that the frame budget dropped.
+    pub steps_dropped: u32,
+    /// Simulated seconds per real second, lately.
+    pub realtime: RealtimeMeter,
+}
+
+/// What the sandbox says: the message in the strip (until a moment of the
+/// window's clock) and the notes under the fields that caused them.
+#[derive(Clone, Debug, Default)]
+pub struct Messages {
+    pub toast: Option<(String, f64)>,
+    /// Under the selected disc's fields.
+    pub fields: Option<Note>,
+    /// Above the Discs table.
+    pub table: Option<Note>,
+    /// Under the scene's path field.
+    pub scene: Option<Note>,
+}
+
+/// What only the window can do, asked for by a command and taken by the
+/// window at the end of the frame.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Requests {
+    pub quit: bool,
+    pub fullscreen: bool,
+    /// A screenshot of the next frame, to this file.
+    pub screenshot: Option<PathBuf>,
+}
+
+/// Where the sandbox keeps its files and what the command line fixed.
+#[derive(Clone, Debug)]
+pub struct Session {
+    /// Folder for saved scenes, exports and screenshots.
+    pub out: PathBuf,
+    /// `--dt`, over every scene's own step.
+    pub dt: Option<f64>,
+    /// The window's clock now (s), set at the start of each frame.
+    pub now: f64,
+}
+
+/// The whole sandbox.
+pub struct Sandbox {
+    pub world: World,
+    pub open: OpenScene,
+    pub clock: FixedStepClock,
+    pub view: WorldView,
+    pub selected: Option<usize>,
+    pub pointer: pointer::Pointer,
+    pub new_discs: NewDiscs,
+    pub overlays: Overlays,
+    pub record: Record,
+    pub undo: undo::Undo,
+    pub panels: Panels,
+    pub messages: Messages,
+    pub steps: StepReport,
+    pub recovery: recovery::Recovery,
+    pub session: Session,
+    pub requests: Requests,
+}
+
+/// How a sandbox starts.
+pub struct Start {
+    pub scene: Scene,
+    pub origin: String,
+    pub world: World,
+    pub paused: bool,
+    pub dt: Option<f64>,
+    pub out: PathBuf,
+    /// The recovery file's folder and the seconds between autosaves.
+    pub recovery: (PathBuf, f64),
+    pub scale: f32,
+    pub theme: Theme,
+    /// Open on the start screen.
+    pub start_screen: bool,
+}
+
+impl Sandbox {
+    /// A sandbox on `start.scene`; a problem found on the way (an unreadable
+    /// recovery file) is its first message.
+    pub fn new(start: Start) -> Self {
+        let dt = start.scene.step_for(start.dt);
+        let mut clock = FixedStepClock::new(dt, 64);
+        clock.paused = start.paused;
+        let size = start.world.laws.size;
+        let (recovery, problem) = recovery::Recovery::new(&start.recovery.0, start.recovery.1);
+        let mut sandbox = Sandbox {
+            world: start.world,
+            open: OpenScene {
+                edited: start.scene.edited,
+                scene: start.scene,
+                origin: start.origin,
+            },
+            clock,
+            view: WorldView {
+                camera: Camera::fitting(size, DVec2::new(1280.0, 800.0), 30.0),
+                fitted: true,
+            },
+            selected: None,
+            pointer: pointer::Pointer::default(),
+            new_discs: NewDiscs {
+                disc: NewDisc {
+                    radius: 0.4,
+                    mass: 1.0,
+                },
+                size_follows_mass: false,
+            },
+            overlays: Overlays::default(),
+            record: Record::default(),
+            undo: undo::Undo::default(),
+            panels: Panels::new(start.scale, start.theme),
+            messages: Messages::default(),
+            steps: StepReport::default(),
+            recovery,
+            session: Session {
+                out: start.out,
+                dt: start.dt,
+                now: 0.0,
+            },
+            requests: Requests::default(),
+        };
+        sandbox.panels.start_open = start.start_screen;
+        if sandbox.modal_open() {
+            sandbox.pause_for_modal();
+        }
+        if let Some(problem) = problem {
+            sandbox.report(problem);
+        }
+        sandbox
+    }
+
+    /// The window's clock at the start of a frame (s).
+    pub fn begin_frame(&mut self, now: f64) {
+        self.session.now = now;
+    }
+
+    /// A message in the strip for a few seconds.
+    pub fn toast(&mut self, message: impl Into<String>) {
+        self.toast_for(message, 4.0);
+    }
+
+    pub fn toast_for(&mut self, message: impl Into<String>, seconds: f64) {
+        self.messages.toast = Some((message.into(), self.session.now + seconds));
+    }
+
+    /// The message shown now, if any.
+    pub fn message(&self) -> Option<&str> {
+        self.messages
+            .toast
+            .as_ref()
+            .filter(|(_, until)| self.session.now < *until)
+            .map(|(m, _)| m.as_str())
+    }
+
+    /// A message for both the window and the terminal.
+    pub fn report(&mut self, message: String) {
+        eprintln!("impulse: {message}");
+        self.toast_for(message, 8.0);
+    }
+
+    /// Whether a modal question or the start screen waits for an answer
+    /// (the simulation stays paused behind it).
+    pub fn modal_open(&self) -> bool {
+        self.recovery.offered.is_some() || self.panels.start_open
+    }
+
+    /// A modal screen opened: the simulation waits for it.
+    pub(super) fn pause_for_modal(&mut self) {
+        if !self.clock.paused {
+            self.clock.paused = true;
+            self.panels.paused_by_modal = true;
+        }
+    }
+
+    /// A modal screen closed: the simulation runs again if it ran before
+    /// and nothing else is open.
+    pub(super) fn resume_after_modal(&mut self) {
+        if !self.modal_open() && std::mem::take(&mut self.panels.paused_by_modal) {
+            self.clock.paused = false;
+        }
+    }
+
+    /// The disc a launch makes now: with "size follows mass", its radius
+    /// from its mass.
+    pub fn new_disc_now(&self) -> NewDisc {
+        let mut d = self.new_discs.disc;
+        if self.new_discs.size_follows_mass {
+            d.radius = gesture::radius_for_mass(d.mass).min(self.biggest_radius());
+        }
+        d
+    }
+
+    /// The largest radius a disc may have in this box.
+    pub fn biggest_radius(&self) -> f64 {
+        0.45 * self.world.laws.size.min_element()
+    }
+
+    /// The selected disc, if it exists.
+    pub fn selected_disc(&self) -> Option<usize> {
+        self.selected.filter(|&i| i < self.world.particles.len())
+    }
+
+    /// Simulated seconds per real second lately, while running.
+    pub fn sim_rate(&self) -> Option<f64> {
+        self.steps.realtime.ratio()
+    }
+
+    /// "running at 0.31× real time" when the simulation goes more than 10 %
+    /// slower than the time scale asks.
+    pub fn slow_note(&self) -> Option<String> {
+        let rate = self.sim_rate()?;
+        if self.clock.paused || rate >= 0.9 * self.clock.time_scale() {
+            return None;
+        }
+        let digits = if rate < 0.1 { 3 } else { 2 };
+        Some(format!("running at {}× real time", plain(rate, digits)))
+    }
+
+    /// "impulse ×4 / grid (auto: ...)": what the steps use, and why.
+    pub fn method_line(&self) -> String {
+        let plan = self
+            .world
+            .plan()
+            .cloned()
+            .unwrap_or_else(|| self.world.plan_for(self.clock.dt));
+        let substeps = if plan.method.uses_substeps() {
+            format!(" ×{}", plan.substeps)
+        } else {
+            String::new()
+        };
+        let broad = if plan.method == impulse::method::Method::Exact {
+            "cells"
+        } else {
+            plan.broad_phase.name()
+        };
+        let mut line = format!("in use: {}{substeps} / {broad}", plan.method.name());
+        if !plan.reason.is_empty() {
+            line.push_str(&format!(" (auto: {})", plan.reason));
+        }
+        line
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,90 @@
+//! What is drawn over the discs, as the person chose it: arrows, readouts,
+//! the centre of mass, the contact at an impact, the palette. Pure data:
+//! the world's drawing reads it.
+
+use glam::DVec2;
+use impulse::World;
+
+/// Arrows show where a disc will be this many seconds from now.
+pub const ARROW_SECONDS: f64 = 0.5;
+
+/// Which discs carry a text readout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReadoutScope {
+    /// None.
+    Off,
+    /// Only the selected disc.
+    Selected,
+    /// Every disc on screen.
+    All,
+}
+
+impl ReadoutScope {
+    /// Off → Selected → All → Off.
+    pub fn next(self) -> Self {
+        match self {
+            ReadoutScope::Off => ReadoutScope::Selected,
+            ReadoutScope::Selected => ReadoutScope::All,
+            ReadoutScope::All => ReadoutScope::Off,
+        }
+    }
+
+    /// "off", "selected" or "all".
+    pub fn name(self) -> &'static str {
+        match self {
+            ReadoutScope::Off => "off",
+            ReadoutScope::Selected => "selected",
+            ReadoutScope::All => "all",
+        }
+    }
+}
+
+/// The overlay toggles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Overlays {
+    /// Velocity arrows.
+    pub velocity: bool,
+    /// Momentum arrows.
+    pub momentum: bool,
+    /// For a moment after each collision, each disc's change of momentum.
+    pub delta_p: bool,
+    /// Text readouts.
+    pub readouts: ReadoutScope,
+    /// Colour discs by the colour-blind-safe palette, not the scene's colours.
+    pub safe_palette: bool,
+    /// The centre of mass and its velocity.
+    pub center_of_mass: bool,
+    /// The contact's normal and tangent at the instant of impact.
+    pub contact: bool,
+    /// The centre-of-mass view, with the camera's offset from the centre
+    /// of mass when it was turned on.
+    pub com_view: Option<DVec2>,
+}
+
+impl Default for Overlays {
+    fn default() -> Self {
+        Overlays {
+            velocity: true,
+            momentum: false,
+            delta_p: true,
+            readouts: ReadoutScope::Selected,
+            safe_palette: false,
+            center_of_mass: false,
+            contact: false,
+            com_view: None,
+        }
+    }
+}
+
+/// Whether spin is worth showing: a disc spins, or the laws can make one
+/// spin (a roughness β above −1 between discs or at the walls, or friction,
+/// which rubs resting discs). Only then do discs carry their spin line and
+/// the readouts, the Discs table, the top bar and the Speeds tab their spin
+/// values, so the smooth presets look as they always did.
+pub fn spin_shown(world: &World) -> bool {
+    let laws = &world.laws;
+    laws.tangential_restitution > -1.0
+        || laws.wall_tangential_restitution > -1.0
+        || laws.friction.is_some()
+        || world.particles.iter().any(|p| p.spin != 0.0)
+}

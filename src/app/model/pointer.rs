@@ -1,0 +1,153 @@
+//! The mouse and a finger on the world, as commands in window pixels: a
+//! press selects, grabs a disc, takes the selected disc's arrow tip or
+//! starts a launch; a release finishes it. Only a release that changed the
+//! discs (a launch, a fling, an aim) is remembered for undo and marks the
+//! scene edited; a click only selects. Also the camera: zoom, fit, and
+//! the world's rectangle from the layout.
+
+use super::gesture::{Gesture, Released};
+use super::overlays::ARROW_SECONDS;
+use super::undo::Moment;
+use super::Sandbox;
+use glam::DVec2;
+
+/// A press that moves less than this is a click, not a drag.
+pub const CLICK_SLOP_PIXELS: f64 = 4.0;
+/// A press this close (px) to the selected disc's velocity arrow tip drags the tip.
+pub const ARROW_TIP_PIXELS: f64 = 10.0;
+
+/// The gesture in progress and the scene when it began (for undo).
+#[derive(Clone, Default)]
+pub struct Pointer {
+    pub gesture: Gesture,
+    /// The scene when the button went down, remembered for undo if the
+    /// gesture changes it.
+    press: Option<Moment>,
+    /// Where the pointer is (window px), for the launch preview.
+    pub at: DVec2,
+}
+
+impl Pointer {
+    /// Drops whatever was in progress.
+    pub fn cancel(&mut self) {
+        self.gesture = Gesture::Idle;
+        self.press = None;
+    }
+
+    /// Keeps indices right after disc `removed` was deleted.
+    pub fn on_removed(&mut self, removed: usize) {
+        self.gesture.on_removed(removed);
+    }
+
+    /// Puts a held disc back under the cursor (after a physics step).
+    pub fn pin_held(&self, world: &mut impulse::World) {
+        self.gesture.pin_held(world);
+    }
+}
+
+impl Sandbox {
+    pub(super) fn pointer_down(&mut self, at: DVec2) {
+        let world_at = self.view.camera.screen_to_world(at);
+        self.pointer.at = at;
+        self.pointer.press = Some(self.moment());
+        let slop = CLICK_SLOP_PIXELS / self.view.camera.scale;
+        let camera = &self.view.camera;
+        let tip = self
+            .selected
+            .filter(|_| self.overlays.velocity)
+            .and_then(|i| {
+                let p = self.world.particles.get(i)?;
+                let centre = camera.world_to_screen(p.pos);
+                let offset = camera.vector_to_screen(p.vel * ARROW_SECONDS);
+                Gesture::near_tip(at, centre, offset, ARROW_TIP_PIXELS).then_some(i)
+            });
+        let now = self.session.now;
+        match tip {
+            Some(i) => self
+                .pointer
+                .gesture
+                .press_arrow_tip(&self.world, i, ARROW_SECONDS),
+            None => self.selected = self.pointer.gesture.press(&self.world, world_at, now, slop),
+        }
+    }
+
+    pub(super) fn pointer_move(&mut self, at: DVec2) {
+        self.pointer.at = at;
+        let world_at = self.view.camera.screen_to_world(at);
+        let now = self.session.now;
+        self.pointer.gesture.drag(&mut self.world, world_at, now);
+    }
+
+    pub(super) fn pointer_up(&mut self, at: DVec2) {
+        // The cursor may have moved since the last frame: follow it first.
+        self.pointer_move(at);
+        let world_at = self.view.camera.screen_to_world(at);
+        let before = self.pointer.press.take();
+        let new_disc = self.new_disc_now();
+        let released = self
+            .pointer
+            .gesture
+            .release(&mut self.world, world_at, new_disc);
+        let what = match released {
+            Released::Launched(_) => Some("launch"),
+            Released::Flung(..) => Some("fling"),
+            Released::Aimed(..) => Some("set a velocity"),
+            Released::Clicked(_) | Released::NoRoom | Released::Nothing => None,
+        };
+        if let (Some(what), Some(before)) = (what, before) {
+            self.undo.remember(|| before, what, self.session.now);
+            self.open.edited = true;
+        }
+        match released {
+            Released::Launched(i) => self.selected = Some(i),
+            Released::NoRoom => self.toast("No room for a new disc here"),
+            Released::Aimed(i, v) => {
+                self.toast(format!(
+                    "Disc {i}: velocity set to ({:+.2}, {:+.2}) m/s",
+                    v.x, v.y
+                ));
+            }
+            Released::Flung(..) | Released::Clicked(_) | Released::Nothing => {}
+        }
+    }
+
+    pub(super) fn zoom_at(&mut self, at: DVec2, factor: f64) {
+        self.view.camera.zoom_at(at, factor);
+        self.view.fitted = false;
+    }
+
+    /// Fits the box into the world's rectangle; in a box with open sides,
+    /// the box and every disc that has left it.
+    pub fn fit_camera(&mut self) {
+        let margin = 24.0;
+        let (mut lo, mut hi) = (DVec2::ZERO, self.world.laws.size);
+        if self.follows_discs() {
+            for p in self.world.particles.iter().filter(|p| p.pos.is_finite()) {
+                lo = lo.min(p.pos - DVec2::splat(p.radius));
+                hi = hi.max(p.pos + DVec2::splat(p.radius));
+            }
+        }
+        self.view.camera.fit_rect(lo, hi, margin);
+        self.view.fitted = true;
+    }
+
+    /// Whether a fitted view follows the discs out of the box: a box with
+    /// open sides (the π blocks leave through theirs).
+    pub fn follows_discs(&self) -> bool {
+        self.world.laws.boundary == impulse::Boundary::Box && !self.world.laws.walls.all()
+    }
+
+    /// Gives the camera the world's rectangle [x, y, w, h] (window px); a
+    /// view that was fitted stays fitted when it changes.
+    pub fn place_world(&mut self, [x, y, w, h]: [f32; 4]) {
+        let origin = DVec2::new(f64::from(x), f64::from(y));
+        let size = DVec2::new(f64::from(w), f64::from(h)).max(DVec2::ONE);
+        let camera = &mut self.view.camera;
+        if origin != camera.origin || size != camera.viewport {
+            camera.set_rect(origin, size);
+            if self.view.fitted {
+                self.fit_camera();
+            }
+        }
+    }
+}

@@ -1,0 +1,143 @@
+//! The start screen: large tiles, each a lesson (PhET's way in). A tile
+//! opens its scene with only the controls that scene needs and the dock on
+//! the tab that shows it; *Free play* opens the sandbox with everything.
+//! Shown on a plain start (no scene file, no gas, no shared link) and by
+//! the top bar's *Start* button; while it is open nothing runs behind it.
+
+use super::{scenes, DockTab, Sandbox};
+
+/// A lesson on the start screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tile {
+    HeadOn,
+    Glancing,
+    Inelastic,
+    PiBlocks,
+    Gas,
+    FreePlay,
+}
+
+/// A group of controls in the side dock.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Section {
+    Collisions,
+    Show,
+    NewDiscs,
+    Selected,
+    Scene,
+    View,
+    More,
+}
+
+impl Tile {
+    pub const ALL: [Tile; 6] = [
+        Tile::HeadOn,
+        Tile::Glancing,
+        Tile::Inelastic,
+        Tile::PiBlocks,
+        Tile::Gas,
+        Tile::FreePlay,
+    ];
+
+    /// Its title on the tile.
+    pub fn title(self) -> &'static str {
+        match self {
+            Tile::HeadOn => "Head-on (1D)",
+            Tile::Glancing => "Glancing (2D)",
+            Tile::Inelastic => "Inelastic",
+            Tile::PiBlocks => "π blocks",
+            Tile::Gas => "A gas",
+            Tile::FreePlay => "Free play",
+        }
+    }
+
+    /// One line under the title, in plain words.
+    pub fn blurb(self) -> &'static str {
+        match self {
+            Tile::HeadOn => "Two discs meet on a line. Is the total momentum the same after?",
+            Tile::Glancing => "One disc hits another off-centre. Which way do they go?",
+            Tile::Inelastic => "Discs that do not bounce back fully. Where does the energy go?",
+            Tile::PiBlocks => "A light block, a heavy one and a wall: count the bumps.",
+            Tile::Gas => "Many discs at once: how are their speeds shared out?",
+            Tile::FreePlay => "Launch your own discs and change everything.",
+        }
+    }
+
+    /// Its name in the state dump and the widget names ("tile_head_on").
+    pub fn key(self) -> &'static str {
+        match self {
+            Tile::HeadOn => "head_on",
+            Tile::Glancing => "glancing",
+            Tile::Inelastic => "inelastic",
+            Tile::PiBlocks => "pi_blocks",
+            Tile::Gas => "gas",
+            Tile::FreePlay => "free_play",
+        }
+    }
+
+    /// The scene it opens: a preset's file name (the default scene for
+    /// free play).
+    fn scene(self) -> Option<&'static str> {
+        Some(match self {
+            Tile::HeadOn => "preset-1-head-on.toml",
+            Tile::Glancing => "preset-4-glancing.toml",
+            Tile::Inelastic => "preset-5-inelastic.toml",
+            Tile::PiBlocks => "preset-7-pi-blocks.toml",
+            Tile::Gas => "preset-8-gas.toml",
+            Tile::FreePlay => return None,
+        })
+    }
+
+    /// The dock's tab that shows what the lesson is about.
+    fn tab(self) -> DockTab {
+        match self {
+            Tile::HeadOn | Tile::PiBlocks => DockTab::Collisions,
+            Tile::Glancing => DockTab::Momenta,
+            Tile::Inelastic | Tile::FreePlay => DockTab::Totals,
+            Tile::Gas => DockTab::Speeds,
+        }
+    }
+
+    /// Whether the lesson shows `section` of the side dock.
+    pub fn shows(self, section: Section) -> bool {
+        use Section::*;
+        match self {
+            Tile::FreePlay => true,
+            Tile::HeadOn | Tile::Glancing | Tile::Inelastic => {
+                matches!(section, Collisions | Show | Selected | View)
+            }
+            Tile::PiBlocks => matches!(section, Show | View),
+            Tile::Gas => matches!(section, Collisions | Show | NewDiscs | View),
+        }
+    }
+}
+
+impl Sandbox {
+    /// Opens `tile`'s scene, with only its controls, and closes the start
+    /// screen.
+    pub(super) fn start_with(&mut self, tile: Tile) {
+        self.panels.start_open = false;
+        match tile.scene() {
+            Some(file) => {
+                if let Some(k) = scenes::PRESETS.iter().position(|p| p.path.ends_with(file)) {
+                    self.open_preset(k);
+                }
+            }
+            None => {
+                let origin = "built-in default scene".to_string();
+                match impulse::Scene::parse(crate::app::DEFAULT_SCENE, &origin) {
+                    Ok(scene) => {
+                        let _ = self.open_scene(scene, origin); // reported
+                    }
+                    Err(e) => self.report(format!("Cannot open the sandbox: {e}")),
+                }
+            }
+        }
+        self.panels.focus = tile;
+        self.panels.docks_open = true;
+        self.panels.dock_expanded = true;
+        self.panels.tab = tile.tab();
+        self.clock.paused = false;
+        self.resume_after_modal();
+    }
+}

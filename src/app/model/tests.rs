@@ -1,0 +1,251 @@
+//! The model without a window: commands applied in sequence, and the state
+//! they leave.
+
+use super::command::{Dir, EditPlace, Law};
+use super::*;
+use impulse::Scene;
+
+/// A sandbox on preset `index` (1-based as on the keys: 1 … 9, 0 is 10),
+/// in a 1000 × 700 px world, autosave off, its recovery folder `dir`.
+fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
+    let preset = scenes::PRESETS
+        .iter()
+        .find(|p| p.path.ends_with(file))
+        .unwrap_or_else(|| panic!("no preset {file}"));
+    let scene = Scene::parse(preset.text, preset.path).unwrap();
+    let world = scene.build(preset.path).unwrap();
+    let mut s = Sandbox::new(Start {
+        scene,
+        origin: preset.path.to_string(),
+        world,
+        paused: true,
+        dt: None,
+        out: dir.join("out"),
+        recovery: (dir.to_path_buf(), 0.0),
+        scale: 1.0,
+        theme: Theme::Dark,
+        start_screen: false,
+    });
+    s.place_world([0.0, 0.0, 1000.0, 700.0]);
+    s.fit_camera();
+    s
+}
+
+fn levels(s: &Sandbox) -> usize {
+    s.undo.levels().0
+}
+
+/// Advances the window's clock by `seconds` (undo merges changes of one
+/// kind closer together than 0.75 s).
+fn later(s: &mut Sandbox, seconds: f64) {
+    let now = s.session.now + seconds;
+    s.begin_frame(now);
+}
+
+#[test]
+fn a_click_on_a_disc_selects_it_and_is_not_an_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    let before = s.fingerprint();
+    let at = s.view.camera.world_to_screen(s.world.particles[0].pos);
+    s.apply(Command::PointerDown(at));
+    later(&mut s, 0.1);
+    s.apply(Command::PointerUp(at));
+    assert_eq!(s.selected, Some(0));
+    assert_eq!(levels(&s), 0, "no undo level for a click");
+    assert!(!s.open.edited, "the caption still holds");
+    assert_eq!(s.fingerprint(), before, "the disc is exactly as it was");
+    // A click on empty space deselects, and changes nothing either.
+    let empty = s.view.camera.world_to_screen(glam::DVec2::new(0.3, 0.3));
+    s.apply(Command::PointerDown(empty));
+    s.apply(Command::PointerUp(empty));
+    assert_eq!(s.selected, None);
+    assert_eq!((levels(&s), s.open.edited), (0, false));
+}
+
+#[test]
+fn a_drag_launches_a_disc_that_undo_takes_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-empty.toml");
+    assert!(s.world.particles.is_empty());
+    let from = s.view.camera.world_to_screen(glam::DVec2::new(2.0, 2.0));
+    s.apply(Command::PointerDown(from));
+    later(&mut s, 0.05);
+    s.apply(Command::PointerMove(from + glam::DVec2::new(40.0, -30.0)));
+    s.apply(Command::PointerUp(from + glam::DVec2::new(80.0, -60.0)));
+    assert_eq!(s.world.particles.len(), 1);
+    assert!(s.world.particles[0].vel.x > 0.0 && s.world.particles[0].vel.y > 0.0);
+    assert_eq!((levels(&s), s.open.edited), (1, true));
+    later(&mut s, 1.0);
+    s.apply(Command::Undo);
+    assert!(s.world.particles.is_empty() && !s.open.edited);
+    s.apply(Command::Redo);
+    assert_eq!(s.world.particles.len(), 1);
+}
+
+#[test]
+fn commands_that_change_the_scene_can_be_undone_and_the_others_leave_no_level() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-8-gas.toml");
+    let quiet = [
+        Command::TogglePause,
+        Command::TogglePause,
+        Command::Faster,
+        Command::Slower,
+        Command::ToggleVelocity,
+        Command::ToggleMomentum,
+        Command::CycleReadouts,
+        Command::ToggleCenterOfMass,
+        Command::ToggleTrails,
+        Command::TogglePalette,
+        Command::ZoomIn,
+        Command::ZoomOut,
+        Command::Fit,
+        Command::ShowTab(DockTab::Discs),
+        Command::ToggleDocks,
+        Command::ToggleDocks,
+        Command::ToggleHelp,
+        Command::Escape,
+        Command::SetScale(1.5),
+        Command::SetTheme(Theme::Light),
+        Command::Select(Some(3)),
+        Command::SetNewMass(2.0),
+        Command::SizeFollowsMass(true),
+        Command::SizeFollowsMass(false),
+        // Setting a law to the value it has changes nothing.
+        Command::SetLaw(Law::Restitution, s.world.laws.restitution),
+        Command::SetMethod(s.world.method),
+    ];
+    for c in quiet {
+        later(&mut s, 1.0);
+        s.apply(c.clone());
+        assert_eq!(levels(&s), 0, "{c:?} left an undo level");
+    }
+    let original = s.fingerprint();
+    // Each of these changes the scene: one level each, and undo puts back
+    // exactly what was there.
+    let changes = [
+        Command::NudgeLaw(Law::Restitution, Dir::Down),
+        Command::SetLaw(Law::WallRestitution, 0.5),
+        Command::SetLaw(Law::Roughness, 0.3),
+        Command::SetFriction(Some(0.4)),
+        Command::ToggleGravity,
+        Command::SetBoundary(impulse::Boundary::Box),
+        Command::CycleMethod,
+        Command::CycleBroadPhase,
+        Command::CycleSubsteps,
+        Command::EditDisc {
+            disc: 2,
+            text: [Some("3".into()), None, Some("-1.5".into()), None],
+            from: EditPlace::Table,
+        },
+        Command::Select(Some(4)),
+        Command::DeleteSelected,
+        Command::Clear,
+        Command::OpenPreset(0),
+    ];
+    let mut expected = 0;
+    let mut prints = vec![s.fingerprint()];
+    for c in changes {
+        later(&mut s, 1.0);
+        let before = s.fingerprint();
+        s.apply(c.clone());
+        if s.fingerprint() != before {
+            expected += 1;
+            prints.push(s.fingerprint());
+        }
+        assert_eq!(levels(&s), expected, "{c:?}");
+    }
+    assert!(
+        expected >= 12,
+        "the commands above change the scene: {expected}"
+    );
+    for k in (0..expected).rev() {
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        assert_eq!(s.fingerprint(), prints[k], "undo {k}");
+    }
+    assert_eq!(s.fingerprint(), original);
+    for (k, print) in prints.iter().enumerate().skip(1) {
+        s.apply(Command::Redo);
+        assert_eq!(s.fingerprint(), *print, "redo {k}");
+    }
+}
+
+#[test]
+fn a_bad_edit_is_refused_where_it_was_typed_and_changes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    let before = s.fingerprint();
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [Some("-2".into()), None, None, None],
+        from: EditPlace::Table,
+    });
+    assert_eq!(s.fingerprint(), before);
+    assert_eq!(levels(&s), 0);
+    let note = s.messages.table.clone().unwrap();
+    assert!(note.error && note.text.contains("more than 0"), "{note:?}");
+    assert!(s.messages.fields.is_none(), "said where it was typed");
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [Some("2.5".into()), None, None, None],
+        from: EditPlace::Fields,
+    });
+    assert_eq!(s.world.particles[0].mass, 2.5);
+    assert!(s.open.edited && levels(&s) == 1);
+    assert!(!s.messages.fields.clone().unwrap().error);
+}
+
+#[test]
+fn a_waiting_question_pauses_the_simulation_and_only_its_answers_go_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let kept = scenes::PRESETS[0].text;
+    std::fs::write(dir.path().join(recovery::FILE_NAME), kept).unwrap();
+    let preset = &scenes::PRESETS[7];
+    let scene = Scene::parse(preset.text, preset.path).unwrap();
+    let world = scene.build(preset.path).unwrap();
+    let mut s = Sandbox::new(Start {
+        scene,
+        origin: preset.path.into(),
+        world,
+        paused: false,
+        dt: None,
+        out: dir.path().join("out"),
+        recovery: (dir.path().to_path_buf(), 5.0),
+        scale: 1.0,
+        theme: Theme::Dark,
+        start_screen: false,
+    });
+    assert!(
+        s.modal_open() && s.clock.paused,
+        "paused behind the question"
+    );
+    let t = s.world.time;
+    s.tick(1.0 / 60.0, 1.0);
+    s.apply(Command::TogglePause);
+    s.apply(Command::OpenPreset(2));
+    s.tick(1.0 / 60.0, 1.0);
+    assert_eq!(s.world.time, t, "nothing ran and nothing opened");
+    assert!(s.clock.paused);
+    // R answers it: the kept sandbox opens and runs again.
+    s.apply(Command::Reset);
+    assert!(!s.modal_open() && !s.clock.paused);
+    assert_eq!(s.world.particles.len(), 2, "preset 1's two discs");
+}
+
+#[test]
+fn the_bindings_name_every_command_a_key_gives_and_the_tooltips_follow() {
+    use super::bindings::{command_for, tooltip, Key, Trigger};
+    for (key, cmd) in [
+        (Key::Letter('J'), Command::NextCollision),
+        (Key::Letter('T'), Command::ShowTab(DockTab::Totals)),
+        (Key::F(2), Command::NextScale),
+    ] {
+        assert_eq!(
+            command_for(key, false, false, Trigger::Press),
+            Some(cmd.clone())
+        );
+        assert!(!tooltip(&cmd).is_empty());
+    }
+}

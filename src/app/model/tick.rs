@@ -1,0 +1,203 @@
+//! Time passing: each frame's physics steps within their budget, then what
+//! is recorded of them (the totals, the trails, the rewind history) and
+//! autosave; "next collision" and the rewind, which move time by command.
+
+use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
+use super::{scenes, totals, DockTab, Sandbox};
+use crate::app::numbers::{vector, with_unit};
+
+impl Sandbox {
+    /// One frame of `frame_seconds` of real time: runs the steps the clock
+    /// asks for as long as they fit in `budget` seconds of wall clock (at
+    /// least one; the rest are dropped, so a machine that cannot keep up
+    /// runs the simulation slower instead of dropping frames), records the
+    /// totals, trails and history, keeps a fitted view fitted and autosaves.
+    pub fn tick(&mut self, frame_seconds: f64, budget: f64) {
+        let running = !self.clock.paused;
+        let due = self.clock.advance(frame_seconds);
+        let start = impulse::clock::Instant::now();
+        let mut steps = 0;
+        // Small scenes: the totals just before and after each step with an
+        // impact, so the plot drops at the instant of an inelastic collision.
+        let sample_collisions = self.world.particles.len() <= totals::SAMPLE_COLLISIONS_MAX_DISCS;
+        while steps < due {
+            if steps > 0 && start.elapsed().as_secs_f64() >= budget {
+                break;
+            }
+            let before = sample_collisions.then(|| (self.world.time, self.world.metrics()));
+            let stats = self.world.step(self.clock.dt);
+            if let Some((t, m)) = before.filter(|_| stats.pair_collisions + stats.wall_hits > 0) {
+                self.record.totals.push_at(t, &self.world, &m);
+                let now = self.world.metrics();
+                self.record.totals.push(&self.world, &now);
+            }
+            if stats.separated_pairs > 0 {
+                self.toast_separated(stats.separated_pairs, stats.separation_energy);
+            }
+            self.pointer.pin_held(&mut self.world);
+            let micros = &mut self.steps.step_micros;
+            micros.push_back(stats.timings.total().as_secs_f64() * 1e6);
+            if micros.len() > 240 {
+                micros.pop_front();
+            }
+            steps += 1;
+        }
+        self.steps.steps_last_frame = steps;
+        self.steps.steps_dropped = due - steps;
+        self.after_steps(steps);
+        if self.view.fitted && self.follows_discs() {
+            self.fit_camera();
+        }
+        let simulated = self.world.time;
+        let now = self.session.now;
+        self.steps
+            .realtime
+            .push(now, simulated, running && !self.clock.paused);
+        self.autosave();
+    }
+
+    /// Says that `exact` pushed `pairs` overlapping pairs apart as it took
+    /// the discs over, and the potential energy that added (J): the energy
+    /// readout jumps, and this is why.
+    fn toast_separated(&mut self, pairs: usize, energy: f64) {
+        let pairs = if pairs == 1 {
+            "1 overlapping pair".to_string()
+        } else {
+            format!("{pairs} overlapping pairs")
+        };
+        let energy = if energy.abs() < 1e-9 {
+            String::new()
+        } else if energy > 0.0 {
+            format!(", which raised the energy by {energy:.3} J")
+        } else {
+            format!(", which lowered the energy by {:.3} J", -energy)
+        };
+        self.toast_for(
+            format!("exact needs discs apart: it separated {pairs} of discs{energy}"),
+            6.0,
+        );
+    }
+
+    /// After the frame's steps: keep the ledger on, sample the totals and
+    /// record the moment for rewinding. A world that went back in time (a
+    /// new scene, a reset) starts its history afresh.
+    fn after_steps(&mut self, steps: u32) {
+        if !self.world.ledger.is_on() {
+            self.world.ledger.keep(LEDGER_KEEP);
+        }
+        let record = &mut self.record;
+        let newest = record.history.span().map(|(_, t)| t);
+        if record.history.cursor().is_none() && newest.is_some_and(|t| t > self.world.time) {
+            record.history.clear();
+        }
+        let metrics = self.world.metrics();
+        record.totals.push(&self.world, &metrics);
+        record.trails.record(&self.world);
+        if steps > 0 || record.history.is_empty() {
+            record.history.record(&self.world);
+        }
+    }
+
+    /// Forgets the recorded past (a new scene, a reset, a cleared box): a
+    /// rewind must never bring back discs of another scene.
+    pub(super) fn forget_past(&mut self) {
+        self.record.history.clear();
+        self.record.totals.clear();
+        self.world.ledger.clear();
+    }
+
+    /// Runs to the next collision and pauses there, the ledger open.
+    pub(super) fn run_to_next_collision(&mut self) {
+        self.clock.paused = true;
+        if !self.world.ledger.is_on() {
+            self.world.ledger.keep(LEDGER_KEEP);
+        }
+        let found = self
+            .world
+            .run_to_next_collision(self.clock.dt, NEXT_COLLISION_LIMIT);
+        self.record.history.record(&self.world);
+        self.overlays.contact = true;
+        self.panels.docks_open = true;
+        self.panels.dock_expanded = true;
+        self.panels.tab = DockTab::Collisions;
+        match found {
+            Some(c) => {
+                let (dp, dke) = c.total_change();
+                self.toast(format!(
+                    "Collision of discs {} and {} at t = {}: total momentum changed by {}, kinetic energy by {}",
+                    c.discs[0],
+                    c.discs[1],
+                    with_unit(c.time, 4, "s"),
+                    vector(dp, 3, "kg·m/s"),
+                    with_unit(dke, 3, "J")
+                ));
+            }
+            None => self.toast(format!("No collision within {NEXT_COLLISION_LIMIT:.0} s")),
+        }
+    }
+
+    /// Shows an earlier (or later) recorded moment; pauses.
+    pub(super) fn scrub(&mut self, delta: isize) {
+        self.clock.paused = true;
+        self.pointer.cancel();
+        match self.record.history.scrub(&mut self.world, delta) {
+            Some(t) => {
+                // The snapshot brought back its ledger and counters; the
+                // plot keeps what led up to this moment.
+                let (oldest, newest) = self.record.history.span().unwrap_or((t, t));
+                self.toast(format!(
+                    "Rewound to t = {t:.3} s (recorded: {oldest:.3} to {newest:.3} s); Space resumes from here"
+                ));
+            }
+            None => self.toast("Nothing recorded yet"),
+        }
+    }
+
+    /// Saves the next frame as a PNG in the output folder (F12).
+    pub(super) fn request_screenshot(&mut self) {
+        let stem = scenes::slug(self.open.scene.name.as_deref().unwrap_or("scene"));
+        self.requests.screenshot = Some(scenes::free_file(&self.session.out, &stem, "png"));
+    }
+
+    /// Writes the totals, the discs and the ledger as CSV files.
+    pub(super) fn export_data(&mut self) {
+        let stem = scenes::slug(self.open.scene.name.as_deref().unwrap_or("scene"));
+        let samples: Vec<totals::Sample> = self.record.totals.samples().copied().collect();
+        let dir = self.session.out.clone();
+        if cfg!(target_arch = "wasm32") {
+            for (name, text) in super::export::files(&stem, &samples, &self.world) {
+                let (stem, _) = name.rsplit_once('.').unwrap_or((&name, ""));
+                let _ = scenes::keep_file(&dir, stem, "csv", text.as_bytes()); // downloads
+            }
+            self.toast("Downloaded the totals, discs and collisions as CSV files");
+            return;
+        }
+        match super::export::export_all(&dir, &stem, &samples, &self.world) {
+            Ok(files) => {
+                eprintln!(
+                    "impulse: exported {} files to {}",
+                    files.len(),
+                    dir.display()
+                );
+                self.toast(format!(
+                    "Exported totals, discs and collisions to {}/",
+                    dir.display()
+                ));
+            }
+            Err(e) => self.report(format!("Not exported to {}: {e}", dir.display())),
+        }
+    }
+
+    /// In the centre-of-mass view: the camera follows the centre of mass,
+    /// and the world as drawn has velocities relative to it.
+    pub fn world_as_seen(&mut self) -> Option<impulse::World> {
+        let offset = self.overlays.com_view?;
+        let m = self.world.metrics();
+        self.view.camera.center = m.center_of_mass + offset;
+        let mut seen = self.world.clone();
+        for p in &mut seen.particles {
+            p.vel -= m.center_of_mass_velocity;
+        }
+        Some(seen)
+    }
+}

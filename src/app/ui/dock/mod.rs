@@ -1,0 +1,95 @@
+//! The bottom dock: a row of tabs (fixed height) and the chosen tab under
+//! it, in the height the layout grants (its content scrolls or shrinks in
+//! it). Each tab is a [`View`] in a file of its own, listed once in
+//! [`tabs`]: *Totals* plots p_x, p_y, L and the energy against time;
+//! *Collisions* is the ledger; *Discs* the table of every disc; *Speeds*
+//! the histogram against Maxwell–Boltzmann; *Momenta* every disc's
+//! momentum tip to tail and their sum.
+
+mod collisions;
+pub mod discs;
+mod momenta;
+mod plots;
+mod speeds;
+mod totals;
+
+use super::{Cx, View};
+use crate::app::model::{Command, DockTab};
+use egui::RichText;
+
+/// Every tab, in the row's order: its key in the model and its view.
+fn tabs() -> Vec<(DockTab, Box<dyn View>)> {
+    vec![
+        (DockTab::Totals, Box::new(totals::Totals)),
+        (DockTab::Collisions, Box::new(collisions::Collisions)),
+        (DockTab::Discs, Box::new(discs::DiscsTable::default())),
+        (DockTab::Speeds, Box::new(speeds::Speeds)),
+        (DockTab::Momenta, Box::new(momenta::Momenta)),
+    ]
+}
+
+/// The dock's tabs, each with its own state.
+pub struct BottomDock {
+    tabs: Vec<(DockTab, Box<dyn View>)>,
+}
+
+impl BottomDock {
+    pub fn new() -> Self {
+        BottomDock { tabs: tabs() }
+    }
+
+    /// The chosen tab (if `content`) and, under it at the window's bottom
+    /// edge, the tab row, `row` points high: a tab clicked never moves.
+    pub fn show(&mut self, ui: &mut egui::Ui, cx: &mut Cx, row: f32, content: bool) {
+        let model = cx.model;
+        let expanded = model.panels.dock_expanded && content;
+        let full = ui.max_rect();
+        let split = full.bottom() - row;
+        let row_rect = egui::Rect::from_min_max(egui::pos2(full.left(), split), full.max);
+        if expanded {
+            let area = egui::Rect::from_min_max(full.min, egui::pos2(full.right(), split - 4.0));
+            let mut tab = ui.new_child(egui::UiBuilder::new().max_rect(area));
+            tab.set_clip_rect(area.intersect(ui.clip_rect()));
+            let chosen = model.panels.tab;
+            if let Some((_, view)) = self.tabs.iter_mut().find(|(t, _)| *t == chosen) {
+                view.ui(&mut tab, cx);
+            }
+        }
+        let mut strip = ui.new_child(
+            egui::UiBuilder::new()
+                .max_rect(row_rect)
+                .layout(egui::Layout::left_to_right(egui::Align::Center)),
+        );
+        strip.set_clip_rect(row_rect.intersect(ui.clip_rect()));
+        for (tab, _) in &self.tabs {
+            let chosen = model.panels.tab == *tab && expanded;
+            let r = strip.selectable_label(chosen, RichText::new(tab.title()).strong());
+            cx.note(format!("tab_{}", tab.title().to_lowercase()), &r);
+            let tip = crate::app::model::bindings::tooltip(&Command::ShowTab(*tab));
+            let r = if tip.is_empty() {
+                r
+            } else {
+                r.on_hover_text(tip)
+            };
+            if r.clicked() {
+                cx.send(Command::ClickTab(*tab));
+            }
+        }
+        strip.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            let label = if model.panels.dock_expanded {
+                "Hide"
+            } else {
+                "Show"
+            };
+            let r = ui.button(label);
+            cx.note("dock_toggle", &r);
+            if r.clicked() {
+                cx.send(Command::ToggleDockExpanded);
+            }
+            if model.panels.dock_expanded && !content {
+                ui.add(egui::Label::new("no room here: L hides the side panel").truncate());
+            }
+        });
+        ui.allocate_rect(full, egui::Sense::hover());
+    }
+}

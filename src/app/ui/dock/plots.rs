@@ -1,0 +1,145 @@
+//! What the dock's plots share: the series' colours (Okabe–Ito), a plot
+//! that holds still, a y range that shows a conserved total as a flat line,
+//! the speed histogram, and a series named in its colour.
+
+use crate::app::model::totals::{RimHistogram, SpeedHistogram};
+use crate::app::numbers::plain;
+use egui::{Color32, RichText};
+use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotPoints};
+
+/// Colours of the plotted totals (Okabe–Ito).
+pub const PX_COLOR: Color32 = Color32::from_rgb(86, 180, 233); // sky blue
+pub const PY_COLOR: Color32 = Color32::from_rgb(230, 159, 0); // orange
+pub const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
+pub const ROT_COLOR: Color32 = Color32::from_rgb(213, 94, 0); // vermillion
+pub const L_COLOR: Color32 = Color32::from_rgb(204, 121, 167); // reddish purple
+pub const RIM_COLOR: Color32 = L_COLOR;
+/// Below this height (points) a plot has no room for its legend box.
+pub const COMPACT_PLOT_HEIGHT: f32 = 110.0;
+
+/// The speed histogram against Maxwell–Boltzmann; with `rims`, each bin's
+/// rim-speed bar beside its speed bar, and the rim speeds' law.
+pub fn speed_plot(
+    ui: &mut egui::Ui,
+    h: &SpeedHistogram,
+    rims: Option<&RimHistogram>,
+    height: f32,
+    legend: bool,
+) {
+    // Side by side within a bin when both are drawn.
+    let (offset, width) = if rims.is_some() {
+        (0.28, 0.42)
+    } else {
+        (0.5, 0.9)
+    };
+    let bars: Vec<Bar> = h
+        .density
+        .iter()
+        .enumerate()
+        .map(|(k, &d)| Bar::new((k as f64 + offset) * h.bin_width, d).width(h.bin_width * width))
+        .collect();
+    let top = h.bin_width * h.density.len() as f64;
+    let curve = |law: &dyn Fn(f64) -> f64| -> Vec<[f64; 2]> {
+        (0..=200)
+            .map(|k| top * k as f64 / 200.0)
+            .map(|v| [v, law(v)])
+            .collect()
+    };
+    let law = curve(&|v| h.law(v));
+    let rim = rims.map(|r| {
+        let bars: Vec<Bar> = r
+            .density
+            .iter()
+            .enumerate()
+            .map(|(k, &d)| {
+                Bar::new((k as f64 + 1.0 - offset) * h.bin_width, d).width(h.bin_width * width)
+            })
+            .collect();
+        (bars, curve(&|u| r.law(u)))
+    });
+    let (x_label, speed_name) = if rim.is_some() {
+        ("speed, rim speed (m/s)", "speeds |v|")
+    } else {
+        ("speed (m/s)", "discs")
+    };
+    let plot = still_plot("speeds_plot").height(height);
+    let plot = if legend {
+        plot.legend(Legend::default().position(Corner::RightTop))
+    } else {
+        plot
+    };
+    plot.x_axis_label(x_label)
+        .y_axis_label("per m/s")
+        .include_y(0.0)
+        .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
+        .show(ui, |plot| {
+            plot.bar_chart(BarChart::new(bars).name(speed_name).color(PX_COLOR));
+            plot.line(
+                Line::new(PlotPoints::from(law))
+                    .name("Maxwell–Boltzmann")
+                    .color(PY_COLOR)
+                    .width(3.0),
+            );
+            if let Some((bars, law)) = rim {
+                plot.bar_chart(
+                    BarChart::new(bars)
+                        .name("rim speeds |ω|·r")
+                        .color(RIM_COLOR),
+                );
+                plot.line(
+                    Line::new(PlotPoints::from(law))
+                        .name("rim speeds, shared equally")
+                        .color(RIM_COLOR)
+                        .style(LineStyle::dashed_loose())
+                        .width(3.0),
+                );
+            }
+        });
+}
+
+/// A plot's series named in its colour, in the line above the plot.
+pub fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
+    ui.label(RichText::new(name).color(color).strong())
+}
+
+/// A plot that holds still: no scrolling, dragging or zooming, which in a
+/// live plot would only lose the view (hover still reads values).
+pub fn still_plot(id: &str) -> Plot<'static> {
+    Plot::new(id)
+        // Never taller than the dock leaves it (egui_plot's least is 64
+        // points, which grew a short dock over the world).
+        .min_size(egui::vec2(40.0, 16.0))
+        .allow_scroll(false)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_boxed_zoom(false)
+}
+
+/// A y range that shows a conserved total as a flat line, not its rounding
+/// noise magnified: at least ±5 % of the values' size (or ±0.01) around them.
+pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (-1.0, 1.0);
+    }
+    let size = lo.abs().max(hi.abs());
+    let pad = (0.1 * (hi - lo)).max(0.05 * size).max(0.01);
+    (lo - pad, hi + pad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::padded_range;
+
+    #[test]
+    fn a_conserved_total_gets_a_range_wider_than_its_noise() {
+        let (lo, hi) = padded_range([2.0, 2.0 + 1e-15, 2.0 - 1e-15].into_iter());
+        assert!(hi - lo >= 0.2 - 1e-12, "{lo} {hi}");
+        assert!(lo < 2.0 && hi > 2.0);
+        assert_eq!(padded_range(std::iter::empty()), (-1.0, 1.0));
+        let (lo, hi) = padded_range([0.0, 0.0].into_iter());
+        assert!((lo + 0.01).abs() < 1e-12 && (hi - 0.01).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,163 @@
+//! The *Totals* tab: the total momentum (p_x, p_y), the angular momentum L
+//! and the energy against time, each in its own plot, with the change since
+//! the record began above them.
+
+use super::super::{Cx, View};
+use super::plots::*;
+use crate::app::model::overlays::spin_shown;
+use crate::app::numbers::{plain, vector, with_unit};
+use egui::RichText;
+use egui_plot::{Corner, Legend, Line, PlotPoints};
+
+/// The tab (no state of its own).
+pub struct Totals;
+
+impl View for Totals {
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
+        let model = cx.model;
+        let samples: Vec<_> = model.record.totals.samples().copied().collect();
+        let spin = spin_shown(&model.world);
+        // A short dock (a laptop's browser) leaves the plots too low for a
+        // legend box inside them, which then covered the line above: the
+        // series are named in coloured words beside it instead (p in
+        // kg·m/s, L in kg·m²/s, energies in J, as the line says), and the
+        // line is put in symbols, so that both fit on one line.
+        let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
+        let energy_name = match (compact, spin) {
+            (true, _) => "ΔE",
+            (false, true) => "energy",
+            (false, false) => "kinetic energy",
+        };
+        let (p_name, l_name) = if compact {
+            ("Δp", "ΔL")
+        } else {
+            ("momentum", "angular momentum L")
+        };
+        let drift = match (model.record.totals.drift(), samples.first(), samples.last()) {
+            (Some(_), Some(a), Some(b)) => format!(
+                "change since {}: {p_name} {}, {l_name} {}, {energy_name} {}",
+                with_unit(a.time, 2, "s"),
+                vector(b.momentum - a.momentum, 3, "kg·m/s"),
+                with_unit(b.angular_momentum - a.angular_momentum, 3, "kg·m²/s"),
+                with_unit(b.energy() - a.energy(), 3, "J")
+            ),
+            _ => "No record yet: run the simulation.".to_string(),
+        };
+        let total_color = ui.visuals().strong_text_color();
+        // Each energy plotted: its name in the legend, in the compact line
+        // of names, and its colour.
+        let mut energies = vec![("KE", "KE", KE_COLOR)];
+        if spin {
+            energies.push(("rotational KE", "rotational KE", ROT_COLOR));
+            energies.push(("KE + rotational KE", "sum", total_color));
+        }
+        ui.horizontal_wrapped(|ui| {
+            ui.label(drift).on_hover_text(
+                "p: momentum. L: angular momentum about the corner (0, 0) of the box; \
+                 collisions between discs keep it, a wall's push can change it. \
+                 E: kinetic energy, with spin KE + rotational KE.",
+            );
+            if compact {
+                let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
+                let short = energies.iter().map(|&(_, name, color)| (name, color));
+                for (name, color) in names.into_iter().chain(short) {
+                    ui.label(RichText::new(format!("— {name}")).color(color).strong());
+                }
+            }
+        });
+        let height = ui.available_height();
+        let legend = |corner| (!compact).then(|| Legend::default().position(corner));
+        let series = |value: fn(&crate::app::model::totals::Sample) -> f64| -> Vec<[f64; 2]> {
+            samples.iter().map(|s| [s.time, value(s)]).collect()
+        };
+        let (px, py, l) = (
+            series(|s| s.momentum.x),
+            series(|s| s.momentum.y),
+            series(|s| s.angular_momentum),
+        );
+        let energy_series = [
+            series(|s| s.kinetic_energy),
+            series(|s| s.rotational_energy),
+            series(|s| s.energy()),
+        ];
+        ui.columns(3, |columns| {
+            let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
+            let plot = still_plot("momentum_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
+                // Too low for a rotated label: the line above gives the units.
+                .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
+                .include_y(lo)
+                .include_y(hi)
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
+                })
+                .show(&mut columns[0], |plot| {
+                    plot.line(
+                        Line::new(PlotPoints::from(px))
+                            .name("p_x")
+                            .color(PX_COLOR)
+                            .width(2.5),
+                    );
+                    plot.line(
+                        Line::new(PlotPoints::from(py))
+                            .name("p_y")
+                            .color(PY_COLOR)
+                            .width(2.5),
+                    );
+                });
+            let (lo, hi) = padded_range(l.iter().map(|p| p[1]));
+            let plot = still_plot("angular_momentum_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
+                .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
+                .include_y(lo)
+                .include_y(hi)
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} kg·m²/s", plain(v.x, 2), plain(v.y, 3))
+                })
+                .show(&mut columns[1], |plot| {
+                    plot.line(
+                        Line::new(PlotPoints::from(l))
+                            .name("L")
+                            .color(L_COLOR)
+                            .width(2.5),
+                    );
+                });
+            let shown = &energy_series[..energies.len()];
+            let (lo, hi) = padded_range(shown.iter().flatten().map(|p| p[1]));
+            let plot = still_plot("energy_plot").height(height);
+            let plot = match legend(Corner::RightBottom) {
+                Some(l) => plot.legend(l),
+                None => plot,
+            };
+            plot.x_axis_label("time (s)")
+                .y_axis_label(match (compact, spin) {
+                    (true, _) => "",
+                    (false, true) => "energy (J)",
+                    (false, false) => "KE (J)",
+                })
+                .include_y(lo)
+                .include_y(hi)
+                .label_formatter(|name, v| {
+                    format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
+                })
+                .show(&mut columns[2], |plot| {
+                    for ((name, _, color), points) in energies.iter().zip(shown) {
+                        plot.line(
+                            Line::new(PlotPoints::from(points.clone()))
+                                .name(*name)
+                                .color(*color)
+                                .width(2.5),
+                        );
+                    }
+                });
+        });
+    }
+}

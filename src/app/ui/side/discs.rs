@@ -1,0 +1,145 @@
+//! *New discs* (radius and mass of the next launch, or radius from mass)
+//! and *Selected disc* (its mass, radius and velocity as text fields that
+//! follow the disc until typed in; Apply or Enter sends the edit).
+
+use super::super::widgets::{command_button, select_all_on_focus, show_note, slider};
+use super::Cx;
+use crate::app::model::command::EditPlace;
+use crate::app::model::gesture::radius_for_mass;
+use crate::app::model::Command;
+use crate::app::numbers::{field, with_unit};
+use egui::Ui;
+
+/// The selected disc's text fields.
+#[derive(Default)]
+pub struct DiscFields {
+    /// Which disc they were filled from.
+    disc: Option<usize>,
+    /// What the fields hold.
+    text: [String; 4],
+    /// What the disc had when a field was last filled: a field whose text
+    /// differs has been edited and stops following the disc.
+    shown: [String; 4],
+    /// An edit was sent: once the model has answered, fields that it
+    /// took follow the disc again.
+    sent: bool,
+}
+
+const FIELD_LABELS: [&str; 4] = ["mass (kg)", "radius (m)", "v_x (m/s)", "v_y (m/s)"];
+const FIELD_KEYS: [&str; 4] = ["disc_mass", "disc_radius", "disc_vx", "disc_vy"];
+
+/// Radius and mass of the next disc launched.
+pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
+    ui.label("Drag on empty space to launch one.");
+    let follows = cx.model.new_discs.size_follows_mass;
+    let mut on = follows;
+    let r = ui
+        .checkbox(&mut on, "size follows mass (same density)")
+        .on_hover_text(
+            "a 1 kg disc is 0.4 m in radius; the radius grows as √m, for new discs and mass edits",
+        );
+    cx.note("size_follows_mass", &r);
+    if r.changed() {
+        cx.send(Command::SizeFollowsMass(on));
+    }
+    let biggest = cx.model.biggest_radius();
+    let disc = cx.model.new_discs.disc;
+    if follows {
+        let r = radius_for_mass(disc.mass).min(biggest);
+        ui.label(format!("Radius {} (from the mass)", with_unit(r, 2, "m")));
+    } else {
+        let mut r = disc.radius;
+        let (track, changed) = slider(
+            ui,
+            "Radius",
+            &mut r,
+            0.05..=2.0f64.min(biggest).max(0.06),
+            true,
+            2,
+            " m",
+        );
+        if changed {
+            cx.send(Command::SetNewRadius(r));
+        }
+        cx.note("new_radius", &track.on_hover_text("PgUp / PgDn"));
+    }
+    let mut m = disc.mass;
+    let (track, changed) = slider(ui, "Mass", &mut m, 0.01..=100.0, true, 2, " kg");
+    if changed {
+        cx.send(Command::SetNewMass(m));
+    }
+    cx.note("new_mass", &track.on_hover_text("Home / End"));
+}
+
+impl DiscFields {
+    /// The selected disc's fields, Apply and Delete.
+    pub fn ui(&mut self, ui: &mut Ui, cx: &mut Cx) {
+        let Some(i) = cx.model.selected_disc() else {
+            self.disc = None;
+            ui.label("None: click a disc to select it.");
+            return;
+        };
+        let p = cx.model.world.particles[i];
+        if self.disc != Some(i) {
+            *self = DiscFields {
+                disc: Some(i),
+                ..DiscFields::default()
+            };
+        }
+        // The model took the last edit: every field follows the disc again.
+        if std::mem::take(&mut self.sent)
+            && cx.model.messages.fields.as_ref().is_some_and(|n| !n.error)
+        {
+            self.shown = self.text.clone();
+        }
+        // Untouched fields follow the disc as it moves.
+        let live = [p.mass, p.radius, p.vel.x, p.vel.y].map(field);
+        for (k, value) in live.into_iter().enumerate() {
+            if self.text[k] == self.shown[k] {
+                self.text[k] = value.clone();
+                self.shown[k] = value;
+            }
+        }
+        let mut enter = false;
+        egui::Grid::new("selected_fields")
+            .num_columns(2)
+            .show(ui, |ui| {
+                for k in 0..4 {
+                    let r =
+                        ui.add(egui::TextEdit::singleline(&mut self.text[k]).desired_width(100.0));
+                    select_all_on_focus(ui, &r, &self.text[k]);
+                    cx.marks.text_field(&r);
+                    cx.note(FIELD_KEYS[k], &r);
+                    if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                        enter = true;
+                    }
+                    ui.label(FIELD_LABELS[k]);
+                    ui.end_row();
+                }
+            });
+        ui.horizontal(|ui| {
+            let r = ui.button("Apply").on_hover_text("Enter in a field");
+            cx.note("apply", &r);
+            if r.clicked() || enter {
+                self.apply(cx, i);
+            }
+            command_button(ui, cx, "Delete", Command::DeleteSelected, Some("delete"));
+        });
+        if let Some(note) = &cx.model.messages.fields {
+            show_note(ui, note);
+        }
+    }
+
+    /// Sends the edited fields as an edit of disc `i`; the model reads
+    /// them and answers under the fields.
+    fn apply(&mut self, cx: &mut Cx, i: usize) {
+        let text: [Option<String>; 4] =
+            std::array::from_fn(|k| (self.text[k] != self.shown[k]).then(|| self.text[k].clone()));
+        self.sent = true;
+        cx.send(Command::EditDisc {
+            disc: i,
+            text,
+            from: EditPlace::Fields,
+        });
+    }
+}

@@ -1,0 +1,271 @@
+//! The side dock (or, where the window is small, the drawer): the transport
+//! buttons and, in collapsible sections that scroll, what the collisions do
+//! (Collisions), what is drawn (Show), new discs, the selected disc, scene
+//! files, the view and, under *More*, the rough-disc laws and the solver's
+//! details. Every control that has a key says so in its tooltip, from the
+//! bindings table.
+//!
+//! - [`laws`]: the Collisions section and the advanced laws under More.
+//! - [`discs`]: New discs and Selected disc.
+//! - [`files`]: Scene, View and Details.
+
+mod discs;
+mod files;
+mod laws;
+
+use super::widgets::command_button;
+use super::{Cx, View};
+use crate::app::model::overlays::{spin_shown, ReadoutScope};
+use crate::app::model::start::{Section, Tile};
+use crate::app::model::Command;
+use egui::{CollapsingHeader, ComboBox, Ui};
+
+/// The side dock's own state: the fields being typed in.
+pub struct SideDock {
+    fields: discs::DiscFields,
+    /// The scene path field.
+    path: String,
+}
+
+impl SideDock {
+    pub fn new(path: String) -> Self {
+        SideDock {
+            fields: discs::DiscFields::default(),
+            path,
+        }
+    }
+}
+
+/// A collapsing section whose header is noted under `name`.
+fn section(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    (title, name, open): (&str, &str, bool),
+    body: impl FnOnce(&mut Ui, &mut Cx),
+) {
+    let r = CollapsingHeader::new(title)
+        .id_salt(name)
+        .default_open(open)
+        .show(ui, |ui| body(ui, cx));
+    cx.note(name, &r.header_response);
+}
+
+impl View for SideDock {
+    fn ui(&mut self, ui: &mut Ui, cx: &mut Cx) {
+        transport(ui, cx);
+        ui.separator();
+        let focus = cx.model.panels.focus;
+        let fields = &mut self.fields;
+        let path = &mut self.path;
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            if focus != Tile::FreePlay {
+                let line = format!(
+                    "The controls for {}; All controls, at the end, shows the rest.",
+                    focus.title()
+                );
+                ui.add(egui::Label::new(line).wrap());
+            }
+            let title = match cx.model.selected_disc() {
+                Some(i) => format!("Selected disc ({i})"),
+                None => "Selected disc".to_string(),
+            };
+            for s in SECTIONS {
+                if !focus.shows(s) {
+                    continue;
+                }
+                match s {
+                    Section::Collisions => {
+                        section(ui, cx, ("Collisions", "section_collisions", true), laws::laws)
+                    }
+                    Section::Show => section(ui, cx, ("Show", "section_show", true), show),
+                    Section::NewDiscs => section(
+                        ui,
+                        cx,
+                        ("New discs", "section_new_discs", false),
+                        discs::new_discs,
+                    ),
+                    Section::Selected => {
+                        section(ui, cx, (&title, "section_selected", false), |ui, cx| {
+                            fields.ui(ui, cx);
+                        })
+                    }
+                    Section::Scene => section(ui, cx, ("Scene", "section_scene", false), |ui, cx| {
+                        files::scene(ui, cx, path);
+                    }),
+                    Section::View => section(ui, cx, ("View", "section_view", false), files::view),
+                    Section::More => section(ui, cx, ("More", "section_more", false), |ui, cx| {
+                        ui.add(
+                            egui::Label::new(
+                                "For spinning discs, and for comparing how the computer works it out.",
+                            )
+                            .wrap(),
+                        );
+                        if !spin_shown(&cx.model.world) {
+                            laws::advanced(ui, cx);
+                            ui.separator();
+                        }
+                        files::details(ui, cx);
+                    }),
+                }
+            }
+            if focus != Tile::FreePlay {
+                command_button(ui, cx, "All controls", Command::ShowAllControls, Some("all_controls"));
+            }
+        });
+    }
+}
+
+/// The sections in the dock's order.
+const SECTIONS: [Section; 7] = [
+    Section::Collisions,
+    Section::Show,
+    Section::NewDiscs,
+    Section::Selected,
+    Section::Scene,
+    Section::View,
+    Section::More,
+];
+
+/// Play or pause, step, reset, undo, redo, slower, faster, presets, fit,
+/// help.
+fn transport(ui: &mut Ui, cx: &mut Cx) {
+    ui.horizontal_wrapped(|ui| {
+        let play = if cx.model.clock.paused {
+            "▶ Play"
+        } else {
+            "⏸ Pause"
+        };
+        command_button(ui, cx, play, Command::TogglePause, Some("play"));
+        command_button(ui, cx, "Step", Command::Step, Some("step"));
+        command_button(ui, cx, "⟲ Reset", Command::Reset, Some("reset"));
+        command_button(ui, cx, "Undo", Command::Undo, Some("undo"));
+        command_button(ui, cx, "Redo", Command::Redo, Some("redo"));
+        command_button(ui, cx, "« Slower", Command::Slower, None);
+        command_button(ui, cx, "Faster »", Command::Faster, None);
+        command_button(ui, cx, "Presets…", Command::TogglePresets, Some("presets"));
+        command_button(ui, cx, "Fit view", Command::Fit, None);
+        command_button(ui, cx, "? Help", Command::ToggleHelp, Some("help"));
+    });
+}
+
+/// A checkbox that sends `command` when clicked.
+fn toggle(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    on: bool,
+    label: &str,
+    command: Command,
+    hover: &str,
+) -> egui::Response {
+    let mut value = on;
+    let tip = crate::app::model::bindings::tooltip(&command);
+    let hover = match (hover.is_empty(), tip.is_empty()) {
+        (true, _) => tip,
+        (false, true) => hover.to_string(),
+        (false, false) => format!("{hover}\n{tip}"),
+    };
+    let mut r = ui.checkbox(&mut value, label);
+    if !hover.is_empty() {
+        r = r.on_hover_text(hover);
+    }
+    if r.clicked() {
+        cx.send(command);
+    }
+    r
+}
+
+/// What is drawn over the discs.
+fn show(ui: &mut Ui, cx: &mut Cx) {
+    let o = cx.model.overlays;
+    let names = crate::app::look::arrow_names(cx.model.panels.theme);
+    toggle(
+        ui,
+        cx,
+        o.velocity,
+        &format!("velocity arrows ({})", names.velocity),
+        Command::ToggleVelocity,
+        "where each disc will be half a second from now",
+    );
+    toggle(
+        ui,
+        cx,
+        o.momentum,
+        &format!("momentum arrows ({})", names.momentum),
+        Command::ToggleMomentum,
+        "momentum p = m·v: mass times velocity",
+    );
+    toggle(
+        ui,
+        cx,
+        o.delta_p,
+        &format!("Δp after a collision ({})", names.delta_p),
+        Command::ToggleDeltaP,
+        "each disc's change of momentum, for a second after each collision",
+    );
+    const SCOPES: [(ReadoutScope, &str); 3] = [
+        (ReadoutScope::Off, "none"),
+        (ReadoutScope::Selected, "selected disc"),
+        (ReadoutScope::All, "every disc"),
+    ];
+    let current = SCOPES
+        .iter()
+        .find(|(s, _)| *s == o.readouts)
+        .map_or("none", |(_, l)| l);
+    let tip = crate::app::model::bindings::tooltip(&Command::CycleReadouts);
+    ComboBox::from_label("values beside")
+        .selected_text(current)
+        .show_ui(ui, |ui| {
+            for (scope, label) in SCOPES {
+                if ui.selectable_label(o.readouts == scope, label).clicked() {
+                    cx.send(Command::SetReadouts(scope));
+                }
+            }
+        })
+        .response
+        .on_hover_text(format!("{tip}\nwhere labels would cover each other, some discs go without; the world says how many"));
+    toggle(
+        ui,
+        cx,
+        o.center_of_mass,
+        "centre of mass",
+        Command::ToggleCenterOfMass,
+        "the balance point of all the discs, and its velocity",
+    );
+    toggle(
+        ui,
+        cx,
+        cx.model.record.trails.on,
+        "path traces, a dot every 0.1 s",
+        Command::ToggleTrails,
+        "",
+    );
+    toggle(
+        ui,
+        cx,
+        o.safe_palette,
+        "colour-blind-safe",
+        Command::TogglePalette,
+        "",
+    );
+    ui.horizontal_wrapped(|ui| {
+        command_button(
+            ui,
+            cx,
+            "Next collision",
+            Command::NextCollision,
+            Some("next_collision"),
+        );
+        command_button(ui, cx, "◀ Back", Command::Scrub(-1), None);
+        command_button(ui, cx, "Forward ▶", Command::Scrub(1), None);
+        toggle(
+            ui,
+            cx,
+            o.com_view.is_some(),
+            "centre-of-mass view",
+            Command::ToggleCenterOfMassView,
+            "the view moves with the centre of mass and arrows show velocities \
+             relative to it; the experiment is not changed",
+        );
+    });
+}

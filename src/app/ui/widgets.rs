@@ -1,0 +1,128 @@
+//! Small widgets the panels share: a slider with its value box, a choice
+//! from a list, a line of feedback, a text field that selects its text when
+//! it gets the keyboard, and a button whose tooltip comes from the key
+//! bindings.
+
+use super::Cx;
+use crate::app::model::bindings;
+use crate::app::model::{Command, Note};
+use egui::{ComboBox, Slider, Ui};
+use std::fmt::Display;
+
+/// A button that sends `command` when clicked; its tooltip is the key that
+/// does the same, from the bindings table, and `hover` when given.
+pub fn command_button(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    label: impl Into<egui::WidgetText>,
+    command: Command,
+    name: Option<&str>,
+) -> egui::Response {
+    let tip = bindings::tooltip(&command);
+    let mut r = ui.button(label);
+    if !tip.is_empty() {
+        r = r.on_hover_text(tip);
+    }
+    if let Some(name) = name {
+        cx.note(name, &r);
+    }
+    if r.clicked() {
+        cx.send(command);
+    }
+    r
+}
+
+/// A combo box over `list`, showing `current` even when it is not in the
+/// list (a scene may ask for 3 substeps); returns the new choice.
+pub fn setting_combo<T: Copy + PartialEq + Display>(
+    ui: &mut Ui,
+    label: &str,
+    list: &[T],
+    current: T,
+) -> Option<T> {
+    let mut chosen = None;
+    ComboBox::from_label(label)
+        .selected_text(current.to_string())
+        .show_ui(ui, |ui| {
+            for &item in list {
+                if ui
+                    .selectable_label(item == current, item.to_string())
+                    .clicked()
+                {
+                    chosen = Some(item);
+                }
+            }
+        });
+    chosen.filter(|&c| c != current)
+}
+
+/// A slider under its label, as wide as the dock allows, with its value
+/// (and unit) in a box beside it that can also be dragged or typed into.
+/// Returns the track's response, so its rectangle is the track's, and
+/// whether the value changed.
+pub fn slider(
+    ui: &mut Ui,
+    label: &str,
+    value: &mut f64,
+    range: std::ops::RangeInclusive<f64>,
+    log: bool,
+    decimals: usize,
+    suffix: &str,
+) -> (egui::Response, bool) {
+    ui.add(egui::Label::new(label).wrap());
+    let value_box = 96.0;
+    ui.spacing_mut().slider_width = (ui.available_width() - value_box).max(60.0);
+    ui.horizontal(|ui| {
+        let track = ui.add(
+            Slider::new(value, range.clone())
+                .logarithmic(log)
+                .show_value(false),
+        );
+        let speed = if log {
+            0.01 * *value
+        } else {
+            0.005 * (range.end() - range.start())
+        };
+        let boxed = ui.add(
+            egui::DragValue::new(value)
+                .range(range)
+                .speed(speed)
+                .fixed_decimals(decimals)
+                .suffix(suffix),
+        );
+        let changed = track.changed() || boxed.changed();
+        (track, changed)
+    })
+    .inner
+}
+
+/// A red or green line of feedback.
+pub fn show_note(ui: &mut Ui, note: &Note) -> egui::Response {
+    let color = if note.error {
+        if ui.visuals().dark_mode {
+            egui::Color32::from_rgb(255, 120, 110)
+        } else {
+            egui::Color32::from_rgb(170, 0, 0)
+        }
+    } else if ui.visuals().dark_mode {
+        egui::Color32::from_rgb(120, 230, 140)
+    } else {
+        egui::Color32::from_rgb(0, 110, 30)
+    };
+    ui.add(egui::Label::new(egui::RichText::new(&note.text).color(color)).wrap())
+}
+
+/// Selects a text field's whole text when it gains the keyboard, so what is
+/// typed replaces the old value (typing 5 into "1" gives 5, not 51).
+pub fn select_all_on_focus(ui: &Ui, response: &egui::Response, text: &str) {
+    if response.gained_focus() {
+        if let Some(mut state) = egui::TextEdit::load_state(ui.ctx(), response.id) {
+            let all = egui::text::CCursorRange::two(
+                egui::text::CCursor::new(0),
+                egui::text::CCursor::new(text.chars().count()),
+            );
+            state.cursor.set_char_range(Some(all));
+            state.store(ui.ctx(), response.id);
+        }
+    }
+}
