@@ -264,7 +264,7 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|x| x == "csv"))
         .collect();
-    assert_eq!(csv.len(), 3, "{csv:?}");
+    assert_eq!(csv.len(), 4, "totals, discs, collisions, walls: {csv:?}");
 
     // F12 saves what the window shows into the same folder.
     app.xdo(&["key", "F12"]);

@@ -39,8 +39,10 @@ pub struct StateDump<'a> {
     pub history_len: usize,
     /// The snapshot shown while rewound.
     pub history_cursor: Option<usize>,
-    /// Collisions the ledger has recorded.
+    /// Collisions between discs the ledger has recorded.
     pub collisions_recorded: u64,
+    /// Impacts on walls the ledger has recorded.
+    pub wall_hits_recorded: u64,
     /// Impacts counted: between discs, and with walls.
     pub pair_collisions: u64,
     pub wall_hits: u64,
@@ -188,6 +190,7 @@ impl<'a> StateDump<'a> {
             history_len: 0,
             history_cursor: None,
             collisions_recorded: 0,
+            wall_hits_recorded: 0,
             pair_collisions: world.total_pair_collisions,
             wall_hits: world.total_wall_hits,
             resting_contacts: world.resting_contacts,
@@ -292,6 +295,7 @@ impl super::App {
         state.history_len = m.record.history.len();
         state.history_cursor = m.record.history.cursor();
         state.collisions_recorded = m.world.ledger.recorded;
+        state.wall_hits_recorded = m.world.ledger.recorded_walls;
         state.held = m.pointer.gesture.held();
         state.scene_name = m.open.scene.name.clone();
         state.scene_origin = m.open.origin.clone();

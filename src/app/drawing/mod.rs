@@ -55,9 +55,9 @@ impl Painter {
             draw_center_of_mass(world, camera, ARROW_SECONDS, look);
         }
         if model.overlays.contact {
-            if let Some(c) = model.world.ledger.last() {
-                if (model.world.time - c.time).abs() < 1e-9 {
-                    draw_contact(c, world, camera);
+            if let Some(impact) = model.world.ledger.last_impact() {
+                if (model.world.time - impact.time()).abs() < 1e-9 {
+                    draw_contact(impact, world, camera);
                 }
             }
         }
@@ -97,17 +97,33 @@ fn draw_trails(trails: &crate::app::model::trails::Trails, camera: &Camera) {
     }
 }
 
-/// At the instant of impact: the normal (orange) and tangent (blue) lines
-/// through the contact point.
-fn draw_contact(c: &impulse::ledger::Collision, world: &World, camera: &Camera) {
-    let (Some(a), Some(b)) = (
-        world.particles.get(c.discs[0]),
-        world.particles.get(c.discs[1]),
-    ) else {
-        return;
+/// At the instant of impact: the line of impact (orange) and the line
+/// across it (blue) through the point of contact, between two discs or
+/// where a disc meets a wall.
+fn draw_contact(impact: &impulse::ledger::Impact, world: &World, camera: &Camera) {
+    use impulse::ledger::Impact;
+    let (contact, normal, reach) = match impact {
+        Impact::Pair(c) => {
+            let (Some(a), Some(b)) = (
+                world.particles.get(c.discs[0]),
+                world.particles.get(c.discs[1]),
+            ) else {
+                return;
+            };
+            (
+                a.pos + c.normal * a.radius,
+                c.normal,
+                1.5 * a.radius.max(b.radius),
+            )
+        }
+        Impact::Wall(w) => {
+            let Some(p) = world.particles.get(w.disc) else {
+                return;
+            };
+            let n = w.normal();
+            (p.pos - n * p.radius, n, 1.5 * p.radius)
+        }
     };
-    let contact = a.pos + c.normal * a.radius;
-    let reach = 1.5 * a.radius.max(b.radius);
     let line = |dir: DVec2, color: Color| {
         let (p, q) = (
             camera.world_to_screen(contact - dir * reach),
@@ -115,8 +131,8 @@ fn draw_contact(c: &impulse::ledger::Collision, world: &World, camera: &Camera) 
         );
         draw_line(p.x as f32, p.y as f32, q.x as f32, q.y as f32, 3.0, color);
     };
-    line(c.normal, Color::new(0.84, 0.37, 0.0, 1.0));
-    line(c.normal.perp(), Color::new(0.34, 0.71, 0.91, 1.0));
+    line(normal, Color::new(0.84, 0.37, 0.0, 1.0));
+    line(normal.perp(), Color::new(0.34, 0.71, 0.91, 1.0));
 }
 
 fn px(v: DVec2) -> Vec2 {
@@ -387,9 +403,9 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
 /// How long a collision's Δp arrows stay (simulated seconds).
 pub const DELTA_P_SECONDS: f64 = 1.0;
 
-/// For [`DELTA_P_SECONDS`] after each recorded collision, each of its two
-/// discs carries its change of momentum m·(v′ − v), fading, on the momentum
-/// arrows' scale.
+/// For [`DELTA_P_SECONDS`] after each recorded impact, each disc in it
+/// carries its change of momentum m·(v′ − v) (at a wall: the wall's push),
+/// fading, on the momentum arrows' scale.
 fn draw_momentum_changes(
     world: &World,
     camera: &Camera,
@@ -398,8 +414,8 @@ fn draw_momentum_changes(
     clip: Option<(DVec2, DVec2)>,
 ) {
     let mut outline = color(look.colors.outline);
-    for c in world.ledger.entries() {
-        let age = world.time - c.time;
+    for impact in world.ledger.impacts() {
+        let age = world.time - impact.time();
         if !(0.0..=DELTA_P_SECONDS).contains(&age) {
             continue;
         }
@@ -407,11 +423,16 @@ fn draw_momentum_changes(
         let mut amber = color(look.colors.delta_p);
         amber.a *= fade;
         outline.a = fade;
-        for k in 0..2 {
-            let Some(p) = world.particles.get(c.discs[k]) else {
+        let changes: Vec<(usize, DVec2)> = match impact {
+            impulse::ledger::Impact::Pair(c) => (0..2)
+                .map(|k| (c.discs[k], c.masses[k] * (c.after[k] - c.before[k])))
+                .collect(),
+            impulse::ledger::Impact::Wall(w) => vec![(w.disc, w.wall_impulse())],
+        };
+        for (disc, dp) in changes {
+            let Some(p) = world.particles.get(disc) else {
                 continue;
             };
-            let dp = c.masses[k] * (c.after[k] - c.before[k]);
             let from = camera.world_to_screen(p.pos);
             let tip = from + camera.vector_to_screen(dp / mean_mass * ARROW_SECONDS);
             if from.distance(tip) >= 4.0 {

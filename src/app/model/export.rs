@@ -94,16 +94,52 @@ pub fn ledger_csv(ledger: &Ledger) -> String {
     out
 }
 
-/// The three files, named after `stem`: totals, discs, collisions.
-pub fn files(stem: &str, samples: &[Sample], world: &World) -> [(String, String); 3] {
+/// The wall impacts of the ledger: the disc, the wall, its momentum,
+/// kinetic energy and spin before and after, and the wall's push.
+pub fn wall_hits_csv(ledger: &Ledger) -> String {
+    let mut out = String::from(
+        "time_s,disc,wall,normal_x,normal_y,p_before_x,p_before_y,p_after_x,p_after_y,\
+         ke_before_j,ke_after_j,spin_before_rad_s,spin_after_rad_s,\
+         wall_impulse_x,wall_impulse_y\n",
+    );
+    for w in ledger.wall_hits() {
+        let n = w.normal();
+        let (p0, p1) = w.momentum();
+        let (e0, e1) = w.kinetic_energy();
+        let j = w.wall_impulse();
+        let _ = writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{e0},{e1},{},{},{},{}",
+            w.time,
+            w.disc,
+            w.wall.name(),
+            n.x,
+            n.y,
+            p0.x,
+            p0.y,
+            p1.x,
+            p1.y,
+            w.spin_before,
+            w.spin_after,
+            j.x,
+            j.y
+        );
+    }
+    out
+}
+
+/// The four files, named after `stem`: totals, discs, collisions between
+/// discs, impacts on walls.
+pub fn files(stem: &str, samples: &[Sample], world: &World) -> [(String, String); 4] {
     [
         (format!("{stem}-totals.csv"), totals_csv(samples)),
         (format!("{stem}-discs.csv"), particles_csv(world)),
         (format!("{stem}-collisions.csv"), ledger_csv(&world.ledger)),
+        (format!("{stem}-walls.csv"), wall_hits_csv(&world.ledger)),
     ]
 }
 
-/// Writes the three files into `dir` (created if needed), named after
+/// Writes the four files into `dir` (created if needed), named after
 /// `stem`; returns their paths.
 pub fn export_all(
     dir: &Path,
@@ -126,7 +162,30 @@ pub fn export_all(
 mod tests {
     use super::*;
     use glam::DVec2;
-    use impulse::ledger::Collision;
+    use impulse::ledger::{Collision, Wall, WallHit};
+
+    #[test]
+    fn wall_rows_carry_the_walls_push() {
+        let mut ledger = Ledger::default();
+        ledger.keep(4);
+        ledger.push(WallHit {
+            time: 2.0,
+            disc: 3,
+            wall: Wall::Left,
+            mass: 2.0,
+            radius: 0.5,
+            before: DVec2::new(-1.5, 0.25),
+            after: DVec2::new(1.5, 0.25),
+            spin_before: 0.0,
+            spin_after: 0.0,
+        });
+        let csv = wall_hits_csv(&ledger);
+        let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+        assert_eq!(&row[..3], ["2", "3", "left"]);
+        // The push is m·(v′ − v) = 2 · (3, 0).
+        assert_eq!(&row[row.len() - 2..], ["6", "0"]);
+        assert_eq!(csv.lines().count(), 2);
+    }
 
     #[test]
     fn ledger_rows_carry_the_totals_change() {
@@ -168,7 +227,7 @@ mod tests {
         assert_eq!(csv.lines().count(), 8);
         let dir = std::env::temp_dir().join(format!("impulse-export-{}", std::process::id()));
         let files = export_all(&dir, "gas", &[], &world).unwrap();
-        assert_eq!(files.len(), 3);
+        assert_eq!(files.len(), 4);
         assert!(files.iter().all(|f| f.exists()));
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -7,6 +7,21 @@ pub const LEDGER_KEEP: usize = 50;
 /// How far "run to the next collision" looks ahead (simulated seconds).
 pub const NEXT_COLLISION_LIMIT: f64 = 60.0;
 
+/// The impacts counted, the one count the top bar, the Collisions tab and
+/// the dump all give: "collisions: 1 between discs · 13 with walls" (walls
+/// only where there are any).
+pub fn count_line(world: &impulse::World) -> String {
+    let pairs = world.total_pair_collisions;
+    let walls = world.total_wall_hits;
+    let with_walls =
+        world.laws.boundary == impulse::Boundary::Box && !world.laws.walls.names().is_empty();
+    if with_walls {
+        format!("collisions: {pairs} between discs · {walls} with walls")
+    } else {
+        format!("collisions: {pairs} between discs")
+    }
+}
+
 /// For the π blocks (two discs, one wall, a mass ratio of 100^k): k, the
 /// number of decimals of π their collision count spells (31 for k = 1).
 pub fn pi_decimals(world: &impulse::World) -> Option<u32> {

@@ -249,3 +249,84 @@ fn the_bindings_name_every_command_a_key_gives_and_the_tooltips_follow() {
         assert!(!tooltip(&cmd).is_empty());
     }
 }
+
+/// Opens `file` of the presets in an existing sandbox.
+fn open(s: &mut Sandbox, file: &str) {
+    let k = scenes::PRESETS
+        .iter()
+        .position(|p| p.path.ends_with(file))
+        .unwrap();
+    s.apply(Command::OpenPreset(k));
+}
+
+#[test]
+fn next_collision_stops_at_a_wall_and_every_count_agrees() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-empty.toml");
+    // Two discs launched towards each other, off-centre, in the empty box.
+    for (from, to) in [((2.0, 2.0), (3.0, 2.4)), ((8.0, 3.0), (7.0, 2.8))] {
+        let a = s.view.camera.world_to_screen(glam::DVec2::from(from));
+        let b = s.view.camera.world_to_screen(glam::DVec2::from(to));
+        s.apply(Command::PointerDown(a));
+        later(&mut s, 0.05);
+        s.apply(Command::PointerUp(b));
+    }
+    assert_eq!(s.world.particles.len(), 2);
+    s.apply(Command::TogglePause);
+    for _ in 0..600 {
+        later(&mut s, 1.0 / 60.0);
+        s.tick(1.0 / 60.0, 1.0);
+    }
+    let w = &s.world;
+    assert!(
+        w.total_pair_collisions + w.total_wall_hits > 2,
+        "they met and bounced"
+    );
+    // One count, defined once: what the top bar says is what the ledger
+    // recorded.
+    assert_eq!(w.ledger.recorded, w.total_pair_collisions);
+    assert_eq!(w.ledger.recorded_walls, w.total_wall_hits);
+    let line = lesson::count_line(w);
+    assert!(line.contains(&format!("{} between discs", w.total_pair_collisions)));
+    assert!(line.contains(&format!("{} with walls", w.total_wall_hits)));
+    // J stops at the next impact, wall or disc, at its instant.
+    let walls = w.total_wall_hits;
+    let pairs = w.total_pair_collisions;
+    s.apply(Command::NextCollision);
+    let w = &s.world;
+    assert_eq!(
+        w.total_wall_hits + w.total_pair_collisions,
+        walls + pairs + 1
+    );
+    let newest = w.ledger.last_impact().unwrap();
+    assert!(
+        (newest.time() - w.time).abs() < 1e-9
+            || w.method != impulse::method::Setting::Fixed(impulse::method::Method::Exact)
+    );
+    assert!(s.clock.paused && s.panels.tab == DockTab::Collisions);
+}
+
+#[test]
+fn the_spin_preset_stops_at_its_bounce_in_every_method() {
+    use impulse::method::{Method, Setting};
+    let dir = tempfile::tempdir().unwrap();
+    for method in [
+        Setting::Auto,
+        Setting::Fixed(Method::Impulse),
+        Setting::Fixed(Method::Exact),
+    ] {
+        let mut s = sandbox_in(dir.path(), "preset-empty.toml");
+        open(&mut s, "preset-spin-off-a-wall.toml");
+        s.apply(Command::SetMethod(method));
+        s.apply(Command::NextCollision);
+        let impact = s.world.ledger.last_impact().copied();
+        let Some(impulse::ledger::Impact::Wall(hit)) = impact else {
+            panic!("{method}: no wall hit: {impact:?}, {:?}", s.message());
+        };
+        assert!(s.world.time < 10.0, "{method}: at {}", s.world.time);
+        // Off the wall: the velocity into it reversed.
+        let ((n0, _), (n1, _)) = hit.components();
+        assert!(n0 < 0.0 && n1 > 0.0, "{method}: {n0} → {n1}");
+        assert!(s.message().is_some_and(|m| m.contains("wall")), "{method}");
+    }
+}

@@ -14,6 +14,10 @@ impl Sandbox {
     /// totals, trails and history, keeps a fitted view fitted and autosaves.
     pub fn tick(&mut self, frame_seconds: f64, budget: f64) {
         let running = !self.clock.paused;
+        // On before the first step, so the ledger's counts are the world's.
+        if !self.world.ledger.is_on() {
+            self.world.ledger.keep(LEDGER_KEEP);
+        }
         let due = self.clock.advance(frame_seconds);
         let start = impulse::clock::Instant::now();
         let mut steps = 0;
@@ -30,6 +34,9 @@ impl Sandbox {
                 self.record.totals.push_at(t, &self.world, &m);
                 let now = self.world.metrics();
                 self.record.totals.push(&self.world, &now);
+                if stats.wall_hits > 0 {
+                    self.record.totals.mark_wall(self.world.time);
+                }
             }
             if stats.separated_pairs > 0 {
                 self.toast_separated(stats.separated_pairs, stats.separation_energy);
@@ -106,7 +113,8 @@ impl Sandbox {
         self.world.ledger.clear();
     }
 
-    /// Runs to the next collision and pauses there, the ledger open.
+    /// Runs to the next impact, between discs or on a wall, and pauses at
+    /// its instant, the ledger open.
     pub(super) fn run_to_next_collision(&mut self) {
         self.clock.paused = true;
         if !self.world.ledger.is_on() {
@@ -114,21 +122,32 @@ impl Sandbox {
         }
         let found = self
             .world
-            .run_to_next_collision(self.clock.dt, NEXT_COLLISION_LIMIT);
+            .run_to_next_impact(self.clock.dt, NEXT_COLLISION_LIMIT);
         self.record.history.record(&self.world);
         self.overlays.contact = true;
         self.panels.docks_open = true;
         self.panels.dock_expanded = true;
         self.panels.tab = DockTab::Collisions;
         match found {
-            Some(c) => {
+            Some(impulse::ledger::Impact::Pair(c)) => {
                 let (dp, dke) = c.total_change();
                 self.toast(format!(
-                    "Collision of discs {} and {} at t = {}: total momentum changed by {}, kinetic energy by {}",
+                    "Collision of discs {} and {} at t = {}: their total momentum changed by {}, their kinetic energy by {}",
                     c.discs[0],
                     c.discs[1],
                     with_unit(c.time, 4, "s"),
                     vector(dp, 3, "kg·m/s"),
+                    with_unit(dke, 3, "J")
+                ));
+            }
+            Some(impulse::ledger::Impact::Wall(w)) => {
+                let (_, dke) = w.total_change();
+                self.toast(format!(
+                    "Disc {} hit the {} wall at t = {}: the wall pushed it with {}; its kinetic energy changed by {}",
+                    w.disc,
+                    w.wall.name(),
+                    with_unit(w.time, 4, "s"),
+                    vector(w.wall_impulse(), 3, "kg·m/s"),
                     with_unit(dke, 3, "J")
                 ));
             }
@@ -169,7 +188,7 @@ impl Sandbox {
                 let (stem, _) = name.rsplit_once('.').unwrap_or((&name, ""));
                 let _ = scenes::keep_file(&dir, stem, "csv", text.as_bytes()); // downloads
             }
-            self.toast("Downloaded the totals, discs and collisions as CSV files");
+            self.toast("Downloaded the totals, discs, collisions and wall impacts as CSV files");
             return;
         }
         match super::export::export_all(&dir, &stem, &samples, &self.world) {
@@ -180,7 +199,7 @@ impl Sandbox {
                     dir.display()
                 );
                 self.toast(format!(
-                    "Exported totals, discs and collisions to {}/",
+                    "Exported totals, discs, collisions and wall impacts to {}/",
                     dir.display()
                 ));
             }

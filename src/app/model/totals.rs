@@ -10,6 +10,8 @@ use std::collections::VecDeque;
 /// Samples the plot keeps (one per frame, and two per step with a
 /// collision in small scenes: about 10 s at 60 fps).
 const MAX_SAMPLES: usize = 600;
+/// Wall impacts the momentum plot marks at most.
+const MAX_WALL_MARKS: usize = 200;
 /// Scenes up to this many discs are also sampled just before and after
 /// each step with a collision, so a loss shows as a drop at its instant.
 pub const SAMPLE_COLLISIONS_MAX_DISCS: usize = 64;
@@ -55,6 +57,8 @@ pub struct Totals {
     first: Option<Sample>,
     /// Σ m·|v| when recording began: the momentum scale drift is quoted in.
     momentum_scale: f64,
+    /// When walls pushed the discs (s), in small scenes.
+    walls: VecDeque<f64>,
 }
 
 impl Totals {
@@ -95,6 +99,7 @@ impl Totals {
     /// Starts afresh (a new scene, an edit, a rewind).
     pub fn clear(&mut self) {
         self.samples.clear();
+        self.walls.clear();
         self.first = None;
     }
 
@@ -111,6 +116,24 @@ impl Totals {
             ),
             relative(last.energy() - first.energy(), first.energy()),
         ))
+    }
+
+    /// Notes that walls pushed the discs at `time` (s): the momentum plot
+    /// marks it, since only there does the total momentum change.
+    pub fn mark_wall(&mut self, time: f64) {
+        while self.walls.back().is_some_and(|&t| t > time) {
+            self.walls.pop_back();
+        }
+        if self.walls.len() == MAX_WALL_MARKS {
+            self.walls.pop_front();
+        }
+        self.walls.push_back(time);
+    }
+
+    /// When walls pushed the discs, oldest first (within the samples' span).
+    pub fn wall_marks(&self) -> impl Iterator<Item = f64> + '_ {
+        let from = self.samples.front().map_or(f64::INFINITY, |s| s.time);
+        self.walls.iter().copied().filter(move |&t| t >= from)
     }
 
     /// The first sample since recording began.

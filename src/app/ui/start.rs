@@ -23,9 +23,7 @@ impl StartScreen {
         }
         let screen = ctx.screen_rect();
         let size = egui::vec2(
-            (screen.width() - 32.0)
-                .min(3.0 * TILE_WIDTH + 80.0)
-                .max(100.0),
+            (screen.width() - 32.0).clamp(100.0, 1100.0),
             (screen.height() - 64.0).max(80.0),
         );
         let response = egui::Window::new("What would you like to explore?")

@@ -6,7 +6,7 @@
 //! cannot promise. What does not fit is under "… more", on hover.
 
 use super::{Cx, View};
-use crate::app::model::lesson::pi_result;
+use crate::app::model::lesson::{count_line, pi_result};
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
@@ -41,20 +41,6 @@ impl Item {
     fn named(mut self, name: impl Into<String>) -> Self {
         self.name = Some(name.into());
         self
-    }
-}
-
-/// "collisions: 1 between discs · 13 with walls" (the π blocks' count once
-/// it is final instead).
-pub fn count_line(world: &impulse::World) -> String {
-    let pairs = world.total_pair_collisions;
-    let walls = world.total_wall_hits;
-    let with_walls =
-        world.laws.boundary == impulse::Boundary::Box && !world.laws.walls.names().is_empty();
-    if with_walls {
-        format!("collisions: {pairs} between discs · {walls} with walls")
-    } else {
-        format!("collisions: {pairs} between discs")
     }
 }
 

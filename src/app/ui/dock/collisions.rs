@@ -1,110 +1,188 @@
-//! The *Collisions* tab: the ledger, newest first, and the newest impact
-//! before and after, disc by disc.
+//! The *Collisions* tab: the impacts counted (between discs and with walls,
+//! as the top bar counts them), the last ones kept, newest first, and the
+//! newest before and after, disc by disc. Side by side where the dock is
+//! wide, one under the other where it is narrow; nothing overlaps.
 
 use super::super::{Cx, View};
+use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
+use impulse::ledger::Impact;
 
 /// The tab (no state of its own).
 pub struct Collisions;
 
+/// Below this width (points) the list and the newest impact stack.
+const SIDE_BY_SIDE: f32 = 760.0;
+
+/// "discs 1 and 0" or "disc 0 and the left wall".
+fn who(impact: &Impact) -> String {
+    match impact {
+        Impact::Pair(c) => format!("discs {} and {}", c.discs[0], c.discs[1]),
+        Impact::Wall(w) => format!("disc {} and the {} wall", w.disc, w.wall.name()),
+    }
+}
+
 impl View for Collisions {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
-        let ledger = &model.world.ledger;
+        let world = &model.world;
         ui.horizontal_wrapped(|ui| {
-            ui.label(match ledger.recorded {
-                1 => "1 collision between discs recorded".to_string(),
-                n => format!("{n} collisions between discs recorded"),
-            });
-            if ui.button("Next collision").on_hover_text("J").clicked() {
+            let r = ui.label(count_line(world));
+            cx.note("ledger_count", &r);
+            let tip = crate::app::model::bindings::tooltip(&Command::NextCollision);
+            if ui.button("Next collision").on_hover_text(tip).clicked() {
                 cx.send(Command::NextCollision);
             }
         });
-        let recent: Vec<_> = ledger
-            .entries()
+        let recent: Vec<Impact> = world
+            .ledger
+            .impacts()
             .rev()
-            .take(crate::app::model::lesson::LEDGER_KEEP)
-            .cloned()
+            .take(LEDGER_KEEP)
+            .copied()
             .collect();
-        if recent.is_empty() {
-            ui.label("None yet. Next collision (J) runs to the next one and pauses at the instant of impact.");
+        let Some(newest) = recent.first() else {
+            ui.add(
+                egui::Label::new(
+                    "None yet. Next collision (J) runs to the next one, between discs or with a \
+                     wall, and pauses at the instant of impact.",
+                )
+                .wrap(),
+            );
             return;
-        }
-        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-        ui.columns(2, |columns| {
-            let ui = &mut columns[0];
-            ui.strong("Newest first");
-            egui_extras::TableBuilder::new(ui)
-                .id_salt("ledger")
-                .striped(true)
-                .column(egui_extras::Column::auto().at_least(70.0))
-                .column(egui_extras::Column::auto().at_least(80.0))
-                .column(egui_extras::Column::auto().at_least(150.0))
-                .column(egui_extras::Column::auto().at_least(90.0))
-                .header(24.0, |mut h| {
-                    for t in ["t (s)", "discs", "Δp (kg·m/s)", "ΔKE (J)"] {
-                        h.col(|ui| {
-                            ui.strong(t);
-                        });
-                    }
-                })
-                .body(|body| {
-                    body.rows(24.0, recent.len(), |mut row| {
-                        let c = &recent[row.index()];
-                        let (dp, dke) = c.total_change();
-                        row.col(|ui| {
-                            ui.label(plain(c.time, 3));
-                        });
-                        row.col(|ui| {
-                            ui.label(format!("{} and {}", c.discs[0], c.discs[1]));
-                        });
-                        row.col(|ui| {
-                            ui.label(vector(dp, 3, ""));
-                        });
-                        row.col(|ui| {
-                            ui.label(plain(dke, 3));
-                        });
-                    });
-                });
-            let ui = &mut columns[1];
-            let c = &recent[0];
-            ui.strong(format!(
-                "Newest: discs {} and {} at t = {}",
-                c.discs[0],
-                c.discs[1],
-                with_unit(c.time, 3, "s")
-            ));
+        };
+        if ui.available_width() >= SIDE_BY_SIDE {
+            ui.columns(2, |columns| {
+                list(&mut columns[0], &recent);
+                detail(&mut columns[1], newest);
+            });
+        } else {
             egui::ScrollArea::vertical()
-                .id_salt("ledger_detail")
+                .id_salt("ledger_stacked")
                 .show(ui, |ui| {
-                    egui::Grid::new("ledger_newest")
-                        .striped(true)
-                        .show(ui, |ui| {
-                            for h in ["", "before", "after"] {
-                                ui.strong(h);
-                            }
-                            ui.end_row();
-                            for k in 0..2 {
-                                let (p0, p1) = c.momentum(k);
-                                let (e0, e1) = c.kinetic_energy(k);
-                                let ((n0, t0), (n1, t1)) = c.components(k);
-                                let d = c.discs[k];
-                                let rows = [
-                                    ("p (kg·m/s)", vector(p0, 3, ""), vector(p1, 3, "")),
-                                    ("KE (J)", plain(e0, 3), plain(e1, 3)),
-                                    ("v along the normal (m/s)", plain(n0, 3), plain(n1, 3)),
-                                    ("v along the tangent (m/s)", plain(t0, 3), plain(t1, 3)),
-                                ];
-                                for (what, before, after) in rows {
-                                    ui.label(format!("disc {d}: {what}"));
-                                    ui.label(before);
-                                    ui.label(after);
-                                    ui.end_row();
-                                }
-                            }
-                        });
+                    detail(ui, newest);
+                    ui.separator();
+                    list(ui, &recent);
+                });
+        }
+    }
+}
+
+/// The kept impacts, newest first.
+fn list(ui: &mut egui::Ui, recent: &[Impact]) {
+    ui.strong(format!("The last {}, newest first", recent.len()));
+    egui::ScrollArea::both()
+        .id_salt("ledger_list")
+        .auto_shrink([false, true])
+        .show(ui, |ui| {
+            egui::Grid::new("ledger")
+                .striped(true)
+                .num_columns(4)
+                .spacing([18.0, 4.0])
+                .show(ui, |ui| {
+                    for h in ["t (s)", "what", "Δp (kg·m/s)", "ΔKE (J)"] {
+                        ui.strong(h);
+                    }
+                    ui.end_row();
+                    for impact in recent {
+                        let (dp, dke) = impact.total_change();
+                        ui.label(plain(impact.time(), 3));
+                        ui.label(who(impact));
+                        ui.label(vector(dp, 3, ""));
+                        ui.label(plain(dke, 3));
+                        ui.end_row();
+                    }
                 });
         });
+}
+
+/// The newest impact, disc by disc, before and after.
+fn detail(ui: &mut egui::Ui, impact: &Impact) {
+    ui.strong(format!(
+        "Newest: {} at t = {}",
+        who(impact),
+        with_unit(impact.time(), 3, "s")
+    ));
+    let mut rows: Vec<(String, String, String)> = Vec::new();
+    match impact {
+        Impact::Pair(c) => {
+            for k in 0..2 {
+                let (p0, p1) = c.momentum(k);
+                let (e0, e1) = c.kinetic_energy(k);
+                let ((n0, t0), (n1, t1)) = c.components(k);
+                let d = c.discs[k];
+                rows.push((
+                    format!("disc {d}: p (kg·m/s)"),
+                    vector(p0, 3, ""),
+                    vector(p1, 3, ""),
+                ));
+                rows.push((format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)));
+                rows.push((
+                    format!("disc {d}: v along the line of impact (m/s)"),
+                    plain(n0, 3),
+                    plain(n1, 3),
+                ));
+                rows.push((
+                    format!("disc {d}: v across it (m/s)"),
+                    plain(t0, 3),
+                    plain(t1, 3),
+                ));
+            }
+        }
+        Impact::Wall(w) => {
+            let (p0, p1) = w.momentum();
+            let (e0, e1) = w.kinetic_energy();
+            let ((n0, t0), (n1, t1)) = w.components();
+            let d = w.disc;
+            rows.push((
+                format!("disc {d}: p (kg·m/s)"),
+                vector(p0, 3, ""),
+                vector(p1, 3, ""),
+            ));
+            rows.push((format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)));
+            rows.push((
+                format!("disc {d}: v away from the wall (m/s)"),
+                plain(n0, 3),
+                plain(n1, 3),
+            ));
+            rows.push((
+                format!("disc {d}: v along the wall (m/s)"),
+                plain(t0, 3),
+                plain(t1, 3),
+            ));
+            rows.push((
+                "the wall's push, Δp (kg·m/s)".to_string(),
+                String::new(),
+                vector(w.wall_impulse(), 3, ""),
+            ));
+        }
     }
+    egui::ScrollArea::both()
+        .id_salt("ledger_detail")
+        .auto_shrink([false, true])
+        .show(ui, |ui| {
+            egui::Grid::new("ledger_newest")
+                .striped(true)
+                .num_columns(3)
+                .spacing([18.0, 4.0])
+                .show(ui, |ui| {
+                    for h in ["", "before", "after"] {
+                        ui.strong(h);
+                    }
+                    ui.end_row();
+                    for (what, before, after) in rows {
+                        ui.label(what);
+                        ui.label(before);
+                        ui.label(after);
+                        ui.end_row();
+                    }
+                })
+                .response
+                .on_hover_text(
+                    "The line of impact runs through the centres of the two discs (or from the \
+                     wall to the disc) at the instant they touch; only the speed along it \
+                     changes in a smooth collision.",
+                );
+        });
 }

@@ -14,6 +14,8 @@ pub const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
 pub const ROT_COLOR: Color32 = Color32::from_rgb(213, 94, 0); // vermillion
 pub const L_COLOR: Color32 = Color32::from_rgb(204, 121, 167); // reddish purple
 pub const RIM_COLOR: Color32 = L_COLOR;
+/// The marks where walls pushed the discs.
+pub const WALL_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
 /// Below this height (points) a plot has no room for its legend box.
 pub const COMPACT_PLOT_HEIGHT: f32 = 110.0;
 

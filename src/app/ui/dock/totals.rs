@@ -7,7 +7,7 @@ use super::plots::*;
 use crate::app::model::overlays::spin_shown;
 use crate::app::numbers::{plain, vector, with_unit};
 use egui::RichText;
-use egui_plot::{Corner, Legend, Line, PlotPoints};
+use egui_plot::{Corner, Legend, Line, LineStyle, PlotPoints, VLine};
 
 /// The tab (no state of its own).
 pub struct Totals;
@@ -70,6 +70,7 @@ impl View for Totals {
         let series = |value: fn(&crate::app::model::totals::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
         };
+        let walls: Vec<f64> = model.record.totals.wall_marks().collect();
         let (px, py, l) = (
             series(|s| s.momentum.x),
             series(|s| s.momentum.y),
@@ -96,6 +97,18 @@ impl View for Totals {
                     format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
                 })
                 .show(&mut columns[0], |plot| {
+                    // Where walls pushed: the only places the total moves.
+                    for (k, &t) in walls.iter().enumerate() {
+                        let mark = VLine::new(t)
+                            .color(WALL_COLOR)
+                            .style(LineStyle::dashed_dense())
+                            .width(1.0);
+                        plot.vline(if k == 0 {
+                            mark.name("walls push")
+                        } else {
+                            mark
+                        });
+                    }
                     plot.line(
                         Line::new(PlotPoints::from(px))
                             .name("p_x")
