@@ -36,6 +36,14 @@ fn main() -> std::process::ExitCode {
             "a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much",
             a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much,
         ),
+        (
+            "at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room",
+            at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room,
+        ),
+        (
+            "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
+            tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world,
+        ),
     ])
 }
 
@@ -98,8 +106,17 @@ fn check_layout(s: &Value, what: &str, scale: f64, window: [f64; 2]) {
         min_text >= floor,
         "{what}: smallest text {min_text} px < {floor}"
     );
-    if window == [1024.0, 768.0] && scale == 1.0 {
-        let share = world[2] * world[3] / (window[0] * window[1]);
+    // The world's guarantees (layout.rs): from 1024×768 up at scales 1–2,
+    // at least 40 % of the window and 240 px each way; at scale 2.5 the
+    // full width and 240 px of height.
+    let share = world[2] * world[3] / (window[0] * window[1]);
+    if window[0] >= 1024.0 && window[1] >= 768.0 && scale <= 2.0 {
+        assert!(
+            share >= 0.4 - 1e-3 && world[2] >= 240.0 && world[3] >= 240.0,
+            "{what}: the world has {share:.2} of the window, {world:?}"
+        );
+    }
+    if window[0] == 1024.0 && window[1] == 768.0 && scale == 1.0 {
         assert!(
             share >= 0.5,
             "{what}: the world has {share:.2} of the window"
@@ -143,10 +160,7 @@ fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_pr
                 check_layout(&s, &format!("{size} at 1.5"), 1.5, window);
                 app.xdo(&["key", "F2"]);
                 let s = app.wait_frames(3);
-                assert_eq!(
-                    s["ui"]["dock_expanded"], false,
-                    "{size}: at scale 2 the dock starts folded"
-                );
+                check_layout(&s, &format!("{size} at 2"), 2.0, window);
             }
             for key in PRESET_KEYS {
                 app.xdo(&["key", key]);
@@ -360,4 +374,100 @@ fn a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much() 
         "physics {step} ms of a {frame} ms frame (medians)"
     );
     app.quit();
+}
+
+/// The teacher's case: 1024×768 at the projector's scale 2, the glancing
+/// preset, J. The world keeps 40 % of the window and 240 px each way, the
+/// controls become a drawer that floats over the world when opened, the
+/// tab row and its Hide button are on screen, and the ledger's rows are
+/// one under the other.
+fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() {
+    let x = Xvfb::start("projector");
+    let window = [1024.0, 768.0];
+    let app = Sandbox::start(&x, &["--size", "1024x768", "--ui-scale", "2"]);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "j"]);
+    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    let s = app.wait_frames(3);
+    check_layout(&s, "1024x768 scale 2 after J", 2.0, window);
+    assert_eq!(s["layout"]["side"], "drawer", "{}", s["layout"]);
+    assert_eq!(s["layout"]["tab_folded"], false, "the ledger is open");
+    for name in [
+        "tab_totals",
+        "tab_momenta",
+        "dock_toggle",
+        "drawer_toggle",
+        "ledger_count",
+    ] {
+        let r = rect(&s["panel_widgets"][name]);
+        assert!(
+            r[0] >= -0.5 && r[0] + r[2] <= window[0] + 0.5 && r[1] + r[3] <= window[1] + 0.5,
+            "{name} is cut off: {r:?}"
+        );
+    }
+    // The scale bar measures what is on screen, not kilometres.
+    let view = View::of(&s);
+    assert!(view.scale > 10.0, "{} px per metre", view.scale);
+    // The drawer opens over the world, like a popup; the world stays put.
+    let world = rect(&s["layout"]["world"]);
+    app.click(widget(&s, "drawer_toggle", 0.5));
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["drawer_open"], true);
+    assert_eq!(rect(&s["layout"]["world"]), world);
+    assert!(
+        s["panel_widgets"]["section_show"].is_array(),
+        "the controls are in it"
+    );
+    app.xdo(&["key", "Escape"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");
+    app.quit();
+}
+
+/// Switching the dock's tabs, a long caption, a rewind and the end of the
+/// π run keep the world's rectangle and the view exactly where they were.
+fn tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world() {
+    let x = Xvfb::start("steady");
+    for size in ["1024x768", "1280x800"] {
+        let app = Sandbox::start(&x, &["--size", size, &asset("preset-7-pi-blocks.toml")]);
+        app.move_to([500.0, 200.0]);
+        let first = app.wait_frames(3);
+        let place = |s: &Value| {
+            (
+                rect(&s["layout"]["world"]),
+                rect(&s["panel_widgets"]["tab_totals"]),
+            )
+        };
+        let (world, tab) = place(&first);
+        for name in [
+            "tab_collisions",
+            "tab_discs",
+            "tab_speeds",
+            "tab_momenta",
+            "tab_totals",
+        ] {
+            let s = app.wait_frames(2);
+            app.click(widget(&s, name, 0.5));
+            let s = app.wait_frames(3);
+            assert_eq!(
+                place(&s),
+                (world, tab),
+                "{size}: {name} moved the world or the tab row"
+            );
+        }
+        // The π run ends (its line replaces the caption): nothing moves.
+        let s = app.wait_for("the π result", 3000, |s| s["pi_result"].is_string());
+        assert_eq!(place(&s).0, world, "{size}: the end of the π run");
+        // A rewind adds its line to the top bar: nothing moves.
+        app.xdo(&["key", "comma"]);
+        let s = app.wait_for("the rewind", 30, |s| s["history_cursor"].is_number());
+        assert_eq!(place(&s).0, world, "{size}: a rewind");
+        assert_eq!(
+            rect(&s["panel_widgets"]["run_state"])[1],
+            rect(&first["panel_widgets"]["run_state"])[1]
+        );
+        app.quit();
+    }
 }

@@ -94,6 +94,13 @@ impl View for TopBar {
                 plain(newest, 2)
             )));
         }
+        // What the method cannot promise comes before the numbers it affects.
+        for warning in impulse::warnings::warnings(world, model.clock.dt) {
+            optional.push(
+                Item::new(RichText::new(format!("⚠ {}", warning.text)).color(paused))
+                    .named(format!("warning_{}", warning.code)),
+            );
+        }
         let mut momentum = Item::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s")))
             .hover("total momentum of the discs");
         if walls_pushed(cx) {
@@ -173,12 +180,6 @@ impl View for TopBar {
                     .hover("discs lying on each other or on a wall: not counted as collisions"),
             );
         }
-        for warning in impulse::warnings::warnings(world, model.clock.dt) {
-            optional.push(
-                Item::new(RichText::new(format!("⚠ {}", warning.text)).color(paused))
-                    .named(format!("warning_{}", warning.code)),
-            );
-        }
         self.line(ui, cx, essential, optional);
     }
 }
@@ -224,35 +225,31 @@ impl TopBar {
         if !cx.model.panels.docks_open {
             buttons.push(("Show panels", Command::ToggleDocks, "show_panels"));
         }
+        let pad = 2.0 * ui.spacing().button_padding.x + 4.0;
         let button_width: f32 = buttons
             .iter()
-            .map(|(label, ..)| galley(ui, &RichText::new(*label)).size().x + 16.0 + spacing)
+            .map(|(label, ..)| galley(ui, &RichText::new(*label)).size().x + pad + spacing)
             .sum();
         let more = RichText::new("… more");
         let more_width = galley(ui, &more).size().x + spacing;
-        let mut room = ui.available_width() - button_width;
+        let [name, time, state] = essential;
+        let fixed =
+            galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
+        // What the name and the other items may take, "… more" kept room for.
+        let free = ui.available_width() - button_width - more_width - fixed;
+        let name_width = galley(ui, &name.text).size().x.min((0.6 * free).max(60.0));
+        let mut room = free - name_width - spacing;
         ui.horizontal(|ui| {
             ui.spacing_mut().item_spacing.x = spacing;
             ui.set_clip_rect(ui.max_rect());
-            for (k, item) in essential.into_iter().enumerate() {
-                let g = galley(ui, &item.text);
-                let w = g.size().x;
-                // The name gives way first: it truncates, with the whole on hover.
-                let r = if k == 0 && w > room * 0.45 {
-                    let width = (room * 0.45).max(40.0);
-                    room -= width + spacing;
-                    ui.add_sized(
-                        [width, ui.available_height()],
-                        egui::Label::new(item.text).truncate(),
-                    )
-                } else {
-                    room -= w + spacing;
-                    ui.label(g)
-                };
-                let r = match item.hover {
-                    Some(h) => r.on_hover_text(h),
-                    None => r,
-                };
+            // The name gives way first: it truncates, with the whole on hover.
+            let height = ui.available_height();
+            let r = ui.add_sized([name_width, height], egui::Label::new(name.text).truncate());
+            if let Some(h) = name.hover {
+                r.on_hover_text(h);
+            }
+            for item in [time, state] {
+                let r = ui.label(item.text);
                 if let Some(name) = item.name {
                     cx.note(name, &r);
                 }
@@ -261,8 +258,9 @@ impl TopBar {
             let count = optional.len();
             for (k, item) in optional.into_iter().enumerate() {
                 let g = galley(ui, &item.text);
+                // The last item may use the room kept for "… more".
                 let last = k + 1 == count;
-                let need = g.size().x + spacing + if last { 0.0 } else { more_width };
+                let need = g.size().x + spacing - if last { more_width } else { 0.0 };
                 if !hidden.is_empty() || need > room {
                     hidden.push(item.text.text().to_string());
                     continue;

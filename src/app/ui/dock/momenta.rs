@@ -6,7 +6,7 @@ use super::plots::*;
 use crate::app::model::totals::DIAGRAM_MAX_DISCS;
 use crate::app::numbers::{plain, vector};
 use egui::Color32;
-use egui_plot::{Arrows, Corner, Legend, Line, PlotPoints, Points};
+use egui_plot::{Arrows, Line, PlotPoints, Points};
 
 /// The tab (no state of its own).
 pub struct Momenta;
@@ -29,17 +29,28 @@ impl View for Momenta {
             chain.push((at, at + p.momentum(), p.color));
             at += p.momentum();
         }
-        ui.label(format!(
-            "Each disc's momentum, tip to tail; the sum (thick) ends where the chain ends: {}",
+        // One line, so the plot keeps the height: the whole on hover.
+        let line = format!(
+            "Total (thick): {}, each disc's momentum tip to tail in its colour",
             vector(at, 3, "kg·m/s")
+        );
+        let r = ui.add(egui::Label::new(line.clone()).truncate());
+        r.on_hover_text(format!(
+            "{line}; p_x and p_y are drawn to one scale, so angles are true"
         ));
         let sum_color = ui.visuals().strong_text_color();
+        let height = ui.available_height();
+        // Axis names only where there is room for them beside the plot.
+        let roomy = height >= 140.0;
+        // As wide as a chain needs: a wide, flat plot at one scale would
+        // leave the arrows small in its middle.
+        let width = ui.available_width().min(2.2 * height.max(60.0));
         still_plot("momenta_plot")
-            .height(ui.available_height())
+            .height(height)
+            .width(width)
             .data_aspect(1.0)
-            .legend(Legend::default().position(Corner::RightBottom))
-            .x_axis_label("p_x (kg·m/s)")
-            .y_axis_label("p_y (kg·m/s)")
+            .x_axis_label(if roomy { "p_x (kg·m/s)" } else { "" })
+            .y_axis_label(if roomy { "p_y (kg·m/s)" } else { "" })
             .include_x(0.0)
             .include_y(0.0)
             .label_formatter(|_, v| format!("({}, {}) kg·m/s", plain(v.x, 3), plain(v.y, 3)))
