@@ -50,33 +50,13 @@ fn nudge(e: f64, dir: Dir, (lo, hi): (f64, f64)) -> f64 {
     (tenths / 10.0).clamp(lo, hi)
 }
 
-impl Law {
-    /// The law's value in `laws`.
-    pub fn of(self, laws: &mut impulse::laws::Laws) -> &mut f64 {
-        match self {
-            Law::Restitution => &mut laws.restitution,
-            Law::WallRestitution => &mut laws.wall_restitution,
-            Law::Roughness => &mut laws.tangential_restitution,
-            Law::WallRoughness => &mut laws.wall_tangential_restitution,
-        }
-    }
-
-    /// What its control offers.
-    pub fn range(self) -> (f64, f64) {
-        match self {
-            Law::Restitution | Law::WallRestitution => (0.0, 1.0),
-            Law::Roughness | Law::WallRoughness => (-1.0, 1.0),
-        }
-    }
-
-    /// Its name in a message.
-    pub fn name(self) -> &'static str {
-        match self {
-            Law::Restitution => "Restitution e",
-            Law::WallRestitution => "Wall restitution",
-            Law::Roughness => "Roughness β",
-            Law::WallRoughness => "Wall roughness β",
-        }
+/// A law's name in a message.
+pub fn law_name(law: Law) -> &'static str {
+    match law {
+        Law::Restitution => "Restitution e",
+        Law::WallRestitution => "Wall restitution",
+        Law::Roughness => "Roughness β",
+        Law::WallRoughness => "Wall roughness β",
     }
 }
 
@@ -205,19 +185,23 @@ impl Sandbox {
             }
             ShowAllControls => self.panels.focus = super::start::Tile::FreePlay,
             SetLaw(law, v) => {
-                let (lo, hi) = law.range();
-                *law.of(&mut self.world.laws) = ((v * 100.0).round() / 100.0).clamp(lo, hi);
+                let (lo, hi) = law.range().control;
+                *law.of_mut(&mut self.world.laws) = ((v * 100.0).round() / 100.0).clamp(lo, hi);
             }
             NudgeLaw(law, dir) => {
-                let value = law.of(&mut self.world.laws);
-                *value = nudge(*value, dir, law.range());
+                let value = law.of_mut(&mut self.world.laws);
+                *value = nudge(*value, dir, law.range().control);
                 let v = *value;
-                self.toast(format!("{} = {v:.1}", law.name()));
+                self.toast(format!("{} = {v:.1}", law_name(law)));
             }
             SetFriction(mu) => {
-                self.world.laws.friction = mu.map(|m| (m * 100.0).round() / 100.0);
+                let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
+                self.world.laws.friction = mu.map(|m| ((m * 100.0).round() / 100.0).clamp(lo, hi));
             }
-            SetGravity(g) => self.world.laws.gravity = DVec2::new(0.0, -g.abs()),
+            SetGravity(g) => {
+                let (lo, hi) = impulse::laws::GRAVITY_RANGE.control;
+                self.world.laws.gravity = DVec2::new(0.0, -g.abs().clamp(lo, hi));
+            }
             ToggleGravity => {
                 let on = self.world.laws.gravity == DVec2::ZERO;
                 self.world.laws.gravity = DVec2::new(0.0, if on { -EARTH_GRAVITY } else { 0.0 });

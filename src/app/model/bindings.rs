@@ -335,7 +335,7 @@ pub static BINDINGS: &[Binding] = &[
     ),
     line(
         "R",
-        "reset the scene",
+        "reset the scene (asked after a session that did not close normally: restore it)",
         Some("⟲ Reset"),
         &[(key(letter('R')), C::Reset)],
     ),
@@ -380,7 +380,8 @@ pub static BINDINGS: &[Binding] = &[
     ),
     line(
         "Esc",
-        "close what is open, else deselect; after Enter in a field, keys act on the world again",
+        "close what is open, else deselect; after Enter in a field, keys act on the world again; \
+         asked after a session that did not close normally: set it aside",
         None,
         &[(key(K::Escape), C::Escape)],
     ),
@@ -392,7 +393,7 @@ pub static BINDINGS: &[Binding] = &[
     ),
     line(
         "X",
-        "export totals, discs and collisions as CSV",
+        "export totals, discs, collisions and wall impacts as CSV",
         Some("Scene"),
         &[(key(letter('X')), C::Export)],
     ),
@@ -449,7 +450,7 @@ pub static BINDINGS: &[Binding] = &[
     ),
     line(
         "H or F1",
-        "this list",
+        "the list of keys and mouse actions",
         Some("? Help"),
         &[
             (key(letter('H')), C::ToggleHelp),
@@ -484,6 +485,30 @@ pub fn binding_of(command: &Command) -> Option<&'static Binding> {
 /// ("Space: pause / resume"); empty when no key gives it.
 pub fn tooltip(command: &Command) -> String {
     binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys, b.help))
+}
+
+/// The bindings as the README's key table (Markdown).
+#[cfg(test)]
+pub fn markdown_table() -> String {
+    let mut out = String::from("| Keys or mouse | Does | On screen |\n|---|---|---|\n");
+    for b in BINDINGS {
+        let keys = if mentions_the_mouse(b) {
+            b.keys.to_string()
+        } else {
+            format!("`{}`", b.keys)
+        };
+        let help = b.help.replace('|', "\\|");
+        let control = b.control.unwrap_or("");
+        out.push_str(&format!("| {keys} | {help} | {control} |\n"));
+    }
+    out
+}
+
+/// Whether a line of the help is (also) about the mouse.
+#[cfg(test)]
+pub fn mentions_the_mouse(b: &Binding) -> bool {
+    let keys = b.keys.to_lowercase();
+    ["drag", "click", "wheel"].iter().any(|m| keys.contains(m))
 }
 
 /// Whether a key belongs to the browser, not to the page.
@@ -540,12 +565,34 @@ mod tests {
         assert!(command_for(Key::Left, false, false, Trigger::Hold).is_some());
     }
 
+    /// The README's key table is this table: `UPDATE_README=1 cargo test`
+    /// writes it there.
+    #[test]
+    fn the_readme_key_table_is_the_bindings_table() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+        let readme = std::fs::read_to_string(path).unwrap();
+        let (start, end) = ("<!-- keys: start -->\n", "<!-- keys: end -->");
+        let a = readme.find(start).expect("the README marks its key table") + start.len();
+        let b = readme
+            .find(end)
+            .expect("the README marks its key table's end");
+        let wanted = markdown_table();
+        if readme[a..b] != wanted && std::env::var_os("UPDATE_README").is_some() {
+            let updated = format!("{}{wanted}{}", &readme[..a], &readme[b..]);
+            std::fs::write(path, updated).unwrap();
+            return;
+        }
+        assert_eq!(
+            readme[a..b],
+            wanted,
+            "the README's key table differs from the bindings: UPDATE_README=1 cargo test writes it"
+        );
+    }
+
     #[test]
     fn every_help_line_with_keys_has_a_chord_and_every_chord_its_line() {
         for b in BINDINGS {
-            let keys = b.keys.to_lowercase();
-            let is_mouse = keys.contains("drag") || keys.contains("click");
-            assert!(is_mouse || !b.acts.is_empty(), "{}", b.keys);
+            assert!(mentions_the_mouse(b) || !b.acts.is_empty(), "{}", b.keys);
             assert!(!b.help.is_empty());
         }
     }

@@ -9,18 +9,9 @@ use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::Boundary;
 
-/// A law of the collisions that a control sets.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Law {
-    /// Restitution e between discs.
-    Restitution,
-    /// Restitution at the walls.
-    WallRestitution,
-    /// Roughness β between discs.
-    Roughness,
-    /// Roughness β at the walls.
-    WallRoughness,
-}
+/// A coefficient of the collision law that a control sets: declared, with
+/// its ranges, beside the laws in the core.
+pub use impulse::laws::Law;
 
 /// Where a disc edit was typed: its answer goes back there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

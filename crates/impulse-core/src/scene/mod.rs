@@ -78,8 +78,6 @@ pub mod limits {
     pub const MASS: [f64; 2] = [1e-12, 1e12];
     /// Largest speed (m/s).
     pub const SPEED: f64 = 1e8;
-    /// Largest gravity (m/s²).
-    pub const GRAVITY: f64 = 1e6;
     /// Shortest and longest time step (s).
     pub const DT: [f64; 2] = [1e-9, 1e3];
 
@@ -332,29 +330,22 @@ impl Scene {
         if !w.gravity.is_finite() {
             return Err(bad("world.gravity".into(), "must be finite"));
         }
-        if w.gravity.length() > limits::GRAVITY {
+        if !crate::laws::GRAVITY_RANGE.admits(w.gravity.length()) {
             return Err(bad("world.gravity".into(), "must be at most 1e6 m/s²"));
         }
-        for (field, e) in [
-            ("world.restitution", w.restitution),
-            ("world.wall_restitution", w.wall_restitution),
-        ] {
-            if !(0.0..=1.0).contains(&e) {
-                return Err(bad(field.into(), "must be between 0 and 1"));
+        for law in crate::laws::Law::ALL {
+            let range = law.range();
+            if !range.admits(law.of(w)) {
+                let (lo, hi) = range.valid;
+                return Err(bad(
+                    format!("world.{}", law.field()),
+                    &format!("must be between {lo} and {hi}"),
+                ));
             }
         }
-        for (field, beta) in [
-            ("world.tangential_restitution", w.tangential_restitution),
-            (
-                "world.wall_tangential_restitution",
-                w.wall_tangential_restitution,
-            ),
-        ] {
-            if !(-1.0..=1.0).contains(&beta) {
-                return Err(bad(field.into(), "must be between -1 and 1"));
-            }
-        }
-        if w.friction.is_some_and(|mu| !(mu >= 0.0 && mu.is_finite())) {
+        if w.friction
+            .is_some_and(|mu| !(crate::laws::FRICTION_RANGE.admits(mu) && mu.is_finite()))
+        {
             return Err(bad(
                 "world.friction".into(),
                 "must be a finite number of at least 0",

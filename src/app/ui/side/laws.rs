@@ -26,9 +26,8 @@ pub fn snap_gravity(g: f64) -> f64 {
 
 /// A slider for `law`; `name` is its widget's name in the state dump.
 fn coefficient(ui: &mut Ui, cx: &mut Cx, law: Law, (label, name, hover): (&str, &str, &str)) {
-    let mut laws = cx.model.world.laws;
-    let mut value = *law.of(&mut laws);
-    let (lo, hi) = law.range();
+    let mut value = law.of(&cx.model.world.laws);
+    let (lo, hi) = law.range().control;
     let (r, changed) = slider(ui, label, &mut value, lo..=hi, false, 2, "");
     if changed {
         cx.send(Command::SetLaw(law, value));
@@ -71,11 +70,12 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     // The slider shows |g| and sets it pointing down; a scene's sideways
     // gravity is only replaced once the slider is moved.
     let mut g = cx.model.world.laws.gravity.length();
+    let (lo, hi) = impulse::laws::GRAVITY_RANGE.control;
     let (r, changed) = slider(
         ui,
         "Gravity, pointing down",
         &mut g,
-        0.0..=20.0,
+        lo..=hi,
         false,
         2,
         " m/s²",
@@ -168,7 +168,8 @@ pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
     let mut mu = friction.unwrap_or(kept);
     let (r, changed) = ui
         .add_enabled_ui(on, |ui| {
-            slider(ui, "Friction μ", &mut mu, 0.0..=2.0, false, 2, "")
+            let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
+            slider(ui, "Friction μ", &mut mu, lo..=hi, false, 2, "")
         })
         .inner;
     if changed && on {
