@@ -1,9 +1,12 @@
 //! Files the window writes for tests and documentation: a JSON state dump
 //! and PNG screenshots, both written atomically (temporary file, then rename).
+//! The dump is read from the model and what the window measured; its
+//! groups are flattened, so the JSON is one flat object as tests read it.
 
 use super::model::camera::Camera;
+use super::model::Sandbox;
 use crate::files::write_atomically;
-use impulse::{Metrics, Particle, World};
+use impulse::{Metrics, Particle};
 use macroquad::prelude::get_screen_data;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -12,6 +15,38 @@ use std::path::Path;
 /// Everything a test needs to check what the window did.
 #[derive(Serialize)]
 pub struct StateDump<'a> {
+    #[serde(flatten)]
+    pub frame: FrameDump,
+    #[serde(flatten)]
+    pub clock: ClockDump,
+    #[serde(flatten)]
+    pub pointer: PointerDump,
+    #[serde(flatten)]
+    pub counts: CountsDump,
+    #[serde(flatten)]
+    pub scene: SceneDump,
+    /// The world's size and laws, as in a scene file's `[world]` table
+    /// (`walls` only when a box lacks some).
+    #[serde(flatten)]
+    pub laws: impulse::laws::Laws,
+    #[serde(flatten)]
+    pub panels: PanelsDump,
+    /// How fast simulated time goes, and what the top bar says about it.
+    pub realtime: RealtimeDump,
+    /// Medians of the recent frames' timings (ms).
+    pub timing: super::frame_stats::TimingSummary,
+    /// Autosave: the recovery file, saves written, the last failure, and
+    /// whether an earlier session is being offered.
+    pub recovery: RecoveryDump,
+    #[serde(flatten)]
+    pub totals: TotalsDump,
+    /// Every disc.
+    pub particles: &'a [Particle],
+}
+
+/// The frame and the idle window.
+#[derive(Serialize)]
+pub struct FrameDump {
     /// Frames drawn so far.
     pub frame: u64,
     /// The window draws only on input or a timer now: nothing has moved
@@ -19,6 +54,11 @@ pub struct StateDump<'a> {
     pub sleeping: bool,
     /// Frames drawn by the idle timer, so far.
     pub idle_frames: u64,
+}
+
+/// Simulated time and the clock.
+#[derive(Serialize)]
+pub struct ClockDump {
     /// Simulated time (s).
     pub time: f64,
     /// Physics steps so far.
@@ -29,16 +69,26 @@ pub struct StateDump<'a> {
     pub time_scale: f64,
     /// Physics step (s).
     pub dt: f64,
+    /// Snapshots kept for rewinding.
+    pub history_len: usize,
+    /// The snapshot shown while rewound.
+    pub history_cursor: Option<usize>,
+}
+
+/// The view, the selection and the gesture.
+#[derive(Serialize)]
+pub struct PointerDump {
     /// The view.
     pub camera: CameraDump,
     /// Selected disc.
     pub selected: Option<usize>,
     /// Disc held by the mouse.
     pub held: Option<usize>,
-    /// Snapshots kept for rewinding.
-    pub history_len: usize,
-    /// The snapshot shown while rewound.
-    pub history_cursor: Option<usize>,
+}
+
+/// The counts: one count, as the top bar and the ledger give it.
+#[derive(Serialize)]
+pub struct CountsDump {
     /// Collisions between discs the ledger has recorded.
     pub collisions_recorded: u64,
     /// Impacts on walls the ledger has recorded.
@@ -46,8 +96,17 @@ pub struct StateDump<'a> {
     /// Impacts counted: between discs, and with walls.
     pub pair_collisions: u64,
     pub wall_hits: u64,
+    /// The top bar's line of counts.
+    pub count_line: String,
     /// Resting contacts in the last step (not counted as collisions).
     pub resting_contacts: usize,
+    /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
+    pub pi_result: Option<String>,
+}
+
+/// The open scene and what its steps use.
+#[derive(Serialize)]
+pub struct SceneDump {
     /// The open scene's name.
     pub scene_name: Option<String>,
     /// Where the open scene came from (a file, a preset, the default).
@@ -60,14 +119,13 @@ pub struct StateDump<'a> {
     pub substeps: String,
     /// What the last step used.
     pub plan: Option<impulse::auto::Plan>,
-    /// The world's size and laws, as in a scene file's `[world]` table
-    /// (`walls` only when a box lacks some).
-    #[serde(flatten)]
-    pub laws: impulse::laws::Laws,
     /// What the method cannot promise right now, as the top bar says it.
     pub warnings: Vec<impulse::warnings::Warning>,
-    /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
-    pub pi_result: Option<String>,
+}
+
+/// The panels.
+#[derive(Serialize)]
+pub struct PanelsDump {
     /// Whether the side dock (the controls) is shown.
     pub panel_visible: bool,
     /// Screen rectangles [x, y, width, height] (px) of named widgets drawn
@@ -77,13 +135,11 @@ pub struct StateDump<'a> {
     pub layout: super::ui::Layout,
     /// Which panels, tabs and popups are open; messages shown.
     pub ui: UiDump,
-    /// How fast simulated time goes, and what the top bar says about it.
-    pub realtime: RealtimeDump,
-    /// Medians of the recent frames' timings (ms).
-    pub timing: super::frame_stats::TimingSummary,
-    /// Autosave: the recovery file, saves written, the last failure, and
-    /// whether an earlier session is being offered.
-    pub recovery: RecoveryDump,
+}
+
+/// The totals.
+#[derive(Serialize)]
+pub struct TotalsDump {
     /// Totals (`kinetic_energy` of moving, `rotational_energy` of turning,
     /// `angular_momentum` about the origin).
     pub metrics: Metrics,
@@ -93,8 +149,6 @@ pub struct StateDump<'a> {
     /// Whether spin is shown: spin lines on the discs, spin values in the
     /// readouts, the Discs table and the top bar.
     pub spin_shown: bool,
-    /// Every disc.
-    pub particles: &'a [Particle],
 }
 
 /// The panels in a dump.
@@ -108,11 +162,20 @@ pub struct UiDump {
     pub tab: String,
     pub help_open: bool,
     pub presets_open: bool,
+    /// The start screen's tiles.
+    pub start_open: bool,
     pub theme: String,
     /// A text field has the keyboard.
     pub typing: bool,
     /// A field was left with Enter: the panel keeps the keyboard.
     pub panel_keyboard: bool,
+    #[serde(flatten)]
+    pub edits: EditsDump,
+}
+
+/// Undo, the scene's edits and the messages.
+#[derive(Default, Serialize)]
+pub struct EditsDump {
     /// Changes that can be undone and redone.
     pub undo_levels: [usize; 2],
     /// The scene's discs were edited since it opened.
@@ -172,48 +235,120 @@ impl From<&Camera> for CameraDump {
     }
 }
 
-impl<'a> StateDump<'a> {
-    /// The dump of `world` seen through `camera`.
-    pub fn of(world: &'a World, camera: &Camera) -> Self {
-        StateDump {
-            frame: 0,
-            sleeping: false,
-            idle_frames: 0,
+/// What the window measured this frame, beside the model.
+pub struct Window<'a> {
+    pub frame: FrameDump,
+    pub panels: &'a super::ui::Panels,
+    /// The smallest text the world's drawing drew (px), if any.
+    pub world_text_px: Option<f32>,
+    pub timing: super::frame_stats::TimingSummary,
+}
+
+/// The dump of the sandbox `m` as the window shows it.
+pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
+    let world = &m.world;
+    let panels = window.panels;
+    let mut layout = panels.layout.clone();
+    if let Some(px) = window.world_text_px {
+        layout.min_text_px = layout.min_text_px.min(px);
+    }
+    StateDump {
+        frame: window.frame,
+        clock: ClockDump {
             time: world.time,
             steps: world.steps,
-            paused: false,
-            time_scale: 1.0,
-            dt: 0.0,
-            camera: camera.into(),
-            selected: None,
-            held: None,
-            history_len: 0,
-            history_cursor: None,
-            collisions_recorded: 0,
-            wall_hits_recorded: 0,
+            paused: m.clock.paused,
+            time_scale: m.clock.time_scale(),
+            dt: m.clock.dt,
+            history_len: m.record.history.len(),
+            history_cursor: m.record.history.cursor(),
+        },
+        pointer: PointerDump {
+            camera: (&m.view.camera).into(),
+            selected: m.selected,
+            held: m.pointer.gesture.held(),
+        },
+        counts: CountsDump {
+            collisions_recorded: world.ledger.recorded,
+            wall_hits_recorded: world.ledger.recorded_walls,
             pair_collisions: world.total_pair_collisions,
             wall_hits: world.total_wall_hits,
+            count_line: super::model::lesson::count_line(world),
             resting_contacts: world.resting_contacts,
-            scene_name: None,
-            scene_origin: String::new(),
+            pi_result: super::model::lesson::pi_result(world),
+        },
+        scene: SceneDump {
+            scene_name: m.open.scene.name.clone(),
+            scene_origin: m.open.origin.clone(),
             method: world.method.to_string(),
             broad_phase: world.broad_phase.to_string(),
             substeps: world.substeps.to_string(),
             plan: world.plan().cloned(),
-            laws: world.laws,
-            warnings: Vec::new(),
-            pi_result: None,
-            panel_visible: false,
-            panel_widgets: BTreeMap::new(),
-            layout: Default::default(),
-            ui: UiDump::default(),
-            realtime: RealtimeDump::default(),
-            timing: Default::default(),
-            recovery: RecoveryDump::default(),
+            warnings: impulse::warnings::warnings(world, m.clock.dt),
+        },
+        laws: world.laws,
+        panels: PanelsDump {
+            panel_visible: m.panels.docks_open && m.panels.side_open,
+            panel_widgets: panels.marks.widgets.clone(),
+            layout,
+            ui: UiDump {
+                docks_open: m.panels.docks_open,
+                side_open: m.panels.side_open,
+                drawer_open: m.panels.drawer_open,
+                dock_expanded: m.panels.dock_expanded,
+                tab: m.panels.tab.title().to_string(),
+                help_open: m.panels.help_open,
+                presets_open: m.panels.presets_open,
+                start_open: m.panels.start_open,
+                theme: m.panels.theme.name().to_string(),
+                typing: panels.typing,
+                panel_keyboard: panels.panel_keyboard,
+                edits: EditsDump {
+                    undo_levels: m.undo.levels().into(),
+                    scene_edited: m.open.edited,
+                    center_of_mass_view: m.overlays.com_view.is_some(),
+                    size_follows_mass: m.new_discs.size_follows_mass,
+                    table_note: m.messages.table.as_ref().map(|n| n.text.clone()),
+                    message: m.message().map(str::to_string),
+                },
+            },
+        },
+        realtime: RealtimeDump {
+            ratio: m.sim_rate(),
+            shown: m.slow_note(),
+            steps_last_frame: m.steps.steps_last_frame,
+            steps_dropped: m.steps.steps_dropped,
+        },
+        timing: window.timing,
+        recovery: RecoveryDump {
+            file: m.recovery.path().display().to_string(),
+            saves: m.recovery.saves,
+            error: m.recovery.error.clone(),
+            offered: m.recovery.offered.is_some(),
+        },
+        totals: TotalsDump {
             metrics: world.metrics(),
             total_energy: world.total_energy(),
             spin_shown: super::model::overlays::spin_shown(world),
-            particles: &world.particles,
+        },
+        particles: &world.particles,
+    }
+}
+
+/// Writes the dump: into `--dump-state`'s file on the desktop; in the
+/// browser, reported to the page (`window.impulseState`).
+pub fn write(path: Option<&Path>, state: &StateDump) {
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Some(path) = path {
+        if let Err(e) = write_state(path, state) {
+            eprintln!("impulse: cannot write state dump {}: {e}", path.display());
+        }
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = path;
+        if let Ok(json) = serde_json::to_string(state) {
+            crate::web::report_state(&json);
         }
     }
 }
@@ -266,120 +401,34 @@ pub fn png_bytes(width: u32, height: u32, rgba_bottom_up: &[u8]) -> std::io::Res
     Ok(png)
 }
 
-impl super::App {
-    /// The state dump: into `--dump-state`'s file on the desktop; in the
-    /// browser, reported to the page (`window.impulseState`), every frame
-    /// for up to 2,000 discs and every 30th beyond (a long JSON each frame
-    /// would cost more than the drawing).
-    pub(super) fn write_dump(&self) {
-        #[cfg(not(target_arch = "wasm32"))]
-        let Some(path) = &self.options.dump_state
-        else {
-            return;
-        };
-        let m = &self.model;
-        #[cfg(target_arch = "wasm32")]
-        if m.world.particles.len() > 2_000 && self.frame % 30 != 1 {
-            return;
-        }
-        let mut state = StateDump::of(&m.world, &m.view.camera);
-        state.frame = self.frame;
-        state.sleeping = self.idle.sleeping();
-        state.idle_frames = self.idle.idle_frames;
-        state.paused = m.clock.paused;
-        state.time_scale = m.clock.time_scale();
-        state.dt = m.clock.dt;
-        state.warnings = impulse::warnings::warnings(&m.world, m.clock.dt);
-        state.pi_result = super::model::lesson::pi_result(&m.world);
-        state.selected = m.selected;
-        state.history_len = m.record.history.len();
-        state.history_cursor = m.record.history.cursor();
-        state.collisions_recorded = m.world.ledger.recorded;
-        state.wall_hits_recorded = m.world.ledger.recorded_walls;
-        state.held = m.pointer.gesture.held();
-        state.scene_name = m.open.scene.name.clone();
-        state.scene_origin = m.open.origin.clone();
-        state.panel_visible = m.panels.docks_open && m.panels.side_open;
-        state.panel_widgets = self.panels.marks.widgets.clone();
-        state.timing = self.frame_stats.recent();
-        let mut layout = self.panels.layout.clone();
-        if let Some(world_px) = self.painter.smallest_text() {
-            layout.min_text_px = layout.min_text_px.min(world_px);
-        }
-        state.layout = layout;
-        state.ui = UiDump {
-            docks_open: m.panels.docks_open,
-            side_open: m.panels.side_open,
-            drawer_open: m.panels.drawer_open,
-            dock_expanded: m.panels.dock_expanded,
-            tab: m.panels.tab.title().to_string(),
-            help_open: m.panels.help_open,
-            presets_open: m.panels.presets_open,
-            theme: m.panels.theme.name().to_string(),
-            typing: self.panels.typing,
-            panel_keyboard: self.panels.panel_keyboard,
-            undo_levels: m.undo.levels().into(),
-            scene_edited: m.open.edited,
-            center_of_mass_view: m.overlays.com_view.is_some(),
-            size_follows_mass: m.new_discs.size_follows_mass,
-            table_note: m.messages.table.as_ref().map(|n| n.text.clone()),
-            message: m.message().map(str::to_string),
-        };
-        state.realtime = RealtimeDump {
-            ratio: m.sim_rate(),
-            shown: m.slow_note(),
-            steps_last_frame: m.steps.steps_last_frame,
-            steps_dropped: m.steps.steps_dropped,
-        };
-        state.recovery = RecoveryDump {
-            file: m.recovery.path().display().to_string(),
-            saves: m.recovery.saves,
-            error: m.recovery.error.clone(),
-            offered: m.recovery.offered.is_some(),
-        };
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Err(e) = write_state(path, &state) {
-            eprintln!("impulse: cannot write state dump {}: {e}", path.display());
-        }
-        #[cfg(target_arch = "wasm32")]
-        if let Ok(json) = serde_json::to_string(&state) {
-            crate::web::report_state(&json);
-        }
+/// Saves the last frame where `--screenshot` asked.
+pub fn save_screenshot(path: &Path, image: &ScreenImage) {
+    let (w, h, rgba) = image;
+    match write_png(path, *w, *h, rgba) {
+        Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
+        Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
     }
+}
 
-    /// Saves the last frame where `--screenshot` asked.
-    pub(super) fn save_screenshot(&self, image: &ScreenImage) {
-        let Some(path) = &self.options.screenshot else {
-            return;
-        };
-        let (w, h, rgba) = image;
-        match write_png(path, *w, *h, rgba) {
-            Ok(()) => eprintln!("impulse: screenshot saved to {}", path.display()),
-            Err(e) => eprintln!("impulse: cannot save screenshot {}: {e}", path.display()),
+/// Saves the frame F12 asked for and says where (in the browser:
+/// downloads it).
+pub fn save_screenshot_key(model: &mut Sandbox, image: &ScreenImage, path: &Path) {
+    let (w, h, rgba) = image;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let saved = png_bytes(*w, *h, rgba)
+        .map_err(|e| e.to_string())
+        .and_then(|png| super::model::scenes::keep_file(dir, &stem, "png", &png));
+    match saved {
+        Ok(path) => {
+            eprintln!("impulse: screenshot saved to {}", path.display());
+            let verb = if cfg!(target_arch = "wasm32") {
+                "downloaded as"
+            } else {
+                "saved to"
+            };
+            model.toast(format!("Screenshot {verb} {}", path.display()));
         }
-    }
-
-    /// Saves the frame F12 asked for and says where (in the browser:
-    /// downloads it).
-    pub(super) fn save_screenshot_key(&mut self, image: &ScreenImage, path: &std::path::Path) {
-        let model = &mut self.model;
-        let (w, h, rgba) = image;
-        let dir = path.parent().unwrap_or(std::path::Path::new("."));
-        let stem = path.file_stem().unwrap_or_default().to_string_lossy();
-        let saved = png_bytes(*w, *h, rgba)
-            .map_err(|e| e.to_string())
-            .and_then(|png| super::model::scenes::keep_file(dir, &stem, "png", &png));
-        match saved {
-            Ok(path) => {
-                eprintln!("impulse: screenshot saved to {}", path.display());
-                let verb = if cfg!(target_arch = "wasm32") {
-                    "downloaded as"
-                } else {
-                    "saved to"
-                };
-                model.toast(format!("Screenshot {verb} {}", path.display()));
-            }
-            Err(e) => model.report(format!("Screenshot not saved: {e}")),
-        }
+        Err(e) => model.report(format!("Screenshot not saved: {e}")),
     }
 }

@@ -95,15 +95,14 @@ impl Idle {
     }
 }
 
-impl super::App {
-    /// Whether this frame showed a change or took input, so the next one
-    /// follows at once (see this module; it also notices the pointer moving):
-    /// discs moving or turning, a button or key held, a gesture or a message
-    /// on screen. (egui's own repaint requests are not asked: every input event
-    /// makes one, the idle timer's too. Its animations end within the
-    /// grace period after the input that started them.)
-    pub(super) fn busy(&self, was_running: bool) -> bool {
-        let m = &self.model;
+/// Whether frame `frame` of the sandbox `m` showed a change or took input,
+/// so the next one follows at once (see this module; it also notices the
+/// pointer moving): discs moving or turning, a button or key held, a
+/// gesture or a message on screen. (egui's own repaint requests are not
+/// asked: every input event makes one, the idle timer's too. Its animations
+/// end within the grace period after the input that started them.)
+pub fn busy(m: &super::model::Sandbox, was_running: bool, frame: u64) -> bool {
+    {
         let moving = (was_running || !m.clock.paused)
             && m.world
                 .particles
@@ -119,7 +118,7 @@ impl super::App {
             || input
             || !matches!(m.pointer.gesture, Gesture::Idle)
             || m.messages.toast.is_some()
-            || self.frame < 2
+            || frame < 2
     }
 }
 

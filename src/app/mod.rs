@@ -355,11 +355,11 @@ impl App {
                 .options
                 .exit_after
                 .is_some_and(|limit| get_time() >= limit);
-            let closing = self.model.requests.quit || is_quit_requested() || timed_out;
+            let closing = self.model.session.requests.quit || is_quit_requested() || timed_out;
             if closing {
                 self.model.recovery.finish();
             }
-            let requested = self.model.requests.screenshot.take();
+            let requested = self.model.session.requests.screenshot.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
             let draw_start = impulse::clock::Instant::now();
             self.painter.draw(&mut self.model, mouse);
@@ -372,15 +372,15 @@ impl App {
             let mut times = self.frame_times(step_ms, draw_ms);
             let present_start = impulse::clock::Instant::now();
             if let Some(image) = capture {
-                if closing {
-                    self.save_screenshot(&image);
+                if let (true, Some(path)) = (closing, &self.options.screenshot) {
+                    dump::save_screenshot(path, &image);
                 }
                 if let Some(path) = requested {
-                    self.save_screenshot_key(&image, &path);
+                    dump::save_screenshot_key(&mut self.model, &image, &path);
                 }
             }
             if !closing {
-                let busy = self.busy(running);
+                let busy = idle::busy(&self.model, running, self.frame);
                 let due = self.options.exit_after;
                 self.idle.frame_done(busy, (mx, my), due);
                 next_frame().await;
@@ -394,9 +394,35 @@ impl App {
         self.write_frame_stats();
     }
 
+    /// The state dump: into `--dump-state`'s file on the desktop; in the
+    /// browser, reported to the page every frame for up to 2,000 discs and
+    /// every 30th beyond (a long JSON each frame would cost more than the
+    /// drawing).
+    fn write_dump(&self) {
+        let path = self.options.dump_state.as_deref();
+        if cfg!(target_arch = "wasm32") {
+            if self.model.world.particles.len() > 2_000 && self.frame % 30 != 1 {
+                return;
+            }
+        } else if path.is_none() {
+            return;
+        }
+        let window = dump::Window {
+            frame: dump::FrameDump {
+                frame: self.frame,
+                sleeping: self.idle.sleeping(),
+                idle_frames: self.idle.idle_frames,
+            },
+            panels: &self.panels,
+            world_text_px: self.painter.smallest_text(),
+            timing: self.frame_stats.recent(),
+        };
+        dump::write(path, &dump::state(&self.model, window));
+    }
+
     /// What only the window can do, as the model asked.
     fn carry_out_requests(&mut self) {
-        if std::mem::take(&mut self.model.requests.fullscreen) {
+        if std::mem::take(&mut self.model.session.requests.fullscreen) {
             self.input.fullscreen = !self.input.fullscreen;
             set_fullscreen(self.input.fullscreen);
         }

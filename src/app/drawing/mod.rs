@@ -5,6 +5,7 @@
 //! keep their width in screen pixels whatever the UI scale (which enlarges
 //! text and controls, not arrows); colours come from the theme ([`look`]).
 
+mod clip;
 pub mod cull;
 pub mod discs;
 pub mod readouts;
@@ -261,7 +262,7 @@ fn clipped(a: DVec2, b: DVec2, clip: Option<(DVec2, DVec2)>) -> Option<(DVec2, D
     match clip {
         None => Some((a, b, true)),
         Some((lo, hi)) => {
-            let (p, q) = cull::clip_segment(a, b, lo, hi)?;
+            let (p, q) = clip::clip_segment(a, b, lo, hi)?;
             Some((p, q, q == b))
         }
     }

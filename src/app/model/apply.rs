@@ -322,8 +322,8 @@ impl Sandbox {
                 self.toast(format!("Text size ×{}", self.panels.scale));
             }
             SetTheme(t) => self.panels.theme = t,
-            Fullscreen => self.requests.fullscreen = true,
-            Quit => self.requests.quit = true,
+            Fullscreen => self.session.requests.fullscreen = true,
+            Quit => self.session.requests.quit = true,
         }
     }
 

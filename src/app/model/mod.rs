@@ -287,6 +287,8 @@ pub struct Session {
     pub dt: Option<f64>,
     /// The window's clock now (s), set at the start of each frame.
     pub now: f64,
+    /// What only the window can do, asked for by commands.
+    pub requests: Requests,
 }
 
 /// The whole sandbox.
@@ -306,7 +308,6 @@ pub struct Sandbox {
     pub steps: StepReport,
     pub recovery: recovery::Recovery,
     pub session: Session,
-    pub requests: Requests,
 }
 
 /// How a sandbox starts.
@@ -366,8 +367,8 @@ impl Sandbox {
                 out: start.out,
                 dt: start.dt,
                 now: 0.0,
+                requests: Requests::default(),
             },
-            requests: Requests::default(),
         };
         sandbox.panels.start_open = start.start_screen;
         if sandbox.modal_open() {

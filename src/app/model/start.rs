@@ -125,7 +125,7 @@ impl Sandbox {
             }
             None => {
                 let origin = "built-in default scene".to_string();
-                match impulse::Scene::parse(crate::app::DEFAULT_SCENE, &origin) {
+                match impulse::Scene::parse(impulse::catalogue::DEFAULT.text, &origin) {
                     Ok(scene) => {
                         let _ = self.open_scene(scene, origin); // reported
                     }

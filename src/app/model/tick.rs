@@ -175,7 +175,7 @@ impl Sandbox {
     /// Saves the next frame as a PNG in the output folder (F12).
     pub(super) fn request_screenshot(&mut self) {
         let stem = scenes::slug(self.open.scene.name.as_deref().unwrap_or("scene"));
-        self.requests.screenshot = Some(scenes::free_file(&self.session.out, &stem, "png"));
+        self.session.requests.screenshot = Some(scenes::free_file(&self.session.out, &stem, "png"));
     }
 
     /// Writes the totals, the discs and the ledger as CSV files.

@@ -1,0 +1,229 @@
+//! Every key, declared once: which key (with modifiers) gives which
+//! command, the keys as the help shows them, the help line, and the
+//! on-screen control that does the same. The window's key handling, the
+//! help window and the controls' tooltips read this table; a test holds the
+//! README's key table against it.
+
+use super::command::Command;
+
+/// A key, by what is printed on it (the window maps its key codes to these).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Key {
+    Space,
+    Tab,
+    Escape,
+    Delete,
+    Backspace,
+    Left,
+    Right,
+    Up,
+    Down,
+    PageUp,
+    PageDown,
+    Home,
+    End,
+    Equal,
+    Minus,
+    KpAdd,
+    KpSubtract,
+    LeftBracket,
+    RightBracket,
+    Comma,
+    Period,
+    /// The digit keys 0 … 9.
+    Digit(u8),
+    /// A letter, upper case.
+    Letter(char),
+    /// F1 … F12.
+    F(u8),
+}
+
+/// Whether Shift must be up, down, or either.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shift {
+    Up,
+    Down,
+    Either,
+}
+
+/// A key with its modifiers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Chord {
+    pub key: Key,
+    pub ctrl: bool,
+    pub shift: Shift,
+}
+
+impl Chord {
+    /// Whether the chord is pressed with these modifiers down.
+    pub fn matches(&self, key: Key, ctrl: bool, shift: bool) -> bool {
+        self.key == key
+            && self.ctrl == ctrl
+            && match self.shift {
+                Shift::Up => !shift,
+                Shift::Down => shift,
+                Shift::Either => true,
+            }
+    }
+}
+
+/// When a key acts: once when pressed, or every frame while held.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Trigger {
+    Press,
+    Hold,
+}
+
+/// One line of the help: its keys (or mouse gesture), what they do, the
+/// control that does the same, and the chords with their commands.
+pub struct Binding {
+    /// The keys as the help shows them ("E / Shift+E").
+    pub keys: &'static str,
+    /// What they do.
+    pub help: &'static str,
+    /// Where the on-screen control that does the same is, if any.
+    pub control: Option<&'static str>,
+    pub trigger: Trigger,
+    /// Each chord and the command it gives.
+    pub acts: &'static [(Chord, Command)],
+}
+
+mod table;
+
+pub use table::BINDINGS;
+
+/// The command `key` gives with these modifiers, pressed (`Trigger::Press`)
+/// or held (`Trigger::Hold`).
+pub fn command_for(key: Key, ctrl: bool, shift: bool, trigger: Trigger) -> Option<Command> {
+    BINDINGS
+        .iter()
+        .filter(|b| b.trigger == trigger)
+        .flat_map(|b| b.acts.iter())
+        .find(|(chord, _)| chord.matches(key, ctrl, shift))
+        .map(|(_, command)| command.clone())
+}
+
+/// The binding that gives `command`, if a key does.
+pub fn binding_of(command: &Command) -> Option<&'static Binding> {
+    BINDINGS
+        .iter()
+        .find(|b| b.acts.iter().any(|(_, c)| c == command))
+}
+
+/// The tooltip of a control that gives `command`: its keys and what they do
+/// ("Space: pause / resume"); empty when no key gives it.
+pub fn tooltip(command: &Command) -> String {
+    binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys, b.help))
+}
+
+/// The bindings as the README's key table (Markdown).
+#[cfg(test)]
+pub fn markdown_table() -> String {
+    let mut out = String::from("| Keys or mouse | Does | On screen |\n|---|---|---|\n");
+    for b in BINDINGS {
+        let keys = if mentions_the_mouse(b) {
+            b.keys.to_string()
+        } else {
+            format!("`{}`", b.keys)
+        };
+        let help = b.help.replace('|', "\\|");
+        let control = b.control.unwrap_or("");
+        out.push_str(&format!("| {keys} | {help} | {control} |\n"));
+    }
+    out
+}
+
+/// Whether a line of the help is (also) about the mouse.
+#[cfg(test)]
+pub fn mentions_the_mouse(b: &Binding) -> bool {
+    let keys = b.keys.to_lowercase();
+    ["drag", "click", "wheel"].iter().any(|m| keys.contains(m))
+}
+
+/// Whether a key belongs to the browser, not to the page.
+pub fn browser_keeps(binding: &Binding) -> bool {
+    ["Ctrl+Q", "F11"].contains(&binding.keys)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::model::command::{Dir, Law};
+
+    #[test]
+    fn no_chord_gives_two_commands() {
+        let chords: Vec<(Chord, Trigger)> = BINDINGS
+            .iter()
+            .flat_map(|b| b.acts.iter().map(move |(c, _)| (*c, b.trigger)))
+            .collect();
+        for (i, (a, ta)) in chords.iter().enumerate() {
+            for (b, tb) in &chords[i + 1..] {
+                let overlap = a.key == b.key
+                    && a.ctrl == b.ctrl
+                    && ta == tb
+                    && (a.shift == b.shift || a.shift == Shift::Either || b.shift == Shift::Either);
+                assert!(!overlap, "{a:?} and {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn keys_give_their_commands_and_tooltips_name_them() {
+        let cmd = |k, ctrl, shift| command_for(k, ctrl, shift, Trigger::Press);
+        assert_eq!(cmd(Key::Space, false, false), Some(Command::TogglePause));
+        assert_eq!(
+            cmd(Key::Letter('E'), false, true),
+            Some(Command::NudgeLaw(Law::Restitution, Dir::Down))
+        );
+        assert_eq!(cmd(Key::Letter('Z'), true, true), Some(Command::Redo));
+        assert_eq!(cmd(Key::Letter('Z'), true, false), Some(Command::Undo));
+        assert_eq!(
+            cmd(Key::Letter('Z'), false, false),
+            Some(Command::ToggleCenterOfMassView)
+        );
+        assert_eq!(
+            cmd(Key::Letter('Q'), false, false),
+            None,
+            "Q alone does nothing"
+        );
+        assert_eq!(
+            cmd(Key::Digit(0), false, false),
+            Some(Command::OpenPreset(9))
+        );
+        assert_eq!(tooltip(&Command::TogglePause), "Space: pause / resume");
+        assert_eq!(tooltip(&Command::SetTheme(super::super::Theme::Light)), "");
+        assert!(command_for(Key::Left, false, false, Trigger::Hold).is_some());
+    }
+
+    /// The README's key table is this table: `UPDATE_README=1 cargo test`
+    /// writes it there.
+    #[test]
+    fn the_readme_key_table_is_the_bindings_table() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+        let readme = std::fs::read_to_string(path).unwrap();
+        let (start, end) = ("<!-- keys: start -->\n", "<!-- keys: end -->");
+        let a = readme.find(start).expect("the README marks its key table") + start.len();
+        let b = readme
+            .find(end)
+            .expect("the README marks its key table's end");
+        let wanted = markdown_table();
+        if readme[a..b] != wanted && std::env::var_os("UPDATE_README").is_some() {
+            let updated = format!("{}{wanted}{}", &readme[..a], &readme[b..]);
+            std::fs::write(path, updated).unwrap();
+            return;
+        }
+        assert_eq!(
+            readme[a..b],
+            wanted,
+            "the README's key table differs from the bindings: UPDATE_README=1 cargo test writes it"
+        );
+    }
+
+    #[test]
+    fn every_help_line_with_keys_has_a_chord_and_every_chord_its_line() {
+        for b in BINDINGS {
+            assert!(mentions_the_mouse(b) || !b.acts.is_empty(), "{}", b.keys);
+            assert!(!b.help.is_empty());
+        }
+    }
+}

@@ -1,0 +1,197 @@
+//! Gestures on a world without a window.
+
+use super::*;
+
+const NEW: NewDisc = NewDisc {
+    radius: 0.5,
+    mass: 1.0,
+};
+const SLOP: f64 = 0.02;
+
+fn world() -> World {
+    let mut w = World::new(DVec2::new(10.0, 10.0));
+    w.particles.push(Particle::new(
+        DVec2::new(5.0, 5.0),
+        DVec2::ZERO,
+        2.0,
+        1.0,
+        Color::palette(0),
+    ));
+    w
+}
+
+#[test]
+fn drag_on_empty_space_launches_along_the_drag() {
+    let mut w = world();
+    let mut g = Gesture::default();
+    assert_eq!(g.press(&w, DVec2::new(2.0, 2.0), 0.0, SLOP), None);
+    g.drag(&mut w, DVec2::new(3.0, 4.0), 0.1);
+    let r = g.release(&mut w, DVec2::new(3.0, 4.0), NEW);
+    assert_eq!(r, Released::Launched(1));
+    let p = w.particles[1];
+    assert_eq!(p.pos, DVec2::new(2.0, 2.0));
+    assert_eq!(p.vel, DVec2::new(1.0, 2.0) * LAUNCH_GAIN);
+}
+
+#[test]
+fn a_launch_never_overlaps_another_disc() {
+    let mut w = world();
+    let mut g = Gesture::default();
+    // Just outside the big disc: a new disc here would overlap it.
+    g.press(&w, DVec2::new(6.2, 5.0), 0.0, SLOP);
+    assert_eq!(
+        g.release(&mut w, DVec2::new(6.3, 5.0), NEW),
+        Released::Launched(1)
+    );
+    let (a, b) = (w.particles[0], w.particles[1]);
+    assert!(a.pos.distance(b.pos) >= a.radius + b.radius);
+    assert!(b.pos.distance(DVec2::new(6.2, 5.0)) < 0.5, "placed nearby");
+}
+
+#[test]
+fn no_room_is_reported_not_forced() {
+    let mut w = World::new(DVec2::new(1.0, 1.0));
+    w.particles.push(Particle::new(
+        DVec2::splat(0.5),
+        DVec2::ZERO,
+        1.0,
+        0.5,
+        Color::palette(0),
+    ));
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(0.05, 0.05), 0.0, SLOP);
+    assert_eq!(
+        g.release(&mut w, DVec2::new(0.1, 0.05), NEW),
+        Released::NoRoom
+    );
+    assert_eq!(w.particles.len(), 1);
+}
+
+#[test]
+fn a_grab_keeps_its_offset_and_a_fling_keeps_the_trajectory_velocity() {
+    let mut w = world();
+    let mut g = Gesture::default();
+    assert_eq!(g.press(&w, DVec2::new(5.5, 5.0), 0.0, SLOP), Some(0));
+    for k in 1..=10 {
+        let t = k as f64 * 0.01;
+        g.drag(&mut w, DVec2::new(5.5 + 2.0 * t, 5.0 - 1.0 * t), t);
+    }
+    let p = w.particles[0];
+    assert!(
+        (p.pos - DVec2::new(5.7 - 0.5, 4.9)).length() < 1e-12,
+        "offset kept: {}",
+        p.pos
+    );
+    match g.release(&mut w, DVec2::new(5.7, 4.9), NEW) {
+        Released::Flung(0, v) => assert!((v - DVec2::new(2.0, -1.0)).length() < 1e-9, "{v}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_held_disc_stays_inside_the_walls() {
+    let mut w = world();
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
+    g.drag(&mut w, DVec2::new(-30.0, 50.0), 0.05);
+    let p = w.particles[0];
+    assert_eq!(p.pos, DVec2::new(1.0, 9.0));
+}
+
+#[test]
+fn a_still_cursor_drops_the_disc_at_rest() {
+    let mut w = world();
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
+    g.drag(&mut w, DVec2::new(6.0, 5.0), 0.05);
+    g.drag(&mut w, DVec2::new(6.0, 5.0), 0.5);
+    g.drag(&mut w, DVec2::new(6.0, 5.0), 0.6);
+    assert_eq!(
+        g.release(&mut w, DVec2::new(6.0, 5.0), NEW),
+        Released::Flung(0, DVec2::ZERO)
+    );
+}
+
+#[test]
+fn a_fling_at_a_low_frame_rate_keeps_its_velocity() {
+    // Five frames a second: the cursor moved until the last frame.
+    let mut w = world();
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP);
+    for k in 1..=3 {
+        let t = 0.2 * k as f64;
+        g.drag(&mut w, DVec2::new(5.0 + t, 5.0), t);
+    }
+    g.drag(&mut w, DVec2::new(5.6, 5.0), 0.8);
+    match g.release(&mut w, DVec2::new(5.6, 5.0), NEW) {
+        Released::Flung(0, v) => assert!(v.x > 0.4, "{v}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_click_selects_without_launching_or_stopping() {
+    let mut w = world();
+    w.particles[0].vel = DVec2::new(1.0, -2.0);
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(2.0, 2.0), 0.0, SLOP);
+    assert_eq!(
+        g.release(&mut w, DVec2::new(2.01, 2.0), NEW),
+        Released::Nothing
+    );
+    assert_eq!(
+        w.particles.len(),
+        1,
+        "a click on empty space launches nothing"
+    );
+    assert_eq!(g.press(&w, DVec2::new(5.2, 5.0), 0.0, SLOP), Some(0));
+    g.drag(&mut w, DVec2::new(5.21, 5.0), 0.2);
+    let r = g.release(&mut w, DVec2::new(5.21, 5.0), NEW);
+    assert_eq!(r, Released::Clicked(0), "a click is a click");
+    assert_eq!(
+        w.particles[0].vel,
+        DVec2::new(1.0, -2.0),
+        "it keeps the velocity"
+    );
+    assert_eq!(w.particles[0].pos, DVec2::new(5.0, 5.0), "and the place");
+}
+
+#[test]
+fn dragging_the_arrow_tip_sets_the_velocity_it_draws() {
+    let mut w = world();
+    let centre = w.particles[0].pos;
+    // The tip is hit only near it, and only on an arrow longer than the reach.
+    let tip = DVec2::new(40.0, 0.0);
+    assert!(Gesture::near_tip(
+        DVec2::new(105.0, 3.0),
+        DVec2::new(60.0, 0.0),
+        tip,
+        10.0
+    ));
+    assert!(!Gesture::near_tip(
+        DVec2::new(80.0, 0.0),
+        DVec2::new(60.0, 0.0),
+        tip,
+        10.0
+    ));
+    assert!(!Gesture::near_tip(
+        DVec2::ZERO,
+        DVec2::ZERO,
+        DVec2::new(5.0, 0.0),
+        10.0
+    ));
+    let mut g = Gesture::default();
+    g.press_arrow_tip(&w, 0, 0.5);
+    g.drag(&mut w, centre + DVec2::new(1.0, 0.0), 0.0);
+    assert_eq!(w.particles[0].vel, DVec2::new(2.0, 0.0));
+    let r = g.release(&mut w, centre + DVec2::new(0.5, 0.5), NEW);
+    assert_eq!(r, Released::Aimed(0, DVec2::new(1.0, 1.0)));
+    assert_eq!(w.particles[0].vel, DVec2::new(1.0, 1.0));
+    assert_eq!(w.particles[0].pos, centre, "aiming moves nothing");
+    // Taken and let go where it was: nothing is set.
+    let before = w.particles[0].vel;
+    g.press_arrow_tip(&w, 0, 0.5);
+    let r = g.release(&mut w, centre + before * 0.5, NEW);
+    assert_eq!(r, Released::Nothing);
+    assert_eq!(w.particles[0].vel, before);
+}
