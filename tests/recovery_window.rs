@@ -55,8 +55,16 @@ fn a_killed_window_is_offered_back_and_restored_exactly() {
     let state = tempfile::tempdir().unwrap();
     let file = state.path().join("impulse").join("recovery.toml");
 
-    // A session that autosaves every half second, then dies.
+    // A session that autosaves every half second, then dies. With nothing
+    // of the person's in it, nothing is kept: the next start would not ask.
     let mut first = Sandbox::start_with_state(&x, &["--autosave", "0.5"], state.path());
+    sleep(Duration::from_millis(1500));
+    let s = first.wait_frames(2);
+    assert_eq!(s["recovery"]["saves"], 0, "nothing of the person's to keep");
+    assert!(!file.exists());
+    // A change of theirs (gravity on): now it is kept.
+    first.move_to([300.0, 300.0]);
+    first.xdo(&["key", "g"]);
     let s = wait_for(&first, "two autosaves", |s| {
         s["recovery"]["saves"].as_u64() >= Some(2)
     });
@@ -121,6 +129,9 @@ fn a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on() {
     let blocker = dir.path().join("not-a-folder");
     std::fs::write(&blocker, "").unwrap();
     let app = Sandbox::start_with_state(&x, &["--autosave", "0.3"], &blocker);
+    // Something to keep (gravity on), so autosave tries.
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "g"]);
     let s = wait_for(&app, "the failure", |s| s["recovery"]["error"].is_string());
     assert!(s["recovery"]["error"]
         .as_str()

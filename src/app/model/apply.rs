@@ -84,6 +84,10 @@ impl Sandbox {
             Some(moment) => self.undo.remember(move || moment, kind, now),
             None => self.undo.merge(kind, now),
         }
+        // A scene opened is the person's choice, not work to keep.
+        if kind != "open a scene" && kind != "reset" {
+            self.open.unsaved = true;
+        }
         if edits_discs {
             self.open.edited = true;
         }

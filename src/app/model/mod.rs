@@ -145,6 +145,10 @@ pub struct OpenScene {
     /// The discs were edited since the scene opened: its caption may no
     /// longer hold.
     pub edited: bool,
+    /// Something the person made (a launch, an edit, a law) has not been
+    /// saved since: on the desktop, only then is the sandbox kept for
+    /// recovery, and only then does the next start ask.
+    pub unsaved: bool,
 }
 
 /// Which panels, tabs and popups are open, and how large everything is.
@@ -339,6 +343,7 @@ impl Sandbox {
             world: start.world,
             open: OpenScene {
                 edited: start.scene.edited,
+                unsaved: false,
                 scene: start.scene,
                 origin: start.origin,
             },

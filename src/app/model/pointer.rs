@@ -97,6 +97,7 @@ impl Sandbox {
         if let (Some(what), Some(before)) = (what, before) {
             self.undo.remember(|| before, what, self.session.now);
             self.open.edited = true;
+            self.open.unsaved = true;
         }
         match released {
             Released::Launched(i) => self.selected = Some(i),

@@ -1,8 +1,10 @@
-//! Never lose work: every few seconds the sandbox is written, atomically, to
-//! a recovery file; a window that closes normally removes it, so a file that
-//! is still there at the next start means the last session ended abruptly
-//! (a crash, a killed process, a power cut), and the window offers to
-//! restore it: `R` restores, `Esc` sets it aside (renamed, not deleted).
+//! Never lose work: every few seconds, while the person has unsaved
+//! changes, the sandbox is written, atomically, to a recovery file; a
+//! window that closes normally (or whose work is saved) removes it, so a
+//! file that is still there at the next start means the last session ended
+//! abruptly with work in it (a crash, a killed process, a power cut), and
+//! the window offers to restore it: `R` restores, `Esc` sets it aside
+//! (renamed, not deleted). The simulation waits while it asks.
 //!
 //! The file is `recovery.toml` in `$XDG_STATE_HOME/impulse/` (else
 //! `~/.local/state/impulse/`, else the output folder). A write that fails (a
@@ -148,6 +150,14 @@ impl Recovery {
         self.offered.take()
     }
 
+    /// Nothing is left to keep (the work was saved): the file goes, so the
+    /// next start does not ask.
+    pub fn forget(&mut self) {
+        if self.last_hash.take().is_some() {
+            keep::remove(&self.path);
+        }
+    }
+
     /// The window closes normally: nothing to recover next time.
     pub fn finish(&mut self) {
         if self.every > 0.0 && self.offered.is_none() {
@@ -224,10 +234,18 @@ mod keep {
 }
 
 impl Sandbox {
-    /// Writes the recovery file when a save is due and the state moved.
+    /// Writes the recovery file when a save is due and the state moved. On
+    /// the desktop only while something the person made is unsaved (with
+    /// nothing of theirs to lose, the next start need not ask); in the
+    /// browser always, since a reload or a return reopens the kept sandbox.
     pub(super) fn autosave(&mut self) {
         let now = self.session.now;
         if !self.recovery.due(now) {
+            return;
+        }
+        if !cfg!(target_arch = "wasm32") && !self.open.unsaved {
+            self.recovery.skip(now);
+            self.recovery.forget();
             return;
         }
         let hash = self.world.state_hash();
@@ -245,7 +263,9 @@ impl Sandbox {
         if let Some(scene) = self.recovery.take_offer() {
             let origin = format!("recovered from {}", self.recovery.path().display());
             let _ = self.open_scene(scene, origin); // a failure is reported
-                                                    // The kept sandbox is what the person wanted: no start screen.
+                                                    // Kept nowhere but in the recovery file: still unsaved work.
+            self.open.unsaved = true;
+            // The kept sandbox is what the person wanted: no start screen.
             self.panels.start_open = false;
             self.resume_after_modal();
         }

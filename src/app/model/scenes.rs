@@ -167,6 +167,7 @@ impl Sandbox {
             Ok(world) => {
                 self.world = world;
                 self.open.edited = scene.edited;
+                self.open.unsaved = false;
                 self.forget_past();
                 self.steps.realtime.clear();
                 self.clock.dt = scene.step_for(self.session.dt);
@@ -261,6 +262,7 @@ impl Sandbox {
         match result {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
+                self.open.unsaved = false;
                 let verb = if cfg!(target_arch = "wasm32") {
                     "Downloaded"
                 } else {
@@ -349,6 +351,7 @@ impl Sandbox {
             scene: moment.scene,
             origin: moment.origin,
             edited: moment.edited,
+            unsaved: true,
         };
         // The rewind history and the plot belong to the undone timeline;
         // the ledger came back with the world.

@@ -330,3 +330,41 @@ fn the_spin_preset_stops_at_its_bounce_in_every_method() {
         assert!(s.message().is_some_and(|m| m.contains("wall")), "{method}");
     }
 }
+
+#[test]
+fn only_unsaved_work_is_kept_for_recovery() {
+    let dir = tempfile::tempdir().unwrap();
+    let preset = &scenes::PRESETS[7];
+    let scene = Scene::parse(preset.text, preset.path).unwrap();
+    let world = scene.build(preset.path).unwrap();
+    let mut s = Sandbox::new(Start {
+        scene,
+        origin: preset.path.into(),
+        world,
+        paused: false,
+        dt: None,
+        out: dir.path().join("out"),
+        recovery: (dir.path().to_path_buf(), 0.5),
+        scale: 1.0,
+        theme: Theme::Dark,
+        start_screen: false,
+    });
+    let file = dir.path().join(recovery::FILE_NAME);
+    let run = |s: &mut Sandbox, seconds: f64| {
+        for _ in 0..(seconds * 60.0) as usize {
+            later(s, 1.0 / 60.0);
+            s.tick(1.0 / 60.0, 1.0);
+        }
+    };
+    run(&mut s, 2.0);
+    assert!(
+        !file.exists(),
+        "a running preset is nothing of the person's to keep"
+    );
+    s.apply(Command::ToggleGravity);
+    run(&mut s, 1.0);
+    assert!(file.exists(), "a change of theirs is kept");
+    s.apply(Command::Save);
+    run(&mut s, 1.0);
+    assert!(!file.exists(), "saved: nothing left to recover");
+}
