@@ -109,3 +109,27 @@ pub fn set_fragment(value: &str) {
     // SAFETY: the page reads the string during the call.
     unsafe { impulse_fragment_set(value.as_ptr(), value.len()) }
 }
+
+thread_local! {
+    /// The sandbox as the page should keep it, refreshed by the window:
+    /// (local storage key, scene text).
+    static LATEST: std::cell::RefCell<Option<(String, String)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// Sets what [`impulse_keep_now`] writes: the sandbox now, under `key`.
+pub fn keep_latest(key: String, text: String) {
+    LATEST.with(|l| *l.borrow_mut() = Some((key, text)));
+}
+
+/// Called by the page when it is hidden or left (`visibilitychange`,
+/// `pagehide`): writes the latest sandbox into local storage at once, so a
+/// reload or a return reopens it as it was.
+#[no_mangle]
+pub extern "C" fn impulse_keep_now() {
+    LATEST.with(|l| {
+        if let Some((key, text)) = l.borrow_mut().take() {
+            let _ = storage_set(&key, &text); // a full storage was reported by autosave
+        }
+    });
+}

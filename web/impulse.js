@@ -73,4 +73,15 @@
         };
     }
     miniquad_add_plugin({ register_plugin: register, name: "impulse", version: 1 });
+    // Hidden or left: the app keeps its sandbox now (a reload or a return
+    // reopens it), not at the next autosave.
+    const keepNow = () => {
+        if (typeof wasm_exports !== "undefined" && wasm_exports.impulse_keep_now) {
+            wasm_exports.impulse_keep_now();
+        }
+    };
+    document.addEventListener("visibilitychange", () => {
+        if (document.visibilityState === "hidden") keepNow();
+    });
+    window.addEventListener("pagehide", keepNow);
 })();

@@ -138,7 +138,7 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     };
     let (width, height) = options.size;
     let plain = options.scene.is_none() && options.gas.is_none();
-    let app = App::new(options, scene, origin, world, plain);
+    let app = App::new(options, (scene, origin, world), plain, false);
     let conf = Conf {
         window_title: title,
         window_width: width,
@@ -224,8 +224,9 @@ pub fn run_in_browser() {
         sample_count: 4,
         ..Default::default()
     };
-    let plain = problem.is_none() && origin == "built-in default scene";
-    let mut app = App::new(options, scene, origin, world, plain);
+    let from_link = origin == "the shared link";
+    let plain = problem.is_none() && !from_link;
+    let mut app = App::new(options, (scene, origin, world), plain, from_link);
     if let Some(problem) = problem {
         app.model.report(problem);
     }
@@ -269,6 +270,8 @@ struct App {
     frame_stats: frame_stats::FrameStats,
     /// Whether the window draws its next frame at once or sleeps.
     idle: idle::Idle,
+    /// The state last handed to the page to keep, and when (the browser).
+    kept: (u64, f64),
 }
 
 impl App {
@@ -277,10 +280,9 @@ impl App {
     /// `--no-start`.
     fn new(
         options: WindowOptions,
-        scene: Scene,
-        origin: String,
-        world: World,
+        (scene, origin, world): (Scene, String, World),
         plain: bool,
+        from_link: bool,
     ) -> Self {
         let path = options.scene.as_ref().map(|p| p.display().to_string());
         let keep_all = options.frame_stats.is_some();
@@ -294,6 +296,7 @@ impl App {
             recovery: (model::recovery::folder(&options.out), options.autosave),
             scale: options.ui_scale,
             start_screen: plain && !options.no_start,
+            from_link,
             theme: if options.light {
                 model::Theme::Light
             } else {
@@ -315,6 +318,7 @@ impl App {
             frame: 0,
             frame_stats: frame_stats::FrameStats::new(keep_all),
             idle: idle::Idle::new(WM_CLASS),
+            kept: (0, f64::NEG_INFINITY),
         }
     }
 
@@ -351,6 +355,7 @@ impl App {
             let budget = model::clock::physics_budget(previous.0, previous.1);
             self.model.tick(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
+            self.keep_for_the_page();
             let timed_out = self
                 .options
                 .exit_after
@@ -418,6 +423,29 @@ impl App {
             timing: self.frame_stats.recent(),
         };
         dump::write(path, &dump::state(&self.model, window));
+    }
+
+    /// In the browser: hands the page the sandbox to keep when it is hidden
+    /// or left (`impulse_keep_now`), at most four times a second and only
+    /// when it changed.
+    fn keep_for_the_page(&mut self) {
+        if !cfg!(target_arch = "wasm32") || !self.model.worth_keeping() {
+            return;
+        }
+        let now = get_time();
+        if now - self.kept.1 < 0.25 {
+            return;
+        }
+        let print = self.model.fingerprint();
+        if print == self.kept.0 {
+            return;
+        }
+        self.kept = (print, now);
+        #[cfg(target_arch = "wasm32")]
+        crate::web::keep_latest(
+            format!("impulse:{}", self.model.recovery.path().display()),
+            self.model.current_scene().to_toml(),
+        );
     }
 
     /// What only the window can do, as the model asked.

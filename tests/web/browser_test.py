@@ -4,8 +4,12 @@ student at a Chromebook uses the page. Run by scripts/test-web.sh, which
 builds dist/ and serves it; the address comes as the first argument.
 
 Checks: the page loads without console errors and reports its first state
-within 3 s; it fills the browser window and follows a resize; the default
-scene moves; a drag on empty space launches a disc along the drag; a preset
+within 3 s; it opens on the start screen's tiles, with nothing running
+behind them, and *Free play* opens the sandbox; it fills the browser window
+and follows a resize, the world keeping its room at 1280×800 and 800×600;
+the default scene moves; a reload reopens the kept sandbox without asking;
+a shared link opens its own scene while the kept sandbox stays reachable
+from the menu; a drag on empty space launches a disc along the drag; a preset
 opens from the Presets menu; Save downloads a scene file; a shared link
 reopens its scene; touch launches and pinches; the physics matches the
 desktop build's bit for bit (`impulse fingerprint`'s state hashes, passed in
@@ -156,6 +160,25 @@ def show_widget(driver, name, section):
     raise AssertionError(f"{name} never came into view")
 
 
+def check_world_room(s, what):
+    """The layout's promise: from 800×600 up at scale 1, the world keeps at
+    least 40 % of the window and 240 px each way, and nothing docked covers
+    it."""
+    w, h = s["layout"]["window"]
+    world = s["layout"]["world"]
+    share = world[2] * world[3] / (w * h)
+    check(
+        share >= 0.4 - 1e-3 and world[2] >= 240 and world[3] >= 240,
+        f"{what}: the world keeps {share:.2} of a {w:.0f}×{h:.0f} window ({world})",
+    )
+    covered = [
+        p for p in s["layout"]["panels"]
+        if p[0] + 0.5 < world[0] + world[2] and world[0] + 0.5 < p[0] + p[2]
+        and p[1] + 0.5 < world[1] + world[3] and world[1] + 0.5 < p[1] + p[3]
+    ]
+    check(not covered, f"{what}: nothing docked covers the world ({covered})")
+
+
 def empty_spot(s):
     """A world point well clear of every disc and of the walls."""
     size = s["size"]
@@ -191,6 +214,18 @@ try:
         abs(window[0] - inner[0]) <= 1 and abs(window[1] - inner[1]) <= 1,
         f"the app fills the page ({window} for a page of {inner})",
     )
+
+    # A plain start opens on the start screen, nothing running behind it;
+    # Free play opens the sandbox.
+    s = with_dpr(d, wait_state(d, lambda s: "tile_free_play" in s["panel_widgets"], what="the start screen"))
+    check(s["ui"]["start_open"] and s["paused"], "a plain start shows the tiles, paused behind them")
+    t = s["time"]
+    s = with_dpr(d, wait_frames(d, 10))
+    check(s["time"] == t, "nothing runs behind the start screen")
+    click_widget(d, s, "tile_free_play")
+    s = wait_state(d, lambda s: not s["ui"]["start_open"], what="Free play to open")
+    check(not s["paused"], "Free play opens the sandbox, running")
+    check_world_room(with_dpr(d, wait_frames(d, 2)), "1280×800")
 
     # The default scene moves.
     a = wait_frames(d, 5)
@@ -270,6 +305,18 @@ try:
         f"Save downloads a scene file: {downloads}",
     )
 
+    # A reload reopens the kept sandbox as it was, without asking.
+    s = wait_frames(d, 2)
+    kept = len(s["particles"])
+    d.refresh()
+    s = wait_state(d, lambda s: s["frame"] >= 3, what="the reloaded page")
+    check(
+        not s["recovery"]["offered"] and not s["ui"]["start_open"]
+        and "kept by this browser" in s["scene_origin"],
+        f"a reload reopens the kept sandbox without asking ({s['scene_origin']})",
+    )
+    check(len(s["particles"]) == kept, f"with its {kept} discs ({len(s['particles'])})")
+
     # Share puts the scene in the address; the link reopens it.
     s = show_widget(d, "share", "section_scene")
     click_widget(d, s, "share")
@@ -278,6 +325,16 @@ try:
     check("#scene=" in link, f"Share link puts the scene into the address ({len(link)} characters)")
     shared = wait_frames(d, 1)
     d.save_screenshot(SCREENSHOT)
+    # The link opened in this browser opens its scene; the sandbox the
+    # browser kept stays, and the menu reopens it.
+    d.get("about:blank")
+    d.get(link)
+    s = with_dpr(d, wait_state(d, lambda s: s["frame"] >= 3, what="the link in the same browser"))
+    check(s["scene_origin"] == "the shared link", f"the link opens its own scene ({s['scene_origin']})")
+    s = show_widget(d, "reopen_kept", "section_scene")
+    click_widget(d, s, "reopen_kept")
+    s = wait_state(d, lambda s: "kept by this browser" in s["scene_origin"], what="the kept sandbox")
+    check(True, "Reopen my last sandbox brings the kept sandbox back")
     errors = console_errors(d)
     check(not errors, f"no console errors: {errors}")
 finally:
@@ -326,6 +383,7 @@ try:
         what="the app to follow the resize",
     )
     check(True, f"the app follows a resize ({inner} → {resized})")
+    check_world_room(with_dpr(d, wait_frames(d, 3)), "800×600 at pixel ratio 2")
 
     # A browser that will not keep the autosave says so in the window.
     d.execute_script(

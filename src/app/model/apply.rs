@@ -188,6 +188,7 @@ impl Sandbox {
                 self.resume_after_modal();
             }
             ShowAllControls => self.panels.focus = super::start::Tile::FreePlay,
+            ReopenKept => self.reopen_kept(),
             SetLaw(law, v) => {
                 let (lo, hi) = law.range().control;
                 *law.of_mut(&mut self.world.laws) = ((v * 100.0).round() / 100.0).clamp(lo, hi);

@@ -74,6 +74,8 @@ pub enum Command {
     CloseStart,
     /// Every control in the side dock, not only the lesson's.
     ShowAllControls,
+    /// The browser's kept sandbox, set aside by a shared link.
+    ReopenKept,
 
     // Laws and method.
     SetLaw(Law, f64),
@@ -170,7 +172,8 @@ impl Command {
             | OpenFile(_)
             | OpenText { .. }
             | RestoreRecovery
-            | StartWith(_) => "open a scene",
+            | StartWith(_)
+            | ReopenKept => "open a scene",
             Reset => "reset",
             Clear => "clear",
             SetLaw(Law::Restitution, _) | NudgeLaw(Law::Restitution, _) => "restitution",

@@ -328,6 +328,8 @@ pub struct Start {
     pub theme: Theme,
     /// Open on the start screen.
     pub start_screen: bool,
+    /// The scene came from a shared link (the browser).
+    pub from_link: bool,
 }
 
 impl Sandbox {
@@ -376,6 +378,9 @@ impl Sandbox {
             },
         };
         sandbox.panels.start_open = start.start_screen;
+        if cfg!(target_arch = "wasm32") {
+            sandbox.reopen_in_browser(start.from_link);
+        }
         if sandbox.modal_open() {
             sandbox.pause_for_modal();
         }

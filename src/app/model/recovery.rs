@@ -40,6 +40,10 @@ pub struct Recovery {
     pub error: Option<String>,
     /// A recovery found at start, waiting for the user's answer.
     pub offered: Option<Scene>,
+    /// In the browser, opened from a shared link: the sandbox the page
+    /// kept, left in storage and reachable from the menu ("Reopen my last
+    /// sandbox"); autosave waits for a change of the person's.
+    pub aside: Option<Scene>,
 }
 
 /// Where recovery files live: the per-user state folder, else `fallback`.
@@ -68,6 +72,7 @@ impl Recovery {
             saves: 0,
             error: None,
             offered: None,
+            aside: None,
         };
         let mut message = None;
         let origin = recovery.path.display().to_string();
@@ -234,16 +239,27 @@ mod keep {
 }
 
 impl Sandbox {
-    /// Writes the recovery file when a save is due and the state moved. On
-    /// the desktop only while something the person made is unsaved (with
-    /// nothing of theirs to lose, the next start need not ask); in the
-    /// browser always, since a reload or a return reopens the kept sandbox.
+    /// Whether the sandbox is worth keeping now: on the desktop only while
+    /// something the person made is unsaved (with nothing of theirs to
+    /// lose, the next start need not ask); in the browser always, since a
+    /// reload or a return reopens it, but not a shared link's scene until
+    /// the person changes it (the kept sandbox stays).
+    pub fn worth_keeping(&self) -> bool {
+        if cfg!(target_arch = "wasm32") {
+            self.recovery.aside.is_none() || self.open.unsaved
+        } else {
+            self.open.unsaved
+        }
+    }
+
+    /// Writes the recovery file when a save is due, the state moved and it
+    /// is worth keeping.
     pub(super) fn autosave(&mut self) {
         let now = self.session.now;
         if !self.recovery.due(now) {
             return;
         }
-        if !cfg!(target_arch = "wasm32") && !self.open.unsaved {
+        if !self.worth_keeping() {
             self.recovery.skip(now);
             self.recovery.forget();
             return;
@@ -281,6 +297,36 @@ impl Sandbox {
             Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
         }
         self.resume_after_modal();
+    }
+
+    /// The browser's kept sandbox, set aside while a shared link's scene is
+    /// open: opened again (the menu's "Reopen my last sandbox").
+    pub(super) fn reopen_kept(&mut self) {
+        if let Some(scene) = self.recovery.aside.clone() {
+            let origin = "your last sandbox, kept by this browser".to_string();
+            if self.open_scene(scene, origin).is_ok() {
+                self.recovery.aside = None;
+                self.open.unsaved = true;
+            }
+        }
+    }
+
+    /// In the browser the kept sandbox reopens without a question: a
+    /// reload or a return is no accident. With a shared link it is set
+    /// aside instead, for the menu.
+    pub(super) fn reopen_in_browser(&mut self, from_link: bool) {
+        let Some(scene) = self.recovery.offered.take() else {
+            return;
+        };
+        if from_link {
+            self.recovery.aside = Some(scene);
+            return;
+        }
+        let origin = "your last sandbox, kept by this browser".to_string();
+        if self.open_scene(scene, origin).is_ok() {
+            self.open.unsaved = true;
+            self.panels.start_open = false;
+        }
     }
 
     /// The line shown while an earlier session is offered.

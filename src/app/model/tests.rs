@@ -25,6 +25,7 @@ fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
         scale: 1.0,
         theme: Theme::Dark,
         start_screen: false,
+        from_link: false,
     });
     s.place_world([0.0, 0.0, 1000.0, 700.0]);
     s.fit_camera();
@@ -216,6 +217,7 @@ fn a_waiting_question_pauses_the_simulation_and_only_its_answers_go_through() {
         scale: 1.0,
         theme: Theme::Dark,
         start_screen: false,
+        from_link: false,
     });
     assert!(
         s.modal_open() && s.clock.paused,
@@ -348,6 +350,7 @@ fn only_unsaved_work_is_kept_for_recovery() {
         scale: 1.0,
         theme: Theme::Dark,
         start_screen: false,
+        from_link: false,
     });
     let file = dir.path().join(recovery::FILE_NAME);
     let run = |s: &mut Sandbox, seconds: f64| {

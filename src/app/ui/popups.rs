@@ -124,6 +124,15 @@ impl Popups {
             .fixed_size(size)
             .collapsible(false)
             .show(ctx, |ui| {
+                if cx.model.recovery.aside.is_some() {
+                    let r = ui.button(RichText::new("Reopen my last sandbox").strong());
+                    cx.marks.note("reopen_kept_menu", r.rect);
+                    if r.clicked() {
+                        cx.send(Command::ReopenKept);
+                    }
+                    ui.label("The sandbox this browser kept before the link opened.");
+                    ui.separator();
+                }
                 ui.label("Press the key, or click:");
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     for (k, label) in scenes::preset_labels().iter().enumerate() {

@@ -21,6 +21,15 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
                 }
             }
         });
+    if cx.model.recovery.aside.is_some() {
+        command_button(
+            ui,
+            cx,
+            "Reopen my last sandbox",
+            Command::ReopenKept,
+            Some("reopen_kept"),
+        );
+    }
     // The browser has no folders to type: a scene file is dropped on the
     // page, saves and exports download, and a link can carry it.
     let in_browser = cfg!(target_arch = "wasm32");
