@@ -100,6 +100,9 @@ pub struct CountsDump {
     pub count_line: String,
     /// Resting contacts in the last step (not counted as collisions).
     pub resting_contacts: usize,
+    /// Discs with their values beside them, of those on screen that were
+    /// to have them ([shown, wanted]); the world says so when fewer.
+    pub readouts_shown: [usize; 2],
     /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
     pub pi_result: Option<String>,
 }
@@ -241,6 +244,9 @@ pub struct Window<'a> {
     pub panels: &'a super::ui::Panels,
     /// The smallest text the world's drawing drew (px), if any.
     pub world_text_px: Option<f32>,
+    /// Discs with their values beside them, and discs on screen that were to
+    /// have them.
+    pub readouts: (usize, usize),
     pub timing: super::frame_stats::TimingSummary,
 }
 
@@ -275,6 +281,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
             wall_hits: world.total_wall_hits,
             count_line: super::model::lesson::count_line(world),
             resting_contacts: world.resting_contacts,
+            readouts_shown: [window.readouts.0, window.readouts.1],
             pi_result: super::model::lesson::pi_result(world),
         },
         scene: SceneDump {

@@ -420,6 +420,7 @@ impl App {
             },
             panels: &self.panels,
             world_text_px: self.painter.smallest_text(),
+            readouts: self.painter.readouts,
             timing: self.frame_stats.recent(),
         };
         dump::write(path, &dump::state(&self.model, window));

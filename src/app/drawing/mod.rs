@@ -28,6 +28,9 @@ use readouts::WorldText;
 pub struct Painter {
     batch: Option<DiscBatch>,
     text: Option<WorldText>,
+    /// Discs that got their values beside them last frame, and discs on
+    /// screen that were to have them.
+    pub readouts: (usize, usize),
 }
 
 impl Painter {
@@ -65,7 +68,8 @@ impl Painter {
         let Some(text) = self.text.as_ref() else {
             return;
         };
-        readouts::draw_readouts(world, camera, &model.overlays, model.selected, look, text);
+        self.readouts =
+            readouts::draw_readouts(world, camera, &model.overlays, model.selected, look, text);
         if let Gesture::Launching { start, .. } = model.pointer.gesture {
             let cursor = camera.screen_to_world(mouse);
             let disc = model.new_disc_now();
@@ -404,9 +408,9 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
 /// How long a collision's Δp arrows stay (simulated seconds).
 pub const DELTA_P_SECONDS: f64 = 1.0;
 
-/// For [`DELTA_P_SECONDS`] after each recorded impact, each disc in it
-/// carries its change of momentum m·(v′ − v) (at a wall: the wall's push),
-/// fading, on the momentum arrows' scale.
+/// For [`DELTA_P_SECONDS`] after each recorded collision between discs,
+/// each of its two discs carries its change of momentum m·(v′ − v), fading,
+/// on the momentum arrows' scale.
 fn draw_momentum_changes(
     world: &World,
     camera: &Camera,
@@ -424,11 +428,13 @@ fn draw_momentum_changes(
         let mut amber = color(look.colors.delta_p);
         amber.a *= fade;
         outline.a = fade;
+        // Between discs only: the lesson is that the two are equal and
+        // opposite (a wall's push, twice the momentum, would cross the box).
         let changes: Vec<(usize, DVec2)> = match impact {
             impulse::ledger::Impact::Pair(c) => (0..2)
                 .map(|k| (c.discs[k], c.masses[k] * (c.after[k] - c.before[k])))
                 .collect(),
-            impulse::ledger::Impact::Wall(w) => vec![(w.disc, w.wall_impulse())],
+            impulse::ledger::Impact::Wall(_) => continue,
         };
         for (disc, dp) in changes {
             let Some(p) = world.particles.get(disc) else {

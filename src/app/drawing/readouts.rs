@@ -147,6 +147,8 @@ fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, cell: f64) -> 
 }
 
 /// Text readouts beside the selected disc or every readable disc.
+/// Returns how many discs got their values and how many on screen were to
+/// have them; where not all could, it says so in the world's corner.
 pub fn draw_readouts(
     world: &World,
     camera: &Camera,
@@ -154,14 +156,14 @@ pub fn draw_readouts(
     selected: Option<usize>,
     look: Look,
     text: &WorldText,
-) {
+) -> (usize, usize) {
     let all = match overlays.readouts {
-        ReadoutScope::Off => return,
+        ReadoutScope::Off => return (0, 0),
         ReadoutScope::Selected => false,
         ReadoutScope::All => true,
     };
     if world.particles.is_empty() {
-        return;
+        return (0, 0);
     }
     let size = MIN_TEXT_POINTS * look.text_scale;
     let pad = 0.35 * size;
@@ -171,25 +173,26 @@ pub fn draw_readouts(
     let height = f64::from(rows * line_height + 2.0 * pad);
     let typical = DVec2::new(f64::from(22.0 * size), height);
     let Some(obstacles) = obstacles(world, camera, overlays, typical.y) else {
-        return;
+        return (0, 0);
     };
     let mut placer = LabelPlacer::new(typical);
     let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.text_scale));
     let mut labels = Vec::new();
+    let mut wanted = 0;
     // The selected disc first, so its label is never crowded out.
     let others = (0..world.particles.len()).filter(|&i| all && Some(i) != selected);
     for i in selected.into_iter().chain(others) {
-        if labels.len() >= MAX_LABELS {
-            break;
-        }
         let Some(p) = world.particles.get(i) else {
             continue;
         };
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius);
         let chosen = Some(i) == selected;
-        if !circle_on_screen(c, r, camera.screen_rect()) || !(chosen || r >= MIN_LABEL_DISC_PIXELS)
-        {
+        if !circle_on_screen(c, r, camera.screen_rect()) {
+            continue;
+        }
+        wanted += 1;
+        if labels.len() >= MAX_LABELS || !(chosen || r >= MIN_LABEL_DISC_PIXELS) {
             continue;
         }
         let lines = readout_lines(p, spin);
@@ -235,6 +238,19 @@ pub fn draw_readouts(
             text.draw(line, at, size, ink);
         }
     }
+    if labels.len() < wanted {
+        // Never silently fewer: say how many, in the world's corner.
+        let note = format!(
+            "values beside {} of {wanted} discs: no room for the rest (zoom in with the wheel)",
+            labels.len()
+        );
+        let (lo, hi) = camera.screen_rect();
+        let extent = text.measure(&note, size);
+        let at = vec2(lo.x as f32 + 8.0, hi.y as f32 - extent.y - 8.0);
+        draw_rectangle(at.x - 4.0, at.y, extent.x + 8.0, extent.y, background);
+        text.draw(&note, at, size, ink);
+    }
+    (labels.len(), wanted)
 }
 
 /// The launch preview's label: the speed, or that there is no room.
