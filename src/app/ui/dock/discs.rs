@@ -45,7 +45,8 @@ const SPIN_HEADINGS: [(&str, &str); 3] = [
     ),
     (
         "L\n(kg·m²/s)",
-        "angular momentum about the corner (0, 0): m·(x·v_y − y·v_x) of its moving plus I·ω of its turning",
+        "angular momentum, how much the disc goes round the box's bottom-left corner (0, 0) \
+         and turns: m·(x·v_y − y·v_x) of its moving plus I·ω of its turning",
     ),
 ];
 

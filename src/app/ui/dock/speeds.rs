@@ -20,8 +20,12 @@ impl View for Speeds {
             return;
         };
         if !spin_shown(&model.world) {
-            ui.label(format!(
-                "Bars: the discs' speeds. Curve: Maxwell–Boltzmann at the same temperature, kT = KE/N = {}.",
+            // One line, so the plot keeps its height; the whole on hover.
+            let line = "Bars: how many discs move at each speed. Curve: how a gas settles (Maxwell–Boltzmann).";
+            ui.add(egui::Label::new(line).truncate()).on_hover_text(format!(
+                "{line}\nThe curve is where the speeds end up once collisions have shared the energy \
+                 out at random, for discs with this much energy each on average: kT = KE/N = {} \
+                 (the temperature, in energy per disc).",
                 with_unit(h.kt, 3, "J")
             ));
             let height = ui.available_height();
@@ -47,7 +51,10 @@ impl View for Speeds {
                      and for the rim speeds (dashed)."
                 );
                 named(ui, "■ speeds |v|", PX_COLOR).on_hover_text(&meaning);
-                named(ui, "■ rim speeds |ω|·r", RIM_COLOR).on_hover_text(&meaning);
+                named(ui, "■ rim speeds |ω|·r", RIM_COLOR).on_hover_text(format!(
+                    "How fast the edge of each disc moves as it turns: its spin ω times its \
+                     radius r.\n{meaning}"
+                ));
             });
             let height = ui.available_height();
             speed_plot(ui, &h, Some(&rims), height, false);

@@ -53,9 +53,11 @@ impl View for Totals {
         }
         ui.horizontal_wrapped(|ui| {
             ui.label(drift).on_hover_text(
-                "p: momentum. L: angular momentum about the corner (0, 0) of the box; \
-                 collisions between discs keep it, a wall's push can change it. \
-                 E: kinetic energy, with spin KE + rotational KE.",
+                "p: momentum, mass times velocity, added up over the discs. L: angular \
+                 momentum, how much the discs go round the box's bottom-left corner (0, 0) \
+                 and turn. Collisions between discs keep both; the walls' pushes change \
+                 them (dashed lines mark where). E: the energy of moving (KE), and with \
+                 spinning discs of turning too.",
             );
             if compact {
                 let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
