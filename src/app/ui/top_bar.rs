@@ -70,7 +70,14 @@ impl View for TopBar {
         } else if model.clock.paused {
             RichText::new("⏸ PAUSED").color(paused)
         } else {
-            RichText::new(format!("▶ RUNNING ×{}", model.clock.time_scale())).color(running)
+            // The time scale only when it is not real time: a short line.
+            let scale = model.clock.time_scale();
+            let text = if scale == 1.0 {
+                "▶ RUNNING".to_string()
+            } else {
+                format!("▶ RUNNING ×{scale}")
+            };
+            RichText::new(text).color(running)
         };
         // Always shown, in this order.
         let essential = [
@@ -209,7 +216,8 @@ impl TopBar {
     /// while they fit, then "⋯ more" with the rest on hover, and the
     /// buttons at the right end.
     fn line(&self, ui: &mut egui::Ui, cx: &mut Cx, essential: [Item; 3], optional: Vec<Item>) {
-        let spacing = 18.0;
+        // Less room between items where the bar is narrow.
+        let spacing = if ui.available_width() < 700.0 { 12.0 } else { 18.0 };
         let galley = |ui: &egui::Ui, text: &RichText| -> Arc<egui::Galley> {
             WidgetText::from(text.clone()).into_galley(
                 ui,
@@ -225,63 +233,62 @@ impl TopBar {
         if !cx.model.panels.docks_open {
             buttons.push(("Show panels", Command::ToggleDocks, "show_panels"));
         }
-        let pad = 2.0 * ui.spacing().button_padding.x + 4.0;
-        let button_width: f32 = buttons
-            .iter()
-            .map(|(label, ..)| galley(ui, &RichText::new(*label)).size().x + pad + spacing)
-            .sum();
         let more = RichText::new("… more");
         let more_width = galley(ui, &more).size().x + spacing;
         let [name, time, state] = essential;
         let fixed =
             galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
-        // What the name and the other items may take, "… more" kept room for.
-        let free = ui.available_width() - button_width - more_width - fixed;
-        let name_width = galley(ui, &name.text).size().x.min((0.6 * free).max(60.0));
-        let mut room = free - name_width - spacing;
-        ui.horizontal(|ui| {
-            ui.spacing_mut().item_spacing.x = spacing;
-            ui.set_clip_rect(ui.max_rect());
-            // The name gives way first: it truncates, with the whole on hover.
-            let height = ui.available_height();
-            let r = ui.add_sized([name_width, height], egui::Label::new(name.text).truncate());
-            if let Some(h) = name.hover {
-                r.on_hover_text(h);
+        // The buttons first, from the right; the line gets what they leave.
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            ui.spacing_mut().item_spacing.x = 8.0;
+            for (label, command, name) in buttons {
+                super::widgets::command_button(ui, cx, label, command, Some(name));
             }
-            for item in [time, state] {
-                let r = ui.label(item.text);
-                if let Some(name) = item.name {
-                    cx.note(name, &r);
+            ui.add_space(spacing);
+            ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
+                // What the name and the other items may take, "… more" kept
+                // room for.
+                let free = ui.available_width() - more_width - fixed;
+                let name_width = galley(ui, &name.text).size().x.min((0.6 * free).max(40.0));
+                let mut room = free - name_width - spacing;
+                ui.spacing_mut().item_spacing.x = spacing;
+                ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
+                // The name gives way first: it truncates, with the whole on hover.
+                let height = ui.available_height();
+                let r = ui.add_sized([name_width, height], egui::Label::new(name.text).truncate());
+                if let Some(h) = name.hover {
+                    r.on_hover_text(h);
                 }
-            }
-            let mut hidden = Vec::new();
-            let count = optional.len();
-            for (k, item) in optional.into_iter().enumerate() {
-                let g = galley(ui, &item.text);
-                // The last item may use the room kept for "… more".
-                let last = k + 1 == count;
-                let need = g.size().x + spacing - if last { more_width } else { 0.0 };
-                if !hidden.is_empty() || need > room {
-                    hidden.push(item.text.text().to_string());
-                    continue;
+                for item in [time, state] {
+                    let r = ui.label(item.text);
+                    if let Some(name) = item.name {
+                        cx.note(name, &r);
+                    }
                 }
-                room -= g.size().x + spacing;
-                let r = ui.label(g);
-                let r = match item.hover {
-                    Some(h) => r.on_hover_text(h),
-                    None => r,
-                };
-                if let Some(name) = item.name {
-                    cx.note(name, &r);
+                let mut hidden = Vec::new();
+                let count = optional.len();
+                for (k, item) in optional.into_iter().enumerate() {
+                    let g = galley(ui, &item.text);
+                    // The last item may use the room kept for "… more".
+                    let last = k + 1 == count;
+                    let need = g.size().x + spacing - if last { more_width } else { 0.0 };
+                    if !hidden.is_empty() || need > room {
+                        hidden.push(item.text.text().to_string());
+                        continue;
+                    }
+                    room -= g.size().x + spacing;
+                    let r = ui.label(g);
+                    let r = match item.hover {
+                        Some(h) => r.on_hover_text(h),
+                        None => r,
+                    };
+                    if let Some(name) = item.name {
+                        cx.note(name, &r);
+                    }
                 }
-            }
-            if !hidden.is_empty() {
-                let r = ui.label(more).on_hover_text(hidden.join("\n"));
-                cx.note("top_bar_more", &r);
-            }
-            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                for (label, command, name) in buttons {
-                    super::widgets::command_button(ui, cx, label, command, Some(name));
+                if !hidden.is_empty() {
+                    let r = ui.label(more).on_hover_text(hidden.join("\n"));
+                    cx.note("top_bar_more", &r);
                 }
             });
         });
