@@ -136,10 +136,11 @@ fn picture(p: &egui::Painter, rect: egui::Rect, tile: Tile, ink: Color32) {
         }
         Tile::Gas => {
             for k in 0..14 {
-                // Scattered evenly (the golden ratio's steps), not at random.
+                // Scattered evenly over the picture (a low-discrepancy
+                // sequence), not at random.
                 let (u, v) = (
-                    (k as f32 * 0.618_034).fract(),
-                    (k as f32 * 0.414_214 + 0.3).fract(),
+                    (0.5 + k as f32 * 0.754_877_7).fract(),
+                    (0.5 + k as f32 * 0.569_840_3).fract(),
                 );
                 let x = rect.left() + rect.width() * (0.1 + 0.8 * u);
                 let y = rect.top() + h * (0.15 + 0.7 * v);

@@ -217,7 +217,11 @@ impl TopBar {
     /// buttons at the right end.
     fn line(&self, ui: &mut egui::Ui, cx: &mut Cx, essential: [Item; 3], optional: Vec<Item>) {
         // Less room between items where the bar is narrow.
-        let spacing = if ui.available_width() < 700.0 { 12.0 } else { 18.0 };
+        let spacing = if ui.available_width() < 700.0 {
+            12.0
+        } else {
+            18.0
+        };
         let galley = |ui: &egui::Ui, text: &RichText| -> Arc<egui::Galley> {
             WidgetText::from(text.clone()).into_galley(
                 ui,
