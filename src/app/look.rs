@@ -186,7 +186,8 @@ pub fn min_text_points(ctx: &egui::Context) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::app::model::{next_scale, UI_SCALES};
+    use crate::app::model::next_scale;
+    use crate::app::model::panels::UI_SCALES;
 
     #[test]
     fn f2_cycles_the_three_scales() {

@@ -5,7 +5,7 @@
 //! two columns where it is wide, scrolling where it is tall.
 
 use super::Cx;
-use crate::app::model::bindings::{browser_keeps, BINDINGS};
+use crate::app::model::bindings::{browser_keeps, control_of, BINDINGS};
 use crate::app::model::{scenes, Command};
 use egui::{Align2, RichText};
 
@@ -91,7 +91,7 @@ impl Popups {
                                 .max_col_width(ui.available_width() * 0.62)
                                 .show(ui, |ui| {
                                     for b in part {
-                                        help_row(ui, b.keys, b.help, b.control);
+                                        help_row(ui, b.keys, b.help, control_of(b).as_deref());
                                     }
                                 });
                         };

@@ -230,9 +230,12 @@ impl TopBar {
                 egui::TextStyle::Body,
             )
         };
-        let mut buttons: Vec<(&str, Command, &str)> = vec![("Start", Command::ShowStart, "start")];
+        let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or("?");
+        let mut buttons: Vec<(&str, Command, &str)> =
+            vec![(label(&Command::ShowStart), Command::ShowStart, "start")];
         if cx.drawer && cx.model.panels.docks_open {
-            buttons.push(("☰ Controls", Command::ToggleDrawer, "drawer_toggle"));
+            let toggle = Command::ToggleDrawer;
+            buttons.push((label(&toggle), toggle, "drawer_toggle"));
         }
         if !cx.model.panels.docks_open {
             buttons.push(("Show panels", Command::ToggleDocks, "show_panels"));
@@ -246,7 +249,7 @@ impl TopBar {
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             ui.spacing_mut().item_spacing.x = 8.0;
             for (label, command, name) in buttons {
-                super::widgets::command_button(ui, cx, label, command, Some(name));
+                super::widgets::labelled_button(ui, cx, label, command, Some(name));
             }
             ui.add_space(spacing);
             ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {

@@ -9,9 +9,21 @@ use crate::app::model::{Command, Note};
 use egui::{ComboBox, Slider, Ui};
 use std::fmt::Display;
 
-/// A button that sends `command` when clicked; its tooltip is the key that
-/// does the same, from the bindings table, and `hover` when given.
+/// A button that sends `command` when clicked, labelled and with its key in
+/// the tooltip as the bindings table says; noted under `name` in the dump.
 pub fn command_button(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    command: Command,
+    name: Option<&str>,
+) -> egui::Response {
+    let label = bindings::label(&command).unwrap_or("?");
+    labelled_button(ui, cx, label, command, name)
+}
+
+/// [`command_button`] with a label of its own (one that follows the state:
+/// Play or Pause).
+pub fn labelled_button(
     ui: &mut Ui,
     cx: &mut Cx,
     label: impl Into<egui::WidgetText>,

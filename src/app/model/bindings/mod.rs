@@ -90,7 +90,7 @@ pub struct Binding {
 
 mod table;
 
-pub use table::BINDINGS;
+pub use table::{BINDINGS, LABELS};
 
 /// The command `key` gives with these modifiers, pressed (`Trigger::Press`)
 /// or held (`Trigger::Hold`).
@@ -127,7 +127,7 @@ pub fn markdown_table() -> String {
             format!("`{}`", b.keys)
         };
         let help = b.help.replace('|', "\\|");
-        let control = b.control.unwrap_or("");
+        let control = control_of(b).unwrap_or_default();
         out.push_str(&format!("| {keys} | {help} | {control} |\n"));
     }
     out
@@ -138,6 +138,27 @@ pub fn markdown_table() -> String {
 pub fn mentions_the_mouse(b: &Binding) -> bool {
     let keys = b.keys.to_lowercase();
     ["drag", "click", "wheel"].iter().any(|m| keys.contains(m))
+}
+
+/// The on-screen label of the button that gives `command`, if one does.
+pub fn label(command: &Command) -> Option<&'static str> {
+    LABELS.iter().find(|(c, _)| c == command).map(|(_, l)| *l)
+}
+
+/// Where a help line's keys have an on-screen twin: the labels of its
+/// commands' buttons (from [`LABELS`]), else the section it names.
+pub fn control_of(b: &Binding) -> Option<String> {
+    let mut labels: Vec<&str> = Vec::new();
+    for (_, c) in b.acts {
+        if let Some(l) = label(c).filter(|l| !labels.contains(l)) {
+            labels.push(l);
+        }
+    }
+    match (labels.is_empty(), b.control) {
+        (false, Some(section)) => Some(format!("{} ({section})", labels.join(", "))),
+        (false, None) => Some(labels.join(", ")),
+        (true, section) => section.map(str::to_string),
+    }
 }
 
 /// Whether a key belongs to the browser, not to the page.

@@ -98,7 +98,7 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "Wheel, + / −",
         "zoom at the cursor / at the centre",
-        Some("View: Zoom + / −"),
+        Some("View"),
         &[
             (key(K::Equal), C::ZoomIn),
             (key(K::KpAdd), C::ZoomIn),
@@ -109,25 +109,25 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "F",
         "fit the box to the window",
-        Some("Fit view"),
+        None,
         &[(key(letter('F')), C::Fit)],
     ),
     line(
         "Space",
         "pause / resume",
-        Some("Play / Pause"),
+        None,
         &[(key(K::Space), C::TogglePause)],
     ),
     line(
         "N",
         "one step, paused",
-        Some("Step"),
+        None,
         &[(key(letter('N')), C::Step)],
     ),
     line(
         "[ / ]",
         "slower / faster",
-        Some("« Slower, Faster »"),
+        None,
         &[
             (key(K::LeftBracket), C::Slower),
             (key(K::RightBracket), C::Faster),
@@ -181,7 +181,7 @@ pub static BINDINGS: &[Binding] = &[
     line(
         ", / .",
         "back / forward through the recorded past; Shift: ×10",
-        Some("◀ Back, Forward ▶"),
+        None,
         &[
             (plain(K::Comma), C::Scrub(-1)),
             (shifted(K::Comma), C::Scrub(-10)),
@@ -251,13 +251,13 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "R",
         "reset the scene (asked after a session that did not close normally: restore it)",
-        Some("⟲ Reset"),
+        None,
         &[(key(letter('R')), C::Reset)],
     ),
     line(
         "1 … 9, 0, P",
         "open a classroom preset / the preset menu",
-        Some("Presets…"),
+        None,
         &[
             (key(K::Digit(1)), C::OpenPreset(0)),
             (key(K::Digit(2)), C::OpenPreset(1)),
@@ -281,13 +281,13 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "Ctrl+Z",
         "undo the last change to the scene",
-        Some("Undo"),
+        None,
         &[(ctrl(letter('Z')), C::Undo)],
     ),
     line(
         "Ctrl+Shift+Z, Ctrl+Y",
         "redo it",
-        Some("Redo"),
+        None,
         &[
             (ctrl_shift(letter('Z')), C::Redo),
             (ctrl(letter('Y')), C::Redo),
@@ -303,7 +303,7 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "Ctrl+S",
         "save the scene; it reopens exactly",
-        Some("Scene: Save"),
+        Some("Scene"),
         &[(ctrl(letter('S')), C::Save)],
     ),
     line(
@@ -332,7 +332,7 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "Tab",
         "hide or show the panels; the top bar stays",
-        Some("View: Hide panels"),
+        Some("View"),
         &[(key(K::Tab), C::ToggleDocks)],
     ),
     line(
@@ -366,7 +366,7 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "H or F1",
         "the list of keys and mouse actions",
-        Some("? Help"),
+        None,
         &[
             (key(letter('H')), C::ToggleHelp),
             (key(K::F(1)), C::ToggleHelp),
@@ -377,3 +377,35 @@ pub static BINDINGS: &[Binding] = &[
 
 /// Keyboard pan speed, pixels per frame.
 const PAN: f64 = 12.0;
+
+/// The on-screen label of each command that has a button: the buttons read
+/// it here, and the help names the control after it.
+pub static LABELS: &[(Command, &str)] = &[
+    (C::TogglePause, "Play / Pause"),
+    (C::Step, "Step"),
+    (C::Reset, "⟲ Reset"),
+    (C::Undo, "Undo"),
+    (C::Redo, "Redo"),
+    (C::Slower, "« Slower"),
+    (C::Faster, "Faster »"),
+    (C::TogglePresets, "Presets…"),
+    (C::Fit, "Fit view"),
+    (C::ToggleHelp, "? Help"),
+    (C::NextCollision, "Next collision"),
+    (C::Scrub(-1), "◀ Back"),
+    (C::Scrub(1), "Forward ▶"),
+    (C::DeleteSelected, "Delete"),
+    (C::Save, "Save"),
+    (C::Clear, "Clear discs"),
+    (C::Export, "Export CSV"),
+    (C::Screenshot, "Screenshot"),
+    (C::NextScale, "Projector size"),
+    (C::ZoomIn, "Zoom +"),
+    (C::ZoomOut, "Zoom −"),
+    (C::Fullscreen, "Full screen"),
+    (C::ToggleDocks, "Hide panels"),
+    (C::ShowStart, "Start"),
+    (C::ToggleDrawer, "☰ Controls"),
+    (C::ShowAllControls, "All controls"),
+    (C::ReopenKept, "Reopen my last sandbox"),
+];

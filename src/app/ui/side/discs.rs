@@ -123,7 +123,7 @@ impl DiscFields {
             if r.clicked() || enter {
                 self.apply(cx, i);
             }
-            command_button(ui, cx, "Delete", Command::DeleteSelected, Some("delete"));
+            command_button(ui, cx, Command::DeleteSelected, Some("delete"));
         });
         if let Some(note) = &cx.model.messages.fields {
             show_note(ui, note);

@@ -22,13 +22,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
             }
         });
     if cx.model.recovery.aside.is_some() {
-        command_button(
-            ui,
-            cx,
-            "Reopen my last sandbox",
-            Command::ReopenKept,
-            Some("reopen_kept"),
-        );
+        command_button(ui, cx, Command::ReopenKept, Some("reopen_kept"));
     }
     // The browser has no folders to type: a scene file is dropped on the
     // page, saves and exports download, and a link can carry it.
@@ -55,7 +49,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
                 cx.send(Command::OpenFile(path.clone()));
             }
         }
-        command_button(ui, cx, "Save", Command::Save, Some("save"));
+        command_button(ui, cx, Command::Save, Some("save"));
         if in_browser {
             let r = ui
                 .button("Share link")
@@ -65,9 +59,9 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
                 cx.send(Command::Share);
             }
         }
-        command_button(ui, cx, "Clear discs", Command::Clear, None);
-        command_button(ui, cx, "Export CSV", Command::Export, None);
-        command_button(ui, cx, "Screenshot", Command::Screenshot, None);
+        command_button(ui, cx, Command::Clear, None);
+        command_button(ui, cx, Command::Export, None);
+        command_button(ui, cx, Command::Screenshot, None);
     });
     if in_browser {
         ui.label("Saves, exports and screenshots download as files.");
@@ -101,13 +95,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     let other = panels.theme.other();
     let _ = next_scale;
     ui.horizontal_wrapped(|ui| {
-        command_button(
-            ui,
-            cx,
-            "Projector size",
-            Command::NextScale,
-            Some("projector"),
-        );
+        command_button(ui, cx, Command::NextScale, Some("projector"));
         let label = match other {
             Theme::Light => "Light theme",
             Theme::Dark => "Dark theme",
@@ -119,15 +107,15 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
         if r.clicked() {
             cx.send(Command::SetTheme(other));
         }
-        command_button(ui, cx, "Zoom +", Command::ZoomIn, None);
-        command_button(ui, cx, "Zoom −", Command::ZoomOut, None);
+        command_button(ui, cx, Command::ZoomIn, None);
+        command_button(ui, cx, Command::ZoomOut, None);
         // A page may go full screen only inside the click's own event,
         // which a frame never is: in the browser its own full-screen key
         // (F11, or the Chromebook's) does it.
         if !cfg!(target_arch = "wasm32") {
-            command_button(ui, cx, "Full screen", Command::Fullscreen, None);
+            command_button(ui, cx, Command::Fullscreen, None);
         }
-        command_button(ui, cx, "Hide panels", Command::ToggleDocks, None);
+        command_button(ui, cx, Command::ToggleDocks, None);
     });
 }
 

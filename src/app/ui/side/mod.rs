@@ -13,7 +13,7 @@ mod discs;
 mod files;
 mod laws;
 
-use super::widgets::command_button;
+use super::widgets::{command_button, labelled_button};
 use super::{Cx, View};
 use crate::app::model::overlays::{spin_shown, ReadoutScope};
 use crate::app::model::start::{Section, Tile};
@@ -60,11 +60,9 @@ impl View for SideDock {
         egui::ScrollArea::vertical().show(ui, |ui| {
             ui.set_width(ui.available_width());
             if focus != Tile::FreePlay {
-                let line = format!(
-                    "The controls for {}; All controls, at the end, shows the rest.",
-                    focus.title()
-                );
+                let line = format!("The controls for {}.", focus.title());
                 ui.add(egui::Label::new(line).wrap());
+                command_button(ui, cx, Command::ShowAllControls, Some("all_controls"));
             }
             let title = match cx.model.selected_disc() {
                 Some(i) => format!("Selected disc ({i})"),
@@ -109,9 +107,6 @@ impl View for SideDock {
                     }),
                 }
             }
-            if focus != Tile::FreePlay {
-                command_button(ui, cx, "All controls", Command::ShowAllControls, Some("all_controls"));
-            }
         });
     }
 }
@@ -136,16 +131,16 @@ fn transport(ui: &mut Ui, cx: &mut Cx) {
         } else {
             "⏸ Pause"
         };
-        command_button(ui, cx, play, Command::TogglePause, Some("play"));
-        command_button(ui, cx, "Step", Command::Step, Some("step"));
-        command_button(ui, cx, "⟲ Reset", Command::Reset, Some("reset"));
-        command_button(ui, cx, "Undo", Command::Undo, Some("undo"));
-        command_button(ui, cx, "Redo", Command::Redo, Some("redo"));
-        command_button(ui, cx, "« Slower", Command::Slower, None);
-        command_button(ui, cx, "Faster »", Command::Faster, None);
-        command_button(ui, cx, "Presets…", Command::TogglePresets, Some("presets"));
-        command_button(ui, cx, "Fit view", Command::Fit, None);
-        command_button(ui, cx, "? Help", Command::ToggleHelp, Some("help"));
+        labelled_button(ui, cx, play, Command::TogglePause, Some("play"));
+        command_button(ui, cx, Command::Step, Some("step"));
+        command_button(ui, cx, Command::Reset, Some("reset"));
+        command_button(ui, cx, Command::Undo, Some("undo"));
+        command_button(ui, cx, Command::Redo, Some("redo"));
+        command_button(ui, cx, Command::Slower, None);
+        command_button(ui, cx, Command::Faster, None);
+        command_button(ui, cx, Command::TogglePresets, Some("presets"));
+        command_button(ui, cx, Command::Fit, None);
+        command_button(ui, cx, Command::ToggleHelp, Some("help"));
     });
 }
 
@@ -249,15 +244,9 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         "",
     );
     ui.horizontal_wrapped(|ui| {
-        command_button(
-            ui,
-            cx,
-            "Next collision",
-            Command::NextCollision,
-            Some("next_collision"),
-        );
-        command_button(ui, cx, "◀ Back", Command::Scrub(-1), None);
-        command_button(ui, cx, "Forward ▶", Command::Scrub(1), None);
+        command_button(ui, cx, Command::NextCollision, Some("next_collision"));
+        command_button(ui, cx, Command::Scrub(-1), None);
+        command_button(ui, cx, Command::Scrub(1), None);
         toggle(
             ui,
             cx,

@@ -1,0 +1,134 @@
+//! Which panels, tabs and popups are open, the UI scale and the theme:
+//! the model's part of the screen, which the layout and the views read.
+
+use super::start;
+
+/// The bottom dock's tabs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DockTab {
+    Totals,
+    Collisions,
+    Discs,
+    Speeds,
+    Momenta,
+}
+
+impl DockTab {
+    /// The tab's title.
+    pub fn title(self) -> &'static str {
+        match self {
+            DockTab::Totals => "Totals",
+            DockTab::Collisions => "Collisions",
+            DockTab::Discs => "Discs",
+            DockTab::Speeds => "Speeds",
+            DockTab::Momenta => "Momenta",
+        }
+    }
+}
+
+/// Dark (the default, for a screen) or light (for a projector in a bright room).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Theme {
+    Dark,
+    Light,
+}
+
+impl Theme {
+    /// "dark" or "light".
+    pub fn name(self) -> &'static str {
+        match self {
+            Theme::Dark => "dark",
+            Theme::Light => "light",
+        }
+    }
+
+    /// The other one.
+    pub fn other(self) -> Theme {
+        match self {
+            Theme::Dark => Theme::Light,
+            Theme::Light => Theme::Dark,
+        }
+    }
+}
+
+/// The scales F2 cycles through; 2.0 is the projector's.
+pub const UI_SCALES: [f32; 3] = [1.0, 1.5, 2.0];
+/// The range of the scale slider.
+pub const UI_SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.5;
+
+/// The next of [`UI_SCALES`] after `scale` (back to the first after the last).
+pub fn next_scale(scale: f32) -> f32 {
+    UI_SCALES
+        .iter()
+        .copied()
+        .find(|&s| s > scale + 1e-3)
+        .unwrap_or(UI_SCALES[0])
+}
+
+/// Which panels, tabs and popups are open, and how large everything is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Panels {
+    /// Scale of every text and control (F2, the slider).
+    pub scale: f32,
+    /// Dark or light.
+    pub theme: Theme,
+    /// The side and bottom docks (Tab hides both for a full-size world).
+    pub docks_open: bool,
+    /// The side dock (L).
+    pub side_open: bool,
+    /// Where the side dock is a drawer (a small window): whether it is open.
+    pub drawer_open: bool,
+    /// The bottom dock's chosen tab.
+    pub tab: DockTab,
+    /// Whether the bottom dock shows its tab or only the tab row.
+    pub dock_expanded: bool,
+    /// The key list.
+    pub help_open: bool,
+    /// The preset menu.
+    pub presets_open: bool,
+    /// The start screen's tiles.
+    pub start_open: bool,
+    /// The lesson chosen on the start screen: which controls the side dock
+    /// shows (Free play: all).
+    pub focus: start::Tile,
+    /// The simulation was running when a modal screen paused it.
+    pub paused_by_modal: bool,
+}
+
+impl Panels {
+    pub(super) fn new(scale: f32, theme: Theme) -> Self {
+        let mut panels = Panels {
+            scale: 1.0,
+            theme,
+            docks_open: true,
+            side_open: true,
+            drawer_open: false,
+            tab: DockTab::Totals,
+            dock_expanded: true,
+            help_open: false,
+            presets_open: false,
+            start_open: false,
+            focus: start::Tile::FreePlay,
+            paused_by_modal: false,
+        };
+        panels.set_scale(scale);
+        panels
+    }
+
+    /// Sets the UI scale (kept in [`UI_SCALE_RANGE`]).
+    pub fn set_scale(&mut self, scale: f32) {
+        let scale = if scale.is_finite() { scale } else { 1.0 };
+        self.scale = scale.clamp(*UI_SCALE_RANGE.start(), *UI_SCALE_RANGE.end());
+    }
+
+    /// Opens the bottom dock on `tab`; the same tab again folds it.
+    pub fn show_tab(&mut self, tab: DockTab) {
+        if self.docks_open && self.dock_expanded && self.tab == tab {
+            self.dock_expanded = false;
+        } else {
+            self.docks_open = true;
+            self.dock_expanded = true;
+            self.tab = tab;
+        }
+    }
+}
