@@ -9,8 +9,6 @@ mod harness;
 
 use harness::*;
 use serde_json::Value;
-use std::thread::sleep;
-use std::time::Duration;
 
 fn main() -> std::process::ExitCode {
     harness::run(vec![
@@ -33,25 +31,6 @@ fn main() -> std::process::ExitCode {
     ])
 }
 
-/// Drags on the world from `from` to `to` (screen px), as a person does.
-fn drag(app: &Sandbox, from: [f64; 2], to: [f64; 2]) {
-    app.move_to(from);
-    app.wait_frames(2);
-    app.xdo(&["mousedown", "1"]);
-    app.wait_frames(2);
-    for k in 1..=6 {
-        let t = k as f64 / 6.0;
-        app.move_to([
-            from[0] + t * (to[0] - from[0]),
-            from[1] + t * (to[1] - from[1]),
-        ]);
-        sleep(Duration::from_millis(30));
-    }
-    app.wait_frames(2);
-    app.xdo(&["mouseup", "1"]);
-    app.wait_frames(3);
-}
-
 /// The counts the dump gives: (pairs, walls) counted, (pairs, walls) in the
 /// ledger, and the top bar's line.
 fn counts(s: &Value) -> ((u64, u64), (u64, u64), String) {
@@ -66,9 +45,10 @@ fn counts(s: &Value) -> ((u64, u64), (u64, u64), String) {
 fn two_discs_in_the_empty_box_count_the_same_everywhere_and_j_stops_at_walls() {
     let x = Xvfb::start("counts");
     let app = Sandbox::start(&x, &[&asset("preset-empty.toml")]);
-    drag(&app, [300.0, 400.0], [420.0, 330.0]);
-    drag(&app, [700.0, 300.0], [560.0, 380.0]);
-    let s = app.wait_frames(2);
+    app.drag([300.0, 400.0], [420.0, 330.0]);
+    app.wait_frames(3);
+    app.drag([700.0, 300.0], [560.0, 380.0]);
+    let s = app.wait_frames(3);
     assert_eq!(s["particles"].as_array().unwrap().len(), 2);
     // Let them bounce about, then compare the counts.
     let s = app.wait_for("impacts with walls and between discs", 1800, |s| {

@@ -52,20 +52,7 @@ fn dragging_on_empty_space_launches_a_disc_along_the_drag() {
     let app = Sandbox::start(&x, &[&asset("empty.toml"), "--paused"]);
     let view = View::of(&app.state());
     let (from, to) = ([400.0, 450.0], [640.0, 330.0]); // right and up on screen
-    app.move_to(from);
-    app.wait_frames(2);
-    app.xdo(&["mousedown", "1"]);
-    app.wait_frames(2);
-    for k in 1..=6 {
-        let t = k as f64 / 6.0;
-        app.move_to([
-            from[0] + t * (to[0] - from[0]),
-            from[1] + t * (to[1] - from[1]),
-        ]);
-        sleep(Duration::from_millis(30));
-    }
-    app.wait_frames(2);
-    app.xdo(&["mouseup", "1"]);
+    app.drag(from, to);
     let s = app.wait_frames(3);
 
     let discs = s["particles"].as_array().unwrap();

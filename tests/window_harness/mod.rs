@@ -287,6 +287,25 @@ impl Sandbox {
         assert!(status.success(), "xdotool {args:?} failed");
     }
 
+    /// A left drag from `from` to `to` (px) as a person makes it: press,
+    /// six moves 30 ms apart, release.
+    pub fn drag(&self, from: [f64; 2], to: [f64; 2]) {
+        self.move_to(from);
+        self.wait_frames(2);
+        self.xdo(&["mousedown", "1"]);
+        self.wait_frames(2);
+        for k in 1..=6 {
+            let t = k as f64 / 6.0;
+            self.move_to([
+                from[0] + t * (to[0] - from[0]),
+                from[1] + t * (to[1] - from[1]),
+            ]);
+            std::thread::sleep(std::time::Duration::from_millis(30));
+        }
+        self.wait_frames(2);
+        self.xdo(&["mouseup", "1"]);
+    }
+
     /// A left click at `p` as a person makes it: move, press, release,
     /// with a frame between each.
     pub fn click(&self, p: [f64; 2]) {

@@ -148,32 +148,7 @@ pub fn rect_hits_segment(r: [f64; 4], a: DVec2, b: DVec2, pad: f64) -> bool {
         DVec2::new(r[0] - pad, r[1] - pad),
         DVec2::new(r[0] + r[2] + pad, r[1] + r[3] + pad),
     );
-    // Clip the segment to the grown rectangle (Liang–Barsky).
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-d.x, a.x - lo.x),
-        (d.x, hi.x - a.x),
-        (-d.y, a.y - lo.y),
-        (d.y, hi.y - a.y),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-            if t0 > t1 {
-                return false;
-            }
-        }
-    }
-    true
+    super::clip::clip_segment(a, b, lo, hi).is_some()
 }
 
 impl Obstacles {

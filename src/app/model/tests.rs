@@ -5,28 +5,34 @@ use super::command::{Dir, EditPlace, Law};
 use super::*;
 use impulse::Scene;
 
-/// A sandbox on preset `index` (1-based as on the keys: 1 … 9, 0 is 10),
-/// in a 1000 × 700 px world, autosave off, its recovery folder `dir`.
-fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
+/// A sandbox on the preset whose file is `file`, its recovery folder
+/// `dir` with autosave every `autosave` seconds (0: off).
+fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) -> Sandbox {
     let preset = scenes::PRESETS
         .iter()
         .find(|p| p.path.ends_with(file))
         .unwrap_or_else(|| panic!("no preset {file}"));
     let scene = Scene::parse(preset.text, preset.path).unwrap();
     let world = scene.build(preset.path).unwrap();
-    let mut s = Sandbox::new(Start {
+    Sandbox::new(Start {
         scene,
         origin: preset.path.to_string(),
         world,
-        paused: true,
+        paused,
         dt: None,
         out: dir.join("out"),
-        recovery: (dir.to_path_buf(), 0.0),
+        recovery: (dir.to_path_buf(), autosave),
         scale: 1.0,
         theme: Theme::Dark,
         start_screen: false,
         from_link: false,
-    });
+    })
+}
+
+/// A paused sandbox on `file`'s preset in a 1000 × 700 px world, autosave
+/// off.
+fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
+    let mut s = sandbox_with(dir, file, true, 0.0);
     s.place_world([0.0, 0.0, 1000.0, 700.0]);
     s.fit_camera();
     s
@@ -203,22 +209,7 @@ fn a_waiting_question_pauses_the_simulation_and_only_its_answers_go_through() {
     let dir = tempfile::tempdir().unwrap();
     let kept = scenes::PRESETS[0].text;
     std::fs::write(dir.path().join(recovery::FILE_NAME), kept).unwrap();
-    let preset = &scenes::PRESETS[7];
-    let scene = Scene::parse(preset.text, preset.path).unwrap();
-    let world = scene.build(preset.path).unwrap();
-    let mut s = Sandbox::new(Start {
-        scene,
-        origin: preset.path.into(),
-        world,
-        paused: false,
-        dt: None,
-        out: dir.path().join("out"),
-        recovery: (dir.path().to_path_buf(), 5.0),
-        scale: 1.0,
-        theme: Theme::Dark,
-        start_screen: false,
-        from_link: false,
-    });
+    let mut s = sandbox_with(dir.path(), "preset-8-gas.toml", false, 5.0);
     assert!(
         s.modal_open() && s.clock.paused,
         "paused behind the question"
@@ -336,22 +327,7 @@ fn the_spin_preset_stops_at_its_bounce_in_every_method() {
 #[test]
 fn only_unsaved_work_is_kept_for_recovery() {
     let dir = tempfile::tempdir().unwrap();
-    let preset = &scenes::PRESETS[7];
-    let scene = Scene::parse(preset.text, preset.path).unwrap();
-    let world = scene.build(preset.path).unwrap();
-    let mut s = Sandbox::new(Start {
-        scene,
-        origin: preset.path.into(),
-        world,
-        paused: false,
-        dt: None,
-        out: dir.path().join("out"),
-        recovery: (dir.path().to_path_buf(), 0.5),
-        scale: 1.0,
-        theme: Theme::Dark,
-        start_screen: false,
-        from_link: false,
-    });
+    let mut s = sandbox_with(dir.path(), "preset-8-gas.toml", false, 0.5);
     let file = dir.path().join(recovery::FILE_NAME);
     let run = |s: &mut Sandbox, seconds: f64| {
         for _ in 0..(seconds * 60.0) as usize {

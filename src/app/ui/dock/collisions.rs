@@ -7,6 +7,7 @@ use super::super::{Cx, View};
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
+use glam::DVec2;
 use impulse::ledger::Impact;
 
 /// The tab (no state of its own).
@@ -104,52 +105,57 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
         who(impact),
         with_unit(impact.time(), 3, "s")
     ));
+    // Per disc: momentum and kinetic energy, and the velocity along the
+    // line of impact and across it (at a wall: away from it and along it).
+    type Split = ((f64, f64), (f64, f64));
+    let disc_rows = |d: usize,
+                     (p0, p1): (DVec2, DVec2),
+                     (e0, e1): (f64, f64),
+                     split: Split,
+                     names: [&str; 2]| {
+        let ((n0, t0), (n1, t1)) = split;
+        [
+            (
+                format!("disc {d}: p (kg·m/s)"),
+                vector(p0, 3, ""),
+                vector(p1, 3, ""),
+            ),
+            (format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)),
+            (
+                format!("disc {d}: v {} (m/s)", names[0]),
+                plain(n0, 3),
+                plain(n1, 3),
+            ),
+            (
+                format!("disc {d}: v {} (m/s)", names[1]),
+                plain(t0, 3),
+                plain(t1, 3),
+            ),
+        ]
+    };
     let mut rows: Vec<(String, String, String)> = Vec::new();
     match impact {
         Impact::Pair(c) => {
             for k in 0..2 {
-                let (p0, p1) = c.momentum(k);
-                let (e0, e1) = c.kinetic_energy(k);
-                let ((n0, t0), (n1, t1)) = c.components(k);
-                let d = c.discs[k];
-                rows.push((
-                    format!("disc {d}: p (kg·m/s)"),
-                    vector(p0, 3, ""),
-                    vector(p1, 3, ""),
-                ));
-                rows.push((format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)));
-                rows.push((
-                    format!("disc {d}: v along the line of impact (m/s)"),
-                    plain(n0, 3),
-                    plain(n1, 3),
-                ));
-                rows.push((
-                    format!("disc {d}: v across it (m/s)"),
-                    plain(t0, 3),
-                    plain(t1, 3),
+                let names = ["along the line of impact", "across it"];
+                let split = c.components(k);
+                rows.extend(disc_rows(
+                    c.discs[k],
+                    c.momentum(k),
+                    c.kinetic_energy(k),
+                    split,
+                    names,
                 ));
             }
         }
         Impact::Wall(w) => {
-            let (p0, p1) = w.momentum();
-            let (e0, e1) = w.kinetic_energy();
-            let ((n0, t0), (n1, t1)) = w.components();
-            let d = w.disc;
-            rows.push((
-                format!("disc {d}: p (kg·m/s)"),
-                vector(p0, 3, ""),
-                vector(p1, 3, ""),
-            ));
-            rows.push((format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)));
-            rows.push((
-                format!("disc {d}: v away from the wall (m/s)"),
-                plain(n0, 3),
-                plain(n1, 3),
-            ));
-            rows.push((
-                format!("disc {d}: v along the wall (m/s)"),
-                plain(t0, 3),
-                plain(t1, 3),
+            let names = ["away from the wall", "along the wall"];
+            rows.extend(disc_rows(
+                w.disc,
+                w.momentum(),
+                w.kinetic_energy(),
+                w.components(),
+                names,
             ));
             rows.push((
                 "the wall's push, Δp (kg·m/s)".to_string(),
