@@ -425,12 +425,17 @@ fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() 
     assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");
     // The key list fits the window, its key column too.
     app.xdo(&["key", "h"]);
-    let s = app.wait_for("the help", 30, |s| s["panel_widgets"]["help_window"].is_array());
+    let s = app.wait_for("the help", 30, |s| {
+        s["panel_widgets"]["help_window"].is_array()
+    });
     let _ = s;
     let s = app.wait_frames(3);
     let help = rect(&s["panel_widgets"]["help_window"]);
     assert!(
-        help[0] >= 0.0 && help[1] >= 0.0 && help[0] + help[2] <= window[0] + 0.5 && help[1] + help[3] <= window[1] + 0.5,
+        help[0] >= 0.0
+            && help[1] >= 0.0
+            && help[0] + help[2] <= window[0] + 0.5
+            && help[1] + help[3] <= window[1] + 0.5,
         "the help is inside the window: {help:?}"
     );
     app.quit();

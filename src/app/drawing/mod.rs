@@ -13,7 +13,7 @@ pub mod readouts;
 use crate::app::look::{color, Look};
 use crate::app::model::camera::Camera;
 use crate::app::model::gesture::{launch_velocity, Gesture, NewDisc};
-use crate::app::model::overlays::{spin_shown, Overlays, ARROW_SECONDS};
+use crate::app::model::overlays::{spin_shown, Overlays, ARROW_SECONDS, DELTA_P_MAX_DISCS};
 use crate::app::model::Sandbox;
 use cull::{arrow_readable, circle_on_screen, MIN_DISC_PIXELS};
 use discs::DiscBatch;
@@ -388,7 +388,7 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
             }
         }
     }
-    if overlays.delta_p {
+    if overlays.delta_p && world.particles.len() <= DELTA_P_MAX_DISCS {
         draw_momentum_changes(world, camera, mean_mass, look, clip);
     }
     if overlays.velocity {

@@ -8,6 +8,10 @@ use impulse::World;
 /// Arrows show where a disc will be this many seconds from now.
 pub const ARROW_SECONDS: f64 = 0.5;
 
+/// Δp arrows are drawn in scenes of up to this many discs: in a gas they
+/// would hide the discs (the checkbox says so).
+pub const DELTA_P_MAX_DISCS: usize = 40;
+
 /// Which discs carry a text readout.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ReadoutScope {

@@ -41,7 +41,7 @@ impl View for Momenta {
         let sum_color = ui.visuals().strong_text_color();
         let height = ui.available_height();
         // Axis names only where there is room for them beside the plot.
-        let roomy = height >= 140.0;
+        let roomy = height >= ROOMY_PLOT;
         // As wide as a chain needs: a wide, flat plot at one scale would
         // leave the arrows small in its middle.
         let width = ui.available_width().min(2.2 * height.max(60.0));

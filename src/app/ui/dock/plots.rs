@@ -14,6 +14,8 @@ pub const KE_COLOR: Color32 = Color32::from_rgb(0, 158, 115); // bluish green
 pub const ROT_COLOR: Color32 = Color32::from_rgb(213, 94, 0); // vermillion
 pub const L_COLOR: Color32 = Color32::from_rgb(204, 121, 167); // reddish purple
 pub const RIM_COLOR: Color32 = L_COLOR;
+/// From this height (points) a plot has room for its rotated axis name.
+pub const ROOMY_PLOT: f32 = 140.0;
 /// The marks where walls pushed the discs.
 pub const WALL_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
 /// Below this height (points) a plot has no room for its legend box.
@@ -71,7 +73,8 @@ pub fn speed_plot(
         plot
     };
     plot.x_axis_label(x_label)
-        .y_axis_label("per m/s")
+        // Rotated beside a short plot, the name would run past it.
+        .y_axis_label(if height >= ROOMY_PLOT { "per m/s" } else { "" })
         .include_y(0.0)
         .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
         .show(ui, |plot| {

@@ -82,7 +82,7 @@ impl View for Speeds {
             still_plot("shares_plot")
                 .height(height)
                 .x_axis_label("time (s)")
-                .y_axis_label("%")
+                .y_axis_label(if height >= ROOMY_PLOT { "%" } else { "" })
                 .include_y(0.0)
                 .include_y(100.0)
                 .label_formatter(|name, v| {

@@ -15,7 +15,7 @@ mod laws;
 
 use super::widgets::{command_button, labelled_button};
 use super::{Cx, View};
-use crate::app::model::overlays::{spin_shown, ReadoutScope};
+use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
 use crate::app::model::start::{Section, Tile};
 use crate::app::model::Command;
 use egui::{CollapsingHeader, ComboBox, Ui};
@@ -190,13 +190,17 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         Command::ToggleMomentum,
         "momentum p = m·v: mass times velocity",
     );
+    let hover = format!(
+        "each disc's change of momentum, for a second after each collision between discs \
+         (in scenes of up to {DELTA_P_MAX_DISCS} discs: in a gas they would hide the discs)"
+    );
     toggle(
         ui,
         cx,
         o.delta_p,
         &format!("Δp after a collision ({})", names.delta_p),
         Command::ToggleDeltaP,
-        "each disc's change of momentum, for a second after each collision",
+        &hover,
     );
     const SCOPES: [(ReadoutScope, &str); 3] = [
         (ReadoutScope::Off, "none"),
