@@ -29,7 +29,8 @@ impl View for Speeds {
                 with_unit(h.kt, 3, "J")
             ));
             let height = ui.available_height();
-            speed_plot(ui, &h, None, height, true);
+            // The line above names bars and curve; a short plot has no room for a legend box.
+            speed_plot(ui, &h, None, height, height >= ROOMY_PLOT);
             return;
         }
         // Rough discs: the rim speeds beside the speeds, and how the energy
