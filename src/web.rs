@@ -117,9 +117,10 @@ thread_local! {
         const { std::cell::RefCell::new(None) };
 }
 
-/// Sets what [`impulse_keep_now`] writes: the sandbox now, under `key`.
-pub fn keep_latest(key: String, text: String) {
-    LATEST.with(|l| *l.borrow_mut() = Some((key, text)));
+/// Sets what [`impulse_keep_now`] writes: the sandbox now, under `key`;
+/// `None` when nothing is worth keeping.
+pub fn keep_latest(latest: Option<(String, String)>) {
+    LATEST.with(|l| *l.borrow_mut() = latest);
 }
 
 /// Called by the page when it is hidden or left (`visibilitychange`,

@@ -117,7 +117,7 @@ pub fn busy(m: &super::model::Sandbox, was_running: bool, frame: u64) -> bool {
         moving
             || input
             || !matches!(m.pointer.gesture, Gesture::Idle)
-            || m.messages.toast.is_some()
+            || m.message().is_some()
             || frame < 2
     }
 }

@@ -156,7 +156,7 @@ impl Input {
     fn keys(&mut self, panels: &mut Panels, out: &mut Vec<Command>) {
         let ctrl = held_or_pressed([KeyCode::LeftControl, KeyCode::RightControl]);
         let shift = held_or_pressed([KeyCode::LeftShift, KeyCode::RightShift]);
-        if ctrl && is_key_pressed(KeyCode::Q) {
+        if ctrl && is_key_pressed(KeyCode::Q) && !cfg!(target_arch = "wasm32") {
             out.push(Command::Quit);
             return;
         }
@@ -175,7 +175,10 @@ impl Input {
             let codes = key_codes(key);
             if codes.iter().any(|&k| is_key_pressed(k)) {
                 if let Some(c) = command_for(key, ctrl, shift, Trigger::Press) {
-                    out.push(c);
+                    // The browser's tab is closed by the browser, never by the page.
+                    if !(cfg!(target_arch = "wasm32") && c == Command::Quit) {
+                        out.push(c);
+                    }
                 }
             }
             if !ctrl && codes.iter().any(|&k| is_key_down(k)) {

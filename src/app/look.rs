@@ -37,6 +37,10 @@ pub struct WorldColors {
     pub delta_p: [f32; 4],
     /// Drawn round the Δp arrows, so they read on every disc colour.
     pub outline: [f32; 4],
+    /// The centre of mass's marker and arrow.
+    pub center_of_mass: [f32; 4],
+    /// The disc a launch will make, before it is let go.
+    pub ghost: [f32; 4],
     pub selected: [f32; 4],
     pub text: [f32; 4],
     pub label_background: [f32; 4],
@@ -80,6 +84,8 @@ pub fn world_colors(theme: Theme) -> WorldColors {
             momentum: [1.0, 0.35, 0.75, 1.0],
             delta_p: [1.0, 0.78, 0.15, 1.0],
             outline: [0.0, 0.0, 0.0, 1.0],
+            center_of_mass: [0.94, 0.89, 0.26, 1.0],
+            ghost: [1.0, 1.0, 1.0, 0.35],
             selected: [1.0, 1.0, 1.0, 1.0],
             text: [1.0, 1.0, 1.0, 1.0],
             label_background: [0.03, 0.04, 0.07, 0.88],
@@ -94,6 +100,8 @@ pub fn world_colors(theme: Theme) -> WorldColors {
             momentum: [0.75, 0.0, 0.45, 1.0],
             delta_p: [0.55, 0.30, 0.0, 1.0],
             outline: [1.0, 1.0, 1.0, 1.0],
+            center_of_mass: [0.45, 0.38, 0.0, 1.0],
+            ghost: [0.0, 0.0, 0.0, 0.3],
             selected: [0.0, 0.0, 0.0, 1.0],
             text: [0.0, 0.0, 0.0, 1.0],
             label_background: [1.0, 1.0, 1.0, 0.92],

@@ -69,7 +69,7 @@ pub struct WindowOptions {
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = crate::cli::window_size)]
     pub size: (i32, i32),
-    /// Size of every text and line, 1 to 2.5 (F2 cycles 1, 1.5 and 2; 2 is
+    /// Size of every text and control, 1 to 2.5 (F2 cycles 1, 1.5 and 2; 2 is
     /// for a projector).
     #[arg(long, value_name = "SCALE", default_value_t = 1.0, value_parser = crate::cli::ui_scale)]
     pub ui_scale: f32,
@@ -105,7 +105,7 @@ fn gas_scene(count: usize) -> (Scene, String) {
     (scene, format!("--gas {count}"))
 }
 
-/// The scene the window opens without a file: something is already moving.
+/// The scene behind the start screen, and Free play's: something is moving.
 pub const DEFAULT_SCENE: &str = impulse::catalogue::DEFAULT.text;
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -367,7 +367,7 @@ impl App {
             let requested = self.model.session.requests.screenshot.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();
             let draw_start = impulse::clock::Instant::now();
-            self.painter.draw(&mut self.model, mouse);
+            self.painter.draw(&self.model, mouse);
             egui_macroquad::draw();
             // The whole frame, panels included, read back before it is shown.
             let capture = wanted.then(dump::screen_image);
@@ -430,7 +430,13 @@ impl App {
     /// or left (`impulse_keep_now`), at most four times a second and only
     /// when it changed.
     fn keep_for_the_page(&mut self) {
-        if !cfg!(target_arch = "wasm32") || !self.model.worth_keeping() {
+        if !cfg!(target_arch = "wasm32") {
+            return;
+        }
+        if !self.model.worth_keeping() {
+            #[cfg(target_arch = "wasm32")]
+            crate::web::keep_latest(None);
+            self.kept.0 = 0;
             return;
         }
         let now = get_time();
@@ -443,10 +449,10 @@ impl App {
         }
         self.kept = (print, now);
         #[cfg(target_arch = "wasm32")]
-        crate::web::keep_latest(
+        crate::web::keep_latest(Some((
             format!("impulse:{}", self.model.recovery.path().display()),
             self.model.current_scene().to_toml(),
-        );
+        )));
     }
 
     /// What only the window can do, as the model asked.

@@ -3,7 +3,9 @@
 //! the centre of mass, the contact at an impact and the launch preview; the
 //! readouts are in [`readouts`]. Everything goes through the camera. Lines
 //! keep their width in screen pixels whatever the UI scale (which enlarges
-//! text and controls, not arrows); colours come from the theme ([`look`]).
+//! text and controls, not arrows); colours come from the theme
+//! ([`crate::app::look`]), but for the contact's normal (orange) and tangent
+//! (blue), which read on both.
 
 mod clip;
 pub mod cull;
@@ -40,11 +42,10 @@ impl Painter {
     }
 
     /// Draws the world as the model has it, the pointer at `mouse`.
-    pub fn draw(&mut self, model: &mut Sandbox, mouse: DVec2) {
+    pub fn draw(&mut self, model: &Sandbox, mouse: DVec2) {
         let look = Look::of(model.panels.theme, model.panels.scale);
         // The centre-of-mass view draws a copy with relative velocities.
         let seen = model.world_as_seen();
-        let model = &*model;
         let world = seen.as_ref().unwrap_or(&model.world);
         let camera = &model.view.camera;
         clear_background(color(look.colors.background));
@@ -454,19 +455,19 @@ fn draw_momentum_changes(
 }
 
 /// The centre of mass as a cross in a circle, with its velocity arrow.
-pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64, _look: Look) {
+pub fn draw_center_of_mass(world: &World, camera: &Camera, arrow_seconds: f64, look: Look) {
     if world.particles.is_empty() {
         return;
     }
-    const COM_COLOR: Color = Color::new(0.94, 0.89, 0.26, 1.0); // yellow
+    let com_color = color(look.colors.center_of_mass);
     let m = world.metrics();
     let c = camera.world_to_screen(m.center_of_mass);
     let (x, y, s) = (c.x as f32, c.y as f32, 1.0);
-    draw_circle_lines(x, y, 9.0 * s, 2.0 * s, COM_COLOR);
-    draw_line(x - 12.0 * s, y, x + 12.0 * s, y, 2.0 * s, COM_COLOR);
-    draw_line(x, y - 12.0 * s, x, y + 12.0 * s, 2.0 * s, COM_COLOR);
+    draw_circle_lines(x, y, 9.0 * s, 2.0 * s, com_color);
+    draw_line(x - 12.0 * s, y, x + 12.0 * s, y, 2.0 * s, com_color);
+    draw_line(x, y - 12.0 * s, x, y + 12.0 * s, 2.0 * s, com_color);
     let tip = c + camera.vector_to_screen(m.center_of_mass_velocity * arrow_seconds);
-    arrow(vec2(x, y), px(tip), 3.0 * s, COM_COLOR, true);
+    arrow(vec2(x, y), px(tip), 3.0 * s, com_color, true);
 }
 
 /// The disc about to be launched, its arrow and speed.
@@ -483,7 +484,7 @@ pub fn draw_launch_preview(
     let at = px(camera.world_to_screen(spot.unwrap_or(start)));
     let r = camera.length_in_pixels(new_disc.radius).max(1.0) as f32;
     let ghost = if spot.is_some() {
-        Color::new(1.0, 1.0, 1.0, 0.35)
+        color(look.colors.ghost)
     } else {
         Color::new(1.0, 0.2, 0.2, 0.5)
     };

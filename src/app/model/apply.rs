@@ -108,6 +108,7 @@ impl Sandbox {
             // The start screen: a tile, a preset's key, or Esc for the
             // scene that is open.
             StartWith(_) | OpenPreset(_) | OpenEmpty | CloseStart if !question => Some(command),
+            Escape if !question && self.panels.help_open => Some(ToggleHelp),
             Escape if !question => Some(CloseStart),
             Quit
             | Fullscreen
@@ -229,14 +230,12 @@ impl Sandbox {
                 self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
                 self.toast(format!("Substeps: {}", self.world.substeps));
             }
-            SetNewRadius(r) => {
-                self.new_discs.disc.radius = r.clamp(0.01, self.biggest_radius());
-            }
+            SetNewRadius(r) => self.new_discs.disc.radius = self.radius_within(r),
             SetNewMass(m) => self.new_discs.disc.mass = m.clamp(1e-3, 1e6),
             StepNewRadius(dir) => {
                 let factor = if dir == Dir::Up { 1.25 } else { 0.8 };
                 let r = self.new_discs.disc.radius * factor;
-                self.new_discs.disc.radius = r.clamp(0.01, self.biggest_radius());
+                self.new_discs.disc.radius = self.radius_within(r);
                 let r = self.new_discs.disc.radius;
                 self.toast(format!("New discs: radius {r:.2} m"));
             }
@@ -306,6 +305,7 @@ impl Sandbox {
             ToggleDocks => self.panels.docks_open = !self.panels.docks_open,
             ToggleSide => self.panels.side_open = !self.panels.side_open,
             ToggleDrawer => self.panels.drawer_open = !self.panels.drawer_open,
+            CloseDrawer => self.panels.drawer_open = false,
             ToggleHelp => self.panels.help_open = !self.panels.help_open,
             TogglePresets => self.panels.presets_open = !self.panels.presets_open,
             Escape => {
@@ -341,6 +341,13 @@ impl Sandbox {
             self.clock.paused = false;
             self.resume_after_modal();
         }
+    }
+
+    /// A new disc's radius kept between 1 cm and the largest the box takes
+    /// (a box narrower than 2.2 cm takes less than 1 cm).
+    fn radius_within(&self, r: f64) -> f64 {
+        let biggest = self.biggest_radius();
+        r.max(0.01_f64.min(biggest)).min(biggest)
     }
 
     /// Z: the centre-of-mass view on or off. The camera moves with the

@@ -149,6 +149,8 @@ pub enum Command {
     ToggleDocks,
     ToggleSide,
     ToggleDrawer,
+    /// The drawer closes (the side dock docked again).
+    CloseDrawer,
     ToggleHelp,
     TogglePresets,
     /// Esc: closes what is open, else deselects.

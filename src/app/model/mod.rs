@@ -4,7 +4,9 @@
 //!
 //! A person's action is a [`Command`]; [`Sandbox::apply`] is the one place
 //! where one changes anything, and it remembers the scene for undo only
-//! when the command changed it (a click that selects is not an edit).
+//! when the command changed it (a click that selects is not an edit). The
+//! window also tells it its clock ([`Sandbox::begin_frame`]) and the
+//! world's rectangle ([`Sandbox::place_world`]).
 //! Time passing is [`Sandbox::tick`]: the physics steps, the totals, the
 //! trails, the rewind history and autosave. Keys map to commands through
 //! one table ([`bindings`]). The window (`super`) turns keys, clicks and

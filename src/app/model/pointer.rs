@@ -52,9 +52,12 @@ impl Sandbox {
         self.pointer.press = Some(self.moment());
         let slop = CLICK_SLOP_PIXELS / self.view.camera.scale;
         let camera = &self.view.camera;
+        // The tip is taken unless another disc lies under the pointer: a
+        // click on that disc selects it.
+        let under = self.world.particle_at(world_at);
         let tip = self
             .selected
-            .filter(|_| self.overlays.velocity)
+            .filter(|&i| self.overlays.velocity && under.is_none_or(|j| j == i))
             .and_then(|i| {
                 let p = self.world.particles.get(i)?;
                 let centre = camera.world_to_screen(p.pos);
@@ -63,10 +66,12 @@ impl Sandbox {
             });
         let now = self.session.now;
         match tip {
-            Some(i) => self
-                .pointer
-                .gesture
-                .press_arrow_tip(&self.world, i, ARROW_SECONDS),
+            Some(i) => {
+                let press = (world_at, slop);
+                self.pointer
+                    .gesture
+                    .press_arrow_tip(&self.world, i, ARROW_SECONDS, press)
+            }
             None => self.selected = self.pointer.gesture.press(&self.world, world_at, now, slop),
         }
     }

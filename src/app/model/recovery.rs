@@ -4,7 +4,10 @@
 //! file that is still there at the next start means the last session ended
 //! abruptly with work in it (a crash, a killed process, a power cut), and
 //! the window offers to restore it: `R` restores, `Esc` sets it aside
-//! (renamed, not deleted). The simulation waits while it asks.
+//! (renamed, not deleted). The simulation waits while it asks. In the
+//! browser nothing is asked: a reload or a return reopens the kept sandbox,
+//! and a shared link sets it aside (its own key, [`KEPT_NAME`]) for the
+//! menu's "Reopen my last sandbox".
 //!
 //! The file is `recovery.toml` in `$XDG_STATE_HOME/impulse/` (else
 //! `~/.local/state/impulse/`, else the output folder). A write that fails (a
@@ -22,6 +25,8 @@ use std::path::{Path, PathBuf};
 pub const DEFAULT_EVERY: f64 = 5.0;
 /// The recovery file's name.
 pub const FILE_NAME: &str = "recovery.toml";
+/// Where the browser keeps the sandbox a shared link set aside.
+pub const KEPT_NAME: &str = "last-sandbox.toml";
 /// Where a recovery the user set aside goes (the previous one is replaced).
 pub const SET_ASIDE_NAME: &str = "recovery-set-aside.toml";
 
@@ -246,7 +251,8 @@ impl Sandbox {
     /// the person changes it (the kept sandbox stays).
     pub fn worth_keeping(&self) -> bool {
         if cfg!(target_arch = "wasm32") {
-            self.recovery.aside.is_none() || self.open.unsaved
+            // Nothing chosen yet on the start screen: a reload shows it again.
+            !self.panels.start_open && (self.recovery.aside.is_none() || self.open.unsaved)
         } else {
             self.open.unsaved
         }
@@ -300,25 +306,46 @@ impl Sandbox {
     }
 
     /// The browser's kept sandbox, set aside while a shared link's scene is
-    /// open: opened again (the menu's "Reopen my last sandbox").
+    /// open: opened again (the menu's "Reopen my last sandbox"); its own
+    /// copy goes, since it is the sandbox again.
     pub(super) fn reopen_kept(&mut self) {
         if let Some(scene) = self.recovery.aside.clone() {
             let origin = "your last sandbox, kept by this browser".to_string();
             if self.open_scene(scene, origin).is_ok() {
                 self.recovery.aside = None;
                 self.open.unsaved = true;
+                self.panels.presets_open = false;
+                keep::remove(&self.recovery.path.with_file_name(KEPT_NAME));
             }
         }
+    }
+
+    /// A sandbox set aside by an earlier shared link, if one is kept.
+    fn kept_aside(&self) -> Option<Scene> {
+        let path = self.recovery.path.with_file_name(KEPT_NAME);
+        let text = keep::read(&path)?.ok()?;
+        Scene::parse(&text, &path.display().to_string()).ok()
     }
 
     /// In the browser the kept sandbox reopens without a question: a
     /// reload or a return is no accident. With a shared link it is set
     /// aside instead, for the menu.
     pub(super) fn reopen_in_browser(&mut self, from_link: bool) {
+        if !from_link {
+            self.recovery.aside = self.kept_aside();
+        }
         let Some(scene) = self.recovery.offered.take() else {
             return;
         };
         if from_link {
+            // Kept under a name of its own as well, so the link's scene,
+            // once changed and autosaved, never replaces it.
+            if let Err(e) = keep::write(
+                &self.recovery.path.with_file_name(KEPT_NAME),
+                &scene.to_toml(),
+            ) {
+                self.report(format!("Could not keep your last sandbox aside: {e}"));
+            }
             self.recovery.aside = Some(scene);
             return;
         }

@@ -55,6 +55,10 @@ impl Sandbox {
         if self.view.fitted && self.follows_discs() {
             self.fit_camera();
         }
+        if let Some(offset) = self.overlays.com_view {
+            // The centre-of-mass view: the camera moves with it.
+            self.view.camera.center = self.world.metrics().center_of_mass + offset;
+        }
         let simulated = self.world.time;
         let now = self.session.now;
         self.steps
@@ -207,12 +211,11 @@ impl Sandbox {
         }
     }
 
-    /// In the centre-of-mass view: the camera follows the centre of mass,
-    /// and the world as drawn has velocities relative to it.
-    pub fn world_as_seen(&mut self) -> Option<impulse::World> {
-        let offset = self.overlays.com_view?;
+    /// In the centre-of-mass view, the world as drawn: velocities relative
+    /// to the centre of mass (the camera follows it, [`Sandbox::tick`]).
+    pub fn world_as_seen(&self) -> Option<impulse::World> {
+        self.overlays.com_view?;
         let m = self.world.metrics();
-        self.view.camera.center = m.center_of_mass + offset;
         let mut seen = self.world.clone();
         for p in &mut seen.particles {
             p.vel -= m.center_of_mass_velocity;

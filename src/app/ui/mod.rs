@@ -125,11 +125,14 @@ pub struct Panels {
     start: start::StartScreen,
     /// This frame's notes.
     pub marks: Marks,
-    /// A text field has the keyboard: the shortcuts stay quiet.
+    /// A text field has the keyboard (or had it last frame, when Esc or
+    /// Tab may have taken it away): the shortcuts stay quiet.
     pub typing: bool,
     /// A text field was left with Enter: the keyboard stays with the panel
     /// (no shortcuts) until a click in the world or Esc.
     pub panel_keyboard: bool,
+    /// A text field had the keyboard last frame.
+    had_text_focus: bool,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// This frame's layout.
@@ -151,6 +154,7 @@ impl Panels {
             start: start::StartScreen,
             marks: Marks::default(),
             typing: false,
+            had_text_focus: false,
             panel_keyboard: false,
             pointer_on_ui: false,
             layout: Layout::default(),
@@ -165,6 +169,9 @@ impl Panels {
         egui_macroquad::ui(|ctx| self.frame(ctx, model, mouse, &mut out));
         if self.marks.left_with_enter {
             self.panel_keyboard = true;
+        } else if !out.is_empty() && !self.typing {
+            // A button pressed on a panel: the keys act on the world again.
+            self.panel_keyboard = false;
         }
         out
     }
@@ -252,6 +259,19 @@ impl Panels {
         }
         self.start.show(ctx, &mut cx);
         self.popups.show(ctx, &mut cx);
+        // A slider's value box typed into keeps the keyboard too.
+        let boxed = egui::Id::new(widgets::TYPING_IN_A_BOX);
+        if ctx
+            .data_mut(|d| d.remove_temp::<bool>(boxed))
+            .unwrap_or(false)
+        {
+            self.marks.text_focus = true;
+        }
+        // The layout says where the side dock is: a drawer left open while
+        // it docked again is closed, not kept for later.
+        if p.drawer_open && !matches!(rects.side_dock, SideDock::Drawer { .. }) {
+            out.push(Command::CloseDrawer);
+        }
         let world = ctx.available_rect();
         // Only a text field keeps the keyboard. egui moves focus to buttons
         // on Tab and the arrow keys, which are shortcuts here (Tab hides the
@@ -262,7 +282,10 @@ impl Panels {
                 ctx.memory_mut(|m| m.surrender_focus(id));
             }
         }
-        self.typing = self.marks.text_focus;
+        // egui lets go of a field at the start of the frame whose key (Esc,
+        // Tab, Enter) left it: that key belongs to the field, not the world.
+        self.typing = self.marks.text_focus || self.had_text_focus;
+        self.had_text_focus = self.marks.text_focus;
         let over_area = ctx.is_pointer_over_area() || ctx.is_using_pointer();
         let m = egui::pos2(mouse.x as f32 / ppp, mouse.y as f32 / ppp);
         self.pointer_on_ui = over_area || !world.contains(m);

@@ -48,7 +48,7 @@ pub fn labelled_button(
 /// list (a scene may ask for 3 substeps); returns the new choice.
 pub fn setting_combo<T: Copy + PartialEq + Display>(
     ui: &mut Ui,
-    label: &str,
+    (label, hover): (&str, &str),
     list: &[T],
     current: T,
 ) -> Option<T> {
@@ -64,12 +64,15 @@ pub fn setting_combo<T: Copy + PartialEq + Display>(
                     chosen = Some(item);
                 }
             }
-        });
+        })
+        .response
+        .on_hover_text(hover);
     chosen.filter(|&c| c != current)
 }
 
 /// A slider under its label, as wide as the dock allows, with its value
-/// (and unit) in a box beside it that can also be dragged or typed into.
+/// (and unit) in a box beside it that can also be dragged or typed into
+/// (while it has the keyboard the shortcuts stay quiet).
 /// Returns the track's response, so its rectangle is the track's, and
 /// whether the value changed.
 pub fn slider(
@@ -102,11 +105,19 @@ pub fn slider(
                 .fixed_decimals(decimals)
                 .suffix(suffix),
         );
+        if boxed.has_focus() {
+            // Typed into: the shortcuts stay quiet (a digit is a digit).
+            ui.ctx()
+                .data_mut(|d| d.insert_temp(egui::Id::new(TYPING_IN_A_BOX), true));
+        }
         let changed = track.changed() || boxed.changed();
         (track, changed)
     })
     .inner
 }
+
+/// Where a value box notes that it has the keyboard (egui's memory).
+pub const TYPING_IN_A_BOX: &str = "typing_in_a_box";
 
 /// A red or green line of feedback.
 pub fn show_note(ui: &mut Ui, note: &Note) -> egui::Response {

@@ -80,7 +80,11 @@ pub enum Gesture {
         seconds: f64,
         /// Its velocity before; kept if the tip is let go where it was taken.
         velocity_before: DVec2,
-        /// Whether the tip has been dragged at all.
+        /// Where the press happened (world).
+        pressed_at: DVec2,
+        /// Moves shorter than this (m) are a click, which sets nothing.
+        slop: f64,
+        /// Whether the cursor has gone further than `slop` from `pressed_at`.
         dragged: bool,
     },
 }
@@ -149,12 +153,22 @@ impl Gesture {
 
     /// Starts dragging the tip of disc `index`'s velocity arrow (drawn
     /// `seconds` long).
-    pub fn press_arrow_tip(&mut self, world: &World, index: usize, seconds: f64) {
+    /// A press at `at` closer than `slop` (m) to where it is let go is a
+    /// click: the velocity stays as it was.
+    pub fn press_arrow_tip(
+        &mut self,
+        world: &World,
+        index: usize,
+        seconds: f64,
+        (at, slop): (DVec2, f64),
+    ) {
         let velocity_before = world.particles.get(index).map_or(DVec2::ZERO, |p| p.vel);
         *self = Gesture::Aiming {
             index,
             seconds,
             velocity_before,
+            pressed_at: at,
+            slop,
             dragged: false,
         };
     }
@@ -171,14 +185,15 @@ impl Gesture {
         if let Gesture::Aiming {
             index,
             seconds,
+            pressed_at,
+            slop,
             dragged,
             ..
         } = self
         {
-            if let Some(p) = world.particles.get_mut(*index) {
-                let vel = (at - p.pos) / *seconds;
-                *dragged |= vel != p.vel;
-                p.vel = vel;
+            *dragged |= pressed_at.distance(at) > *slop;
+            if let (true, Some(p)) = (*dragged, world.particles.get_mut(*index)) {
+                p.vel = (at - p.pos) / *seconds;
             }
             return;
         }
@@ -235,15 +250,16 @@ impl Gesture {
                 index,
                 seconds,
                 velocity_before,
+                pressed_at,
+                slop,
                 dragged,
             } => match world.particles.get_mut(index) {
                 Some(p) => {
-                    let vel = (at - p.pos) / seconds;
-                    if !dragged && (vel - velocity_before).length() * seconds < 1e-9 {
+                    if !(dragged || pressed_at.distance(at) > slop) {
                         p.vel = velocity_before; // taken and let go: nothing set
-                        return Released::Nothing;
+                        return Released::Clicked(index);
                     }
-                    p.vel = vel;
+                    p.vel = (at - p.pos) / seconds;
                     Released::Aimed(index, p.vel)
                 }
                 None => Released::Nothing,
@@ -300,7 +316,7 @@ impl Gesture {
 
     /// Keeps indices right after disc `removed` was deleted.
     pub fn on_removed(&mut self, removed: usize) {
-        if let Gesture::Holding { index, .. } = self {
+        if let Gesture::Holding { index, .. } | Gesture::Aiming { index, .. } = self {
             if *index == removed {
                 *self = Gesture::Idle;
             } else if *index > removed {

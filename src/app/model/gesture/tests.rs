@@ -181,17 +181,20 @@ fn dragging_the_arrow_tip_sets_the_velocity_it_draws() {
         10.0
     ));
     let mut g = Gesture::default();
-    g.press_arrow_tip(&w, 0, 0.5);
+    g.press_arrow_tip(&w, 0, 0.5, (centre, SLOP));
     g.drag(&mut w, centre + DVec2::new(1.0, 0.0), 0.0);
     assert_eq!(w.particles[0].vel, DVec2::new(2.0, 0.0));
     let r = g.release(&mut w, centre + DVec2::new(0.5, 0.5), NEW);
     assert_eq!(r, Released::Aimed(0, DVec2::new(1.0, 1.0)));
     assert_eq!(w.particles[0].vel, DVec2::new(1.0, 1.0));
     assert_eq!(w.particles[0].pos, centre, "aiming moves nothing");
-    // Taken and let go where it was: nothing is set.
+    // Taken near the tip and let go there: nothing is set, even off the
+    // tip by a few pixels.
     let before = w.particles[0].vel;
-    g.press_arrow_tip(&w, 0, 0.5);
-    let r = g.release(&mut w, centre + before * 0.5, NEW);
-    assert_eq!(r, Released::Nothing);
+    let near = centre + before * 0.5 + DVec2::new(0.01, 0.0);
+    g.press_arrow_tip(&w, 0, 0.5, (near, SLOP));
+    g.drag(&mut w, near, 0.1);
+    let r = g.release(&mut w, near, NEW);
+    assert_eq!(r, Released::Clicked(0));
     assert_eq!(w.particles[0].vel, before);
 }

@@ -3,6 +3,7 @@
 //! newest before and after, disc by disc. Side by side where the dock is
 //! wide, one under the other where it is narrow; nothing overlaps.
 
+use super::super::widgets::command_button;
 use super::super::{Cx, View};
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
@@ -31,10 +32,7 @@ impl View for Collisions {
         ui.horizontal_wrapped(|ui| {
             let r = ui.label(count_line(world));
             cx.note("ledger_count", &r);
-            let tip = crate::app::model::bindings::tooltip(&Command::NextCollision);
-            if ui.button("Next collision").on_hover_text(tip).clicked() {
-                cx.send(Command::NextCollision);
-            }
+            command_button(ui, cx, Command::NextCollision, None);
         });
         let recent: Vec<Impact> = world
             .ledger
@@ -82,8 +80,13 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
                 .num_columns(4)
                 .spacing([18.0, 4.0])
                 .show(ui, |ui| {
-                    for h in ["t (s)", "what", "Δp (kg·m/s)", "ΔKE (J)"] {
-                        ui.strong(h);
+                    for (h, hover) in [
+                        ("t (s)", "when it happened"),
+                        ("what", "which discs, or which disc and wall"),
+                        ("Δp (kg·m/s)", "the change of the total momentum of the discs in it: zero between discs, the wall's push at a wall"),
+                        ("ΔKE (J)", "the change of their kinetic energy, the energy of moving: zero in an elastic collision, less than zero when some is lost"),
+                    ] {
+                        ui.strong(h).on_hover_text(hover);
                     }
                     ui.end_row();
                     for impact in recent {

@@ -247,8 +247,9 @@ impl View for DiscsTable {
             self.editing = None;
         }
         if let Some(cell) = commit {
-            // Enter leaves the cell; the keyboard stays with the panel.
-            cx.marks.left_with_enter = true;
+            // Enter leaves the cell; the keyboard stays with the panel (a
+            // click elsewhere gives it back to the world).
+            cx.marks.left_with_enter |= ui.input(|i| i.key_pressed(egui::Key::Enter));
             let mut text: [Option<String>; 4] = Default::default();
             text[cell.field] = Some(cell.text.clone());
             cx.send(Command::EditDisc {

@@ -4,7 +4,8 @@
 
 use super::super::widgets::{command_button, select_all_on_focus, show_note, slider};
 use super::Cx;
-use crate::app::model::command::EditPlace;
+use crate::app::model::bindings::tooltip;
+use crate::app::model::command::{Dir, EditPlace};
 use crate::app::model::gesture::radius_for_mass;
 use crate::app::model::Command;
 use crate::app::numbers::{field, with_unit};
@@ -61,14 +62,16 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
         if changed {
             cx.send(Command::SetNewRadius(r));
         }
-        cx.note("new_radius", &track.on_hover_text("PgUp / PgDn"));
+        let tip = tooltip(&Command::StepNewRadius(Dir::Up));
+        cx.note("new_radius", &track.on_hover_text(tip));
     }
     let mut m = disc.mass;
     let (track, changed) = slider(ui, "Mass", &mut m, 0.01..=100.0, true, 2, " kg");
     if changed {
         cx.send(Command::SetNewMass(m));
     }
-    cx.note("new_mass", &track.on_hover_text("Home / End"));
+    let tip = tooltip(&Command::StepNewMass(Dir::Up));
+    cx.note("new_mass", &track.on_hover_text(tip));
 }
 
 impl DiscFields {

@@ -123,13 +123,21 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
 pub fn details(ui: &mut Ui, cx: &mut Cx) {
     let model = cx.model;
     let w = &model.world;
-    if let Some(m) = setting_combo(ui, "method", &METHODS, w.method) {
+    if let Some(m) = setting_combo(ui, ("method", "How the computer works out the collisions: auto chooses; exact finds each one at its instant; the others step in small fixed times and correct overlaps"), &METHODS, w.method) {
         cx.send(Command::SetMethod(m));
     }
-    if let Some(b) = setting_combo(ui, "broad phase", &BROAD_PHASES, w.broad_phase) {
+    if let Some(b) = setting_combo(ui, ("broad phase", "How the computer finds which discs are near each other before checking them closely: it only changes the speed, not the result"), &BROAD_PHASES, w.broad_phase) {
         cx.send(Command::SetBroadPhase(b));
     }
-    if let Some(k) = setting_combo(ui, "substeps", &SUBSTEPS, w.substeps) {
+    if let Some(k) = setting_combo(
+        ui,
+        (
+            "substeps",
+            "How many smaller steps each time step is cut into: more is more accurate and slower",
+        ),
+        &SUBSTEPS,
+        w.substeps,
+    ) {
         cx.send(Command::SetSubsteps(k));
     }
     ui.add(egui::Label::new(model.method_line()).wrap());
@@ -139,7 +147,8 @@ pub fn details(ui: &mut Ui, cx: &mut Cx) {
     ui.label(format!(
         "time step dt = {}",
         with_unit(model.clock.dt * 1e3, 3, "ms")
-    ));
+    ))
+    .on_hover_text("how much simulated time one step of the computer covers");
     ui.label(format!(
         "step time {} (median), {} steps in the last frame",
         with_unit(median, 1, "µs"),

@@ -12,10 +12,9 @@ use crate::app::model::Command;
 use egui::{ComboBox, Ui};
 use impulse::Boundary;
 
-/// Earth's gravity, where the gravity slider sticks (m/s²).
-pub const EARTH_GRAVITY: f64 = 9.81;
+use crate::app::model::apply::EARTH_GRAVITY;
 
-/// The gravity slider's value: tenths, sticking to 9.81 within 0.15.
+/// The gravity slider's value: tenths, sticking to Earth's within 0.15.
 pub fn snap_gravity(g: f64) -> f64 {
     if (g - EARTH_GRAVITY).abs() < 0.15 {
         EARTH_GRAVITY
@@ -93,7 +92,11 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     let boundary = cx.model.world.laws.boundary;
     if let Some(b) = setting_combo(
         ui,
-        "edges",
+        (
+            "edges",
+            "What the sides of the box do: box, walls the discs bounce off; open, no walls \
+             (discs fly away); periodic, a disc leaving on one side comes back on the other",
+        ),
         &Boundary::ALL.map(Boundary::name),
         boundary.name(),
     ) {
