@@ -169,9 +169,6 @@ impl Panels {
         egui_macroquad::ui(|ctx| self.frame(ctx, model, mouse, &mut out));
         if self.marks.left_with_enter {
             self.panel_keyboard = true;
-        } else if !out.is_empty() && !self.typing {
-            // A button pressed on a panel: the keys act on the world again.
-            self.panel_keyboard = false;
         }
         out
     }
