@@ -289,6 +289,10 @@ impl World {
     /// it: with `exact` at the very instant of impact, with the discrete
     /// methods at the end of the step that resolved it (the newest of that
     /// step's impacts is returned). Turns the ledger on if it was off.
+    /// `verlet` counts its pair collisions but cannot record them (see
+    /// [`crate::ledger`]): it stops after one all the same and returns
+    /// `None`, so the caller tells it from "none within the limit" by the
+    /// world's counters.
     pub fn run_to_next_impact(&mut self, dt: f64, limit: f64) -> Option<Impact> {
         self.run_to_next(Next::Impact, dt, limit)
     }
@@ -305,6 +309,7 @@ impl World {
             Next::Impact => ledger.recorded_impacts(),
         };
         let before = seen(&self.ledger);
+        let counted = self.total_pair_collisions + self.total_wall_hits;
         let until = self.time + limit.max(0.0);
         self.methods.exact.stop_at_collision = true;
         self.methods.exact.stop_at_wall = next == Next::Impact;
@@ -325,6 +330,10 @@ impl World {
             self.ledger.keep(keep);
             if self.time == time_before && found.is_none() {
                 break; // no progress (the event cap)
+            }
+            let unrecorded = self.total_pair_collisions + self.total_wall_hits > counted;
+            if found.is_none() && next == Next::Impact && unrecorded {
+                break; // counted but not recorded: verlet's pair collisions
             }
         }
         self.methods.exact.stop_at_collision = false;

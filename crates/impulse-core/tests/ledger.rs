@@ -332,3 +332,23 @@ fn wall_hits_of_large_scenes_name_the_right_disc_on_any_thread_count() {
         "the same ledger on any thread count"
     );
 }
+
+#[test]
+fn verlet_stops_at_a_pair_collision_it_cannot_record() {
+    // Head-on, 1 m/s each, centres 3 m apart, radii 0.5: contact after 1 s.
+    let mut w = closed_box(
+        Method::Verlet,
+        vec![
+            disc([3.5, 5.0], [1.0, 0.0], 1.0, 0.5),
+            disc([6.5, 5.0], [-1.0, 0.0], 1.0, 0.5),
+        ],
+    );
+    let found = w.run_to_next_impact(DT, 60.0);
+    assert_eq!(found, None, "nothing recorded");
+    assert_eq!((w.total_pair_collisions, w.total_wall_hits), (1, 0));
+    assert!(
+        (w.time - 1.0).abs() <= 2.0 * DT,
+        "stopped at the collision: {}",
+        w.time
+    );
+}

@@ -347,3 +347,18 @@ fn only_unsaved_work_is_kept_for_recovery() {
     run(&mut s, 1.0);
     assert!(!file.exists(), "saved: nothing left to recover");
 }
+
+#[test]
+fn next_collision_with_verlet_stops_at_a_collision_it_cannot_record_and_says_so() {
+    use impulse::method::{Method, Setting};
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::SetMethod(Setting::Fixed(Method::Verlet)));
+    s.apply(Command::NextCollision);
+    assert_eq!(s.world.total_pair_collisions, 1, "stopped at the collision");
+    let message = s.message().unwrap_or("");
+    assert!(
+        message.contains("verlet") && !message.contains("No collision"),
+        "{message}"
+    );
+}

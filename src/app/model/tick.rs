@@ -124,9 +124,11 @@ impl Sandbox {
         if !self.world.ledger.is_on() {
             self.world.ledger.keep(LEDGER_KEEP);
         }
+        let counted = self.world.total_pair_collisions;
         let found = self
             .world
             .run_to_next_impact(self.clock.dt, NEXT_COLLISION_LIMIT);
+        let unrecorded = self.world.total_pair_collisions > counted;
         self.record.history.record(&self.world);
         self.overlays.contact = true;
         self.panels.docks_open = true;
@@ -155,6 +157,11 @@ impl Sandbox {
                     with_unit(dke, 3, "J")
                 ));
             }
+            None if unrecorded => self.toast(format!(
+                "Discs collided at t = {}; verlet moves positions apart, so it has no before and \
+                 after of one collision to show: the ledger has no row for it",
+                with_unit(self.world.time, 3, "s")
+            )),
             None => self.toast(format!("No collision within {NEXT_COLLISION_LIMIT:.0} s")),
         }
     }
