@@ -144,6 +144,13 @@ def show_widget(driver, name, section):
     for _ in range(40):
         widgets = s["panel_widgets"]
         if visible(widgets.get(name)):
+            # egui scrolls smoothly: wait until the widget holds still, or a
+            # click meant for it lands on its neighbour.
+            for _ in range(30):
+                later = with_dpr(driver, wait_frames(driver, 2))
+                if later["panel_widgets"].get(name) == s["panel_widgets"].get(name):
+                    return later
+                s = later
             return s
         if name not in widgets and visible(widgets.get(section)):
             click_widget(driver, s, section)
