@@ -8,8 +8,6 @@ mod harness;
 use harness::*;
 use impulse::Scene;
 use std::path::PathBuf;
-use std::thread::sleep;
-use std::time::Duration;
 
 fn main() -> std::process::ExitCode {
     harness::run(vec![
@@ -303,20 +301,7 @@ fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
     let tip = view.to_screen([pos[0] + 0.5 * vel[0], pos[1] + 0.5 * vel[1]]);
     // Whole pixels: that is where xdotool puts the cursor.
     let target = [centre[0].round(), (centre[1] - 60.0).round()];
-    app.move_to(tip);
-    app.wait_frames(2);
-    app.xdo(&["mousedown", "1"]);
-    app.wait_frames(2);
-    for k in 1..=5 {
-        let t = k as f64 / 5.0;
-        app.move_to([
-            tip[0] + t * (target[0] - tip[0]),
-            tip[1] + t * (target[1] - tip[1]),
-        ]);
-        sleep(Duration::from_millis(30));
-    }
-    app.wait_frames(2);
-    app.xdo(&["mouseup", "1"]);
+    app.drag(tip, target);
     let after = app.wait_frames(3);
     let d = &after["particles"][0];
     assert_eq!(vec2(&d["pos"]), pos, "aiming does not move the disc");
