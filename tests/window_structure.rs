@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 /// `src/app`'s modules, lowest layer first (`mod` is `src/app/mod.rs`).
 const LAYERS: &[&[&str]] = &[
+    &["lang"],
     &["numbers", "layout", "display", "frame_stats"],
     &["model"],
     &["look"],

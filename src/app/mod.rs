@@ -14,6 +14,7 @@ mod dump;
 mod frame_stats;
 mod idle;
 mod input;
+pub mod lang;
 pub mod layout;
 mod look;
 pub mod model;

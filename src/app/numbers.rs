@@ -1,24 +1,59 @@
-//! Numbers as the screen shows them: a fixed number of decimals, never in
-//! e-notation, never "-0.000" (a value below display precision is 0.000),
-//! with its unit.
+//! Numbers as the screen shows them, in one place: a fixed number of
+//! decimals, never in e-notation, never "-0.000" (a value below display
+//! precision is 0.000), with its unit, and with the decimal separator of
+//! the language spoken ([`crate::app::lang::decimal_comma`]: "2,000 J";
+//! a vector's components are then separated by "; "). Fields read numbers
+//! with either separator ([`parse`]). Files, the dump and the command line
+//! keep the decimal point and do not come here.
 
+use crate::app::lang::{decimal_comma, tr};
 use glam::DVec2;
 
 /// `v` with `decimals` decimals, in plain digits; a value that rounds to
 /// zero has no sign, and a value that is not finite says so in words.
 pub fn plain(v: f64, decimals: usize) -> String {
     if v.is_nan() {
-        return "not a number".into();
+        return tr!("number-not-a-number");
     }
     if v.is_infinite() {
         return if v > 0.0 { "∞" } else { "−∞" }.into();
     }
     let text = format!("{v:.decimals$}");
-    match text.strip_prefix('-') {
+    let text = match text.strip_prefix('-') {
         Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
         Some(rest) => format!("−{rest}"),
         None => text,
+    };
+    local(text)
+}
+
+/// A number written with a decimal point, with the language's separator.
+fn local(text: String) -> String {
+    if decimal_comma() {
+        text.replace('.', ",")
+    } else {
+        text
     }
+}
+
+/// The separator between a vector's components: ", ", or "; " where the
+/// comma is the decimal separator.
+pub fn list_separator() -> &'static str {
+    if decimal_comma() {
+        "; "
+    } else {
+        ", "
+    }
+}
+
+/// A number typed into a field: a decimal point or comma, a minus sign or
+/// hyphen, spaces around; `None` if it is not one number.
+pub fn parse(text: &str) -> Option<f64> {
+    let text = text.trim().replace('−', "-").replace(',', ".");
+    if text.matches('.').count() > 1 {
+        return None;
+    }
+    text.parse::<f64>().ok()
 }
 
 /// `v` and its unit: "2.000 J".
@@ -29,8 +64,9 @@ pub fn with_unit(v: f64, decimals: usize, unit: &str) -> String {
 /// A vector and its unit: "(2.000, 0.000) kg·m/s".
 pub fn vector(v: DVec2, decimals: usize, unit: &str) -> String {
     format!(
-        "({}, {}) {unit}",
+        "({}{}{}) {unit}",
         plain(v.x, decimals),
+        list_separator(),
         plain(v.y, decimals)
     )
 }
@@ -52,10 +88,11 @@ pub fn adaptive(v: f64, min_decimals: usize) -> String {
 /// user sees.
 pub fn field(v: f64) -> String {
     let text = plain(v, 6).replace('−', "-");
-    if !text.contains('.') {
+    let point = if decimal_comma() { ',' } else { '.' };
+    if !text.contains(point) {
         return text;
     }
-    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
+    let trimmed = text.trim_end_matches('0').trim_end_matches(point);
     if trimmed == "-0" || trimmed.is_empty() {
         "0".into()
     } else {
@@ -102,6 +139,31 @@ mod tests {
     }
 
     #[test]
+    fn a_decimal_comma_where_the_language_has_one() {
+        use crate::app::lang::{set_language, Lang};
+        set_language(Lang::De);
+        assert_eq!(plain(-2.5, 2), "−2,50");
+        assert_eq!(
+            vector(DVec2::new(2.0, -0.5), 2, "m/s"),
+            "(2,00; −0,50) m/s"
+        );
+        assert_eq!(field(0.25), "0,25");
+        assert_eq!(field(3.0), "3");
+        assert_eq!(parse(&field(-2.345678)), Some(-2.345678));
+        set_language(Lang::En);
+        assert_eq!(plain(-2.5, 2), "−2.50");
+    }
+
+    #[test]
+    fn fields_take_either_separator() {
+        assert_eq!(parse("1,5"), Some(1.5));
+        assert_eq!(parse(" 1.5 "), Some(1.5));
+        assert_eq!(parse("−2"), Some(-2.0));
+        assert_eq!(parse("1,5.2"), None);
+        assert_eq!(parse("two"), None);
+    }
+
+    #[test]
     fn fields_read_back_and_have_no_exponent() {
         assert_eq!(field(1.0), "1");
         assert_eq!(field(0.1 + 0.2), "0.3");
@@ -109,7 +171,7 @@ mod tests {
         assert_eq!(field(-1e-9), "0");
         assert_eq!(field(2.5e9), "2500000000");
         for v in [1.0, 0.3, -2.5, 0.001, 2.5e9] {
-            assert_eq!(field(v).parse::<f64>().unwrap(), v);
+            assert_eq!(parse(&field(v)), Some(v));
         }
     }
 }

@@ -8,12 +8,15 @@ use crate::world::World;
 use serde::Serialize;
 
 /// One warning: a stable code and a sentence for the screen.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Warning {
     /// Stable identifier, e.g. `"verlet_loses_energy"`.
     pub code: &'static str,
     /// What it means for the experiment, in plain words.
     pub text: String,
+    /// The numbers in the text, by name (`restitution`, `substeps`,
+    /// `radii`), so that a window can say it in its own words.
+    pub values: Vec<(&'static str, f64)>,
 }
 
 /// `verlet` is in use: its collisions are position corrections, so they
@@ -45,10 +48,12 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
                 "verlet: collisions lose energy; the restitution e = {} is not honoured",
                 trim(world.laws.restitution)
             ),
+            values: vec![("restitution", world.laws.restitution)],
         }),
         Method::Seed if several => out.push(Warning {
             code: SEED,
             text: "seed: fast discs can pass through each other".into(),
+            values: Vec::new(),
         }),
         _ => {}
     }
@@ -68,6 +73,7 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
                     if k == 1 { "" } else { "s" },
                     worst
                 ),
+                values: vec![("substeps", f64::from(k)), ("radii", worst)],
             });
         }
     }
@@ -79,6 +85,7 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
                  (too many collisions at once); choose impulse",
                 method.name()
             ),
+            values: Vec::new(),
         });
     }
     out

@@ -4,7 +4,8 @@
 
 use super::command::{Command, Dir, Law};
 use super::{next_scale, scenes, Sandbox};
-use crate::app::numbers::vector;
+use crate::app::lang::tr;
+use crate::app::numbers::{vector, with_unit};
 use glam::DVec2;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
@@ -51,12 +52,12 @@ fn nudge(e: f64, dir: Dir, (lo, hi): (f64, f64)) -> f64 {
 }
 
 /// A law's name in a message.
-pub fn law_name(law: Law) -> &'static str {
+pub fn law_name(law: Law) -> String {
     match law {
-        Law::Restitution => "Restitution e",
-        Law::WallRestitution => "Wall restitution",
-        Law::Roughness => "Roughness β",
-        Law::WallRoughness => "Wall roughness β",
+        Law::Restitution => tr!("law-restitution"),
+        Law::WallRestitution => tr!("law-wall-restitution"),
+        Law::Roughness => tr!("law-roughness"),
+        Law::WallRoughness => tr!("law-wall-roughness"),
     }
 }
 
@@ -85,7 +86,7 @@ impl Sandbox {
             None => self.undo.merge(kind, now),
         }
         // A scene opened is the person's choice, not work to keep.
-        if kind != "open a scene" && kind != "reset" {
+        if kind != "edit-open-scene" && kind != "edit-reset" {
             self.open.unsaved = true;
         }
         if edits_discs {
@@ -155,7 +156,8 @@ impl Sandbox {
                 self.clock
                     .change_time_scale(if command == Slower { -1 } else { 1 });
                 self.steps.realtime.clear();
-                self.toast(format!("Time scale ×{}", self.clock.time_scale()));
+                let scale = crate::app::numbers::field(self.clock.time_scale());
+                self.toast(tr!("time-scale", scale = scale));
             }
             SetTimeScale(k) => {
                 self.clock.set_time_scale_index(k);
@@ -198,7 +200,7 @@ impl Sandbox {
                 let value = law.of_mut(&mut self.world.laws);
                 *value = nudge(*value, dir, law.range().control);
                 let v = *value;
-                self.toast(format!("{} = {v:.1}", law_name(law)));
+                self.toast(format!("{} = {}", law_name(law), crate::app::numbers::plain(v, 1)));
             }
             SetFriction(mu) => {
                 let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
@@ -212,7 +214,7 @@ impl Sandbox {
                 let on = self.world.laws.gravity == DVec2::ZERO;
                 self.world.laws.gravity = DVec2::new(0.0, if on { -EARTH_GRAVITY } else { 0.0 });
                 let g = self.world.laws.gravity.length();
-                self.toast(format!("Gravity {g:.2} m/s²"));
+                self.toast(tr!("gravity-now", gravity = with_unit(g, 2, "m/s²")));
             }
             SetBoundary(b) => self.world.laws.boundary = b,
             SetMethod(m) => self.world.method = m,
@@ -220,15 +222,15 @@ impl Sandbox {
             SetSubsteps(k) => self.world.substeps = k,
             CycleMethod => {
                 self.world.method = cycle(&METHODS, self.world.method);
-                self.toast(format!("Method: {}", self.world.method));
+                self.toast(tr!("method-now", method = self.world.method.to_string()));
             }
             CycleBroadPhase => {
                 self.world.broad_phase = cycle(&BROAD_PHASES, self.world.broad_phase);
-                self.toast(format!("Broad phase: {}", self.world.broad_phase));
+                self.toast(tr!("broad-phase-now", broad = self.world.broad_phase.to_string()));
             }
             CycleSubsteps => {
                 self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
-                self.toast(format!("Substeps: {}", self.world.substeps));
+                self.toast(tr!("substeps-now", substeps = self.world.substeps.to_string()));
             }
             SetNewRadius(r) => self.new_discs.disc.radius = self.radius_within(r),
             SetNewMass(m) => self.new_discs.disc.mass = m.clamp(1e-3, 1e6),
@@ -237,13 +239,13 @@ impl Sandbox {
                 let r = self.new_discs.disc.radius * factor;
                 self.new_discs.disc.radius = self.radius_within(r);
                 let r = self.new_discs.disc.radius;
-                self.toast(format!("New discs: radius {r:.2} m"));
+                self.toast(tr!("new-disc-radius", radius = with_unit(r, 2, "m")));
             }
             StepNewMass(dir) => {
                 let factor = if dir == Dir::Up { 2.0 } else { 0.5 };
                 let m = (self.new_discs.disc.mass * factor).clamp(1e-3, 1e6);
                 self.new_discs.disc.mass = m;
-                self.toast(format!("New discs: mass {m:.3} kg"));
+                self.toast(tr!("new-disc-mass", mass = with_unit(m, 3, "kg")));
             }
             SizeFollowsMass(on) => self.new_discs.size_follows_mass = on,
             Select(i) => self.selected = i.filter(|&i| i < self.world.particles.len()),
@@ -263,12 +265,11 @@ impl Sandbox {
             ToggleTrails => self.record.trails.on = !self.record.trails.on,
             TogglePalette => {
                 self.overlays.safe_palette = !self.overlays.safe_palette;
-                let which = if self.overlays.safe_palette {
-                    "colour-blind-safe palette (Okabe-Ito, by disc number)"
+                self.toast(if self.overlays.safe_palette {
+                    tr!("palette-safe")
                 } else {
-                    "the scene's colours"
-                };
-                self.toast(format!("Discs in {which}"));
+                    tr!("palette-scene")
+                });
             }
             ToggleCenterOfMassView => self.toggle_center_of_mass_view(),
             ZoomIn | ZoomOut => {
@@ -324,7 +325,8 @@ impl Sandbox {
             SetScale(s) => self.panels.set_scale(s),
             NextScale => {
                 self.panels.set_scale(next_scale(self.panels.scale));
-                self.toast(format!("Text size ×{}", self.panels.scale));
+                let scale = crate::app::numbers::field(f64::from(self.panels.scale));
+                self.toast(tr!("text-size", scale = scale));
             }
             SetTheme(t) => self.panels.theme = t,
             Fullscreen => self.session.requests.fullscreen = true,
@@ -355,15 +357,15 @@ impl Sandbox {
     /// it; the discs' velocities are never changed.
     fn toggle_center_of_mass_view(&mut self) {
         if self.overlays.com_view.take().is_some() {
-            self.toast("Centre-of-mass view off: velocities as seen from the box");
+            self.toast(tr!("com-view-off"));
             return;
         }
         let m = self.world.metrics();
         self.overlays.com_view = Some(self.view.camera.center - m.center_of_mass);
         self.view.fitted = false;
-        self.toast(format!(
-            "Centre-of-mass view: moving with the centre of mass at {}; Z again to leave",
-            vector(m.center_of_mass_velocity, 3, "m/s")
+        self.toast(tr!(
+            "com-view-on",
+            velocity = vector(m.center_of_mass_velocity, 3, "m/s")
         ));
     }
 }

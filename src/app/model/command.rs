@@ -175,23 +175,23 @@ impl Command {
             | OpenText { .. }
             | RestoreRecovery
             | StartWith(_)
-            | ReopenKept => "open a scene",
-            Reset => "reset",
-            Clear => "clear",
-            SetLaw(Law::Restitution, _) | NudgeLaw(Law::Restitution, _) => "restitution",
+            | ReopenKept => "edit-open-scene",
+            Reset => "edit-reset",
+            Clear => "edit-clear",
+            SetLaw(Law::Restitution, _) | NudgeLaw(Law::Restitution, _) => "edit-restitution",
             SetLaw(Law::WallRestitution, _) | NudgeLaw(Law::WallRestitution, _) => {
-                "wall restitution"
+                "edit-wall-restitution"
             }
-            SetLaw(Law::Roughness, _) | NudgeLaw(Law::Roughness, _) => "roughness",
-            SetLaw(Law::WallRoughness, _) | NudgeLaw(Law::WallRoughness, _) => "wall roughness",
-            SetFriction(_) => "friction",
-            SetGravity(_) | ToggleGravity => "gravity",
-            SetBoundary(_) => "edges",
-            SetMethod(_) | CycleMethod => "method",
-            SetBroadPhase(_) | CycleBroadPhase => "broad phase",
-            SetSubsteps(_) | CycleSubsteps => "substeps",
-            EditDisc { .. } => "edit a disc",
-            DeleteSelected => "delete",
+            SetLaw(Law::Roughness, _) | NudgeLaw(Law::Roughness, _) => "edit-roughness",
+            SetLaw(Law::WallRoughness, _) | NudgeLaw(Law::WallRoughness, _) => "edit-wall-roughness",
+            SetFriction(_) => "edit-friction",
+            SetGravity(_) | ToggleGravity => "edit-gravity",
+            SetBoundary(_) => "edit-edges",
+            SetMethod(_) | CycleMethod => "edit-method",
+            SetBroadPhase(_) | CycleBroadPhase => "edit-broad-phase",
+            SetSubsteps(_) | CycleSubsteps => "edit-substeps",
+            EditDisc { .. } => "edit-disc",
+            DeleteSelected => "edit-delete",
             // A gesture's release names its own change (pointer.rs).
             _ => return None,
         })

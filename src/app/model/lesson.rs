@@ -1,6 +1,9 @@
 //! The classroom's numbers: how much of the ledger the sandbox keeps, how
 //! far "next collision" looks, and the π blocks' count ("31 collisions:
-//! π ≈ 3.1") once it is final.
+//! π ≈ 3.1") once it is final; the core's warnings in the window's words.
+
+use crate::app::lang::tr;
+use crate::app::numbers::plain;
 
 /// Collisions the window keeps in the ledger.
 pub const LEDGER_KEEP: usize = 50;
@@ -16,9 +19,9 @@ pub fn count_line(world: &impulse::World) -> String {
     let with_walls =
         world.laws.boundary == impulse::Boundary::Box && !world.laws.walls.names().is_empty();
     if with_walls {
-        format!("collisions: {pairs} between discs · {walls} with walls")
+        tr!("count-line-walls", pairs = pairs, walls = walls)
     } else {
-        format!("collisions: {pairs} between discs")
+        tr!("count-line", pairs = pairs)
     }
 }
 
@@ -44,12 +47,42 @@ pub fn pi_result(world: &impulse::World) -> Option<String> {
     let count = world.total_pair_collisions + world.total_wall_hits;
     let digits = count.to_string();
     let (whole, decimals) = digits.split_at(1.min(digits.len()));
+    let point = if crate::app::lang::decimal_comma() {
+        ','
+    } else {
+        '.'
+    };
     let pi = if k == 0 || decimals.is_empty() {
         whole.to_string()
     } else {
-        format!("{whole}.{decimals}")
+        format!("{whole}{point}{decimals}")
     };
-    Some(format!("{count} collisions: π ≈ {pi}"))
+    Some(tr!("pi-result", count = count, pi = pi))
+}
+
+/// A warning of the core's ([`impulse::warnings`]) in the window's words.
+pub fn warning_text(warning: &impulse::warnings::Warning, method: &str) -> String {
+    let value = |name: &str| {
+        warning
+            .values
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map_or(0.0, |(_, v)| *v)
+    };
+    match warning.code {
+        impulse::warnings::VERLET => tr!(
+            "warning-verlet",
+            restitution = crate::app::numbers::field(value("restitution"))
+        ),
+        impulse::warnings::SEED => tr!("warning-seed"),
+        impulse::warnings::SUBSTEPS => tr!(
+            "warning-substeps",
+            substeps = value("substeps") as u64,
+            radii = plain(value("radii"), 1)
+        ),
+        impulse::warnings::STALL => tr!("warning-stall", method = method),
+        _ => warning.text.clone(),
+    }
 }
 
 #[cfg(test)]

@@ -46,6 +46,7 @@ pub mod undo;
 pub use command::Command;
 pub use panels::{next_scale, DockTab, Panels, Theme, UI_SCALE_RANGE};
 
+use crate::app::lang::tr;
 use crate::app::numbers::plain;
 use camera::Camera;
 use clock::{FixedStepClock, RealtimeMeter};
@@ -264,6 +265,22 @@ impl Sandbox {
         sandbox
     }
 
+    /// The open scene's name in the window's language, or "Sandbox".
+    pub fn scene_name(&self) -> String {
+        let lang = crate::app::lang::language().code();
+        self.open
+            .scene
+            .name_in(lang)
+            .map_or_else(|| tr!("scene-untitled"), str::to_string)
+    }
+
+    /// The open scene's description (its caption) in the window's
+    /// language, if it has one.
+    pub fn scene_description(&self) -> Option<String> {
+        let lang = crate::app::lang::language().code();
+        self.open.scene.description_in(lang).map(str::to_string)
+    }
+
     /// The window's clock at the start of a frame (s).
     pub fn begin_frame(&mut self, now: f64) {
         self.session.now = now;
@@ -348,7 +365,17 @@ impl Sandbox {
             return None;
         }
         let digits = if rate < 0.1 { 3 } else { 2 };
-        Some(format!("running at {}× real time", plain(rate, digits)))
+        Some(tr!("running-slower", rate = plain(rate, digits)))
+    }
+
+    /// The method the steps use now ("impulse").
+    pub fn method_in_use(&self) -> String {
+        let plan = self
+            .world
+            .plan()
+            .cloned()
+            .unwrap_or_else(|| self.world.plan_for(self.clock.dt));
+        plan.method.name().to_string()
     }
 
     /// "impulse ×4 / grid (auto: ...)": what the steps use, and why.
@@ -368,11 +395,17 @@ impl Sandbox {
         } else {
             plan.broad_phase.name()
         };
-        let mut line = format!("in use: {}{substeps} / {broad}", plan.method.name());
-        if !plan.reason.is_empty() {
-            line.push_str(&format!(" (auto: {})", plan.reason));
+        let method = format!("{}{substeps}", plan.method.name());
+        if plan.reason.is_empty() {
+            tr!("method-in-use", method = method, broad = broad)
+        } else {
+            tr!(
+                "method-in-use-auto",
+                method = method,
+                broad = broad,
+                reason = plan.reason.as_str()
+            )
         }
-        line
     }
 }
 

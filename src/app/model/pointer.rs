@@ -94,9 +94,9 @@ impl Sandbox {
             .gesture
             .release(&mut self.world, world_at, new_disc);
         let what = match released {
-            Released::Launched(_) => Some("launch"),
-            Released::Flung(..) => Some("fling"),
-            Released::Aimed(..) => Some("set a velocity"),
+            Released::Launched(_) => Some("edit-launch"),
+            Released::Flung(..) => Some("edit-fling"),
+            Released::Aimed(..) => Some("edit-aim"),
             Released::Clicked(_) | Released::NoRoom | Released::Nothing => None,
         };
         if let (Some(what), Some(before)) = (what, before) {
@@ -106,7 +106,7 @@ impl Sandbox {
         }
         match released {
             Released::Launched(i) => self.selected = Some(i),
-            Released::NoRoom => self.toast("No room for a new disc here"),
+            Released::NoRoom => self.toast(crate::app::lang::tr!("no-room")),
             Released::Aimed(i, v) => {
                 self.toast(format!(
                     "Disc {i}: velocity set to ({:+.2}, {:+.2}) m/s",

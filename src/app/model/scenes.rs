@@ -4,6 +4,7 @@
 
 use super::undo::Moment;
 use super::{DockTab, Note, Sandbox};
+use crate::app::lang::tr;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::files::write_durably;
 use impulse::Scene;
@@ -52,31 +53,46 @@ pub const PRESETS: [Preset; 16] = [
     preset!("Ctrl+N", PRESET_EMPTY),
 ];
 
-/// "key  name" of every preset, for menus (parsed once).
-pub fn preset_labels() -> &'static [String] {
-    static LABELS: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
-    LABELS.get_or_init(|| {
+/// The presets' scenes (parsed once).
+fn preset_scenes() -> &'static [Option<Scene>] {
+    static SCENES: std::sync::OnceLock<Vec<Option<Scene>>> = std::sync::OnceLock::new();
+    SCENES.get_or_init(|| {
         PRESETS
             .iter()
-            .map(|p| {
-                let name = Scene::parse(p.text, p.path)
-                    .ok()
-                    .and_then(|s| s.name)
-                    .unwrap_or_else(|| p.path.to_string());
-                if p.key.is_empty() {
-                    name
-                } else {
-                    format!("{}   {}", p.key, name)
-                }
-            })
+            .map(|p| Scene::parse(p.text, p.path).ok())
             .collect()
     })
 }
 
-/// The one-line description of preset `index`, if its file has one.
+/// "key  name" of every preset, for menus, in the window's language.
+pub fn preset_labels() -> Vec<String> {
+    let lang = crate::app::lang::language().code();
+    PRESETS
+        .iter()
+        .zip(preset_scenes())
+        .map(|(p, scene)| {
+            let name = scene
+                .as_ref()
+                .and_then(|s| s.name_in(lang))
+                .map_or_else(|| p.path.to_string(), str::to_string);
+            match p.key {
+                "" => name,
+                "Ctrl+N" => format!("{}   {name}", tr!("keys-new-box")),
+                key => format!("{key}   {name}"),
+            }
+        })
+        .collect()
+}
+
+/// The one-line description of preset `index`, if its file has one, in
+/// the window's language.
 pub fn preset_description(index: usize) -> Option<String> {
-    let p = PRESETS.get(index)?;
-    Scene::parse(p.text, p.path).ok()?.description
+    let lang = crate::app::lang::language().code();
+    preset_scenes()
+        .get(index)?
+        .as_ref()?
+        .description_in(lang)
+        .map(str::to_string)
 }
 
 /// A file name for saving a scene called `name` (ASCII letters and digits
@@ -104,12 +120,12 @@ pub fn slug(name: &str) -> String {
 #[cfg(not(target_arch = "wasm32"))]
 pub fn keep_file(dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
     std::fs::create_dir_all(dir)
-        .map_err(|e| format!("cannot create {}: {e}", dir.display()))
+        .map_err(|e| tr!("file-cannot-create", folder = dir.display().to_string(), error = e.to_string()))
         .and_then(|()| {
             let path = free_file(dir, stem, ext);
             write_durably(&path, bytes)
                 .map(|()| path.clone())
-                .map_err(|e| format!("cannot write {}: {e}", path.display()))
+                .map_err(|e| tr!("file-cannot-write", file = path.display().to_string(), error = e.to_string()))
         })
 }
 
@@ -155,7 +171,7 @@ impl Sandbox {
                     self.selected = Some(0);
                 }
             }
-            Err(e) => self.report(format!("Cannot open {}: {e}", preset.path)),
+            Err(e) => self.report(tr!("scene-cannot-open", file = preset.path, error = e.to_string())),
         }
     }
 
@@ -173,15 +189,16 @@ impl Sandbox {
                 self.clock.dt = scene.step_for(self.session.dt);
                 self.selected = None;
                 self.pointer.cancel();
-                let name = scene.name.clone().unwrap_or_else(|| origin.clone());
+                let lang = crate::app::lang::language().code();
+                let name = scene.name_in(lang).unwrap_or(&origin).to_string();
                 self.open.scene = scene;
                 self.open.origin = origin;
                 self.fit_camera();
-                self.toast(format!("Opened {name}"));
+                self.toast(tr!("scene-opened", name = name));
                 Ok(())
             }
             Err(e) => {
-                let message = format!("{e} (kept the current scene)");
+                let message = tr!("scene-kept", error = e.to_string());
                 self.report(message.clone());
                 Err(message)
             }
@@ -197,9 +214,9 @@ impl Sandbox {
                 self.forget_past();
                 self.selected = None;
                 self.pointer.cancel();
-                self.toast("Scene reset");
+                self.toast(tr!("scene-reset"));
             }
-            Err(e) => self.toast(format!("Cannot reset: {e}")),
+            Err(e) => self.toast(tr!("scene-cannot-reset", error = e.to_string())),
         }
     }
 
@@ -209,7 +226,7 @@ impl Sandbox {
         self.forget_past();
         self.selected = None;
         self.pointer.cancel();
-        self.toast("Cleared: drag on empty space to launch discs");
+        self.toast(tr!("scene-cleared"));
     }
 
     /// Opens the scene file at `path` (the path field); a bad file is
@@ -217,19 +234,19 @@ impl Sandbox {
     pub(super) fn open_file(&mut self, path: &str) {
         let path = path.trim().to_string();
         if path.is_empty() {
-            self.messages.scene = Some(Note::error("Type the path of a scene file first"));
+            self.messages.scene = Some(Note::error(tr!("scene-path-empty")));
             return;
         }
         let result = match Scene::load(Path::new(&path)) {
             Ok(scene) => self.open_scene(scene, path.clone()),
             Err(e) => {
-                let message = format!("{e} (kept the current scene)");
+                let message = tr!("scene-kept", error = e.to_string());
                 self.report(message.clone());
                 Err(message)
             }
         };
         self.messages.scene = Some(match result {
-            Ok(()) => Note::ok(format!("Opened {path}")),
+            Ok(()) => Note::ok(tr!("scene-opened", name = path.as_str())),
             Err(e) => Note::error(e),
         });
     }
@@ -245,7 +262,7 @@ impl Sandbox {
             Ok(scene) => {
                 let _ = self.open_scene(scene, name.to_string()); // reported
             }
-            Err(e) => self.report(format!("{e} (kept the current scene)")),
+            Err(e) => self.report(tr!("scene-kept", error = e)),
         }
     }
 
@@ -257,23 +274,24 @@ impl Sandbox {
         let name = self.open.scene.name.clone();
         let scene = self.current_scene();
         let dir = self.session.out.clone();
-        let stem = slug(name.as_deref().unwrap_or("scene"));
+        let stem = slug(name.as_deref().unwrap_or_default());
         let result = keep_file(&dir, &stem, "toml", scene.to_toml().as_bytes());
         match result {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
                 self.open.unsaved = false;
-                let verb = if cfg!(target_arch = "wasm32") {
-                    "Downloaded"
+                let file = path.display().to_string();
+                let said = if cfg!(target_arch = "wasm32") {
+                    tr!("scene-downloaded", file = file.as_str())
                 } else {
-                    "Saved"
+                    tr!("scene-saved", file = file.as_str())
                 };
-                self.toast(format!("{verb} {}", path.display()));
-                self.messages.scene = Some(Note::ok(format!("Saved {}", path.display())));
+                self.toast(said);
+                self.messages.scene = Some(Note::ok(tr!("scene-saved", file = file)));
                 Ok(path)
             }
             Err(e) => {
-                let message = format!("Not saved: {e}");
+                let message = tr!("scene-not-saved", error = e);
                 self.report(message.clone());
                 self.messages.scene = Some(Note::error(message.clone()));
                 Err(message)
@@ -290,10 +308,10 @@ impl Sandbox {
                 #[cfg(target_arch = "wasm32")]
                 crate::web::set_fragment(&fragment);
                 let _ = fragment;
-                self.toast("The page's address now opens this scene: copy it from the address bar and send it");
+                self.toast(tr!("scene-shared"));
             }
             Err(why) => {
-                self.report(format!("Not shared: {why}"));
+                self.report(tr!("scene-not-shared", error = why.to_string()));
             }
         }
     }
@@ -307,6 +325,7 @@ impl Sandbox {
         );
         scene.simulation.dt = Some(self.clock.dt);
         scene.edited = self.open.edited;
+        scene.translations = self.open.scene.translations.clone();
         scene
     }
 
@@ -326,9 +345,9 @@ impl Sandbox {
         match self.undo.undo(present) {
             Some((moment, what)) => {
                 self.put_back(moment);
-                self.toast(format!("Undone: {what} (Ctrl+Shift+Z or Ctrl+Y redoes it)"));
+                self.toast(tr!("undone", what = crate::app::lang::text(what, &[])));
             }
-            None => self.toast("Nothing to undo"),
+            None => self.toast(tr!("nothing-to-undo")),
         }
     }
 
@@ -338,9 +357,9 @@ impl Sandbox {
         match self.undo.redo(present) {
             Some((moment, what)) => {
                 self.put_back(moment);
-                self.toast(format!("Redone: {what}"));
+                self.toast(tr!("redone", what = crate::app::lang::text(what, &[])));
             }
-            None => self.toast("Nothing to redo"),
+            None => self.toast(tr!("nothing-to-redo")),
         }
     }
 

@@ -4,7 +4,8 @@
 
 use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
 use super::{scenes, totals, DockTab, Sandbox};
-use crate::app::numbers::{vector, with_unit};
+use crate::app::lang::tr;
+use crate::app::numbers::{plain, vector, with_unit};
 
 impl Sandbox {
     /// One frame of `frame_seconds` of real time: runs the steps the clock
@@ -71,22 +72,14 @@ impl Sandbox {
     /// the discs over, and the potential energy that added (J): the energy
     /// readout jumps, and this is why.
     fn toast_separated(&mut self, pairs: usize, energy: f64) {
-        let pairs = if pairs == 1 {
-            "1 overlapping pair".to_string()
-        } else {
-            format!("{pairs} overlapping pairs")
-        };
-        let energy = if energy.abs() < 1e-9 {
-            String::new()
+        let said = if energy.abs() < 1e-9 {
+            tr!("separated", pairs = pairs)
         } else if energy > 0.0 {
-            format!(", which raised the energy by {energy:.3} J")
+            tr!("separated-raised", pairs = pairs, energy = with_unit(energy, 3, "J"))
         } else {
-            format!(", which lowered the energy by {:.3} J", -energy)
+            tr!("separated-lowered", pairs = pairs, energy = with_unit(-energy, 3, "J"))
         };
-        self.toast_for(
-            format!("exact needs discs apart: it separated {pairs} of discs{energy}"),
-            6.0,
-        );
+        self.toast_for(said, 6.0);
     }
 
     /// After the frame's steps: keep the ledger on, sample the totals and
@@ -137,32 +130,34 @@ impl Sandbox {
         match found {
             Some(impulse::ledger::Impact::Pair(c)) => {
                 let (dp, dke) = c.total_change();
-                self.toast(format!(
-                    "Collision of discs {} and {} at t = {}: their total momentum changed by {}, their kinetic energy by {}",
-                    c.discs[0],
-                    c.discs[1],
-                    with_unit(c.time, 4, "s"),
-                    vector(dp, 3, "kg·m/s"),
-                    with_unit(dke, 3, "J")
+                self.toast(tr!(
+                    "next-collision-pair",
+                    a = c.discs[0],
+                    b = c.discs[1],
+                    time = with_unit(c.time, 4, "s"),
+                    momentum = vector(dp, 3, "kg·m/s"),
+                    energy = with_unit(dke, 3, "J")
                 ));
             }
             Some(impulse::ledger::Impact::Wall(w)) => {
                 let (_, dke) = w.total_change();
-                self.toast(format!(
-                    "Disc {} hit the {} wall at t = {}: the wall pushed it with {}; its kinetic energy changed by {}",
-                    w.disc,
-                    w.wall.name(),
-                    with_unit(w.time, 4, "s"),
-                    vector(w.wall_impulse(), 3, "kg·m/s"),
-                    with_unit(dke, 3, "J")
+                self.toast(tr!(
+                    "next-collision-wall",
+                    disc = w.disc,
+                    wall = w.wall.name(),
+                    time = with_unit(w.time, 4, "s"),
+                    impulse = vector(w.wall_impulse(), 3, "kg·m/s"),
+                    energy = with_unit(dke, 3, "J")
                 ));
             }
-            None if unrecorded => self.toast(format!(
-                "Discs collided at t = {}; verlet moves positions apart, so it has no before and \
-                 after of one collision to show: the ledger has no row for it",
-                with_unit(self.world.time, 3, "s")
+            None if unrecorded => self.toast(tr!(
+                "next-collision-verlet",
+                time = with_unit(self.world.time, 3, "s")
             )),
-            None => self.toast(format!("No collision within {NEXT_COLLISION_LIMIT:.0} s")),
+            None => self.toast(tr!(
+                "next-collision-none",
+                limit = with_unit(NEXT_COLLISION_LIMIT, 0, "s")
+            )),
         }
     }
 
@@ -175,11 +170,14 @@ impl Sandbox {
                 // The snapshot brought back its ledger and counters; the
                 // plot keeps what led up to this moment.
                 let (oldest, newest) = self.record.history.span().unwrap_or((t, t));
-                self.toast(format!(
-                    "Rewound to t = {t:.3} s (recorded: {oldest:.3} to {newest:.3} s); Space resumes from here"
+                self.toast(tr!(
+                    "rewound-to",
+                    time = plain(t, 3),
+                    oldest = plain(oldest, 3),
+                    newest = plain(newest, 3)
                 ));
             }
-            None => self.toast("Nothing recorded yet"),
+            None => self.toast(tr!("nothing-recorded")),
         }
     }
 
@@ -199,7 +197,7 @@ impl Sandbox {
                 let (stem, _) = name.rsplit_once('.').unwrap_or((&name, ""));
                 let _ = scenes::keep_file(&dir, stem, "csv", text.as_bytes()); // downloads
             }
-            self.toast("Downloaded the totals, discs, collisions and wall impacts as CSV files");
+            self.toast(tr!("exported-downloaded"));
             return;
         }
         match super::export::export_all(&dir, &stem, &samples, &self.world) {
@@ -209,12 +207,13 @@ impl Sandbox {
                     files.len(),
                     dir.display()
                 );
-                self.toast(format!(
-                    "Exported totals, discs, collisions and wall impacts to {}/",
-                    dir.display()
-                ));
+                self.toast(tr!("exported", folder = dir.display().to_string()));
             }
-            Err(e) => self.report(format!("Not exported to {}: {e}", dir.display())),
+            Err(e) => self.report(tr!(
+                "not-exported",
+                folder = dir.display().to_string(),
+                error = e.to_string()
+            )),
         }
     }
 

@@ -5,6 +5,7 @@
 //! two columns where it is wide, scrolling where it is tall.
 
 use super::Cx;
+use crate::app::lang::tr;
 use crate::app::model::bindings::{browser_keeps, control_of, BINDINGS};
 use crate::app::model::{scenes, Command};
 use egui::{Align2, RichText};
@@ -45,19 +46,19 @@ impl Popups {
             self.presets(ctx, cx, screen);
         }
         if let Some(question) = cx.model.recovery_prompt() {
-            egui::Window::new("Restore the last session?")
+            egui::Window::new(tr!("recovery-title"))
                 .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
                 .collapsible(false)
                 .resizable(false)
                 .max_width(fitted(screen, egui::vec2(560.0, 400.0)).x)
                 .show(ctx, |ui| {
                     ui.add(egui::Label::new(question).wrap());
-                    ui.label("The simulation waits until you answer.");
+                    ui.label(tr!("recovery-waits"));
                     ui.horizontal_wrapped(|ui| {
-                        if ui.button("Restore (R)").clicked() {
+                        if ui.button(tr!("recovery-restore")).clicked() {
                             cx.send(Command::RestoreRecovery);
                         }
-                        if ui.button("Set it aside (Esc)").clicked() {
+                        if ui.button(tr!("recovery-set-aside")).clicked() {
                             cx.send(Command::SetRecoveryAside);
                         }
                     });
@@ -74,7 +75,8 @@ impl Popups {
             .filter(|b| !(cfg!(target_arch = "wasm32") && browser_keeps(b)))
             .collect();
         let mut open = true;
-        let response = egui::Window::new("Keys and mouse")
+        let response = egui::Window::new(tr!("help-title"))
+            .id(egui::Id::new("help_window"))
             .open(&mut open)
             .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .fixed_size(size)
@@ -91,7 +93,12 @@ impl Popups {
                                 .max_col_width(ui.available_width() * 0.62)
                                 .show(ui, |ui| {
                                     for b in part {
-                                        help_row(ui, b.keys, b.help, control_of(b).as_deref());
+                                        help_row(
+                                            ui,
+                                            &b.keys(),
+                                            &b.help(),
+                                            control_of(b).as_deref(),
+                                        );
                                     }
                                 });
                         };
@@ -118,22 +125,24 @@ impl Popups {
     fn presets(&mut self, ctx: &egui::Context, cx: &mut Cx, screen: egui::Rect) {
         let size = fitted(screen, egui::vec2(640.0, 900.0));
         let mut open = true;
-        let response = egui::Window::new("Presets")
+        let response = egui::Window::new(tr!("presets-title"))
+            .id(egui::Id::new("presets_window"))
             .open(&mut open)
             .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .fixed_size(size)
             .collapsible(false)
             .show(ctx, |ui| {
                 if cx.model.recovery.aside.is_some() {
-                    let r = ui.button(RichText::new("Reopen my last sandbox").strong());
+                    let label = crate::app::model::bindings::label(&Command::ReopenKept);
+                    let r = ui.button(RichText::new(label.unwrap_or_default()).strong());
                     cx.marks.note("reopen_kept_menu", r.rect);
                     if r.clicked() {
                         cx.send(Command::ReopenKept);
                     }
-                    ui.label("The sandbox this browser kept before the link opened.");
+                    ui.label(tr!("reopen-kept-hover"));
                     ui.separator();
                 }
-                ui.label("Press the key, or click:");
+                ui.label(tr!("presets-press"));
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     for (k, label) in scenes::preset_labels().iter().enumerate() {
                         let r = ui.button(RichText::new(label.as_str()).strong());

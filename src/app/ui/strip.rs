@@ -5,6 +5,7 @@
 //! on hover, so the world never moves.
 
 use super::{Cx, View};
+use crate::app::lang::tr;
 use crate::app::model::lesson::pi_result;
 use egui::{Color32, RichText, Stroke};
 
@@ -22,9 +23,9 @@ impl View for Strip {
         let metres = nice_length(BAR_POINTS * ppp / camera.scale);
         let bar = (metres * camera.scale / ppp) as f32;
         let result = pi_result(&model.world);
-        let caption = model.open.scene.description.clone().map(|d| {
+        let caption = model.scene_description().map(|d| {
             if model.open.edited {
-                format!("Edited since it opened, so this may no longer hold: {d}")
+                tr!("caption-edited", caption = d)
             } else {
                 d
             }
@@ -58,7 +59,7 @@ impl View for Strip {
                 }
                 (None, None, Some(caption)) => (RichText::new(caption), "caption"),
                 (None, None, None) => (
-                    RichText::new("Drag on empty space to launch a disc; H lists every key."),
+                    RichText::new(tr!("caption-none")),
                     "caption",
                 ),
             };
@@ -85,9 +86,10 @@ pub fn nice_length(at_most: f64) -> f64 {
 
 /// "2 m", "50 cm", "5 mm", "2 km", "0.5 mm"; never in e-notation.
 pub fn format_metres(m: f64) -> String {
+    use crate::app::numbers::field;
     match m {
-        m if m >= 1000.0 => format!("{} km", m / 1000.0),
-        m if m >= 1.0 => format!("{m} m"),
+        m if m >= 1000.0 => format!("{} km", field(m / 1000.0)),
+        m if m >= 1.0 => format!("{} m", field(m)),
         m if m >= 0.01 => format!("{} cm", (m * 100.0).round()),
         m if m >= 0.001 => format!("{} mm", (m * 1000.0).round()),
         m => format!("{} mm", crate::app::numbers::adaptive(m * 1000.0, 0)),

@@ -6,7 +6,8 @@
 //! cannot promise. What does not fit is under "… more", on hover.
 
 use super::{Cx, View};
-use crate::app::model::lesson::{count_line, pi_result};
+use crate::app::lang::tr;
+use crate::app::model::lesson::{count_line, pi_result, warning_text};
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
@@ -59,23 +60,18 @@ impl View for TopBar {
         } else {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
-        let name = model
-            .open
-            .scene
-            .name
-            .clone()
-            .unwrap_or_else(|| "Sandbox".into());
+        let name = model.scene_name();
         let state = if model.record.history.cursor().is_some() {
-            RichText::new("⏸ REWOUND").color(paused)
+            RichText::new(format!("⏸ {}", tr!("state-rewound"))).color(paused)
         } else if model.clock.paused {
-            RichText::new("⏸ PAUSED").color(paused)
+            RichText::new(format!("⏸ {}", tr!("state-paused"))).color(paused)
         } else {
             // The time scale only when it is not real time: a short line.
             let scale = model.clock.time_scale();
             let text = if scale == 1.0 {
-                "▶ RUNNING".to_string()
+                format!("▶ {}", tr!("state-running"))
             } else {
-                format!("▶ RUNNING ×{scale}")
+                format!("▶ {} ×{}", tr!("state-running"), crate::app::numbers::field(scale))
             };
             RichText::new(text).color(running)
         };
@@ -93,55 +89,60 @@ impl View for TopBar {
         if let (Some(k), Some((oldest, newest))) =
             (model.record.history.cursor(), model.record.history.span())
         {
-            optional.push(Item::new(format!(
-                "rewound to snapshot {} of {} ({} to {} s): Space resumes",
-                k + 1,
-                model.record.history.len(),
-                plain(oldest, 2),
-                plain(newest, 2)
+            optional.push(Item::new(tr!(
+                "rewound-line",
+                snapshot = k + 1,
+                snapshots = model.record.history.len(),
+                oldest = plain(oldest, 2),
+                newest = plain(newest, 2)
             )));
         }
         // What the method cannot promise comes before the numbers it affects.
+        let method = model.method_in_use();
         for warning in impulse::warnings::warnings(world, model.clock.dt) {
+            let text = warning_text(&warning, &method);
             optional.push(
-                Item::new(RichText::new(format!("⚠ {}", warning.text)).color(paused))
+                Item::new(RichText::new(format!("⚠ {text}")).color(paused))
                     .named(format!("warning_{}", warning.code)),
             );
         }
         let mut momentum = Item::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s")))
-            .hover("total momentum of the discs");
+            .hover(tr!("momentum-hover"));
         if walls_pushed(cx) {
             momentum = Item::new(
-                RichText::new(format!("p = {} (walls push)", vector(m.momentum, 3, "kg·m/s")))
-                    .color(paused),
+                RichText::new(tr!(
+                    "momentum-walls-push",
+                    momentum = vector(m.momentum, 3, "kg·m/s")
+                ))
+                .color(paused),
             )
-            .hover("walls push: the discs' momentum changes only at the walls; between discs it is kept")
+            .hover(tr!("momentum-walls-push-hover"))
             .named("walls_push");
         }
         optional.push(momentum);
         if spin {
             optional.push(
-                Item::new(format!(
-                    "KE {} + turning {} = {}",
-                    plain(m.kinetic_energy, 3),
-                    plain(m.rotational_energy, 3),
-                    with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
+                Item::new(tr!(
+                    "energy-with-turning",
+                    moving = plain(m.kinetic_energy, 3),
+                    turning = plain(m.rotational_energy, 3),
+                    total = with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
                 ))
-                .hover(
-                    "energy of moving, ½·m·v², plus of turning, ½·I·ω² with I = ½·m·r², \
-                     summed over the discs",
-                ),
+                .hover(tr!("energy-with-turning-hover")),
             );
         } else {
             optional.push(
-                Item::new(format!("KE = {}", with_unit(m.kinetic_energy, 3, "J")))
-                    .hover("kinetic energy: the energy of moving, ½·m·v², summed over the discs"),
+                Item::new(tr!(
+                    "energy-line",
+                    energy = with_unit(m.kinetic_energy, 3, "J")
+                ))
+                .hover(tr!("energy-hover")),
             );
         }
         optional.push(match pi_result(world) {
             Some(result) => Item::new(RichText::new(result).strong()),
             None => Item::new(count_line(world))
-                .hover("impacts between two discs, and of a disc on a wall, counted apart")
+                .hover(tr!("count-hover"))
                 .named("count"),
         });
         if model.overlays.com_view.is_some() {
@@ -151,10 +152,10 @@ impl View for TopBar {
             let total_mass: f64 = world.particles.iter().map(|p| p.mass).sum();
             let relative_ke = m.kinetic_energy - 0.5 * total_mass * v.length_squared();
             optional.push(Item::new(
-                RichText::new(format!(
-                    "centre-of-mass view: p = {}, KE = {}",
-                    vector(glam::DVec2::ZERO, 3, "kg·m/s"),
-                    with_unit(relative_ke.max(0.0), 3, "J")
+                RichText::new(tr!(
+                    "com-view-line",
+                    momentum = vector(glam::DVec2::ZERO, 3, "kg·m/s"),
+                    energy = with_unit(relative_ke.max(0.0), 3, "J")
                 ))
                 .color(paused),
             ));
@@ -162,11 +163,11 @@ impl View for TopBar {
         if world.laws.gravity != glam::DVec2::ZERO {
             // With gravity, kinetic energy alone seems to vanish in a fall.
             optional.push(
-                Item::new(format!(
-                    "KE + PE = {}",
-                    with_unit(world.total_energy(), 3, "J")
+                Item::new(tr!(
+                    "energy-with-height",
+                    energy = with_unit(world.total_energy(), 3, "J")
                 ))
-                .hover("energy of moving (and turning) plus the energy of height, zero at the bottom edge of the box"),
+                .hover(tr!("energy-with-height-hover")),
             );
         }
         if spin {
@@ -175,16 +176,13 @@ impl View for TopBar {
                     "L = {}",
                     with_unit(m.angular_momentum, 3, "kg·m²/s")
                 ))
-                .hover(
-                    "angular momentum about the corner (0, 0), of moving and of turning: \
-                         collisions between discs keep it, walls change it",
-                ),
+                .hover(tr!("angular-momentum-hover")),
             );
         }
         if world.resting_contacts > 0 {
             optional.push(
-                Item::new(format!("resting contacts: {}", world.resting_contacts))
-                    .hover("discs lying on each other or on a wall: not counted as collisions"),
+                Item::new(tr!("resting-contacts", count = world.resting_contacts))
+                    .hover(tr!("resting-contacts-hover")),
             );
         }
         self.line(ui, cx, essential, optional);
@@ -230,17 +228,17 @@ impl TopBar {
                 egui::TextStyle::Body,
             )
         };
-        let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or("?");
-        let mut buttons: Vec<(&str, Command, &str)> =
+        let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or_default();
+        let mut buttons: Vec<(String, Command, &str)> =
             vec![(label(&Command::ShowStart), Command::ShowStart, "start")];
         if cx.drawer && cx.model.panels.docks_open {
             let toggle = Command::ToggleDrawer;
             buttons.push((label(&toggle), toggle, "drawer_toggle"));
         }
         if !cx.model.panels.docks_open {
-            buttons.push(("Show panels", Command::ToggleDocks, "show_panels"));
+            buttons.push((tr!("show-panels"), Command::ToggleDocks, "show_panels"));
         }
-        let more = RichText::new("… more");
+        let more = RichText::new(tr!("top-bar-more"));
         let more_width = galley(ui, &more).size().x + spacing;
         let [name, time, state] = essential;
         let fixed =

@@ -17,7 +17,7 @@ pub fn command_button(
     command: Command,
     name: Option<&str>,
 ) -> egui::Response {
-    let label = bindings::label(&command).unwrap_or("?");
+    let label = bindings::label(&command).unwrap_or_default();
     labelled_button(ui, cx, label, command, name)
 }
 

@@ -117,6 +117,20 @@ pub struct Scene {
     /// Seeded random discs, placed after the listed ones.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fill: Option<FillSpec>,
+    /// The name and description in other languages, by language tag
+    /// (`[translations.es]`, `[translations.pt-BR]`).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub translations: std::collections::BTreeMap<String, SceneWords>,
+}
+
+/// A scene's name and description in one language.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneWords {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
 }
 
 /// The `[simulation]` table: method, broad phase, substeps, step.
@@ -253,6 +267,23 @@ pub enum SceneError {
 }
 
 impl Scene {
+    /// The name in the language `tag` (`"es"`, `"pt-BR"`), else the
+    /// scene's own.
+    pub fn name_in(&self, tag: &str) -> Option<&str> {
+        self.translations
+            .get(tag)
+            .and_then(|w| w.name.as_deref())
+            .or(self.name.as_deref())
+    }
+
+    /// The description in the language `tag`, else the scene's own.
+    pub fn description_in(&self, tag: &str) -> Option<&str> {
+        self.translations
+            .get(tag)
+            .and_then(|w| w.description.as_deref())
+            .or(self.description.as_deref())
+    }
+
     /// The step to run at (s): `asked` (the command line's), else the
     /// scene's `simulation.dt`, else [`DEFAULT_DT`]. The one place this is
     /// decided, for the window, `run` and the stress suite.
@@ -518,6 +549,7 @@ impl Scene {
         Scene {
             name,
             description,
+            translations: Default::default(),
             edited: false,
             overlapping: any_overlap(&world.particles, &world.laws),
             world: world.laws,

@@ -2,9 +2,12 @@
 //! command, the keys as the help shows them, the help line, and the
 //! on-screen control that does the same. The window's key handling, the
 //! help window and the controls' tooltips read this table; a test holds the
-//! README's key table against it.
+//! README's key table against it. The words are messages of `keys.ftl`
+//! (`keys-<name>`, `help-<name>`, `label-…`, `section-…`), so the help and
+//! the tooltips speak the window's language.
 
 use super::command::Command;
+use crate::app::lang::text;
 
 /// A key, by what is printed on it (the window maps its key codes to these).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -77,11 +80,11 @@ pub enum Trigger {
 /// One line of the help: its keys (or mouse gesture), what they do, the
 /// control that does the same, and the chords with their commands.
 pub struct Binding {
-    /// The keys as the help shows them ("E / Shift+E").
-    pub keys: &'static str,
-    /// What they do.
-    pub help: &'static str,
-    /// Where the on-screen control that does the same is, if any.
+    /// Its name in the Fluent files: `keys-<name>` are the keys as the help
+    /// shows them ("E / Shift+E"), `help-<name>` what they do.
+    pub name: &'static str,
+    /// The message naming the section of the on-screen control that does
+    /// the same, if any.
     pub control: Option<&'static str>,
     pub trigger: Trigger,
     /// Each chord and the command it gives.
@@ -89,6 +92,18 @@ pub struct Binding {
 }
 
 mod table;
+
+impl Binding {
+    /// The keys as the help shows them, in the window's language.
+    pub fn keys(&self) -> String {
+        text(&format!("keys-{}", self.name), &[])
+    }
+
+    /// What they do, in the window's language.
+    pub fn help(&self) -> String {
+        text(&format!("help-{}", self.name), &[])
+    }
+}
 
 pub use table::{BINDINGS, LABELS};
 
@@ -113,7 +128,7 @@ pub fn binding_of(command: &Command) -> Option<&'static Binding> {
 /// The tooltip of a control that gives `command`: its keys and what they do
 /// ("Space: pause / resume"); empty when no key gives it.
 pub fn tooltip(command: &Command) -> String {
-    binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys, b.help))
+    binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys(), b.help()))
 }
 
 /// The bindings as the README's key table (Markdown).
@@ -122,11 +137,11 @@ pub fn markdown_table() -> String {
     let mut out = String::from("| Keys or mouse | Does | On screen |\n|---|---|---|\n");
     for b in BINDINGS {
         let keys = if mentions_the_mouse(b) {
-            b.keys.to_string()
+            b.keys()
         } else {
-            format!("`{}`", b.keys)
+            format!("`{}`", b.keys())
         };
-        let help = b.help.replace('|', "\\|");
+        let help = b.help().replace('|', "\\|");
         let control = control_of(b).unwrap_or_default();
         out.push_str(&format!("| {keys} | {help} | {control} |\n"));
     }
@@ -136,34 +151,38 @@ pub fn markdown_table() -> String {
 /// Whether a line of the help is (also) about the mouse.
 #[cfg(test)]
 pub fn mentions_the_mouse(b: &Binding) -> bool {
-    let keys = b.keys.to_lowercase();
+    let keys = b.keys().to_lowercase();
     ["drag", "click", "wheel"].iter().any(|m| keys.contains(m))
 }
 
 /// The on-screen label of the button that gives `command`, if one does.
-pub fn label(command: &Command) -> Option<&'static str> {
-    LABELS.iter().find(|(c, _)| c == command).map(|(_, l)| *l)
+pub fn label(command: &Command) -> Option<String> {
+    LABELS
+        .iter()
+        .find(|(c, _)| c == command)
+        .map(|(_, id)| text(id, &[]))
 }
 
 /// Where a help line's keys have an on-screen twin: the labels of its
 /// commands' buttons (from [`LABELS`]), else the section it names.
 pub fn control_of(b: &Binding) -> Option<String> {
-    let mut labels: Vec<&str> = Vec::new();
+    let mut labels: Vec<String> = Vec::new();
     for (_, c) in b.acts {
         if let Some(l) = label(c).filter(|l| !labels.contains(l)) {
             labels.push(l);
         }
     }
-    match (labels.is_empty(), b.control) {
+    let section = b.control.map(|id| text(id, &[]));
+    match (labels.is_empty(), section) {
         (false, Some(section)) => Some(format!("{} ({section})", labels.join(", "))),
         (false, None) => Some(labels.join(", ")),
-        (true, section) => section.map(str::to_string),
+        (true, section) => section,
     }
 }
 
 /// Whether a key belongs to the browser, not to the page.
 pub fn browser_keeps(binding: &Binding) -> bool {
-    ["Ctrl+Q", "F11"].contains(&binding.keys)
+    ["quit", "fullscreen"].contains(&binding.name)
 }
 
 #[cfg(test)]
@@ -243,8 +262,23 @@ mod tests {
     #[test]
     fn every_help_line_with_keys_has_a_chord_and_every_chord_its_line() {
         for b in BINDINGS {
-            assert!(mentions_the_mouse(b) || !b.acts.is_empty(), "{}", b.keys);
-            assert!(!b.help.is_empty());
+            assert!(mentions_the_mouse(b) || !b.acts.is_empty(), "{}", b.name);
+        }
+    }
+
+    #[test]
+    fn every_binding_and_label_has_its_words_in_english() {
+        let english = crate::app::lang::Words::new(crate::app::lang::Lang::En);
+        for b in BINDINGS {
+            for id in [format!("keys-{}", b.name), format!("help-{}", b.name)] {
+                assert!(english.has(&id), "{id}");
+            }
+            if let Some(section) = b.control {
+                assert!(english.has(section), "{section}");
+            }
+        }
+        for (_, id) in LABELS {
+            assert!(english.has(id), "{id}");
         }
     }
 }

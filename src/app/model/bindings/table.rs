@@ -49,14 +49,12 @@ const fn letter(c: char) -> Key {
 }
 
 const fn line(
-    keys: &'static str,
-    help: &'static str,
+    name: &'static str,
     control: Option<&'static str>,
     acts: &'static [(Chord, Command)],
 ) -> Binding {
     Binding {
-        keys,
-        help,
+        name,
         control,
         trigger: Trigger::Press,
         acts,
@@ -64,8 +62,8 @@ const fn line(
 }
 
 /// A line of the help about the mouse: no key.
-const fn mouse(keys: &'static str, help: &'static str) -> Binding {
-    line(keys, help, None, &[])
+const fn mouse(name: &'static str) -> Binding {
+    line(name, None, &[])
 }
 
 use Command as C;
@@ -74,18 +72,17 @@ use Key as K;
 /// Every binding, in the help's order.
 pub static BINDINGS: &[Binding] = &[
     mouse(
-        "Left drag on empty space",
-        "launch a new disc along the drag",
+        "launch",
     ),
     mouse(
-        "Left drag on a disc",
-        "grab and fling it (it keeps the mouse's velocity)",
+        "fling",
     ),
-    mouse("Drag the selected disc's arrow tip", "set its velocity"),
-    mouse("Left click", "select a disc; on empty space, deselect"),
+    mouse(
+        "aim",),
+    mouse(
+        "select",),
     Binding {
-        keys: "Right or middle drag, arrow keys",
-        help: "pan",
+        name: "pan",
         control: None,
         trigger: Trigger::Hold,
         acts: &[
@@ -96,9 +93,8 @@ pub static BINDINGS: &[Binding] = &[
         ],
     },
     line(
-        "Wheel, + / −",
-        "zoom at the cursor / at the centre",
-        Some("View"),
+        "zoom",
+        Some("section-view"),
         &[
             (key(K::Equal), C::ZoomIn),
             (key(K::KpAdd), C::ZoomIn),
@@ -107,26 +103,22 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "F",
-        "fit the box to the window",
+        "fit",
         None,
         &[(key(letter('F')), C::Fit)],
     ),
     line(
-        "Space",
-        "pause / resume",
+        "pause",
         None,
         &[(key(K::Space), C::TogglePause)],
     ),
     line(
-        "N",
-        "one step, paused",
+        "step",
         None,
         &[(key(letter('N')), C::Step)],
     ),
     line(
-        "[ / ]",
-        "slower / faster",
+        "speed",
         None,
         &[
             (key(K::LeftBracket), C::Slower),
@@ -134,53 +126,45 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "V / M",
-        "velocity / momentum arrows",
-        Some("Show"),
+        "arrows",
+        Some("section-show"),
         &[
             (key(letter('V')), C::ToggleVelocity),
             (key(letter('M')), C::ToggleMomentum),
         ],
     ),
     line(
-        "I",
-        "values beside: none / the selected disc / every disc",
-        Some("Show"),
+        "readouts",
+        Some("section-show"),
         &[(key(letter('I')), C::CycleReadouts)],
     ),
     line(
-        "O",
-        "centre of mass and its velocity",
-        Some("Show"),
+        "center-of-mass",
+        Some("section-show"),
         &[(key(letter('O')), C::ToggleCenterOfMass)],
     ),
     line(
-        "A",
-        "path traces, a dot every 0.1 s",
-        Some("Show"),
+        "trails",
+        Some("section-show"),
         &[(key(letter('A')), C::ToggleTrails)],
     ),
     line(
-        "F3",
-        "colour-blind-safe colours",
-        Some("Show"),
+        "palette",
+        Some("section-show"),
         &[(key(K::F(3)), C::TogglePalette)],
     ),
     line(
-        "Z",
-        "centre-of-mass view on or off: the view moves with it",
-        Some("Show"),
+        "com-view",
+        Some("section-show"),
         &[(plain(letter('Z')), C::ToggleCenterOfMassView)],
     ),
     line(
-        "J",
-        "run to the next collision and pause at impact",
-        Some("Show, Collisions tab"),
+        "next-collision",
+        Some("section-show-collisions-tab"),
         &[(key(letter('J')), C::NextCollision)],
     ),
     line(
-        ", / .",
-        "back / forward through the recorded past; Shift: ×10",
+        "scrub",
         None,
         &[
             (plain(K::Comma), C::Scrub(-1)),
@@ -190,9 +174,8 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "E / Shift+E",
-        "restitution between discs ±0.1",
-        Some("Collisions"),
+        "restitution",
+        Some("section-collisions"),
         &[
             (plain(letter('E')), C::NudgeLaw(Law::Restitution, Dir::Up)),
             (
@@ -202,9 +185,8 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "W / Shift+W",
-        "restitution at the walls ±0.1",
-        Some("Collisions"),
+        "wall-restitution",
+        Some("section-collisions"),
         &[
             (
                 plain(letter('W')),
@@ -217,15 +199,13 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "G",
-        "gravity on / off",
-        Some("Collisions"),
+        "gravity",
+        Some("section-collisions"),
         &[(key(letter('G')), C::ToggleGravity)],
     ),
     line(
-        "PgUp / PgDn, Home / End",
-        "radius / mass of new discs",
-        Some("New discs"),
+        "new-discs",
+        Some("section-new-discs"),
         &[
             (key(K::PageUp), C::StepNewRadius(Dir::Up)),
             (key(K::PageDown), C::StepNewRadius(Dir::Down)),
@@ -234,29 +214,25 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "Delete / Backspace",
-        "delete the selected disc",
-        Some("Selected disc"),
+        "delete",
+        Some("section-selected-disc"),
         &[
             (key(K::Delete), C::DeleteSelected),
             (key(K::Backspace), C::DeleteSelected),
         ],
     ),
     line(
-        "C",
-        "clear all discs",
-        Some("Scene"),
+        "clear",
+        Some("section-scene"),
         &[(key(letter('C')), C::Clear)],
     ),
     line(
-        "R",
-        "reset the scene (asked after a session that did not close normally: restore it)",
+        "reset",
         None,
         &[(key(letter('R')), C::Reset)],
     ),
     line(
-        "1 … 9, 0, P",
-        "open a classroom preset / the preset menu",
+        "presets",
         None,
         &[
             (key(K::Digit(1)), C::OpenPreset(0)),
@@ -273,20 +249,17 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "Ctrl+N",
-        "a new empty box",
-        Some("Presets…: the last one"),
+        "new-box",
+        Some("section-presets-last"),
         &[(ctrl(letter('N')), C::OpenEmpty)],
     ),
     line(
-        "Ctrl+Z",
-        "undo the last change to the scene",
+        "undo",
         None,
         &[(ctrl(letter('Z')), C::Undo)],
     ),
     line(
-        "Ctrl+Shift+Z, Ctrl+Y",
-        "redo it",
+        "redo",
         None,
         &[
             (ctrl_shift(letter('Z')), C::Redo),
@@ -294,34 +267,28 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "Esc",
-        "close what is open, else deselect; after Enter in a field, keys act on the world again; \
-         asked after a session that did not close normally: set it aside",
+        "escape",
         None,
         &[(key(K::Escape), C::Escape)],
     ),
     line(
-        "Ctrl+S",
-        "save the scene; it reopens exactly",
-        Some("Scene"),
+        "save",
+        Some("section-scene"),
         &[(ctrl(letter('S')), C::Save)],
     ),
     line(
-        "X",
-        "export totals, discs, collisions and wall impacts as CSV",
-        Some("Scene"),
+        "export",
+        Some("section-scene"),
         &[(key(letter('X')), C::Export)],
     ),
     line(
-        "F12",
-        "screenshot into the output folder",
-        Some("Scene"),
+        "screenshot",
+        Some("section-scene"),
         &[(key(K::F(12)), C::Screenshot)],
     ),
     line(
-        "T / U / D / F4",
-        "bottom dock: Totals / Collisions / Momenta / Speeds",
-        Some("the tab row"),
+        "tabs",
+        Some("section-tab-row"),
         &[
             (key(letter('T')), C::ShowTab(DockTab::Totals)),
             (key(letter('U')), C::ShowTab(DockTab::Collisions)),
@@ -330,27 +297,23 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "Tab",
-        "hide or show the panels; the top bar stays",
-        Some("View"),
+        "docks",
+        Some("section-view"),
         &[(key(K::Tab), C::ToggleDocks)],
     ),
     line(
-        "L",
-        "hide or show the controls at the side",
-        Some("Controls"),
+        "side",
+        Some("section-controls"),
         &[(key(letter('L')), C::ToggleSide)],
     ),
     line(
-        "F2",
-        "text and controls 1.0 / 1.5 / 2.0 times as large, for a projector",
-        Some("View"),
+        "scale",
+        Some("section-view"),
         &[(key(K::F(2)), C::NextScale)],
     ),
     line(
-        "Y / B / K",
-        "method / broad phase / substeps",
-        Some("More: Details"),
+        "method",
+        Some("section-more-details"),
         &[
             (plain(letter('Y')), C::CycleMethod),
             (key(letter('B')), C::CycleBroadPhase),
@@ -358,54 +321,55 @@ pub static BINDINGS: &[Binding] = &[
         ],
     ),
     line(
-        "F11",
-        "full screen",
-        Some("View"),
+        "fullscreen",
+        Some("section-view"),
         &[(key(K::F(11)), C::Fullscreen)],
     ),
     line(
-        "H or F1",
-        "the list of keys and mouse actions",
+        "help",
         None,
         &[
             (key(letter('H')), C::ToggleHelp),
             (key(K::F(1)), C::ToggleHelp),
         ],
     ),
-    line("Ctrl+Q", "quit", None, &[(ctrl(letter('Q')), C::Quit)]),
+    line(
+        "quit",
+        None, &[(ctrl(letter('Q')), C::Quit)]),
 ];
 
 /// Keyboard pan speed, pixels per frame.
 const PAN: f64 = 12.0;
 
-/// The on-screen label of each command that has a button: the buttons read
-/// it here, and the help names the control after it.
+/// The on-screen label of each command that has a button (its message in
+/// `keys.ftl`): the buttons read it here, and the help names the control
+/// after it.
 pub static LABELS: &[(Command, &str)] = &[
-    (C::TogglePause, "Play / Pause"),
-    (C::Step, "Step"),
-    (C::Reset, "⟲ Reset"),
-    (C::Undo, "Undo"),
-    (C::Redo, "Redo"),
-    (C::Slower, "« Slower"),
-    (C::Faster, "Faster »"),
-    (C::TogglePresets, "Presets…"),
-    (C::Fit, "Fit view"),
-    (C::ToggleHelp, "? Help"),
-    (C::NextCollision, "Next collision"),
-    (C::Scrub(-1), "◀ Back"),
-    (C::Scrub(1), "Forward ▶"),
-    (C::DeleteSelected, "Delete"),
-    (C::Save, "Save"),
-    (C::Clear, "Clear discs"),
-    (C::Export, "Export CSV"),
-    (C::Screenshot, "Screenshot"),
-    (C::NextScale, "Projector size"),
-    (C::ZoomIn, "Zoom +"),
-    (C::ZoomOut, "Zoom −"),
-    (C::Fullscreen, "Full screen"),
-    (C::ToggleDocks, "Hide panels"),
-    (C::ShowStart, "Start"),
-    (C::ToggleDrawer, "☰ Controls"),
-    (C::ShowAllControls, "All controls"),
-    (C::ReopenKept, "Reopen my last sandbox"),
+    (C::TogglePause, "label-toggle-pause"),
+    (C::Step, "label-step"),
+    (C::Reset, "label-reset"),
+    (C::Undo, "label-undo"),
+    (C::Redo, "label-redo"),
+    (C::Slower, "label-slower"),
+    (C::Faster, "label-faster"),
+    (C::TogglePresets, "label-toggle-presets"),
+    (C::Fit, "label-fit"),
+    (C::ToggleHelp, "label-toggle-help"),
+    (C::NextCollision, "label-next-collision"),
+    (C::Scrub(-1), "label-scrub-1"),
+    (C::Scrub(1), "label-scrub-1"),
+    (C::DeleteSelected, "label-delete-selected"),
+    (C::Save, "label-save"),
+    (C::Clear, "label-clear"),
+    (C::Export, "label-export"),
+    (C::Screenshot, "label-screenshot"),
+    (C::NextScale, "label-next-scale"),
+    (C::ZoomIn, "label-zoom-in"),
+    (C::ZoomOut, "label-zoom-out"),
+    (C::Fullscreen, "label-fullscreen"),
+    (C::ToggleDocks, "label-toggle-docks"),
+    (C::ShowStart, "label-show-start"),
+    (C::ToggleDrawer, "label-toggle-drawer"),
+    (C::ShowAllControls, "label-show-all-controls"),
+    (C::ReopenKept, "label-reopen-kept"),
 ];

@@ -1,0 +1,114 @@
+# What the sandbox says: messages in the strip, notes under fields, errors.
+
+number-not-a-number = not a number
+discs-count = { $count ->
+    [one] 1 disc
+   *[other] { $count } discs
+}
+
+## Counts and lessons
+count-line = collisions: { $pairs } between discs
+count-line-walls = collisions: { $pairs } between discs · { $walls } with walls
+pi-result = { $count } collisions: π ≈ { $pi }
+
+## What a method cannot promise
+warning-verlet = verlet: collisions lose energy; the restitution e = { $restitution } is not honoured
+warning-seed = seed: fast discs can pass through each other
+warning-substeps = { $substeps ->
+    [one] 1 substep
+   *[other] { $substeps } substeps
+} per step: the fastest disc moves { $radii }× its radius per substep and can pass through others
+warning-stall = { $method }: the step was cut short and the simulation time has stopped advancing (too many collisions at once); choose impulse
+
+## Scenes and files
+file-cannot-create = cannot create { $folder }: { $error }
+file-cannot-write = cannot write { $file }: { $error }
+scene-cannot-open = Cannot open { $file }: { $error }
+scene-opened = Opened { $name }
+scene-kept = { $error } (kept the current scene)
+scene-reset = Scene reset
+scene-cannot-reset = Cannot reset: { $error }
+scene-cleared = Cleared: drag on empty space to launch discs
+scene-path-empty = Type the path of a scene file first
+scene-downloaded = Downloaded { $file }
+scene-saved = Saved { $file }
+scene-not-saved = Not saved: { $error }
+scene-shared = The page's address now opens this scene: copy it from the address bar and send it
+scene-not-shared = Not shared: { $error }
+undone = Undone: { $what } (Ctrl+Shift+Z or Ctrl+Y redoes it)
+nothing-to-undo = Nothing to undo
+redone = Redone: { $what }
+nothing-to-redo = Nothing to redo
+
+## What undo names
+edit-open-scene = open a scene
+edit-reset = reset
+edit-clear = clear
+edit-restitution = restitution
+edit-wall-restitution = wall restitution
+edit-roughness = roughness
+edit-wall-roughness = wall roughness
+edit-friction = friction
+edit-gravity = gravity
+edit-edges = edges
+edit-method = method
+edit-broad-phase = broad phase
+edit-substeps = substeps
+edit-disc = edit a disc
+edit-delete = delete
+edit-launch = launch
+edit-fling = fling
+edit-aim = set a velocity
+no-room = No room for a new disc here
+
+## Settings changed by a key
+law-restitution = Restitution e
+law-wall-restitution = Wall restitution
+law-roughness = Roughness β
+law-wall-roughness = Wall roughness β
+time-scale = Time scale ×{ $scale }
+gravity-now = Gravity { $gravity }
+method-now = Method: { $method }
+broad-phase-now = Broad phase: { $broad }
+substeps-now = Substeps: { $substeps }
+new-disc-radius = New discs: radius { $radius }
+new-disc-mass = New discs: mass { $mass }
+palette-safe = Discs in colour-blind-safe palette (Okabe-Ito, by disc number)
+palette-scene = Discs in the scene's colours
+text-size = Text size ×{ $scale }
+com-view-off = Centre-of-mass view off: velocities as seen from the box
+com-view-on = Centre-of-mass view: moving with the centre of mass at { $velocity }; Z again to leave
+
+## Time: next collision, rewind, export
+separated = exact needs discs apart: it separated { $pairs ->
+    [one] 1 overlapping pair
+   *[other] { $pairs } overlapping pairs
+} of discs
+separated-raised = exact needs discs apart: it separated { $pairs ->
+    [one] 1 overlapping pair
+   *[other] { $pairs } overlapping pairs
+} of discs, which raised the energy by { $energy }
+separated-lowered = exact needs discs apart: it separated { $pairs ->
+    [one] 1 overlapping pair
+   *[other] { $pairs } overlapping pairs
+} of discs, which lowered the energy by { $energy }
+next-collision-pair = Collision of discs { $a } and { $b } at t = { $time }: their total momentum changed by { $momentum }, their kinetic energy by { $energy }
+next-collision-wall = Disc { $disc } hit the { $wall ->
+    [left] left
+    [right] right
+    [bottom] bottom
+   *[top] top
+} wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
+next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
+next-collision-none = No collision within { $limit }
+rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
+nothing-recorded = Nothing recorded yet
+exported-downloaded = Downloaded the totals, discs, collisions and wall impacts as CSV files
+exported = Exported totals, discs, collisions and wall impacts to { $folder }/
+not-exported = Not exported to { $folder }: { $error }
+wall-name = { $wall ->
+    [left] left wall
+    [right] right wall
+    [bottom] bottom wall
+   *[top] top wall
+}

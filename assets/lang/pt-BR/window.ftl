@@ -1,0 +1,2 @@
+# window
+this-language = Português (Brasil)
