@@ -39,6 +39,19 @@ pub fn ui_scale(s: &str) -> Result<f32, String> {
     }
 }
 
+/// Command-line parser for `--lang`: a language the window speaks (`qps`:
+/// the pseudo-language for layout checks).
+pub fn language(s: &str) -> Result<crate::app::lang::Lang, String> {
+    use crate::app::lang::Lang;
+    let known: Vec<&str> = Lang::SHIPPED.iter().map(|l| l.code()).collect();
+    Lang::from_tag(s).ok_or_else(|| {
+        format!(
+            "{s:?} is not a language the window speaks: {} (or qps, a pseudo-language for layout checks)",
+            known.join(", ")
+        )
+    })
+}
+
 /// Command-line parser for a window size like 1280x800.
 pub fn window_size(s: &str) -> Result<(i32, i32), String> {
     let parsed = s

@@ -16,6 +16,20 @@ extern "C" {
     fn impulse_take(ptr: *mut u8, len: usize);
     fn impulse_now() -> f64;
     fn impulse_report_fingerprints(ptr: *const u8, len: usize);
+    fn impulse_browser_language() -> i32;
+    fn impulse_set_page_language(tag: *const u8, tag_len: usize, title: *const u8, title_len: usize);
+}
+
+/// The browser's language (`navigator.language`, "de-DE").
+pub fn browser_language() -> Option<String> {
+    // SAFETY: no arguments; the page sets the bytes aside for `take`.
+    take(unsafe { impulse_browser_language() })
+}
+
+/// Declares the page's language (`<html lang>`) and sets its title, in it.
+pub fn set_page_language(tag: &str, title: &str) {
+    // SAFETY: the page reads both strings during the call.
+    unsafe { impulse_set_page_language(tag.as_ptr(), tag.len(), title.as_ptr(), title.len()) }
 }
 
 /// Seconds on the page's clock (`performance.now()`), for the core's stage

@@ -67,6 +67,11 @@
             window.impulseFingerprints = text(ptr, len);
         };
         env.impulse_now = () => performance.now() / 1000;
+        env.impulse_browser_language = () => give(navigator.language || "en");
+        env.impulse_set_page_language = (tagPtr, tagLen, titlePtr, titleLen) => {
+            document.documentElement.lang = text(tagPtr, tagLen);
+            document.title = text(titlePtr, titleLen);
+        };
         env.impulse_take = (ptr, len) => {
             new Uint8Array(wasm_memory.buffer, ptr, len).set(pending.subarray(0, len));
             pending = new Uint8Array(0);

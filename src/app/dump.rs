@@ -303,7 +303,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 side_open: m.panels.side_open,
                 drawer_open: m.panels.drawer_open,
                 dock_expanded: m.panels.dock_expanded,
-                tab: m.panels.tab.title().to_string(),
+                tab: m.panels.tab.key().to_string(),
                 help_open: m.panels.help_open,
                 presets_open: m.panels.presets_open,
                 start_open: m.panels.start_open,

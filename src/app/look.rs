@@ -47,8 +47,9 @@ pub struct WorldColors {
     pub leader: [f32; 4],
 }
 
-/// The names of the arrows' colours in a theme, for the labels that name
-/// them ("velocity arrows (white)").
+/// The names of the arrows' colours in a theme (messages of
+/// `window.ftl`), for the labels that name them ("velocity arrows
+/// (white)").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ArrowNames {
     pub velocity: &'static str,
@@ -60,14 +61,14 @@ pub struct ArrowNames {
 pub fn arrow_names(theme: Theme) -> ArrowNames {
     match theme {
         Theme::Dark => ArrowNames {
-            velocity: "white",
-            momentum: "pink",
-            delta_p: "amber, outlined",
+            velocity: "colour-white",
+            momentum: "colour-pink",
+            delta_p: "colour-amber-outlined",
         },
         Theme::Light => ArrowNames {
-            velocity: "black",
-            momentum: "purple",
-            delta_p: "brown, outlined",
+            velocity: "colour-black",
+            momentum: "colour-purple",
+            delta_p: "colour-brown-outlined",
         },
     }
 }

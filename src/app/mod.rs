@@ -81,6 +81,11 @@ pub struct WindowOptions {
     /// a start without a scene file shows).
     #[arg(long)]
     pub no_start: bool,
+    /// The window's language: en, es, fr, de or pt-BR (qps: a pseudo-language
+    /// for layout checks) [default: the one chosen in View before, else the
+    /// system's]. The command line and its messages stay English.
+    #[arg(long, value_name = "LANG", value_parser = crate::cli::language)]
+    pub lang: Option<lang::Lang>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -256,6 +261,15 @@ fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64
     end.duration_since(start).as_secs_f64() * 1e3
 }
 
+/// The language the system (the desktop's locale) or the page
+/// (`navigator.language`) asks for, if the window speaks it.
+fn system_language() -> Option<lang::Lang> {
+    #[cfg(target_arch = "wasm32")]
+    return crate::web::browser_language().as_deref().and_then(lang::Lang::from_tag);
+    #[cfg(not(target_arch = "wasm32"))]
+    lang::system_language()
+}
+
 /// The window's WM_CLASS on X11 (the idle waker finds the window by it).
 const WM_CLASS: &str = "impulse";
 
@@ -273,6 +287,8 @@ struct App {
     idle: idle::Idle,
     /// The state last handed to the page to keep, and when (the browser).
     kept: (u64, f64),
+    /// The language the page last declared (the browser).
+    page_language: Option<lang::Lang>,
 }
 
 impl App {
@@ -298,6 +314,8 @@ impl App {
             scale: options.ui_scale,
             start_screen: plain && !options.no_start,
             from_link,
+            lang: options.lang,
+            system_lang: system_language(),
             theme: if options.light {
                 model::Theme::Light
             } else {
@@ -320,6 +338,7 @@ impl App {
             frame_stats: frame_stats::FrameStats::new(keep_all),
             idle: idle::Idle::new(WM_CLASS),
             kept: (0, f64::NEG_INFINITY),
+            page_language: None,
         }
     }
 
@@ -357,6 +376,7 @@ impl App {
             self.model.tick(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
             self.keep_for_the_page();
+            self.declare_language();
             let timed_out = self
                 .options
                 .exit_after
@@ -425,6 +445,18 @@ impl App {
             timing: self.frame_stats.recent(),
         };
         dump::write(path, &dump::state(&self.model, window));
+    }
+
+    /// In the browser: the page declares the window's language
+    /// (`<html lang>`) and its title in it, whenever it changes.
+    fn declare_language(&mut self) {
+        let now = lang::language();
+        if self.page_language == Some(now) {
+            return;
+        }
+        self.page_language = Some(now);
+        #[cfg(target_arch = "wasm32")]
+        crate::web::set_page_language(now.code(), &lang::tr!("page-title"));
     }
 
     /// In the browser: hands the page the sandbox to keep when it is hidden

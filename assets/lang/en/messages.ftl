@@ -112,3 +112,40 @@ wall-name = { $wall ->
     [bottom] bottom wall
    *[top] top wall
 }
+
+## Editing a disc
+edit-type-a-number = { $name }: type a number
+edit-not-a-number = { $name }: “{ $text }” is not a number
+edit-not-finite = { $name } must be a finite number
+edit-not-positive = { $name } must be more than 0
+edit-radius-too-large = radius must be at most { $radius } m here
+edit-nothing-changed = Nothing changed: type a new value first
+edit-applied = Applied to disc { $disc }
+edit-applied-table = Disc { $disc }: { $values }
+edit-refused-table = Disc { $disc }: { $error }; nothing changed
+edit-mass-overlaps = at { $mass } kg the disc would be { $size } m in radius (size follows mass) and overlap disc { $disc }
+edit-mass-crosses-wall = at { $mass } kg the disc would be { $size } m in radius (size follows mass) and cross a wall
+
+## Recovery
+recovery-unreadable-moved = An unreadable recovery file was moved to { $file }: { $error }
+recovery-unreadable-kept = An unreadable recovery file could not be moved: { $error }
+autosave-failed = Autosave to { $place } failed: { $error }
+browser-storage = the browser's storage
+origin-recovered = recovered from { $file }
+origin-kept = your last sandbox, kept by this browser
+recovery-kept-in = Earlier session kept in { $file }
+recovery-not-set-aside = Could not set the earlier session aside: { $error }
+kept-not-set-aside = Could not keep your last sandbox aside: { $error }
+recovery-question-browser = This browser kept your last sandbox, { $name } ({ $discs ->
+    [one] 1 disc
+   *[other] { $discs } discs
+}). Restore it, or set it aside?
+recovery-question = The last session did not close normally. Restore its { $name } ({ $discs ->
+    [one] 1 disc
+   *[other] { $discs } discs
+}), or set it aside?
+sandbox-cannot-open = Cannot open the sandbox: { $error }
+link-too-many-discs = { $discs } discs are too many for a link (at most { $most }): save the scene as a file instead
+link-damaged = the link's scene is damaged ({ $error })
+settings-unreadable = The settings in { $file } could not be read ({ $error }): the defaults hold
+settings-not-saved = The settings were not saved to { $place }: { $error }

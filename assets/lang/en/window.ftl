@@ -42,3 +42,128 @@ presets-press = Press the key, or click:
 ## The strip under the world
 caption-edited = Edited since it opened, so this may no longer hold: { $caption }
 caption-none = Drag on empty space to launch a disc; H lists every key.
+
+## Quantities, as fields and columns name them
+quantity-mass = mass
+quantity-radius = radius
+quantity-vx = v_x
+quantity-vy = v_y
+
+## The bottom dock's tabs
+tab-totals = Totals
+tab-collisions = Collisions
+tab-discs = Discs
+tab-speeds = Speeds
+tab-momenta = Momenta
+
+## The start screen's tiles
+tile-head-on = Head-on (1D)
+tile-glancing = Glancing (2D)
+tile-inelastic = Inelastic
+tile-pi-blocks = π blocks
+tile-gas = A gas
+tile-free-play = Free play
+tile-head-on-blurb = Two discs meet on a line. Is the total momentum the same after?
+tile-glancing-blurb = One disc hits another off-centre. Which way do they go?
+tile-inelastic-blurb = Discs that do not bounce back fully. Where does the energy go?
+tile-pi-blocks-blurb = A light block, a heavy one and a wall: count the bumps.
+tile-gas-blurb = Many discs at once: how are their speeds shared out?
+tile-free-play-blurb = Launch your own discs and change everything.
+
+## The start screen
+start-title = What would you like to explore?
+start-footer = Esc keeps the scene that is open. The Start button in the top bar brings this back.
+
+## The side dock
+controls-for = The controls for { $lesson }.
+selected-disc-numbered = Selected disc ({ $disc })
+section-more = More
+section-more-line = For spinning discs, and for comparing how the computer works it out.
+play = Play
+pause = Pause
+colour-white = white
+colour-pink = pink
+colour-amber-outlined = amber, outlined
+colour-black = black
+colour-purple = purple
+colour-brown-outlined = brown, outlined
+show-velocity = velocity arrows ({ $colour })
+show-velocity-hover = where each disc will be half a second from now
+show-momentum = momentum arrows ({ $colour })
+show-momentum-hover = momentum p = m·v: mass times velocity
+show-delta-p = Δp after a collision ({ $colour })
+show-delta-p-hover = each disc's change of momentum, for a second after each collision between discs (in scenes of up to { $most } discs: in a gas they would hide the discs)
+readouts-none = none
+readouts-selected = selected disc
+readouts-all = every disc
+readouts-label = values beside
+readouts-hover = where labels would cover each other, some discs go without; the world says how many
+show-center-of-mass = centre of mass
+show-center-of-mass-hover = the balance point of all the discs, and its velocity
+show-safe-palette = colour-blind-safe
+show-com-view = centre-of-mass view
+show-com-view-hover = the view moves with the centre of mass and arrows show velocities relative to it; the experiment is not changed
+
+## The Collisions section
+restitution-label = Bounce between discs, restitution e (1: they bounce back fully, 0: they move on together along the line of impact)
+restitution-hover = How much of their approach speed two discs keep, going apart, along the line through their centres: 1 all of it, 0 none (sideways motion is kept)
+wall-restitution-label = Bounce at the walls, restitution e
+wall-restitution-hover = How much of its speed into a wall a disc keeps, going away from it: 1 all of it, 0 none
+gravity-label = Gravity, pointing down
+gravity-hover = how hard the discs are pulled down; { $gravity } m/s² on Earth
+edges-label = edges
+edges-box = box
+edges-open = open
+edges-periodic = periodic
+edges-hover = What the sides of the box do: box, walls the discs bounce off; open, no walls (discs fly away); periodic, a disc leaving on one side comes back on the other
+time-scale-label = time scale
+time-scale-hover = simulated seconds per real second: below 1 is slow motion
+roughness-hover = How the touching edges grip in a collision, so that discs start or stop spinning: −1 smooth (no grip, no spin given), 0 their sliding stops, 1 perfectly rough (the sliding reverses and no energy is lost)
+roughness-label = Grip between discs, roughness β (−1 smooth … 1 rough)
+wall-roughness-label = Grip at the walls, roughness β
+friction-on-label = Friction μ limits the grip
+friction-hover = Friction: the sideways push where discs touch is at most μ times the head-on push, so fast sliding is only slowed; it also makes discs lying on each other rub. Off: no limit.
+friction-label = Friction μ
+
+## New discs and the selected disc
+new-discs-line = Drag on empty space to launch one.
+size-follows-mass = size follows mass (same density)
+size-follows-mass-hover = a 1 kg disc is 0.4 m in radius; the radius grows as √m, for new discs and mass edits
+radius-from-mass = Radius { $radius } (from the mass)
+radius-label = Radius
+mass-label = Mass
+selected-none = None: click a disc to select it.
+apply = Apply
+apply-hover = Enter in a field
+
+## The Scene and View sections
+preset-label = preset
+preset-choose = open a preset…
+scene-drop = Open a scene file: drop it on the page.
+scene-file-label = Scene file:
+open = Open
+open-hover = Enter in the field
+share = Share link
+share-hover = puts this scene into the page's address, to send as a link
+saves-download = Saves, exports and screenshots download as files.
+saves-go-to = Saves go to { $folder }/
+ui-scale-label = Size of text and controls
+theme-light = Light theme
+theme-dark = Dark theme
+theme-hover = a bright room wants the light one
+language-label = language
+language-hover = the language of the window; numbers follow it (2,5 or 2.5)
+
+## Details (under More)
+method-label = method
+method-hover = How the computer works out the collisions: auto chooses; exact finds each one at its instant; the others step in small fixed times and correct overlaps
+broad-phase-label = broad phase
+broad-phase-hover = How the computer finds which discs are near each other before checking them closely: it only changes the speed, not the result
+substeps-label = substeps
+substeps-hover = How many smaller steps each time step is cut into: more is more accurate and slower
+dt-line = time step dt = { $dt }
+dt-hover = how much simulated time one step of the computer covers
+step-time-line = step time { $time } (median), { $steps } steps in the last frame
+fps-line = { $fps } frames per second
+sim-rate-line = simulated seconds per real second: { $rate }
+page-title = Impulse: collisions of discs

@@ -155,12 +155,9 @@ impl Words {
         }
     }
 
-    pub fn lang(&self) -> Lang {
-        self.lang
-    }
-
     /// Whether `id` ("message" or "message.attribute") exists in this
     /// language itself (not through the fallback).
+    #[cfg(test)]
     pub fn has(&self, id: &str) -> bool {
         lookup(&self.bundle, id, None).is_some()
     }

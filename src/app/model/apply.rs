@@ -116,6 +116,7 @@ impl Sandbox {
             | SetScale(_)
             | NextScale
             | SetTheme(_)
+            | SetLanguage(_)
             | ToggleHelp
             | Fit
             | ZoomIn
@@ -329,6 +330,13 @@ impl Sandbox {
                 self.toast(tr!("text-size", scale = scale));
             }
             SetTheme(t) => self.panels.theme = t,
+            SetLanguage(lang) => {
+                crate::app::lang::set_language(lang);
+                self.session.settings.settings.language = Some(lang.code().to_string());
+                if let Some(problem) = self.session.settings.save() {
+                    self.report(problem);
+                }
+            }
             Fullscreen => self.session.requests.fullscreen = true,
             Quit => self.session.requests.quit = true,
         }

@@ -158,6 +158,8 @@ pub enum Command {
     SetScale(f32),
     NextScale,
     SetTheme(Theme),
+    /// The window's language, remembered for the next start.
+    SetLanguage(crate::app::lang::Lang),
     Fullscreen,
     Quit,
 }

@@ -4,11 +4,13 @@
 
 use super::command::EditPlace;
 use super::{Note, Sandbox};
+use crate::app::lang::{text as words, tr};
 use crate::app::numbers::{field, plain};
 use impulse::Particle;
 
-/// The selected disc's editable quantities, in field order.
-pub const FIELDS: [&str; 4] = ["mass", "radius", "v_x", "v_y"];
+/// The selected disc's editable quantities, in field order (their names
+/// are messages of `window.ftl`).
+pub const FIELDS: [&str; 4] = ["quantity-mass", "quantity-radius", "quantity-vx", "quantity-vy"];
 
 /// An edit of a disc's quantities; `None` leaves one as it is.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -45,26 +47,21 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
     let mut values = [None; 4];
     for (k, text) in changed.into_iter().enumerate() {
         let Some(text) = text else { continue };
-        let name = FIELDS[k];
+        let name = words(FIELDS[k], &[]);
         let text = text.trim();
         if text.is_empty() {
-            return Err(format!("{name}: type a number"));
+            return Err(tr!("edit-type-a-number", name = name));
         }
-        let v = text
-            .replace('−', "-")
-            .parse::<f64>()
-            .map_err(|_| format!("{name}: “{text}” is not a number"))?;
+        let v = crate::app::numbers::parse(text)
+            .ok_or_else(|| tr!("edit-not-a-number", name = name.as_str(), text = text))?;
         if !v.is_finite() {
-            return Err(format!("{name} must be a finite number"));
+            return Err(tr!("edit-not-finite", name = name));
         }
         if k < 2 && v <= 0.0 {
-            return Err(format!("{name} must be more than 0"));
+            return Err(tr!("edit-not-positive", name = name));
         }
         if k == 1 && v > max_radius {
-            return Err(format!(
-                "radius must be at most {} m here",
-                field(max_radius)
-            ));
+            return Err(tr!("edit-radius-too-large", radius = field(max_radius)));
         }
         values[k] = Some(v);
     }
@@ -90,35 +87,33 @@ impl Sandbox {
         };
         let edit = parse_disc_edit(changed, max_radius).and_then(|e| self.sized_edit(disc, e));
         let note = match edit {
-            Ok(edit) if edit.is_empty() => Note::ok("Nothing changed: type a new value first"),
+            Ok(edit) if edit.is_empty() => Note::ok(tr!("edit-nothing-changed")),
             Ok(edit) => {
                 let p = &mut self.world.particles[disc];
                 edit.apply(p);
                 self.record.totals.clear();
                 Note::ok(match from {
-                    EditPlace::Fields => format!("Applied to disc {disc}"),
+                    EditPlace::Fields => tr!("edit-applied", disc = disc),
                     EditPlace::Table => {
                         let what = [
-                            (edit.mass, "mass", "kg"),
-                            (edit.radius, "radius", "m"),
-                            (edit.vx, "v_x", "m/s"),
-                            (edit.vy, "v_y", "m/s"),
+                            (edit.mass, FIELDS[0], "kg"),
+                            (edit.radius, FIELDS[1], "m"),
+                            (edit.vx, FIELDS[2], "m/s"),
+                            (edit.vy, FIELDS[3], "m/s"),
                         ];
                         let said: Vec<String> = what
                             .iter()
                             .filter_map(|(v, name, unit)| {
-                                v.map(|v| {
-                                    format!("{name} = {} {unit}", crate::app::numbers::field(v))
-                                })
+                                v.map(|v| format!("{} = {} {unit}", words(name, &[]), field(v)))
                             })
                             .collect();
-                        format!("Disc {disc}: {}", said.join(", "))
+                        tr!("edit-applied-table", disc = disc, values = said.join("; "))
                     }
                 })
             }
             Err(e) => Note::error(match from {
                 EditPlace::Fields => e,
-                EditPlace::Table => format!("Disc {disc}: {e}; nothing changed"),
+                EditPlace::Table => tr!("edit-refused-table", disc = disc, error = e),
             }),
         };
         match from {
@@ -149,16 +144,15 @@ impl Sandbox {
                     < r + q.radius
         });
         if let Some((j, _)) = overlapped {
-            return Err(format!(
-                "at {} kg the disc would be {size} m in radius (size follows mass) and overlap disc {j}",
-                plain(m, 3)
+            return Err(tr!(
+                "edit-mass-overlaps",
+                mass = plain(m, 3),
+                size = size.as_str(),
+                disc = j
             ));
         }
         if !w.laws.boundary.admits(w.laws.walls, w.laws.size, p.pos, r) {
-            return Err(format!(
-                "at {} kg the disc would be {size} m in radius (size follows mass) and cross a wall",
-                plain(m, 3)
-            ));
+            return Err(tr!("edit-mass-crosses-wall", mass = plain(m, 3), size = size));
         }
         edit.radius = Some(r);
         Ok(edit)

@@ -36,6 +36,7 @@ pub mod panels;
 pub mod pointer;
 pub mod recovery;
 pub mod scenes;
+pub mod settings;
 pub mod share;
 pub mod start;
 pub mod tick;
@@ -168,6 +169,8 @@ pub struct Session {
     pub now: f64,
     /// What only the window can do, asked for by commands.
     pub requests: Requests,
+    /// What is remembered between runs (language, sound).
+    pub settings: settings::Remembered,
 }
 
 /// The whole sandbox.
@@ -205,6 +208,10 @@ pub struct Start {
     pub start_screen: bool,
     /// The scene came from a shared link (the browser).
     pub from_link: bool,
+    /// `--lang`: the language for this run, over the one remembered.
+    pub lang: Option<crate::app::lang::Lang>,
+    /// The system's (or the browser's) language, if Impulse speaks it.
+    pub system_lang: Option<crate::app::lang::Lang>,
 }
 
 impl Sandbox {
@@ -215,7 +222,15 @@ impl Sandbox {
         let mut clock = FixedStepClock::new(dt, 64);
         clock.paused = start.paused;
         let size = start.world.laws.size;
+        // The language first, so that every message is in it.
+        let (remembered, unreadable) = settings::Remembered::load(&start.recovery.0);
+        crate::app::lang::set_language(settings::choose_language(
+            start.lang,
+            remembered.language(),
+            start.system_lang,
+        ));
         let (recovery, problem) = recovery::Recovery::new(&start.recovery.0, start.recovery.1);
+        let problem = problem.or(unreadable);
         let mut sandbox = Sandbox {
             world: start.world,
             open: OpenScene {
@@ -250,6 +265,7 @@ impl Sandbox {
                 dt: start.dt,
                 now: 0.0,
                 requests: Requests::default(),
+                settings: remembered,
             },
         };
         sandbox.panels.start_open = start.start_screen;

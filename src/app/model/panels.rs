@@ -1,6 +1,7 @@
 //! Which panels, tabs and popups are open, the UI scale and the theme:
 //! the model's part of the screen, which the layout and the views read.
 
+use crate::app::lang::tr;
 use super::start;
 
 /// The bottom dock's tabs.
@@ -14,14 +15,25 @@ pub enum DockTab {
 }
 
 impl DockTab {
-    /// The tab's title.
-    pub fn title(self) -> &'static str {
+    /// Its name in the state dump and the widget names ("Totals").
+    pub fn key(self) -> &'static str {
         match self {
             DockTab::Totals => "Totals",
             DockTab::Collisions => "Collisions",
             DockTab::Discs => "Discs",
             DockTab::Speeds => "Speeds",
             DockTab::Momenta => "Momenta",
+        }
+    }
+
+    /// The tab's title, in the window's language.
+    pub fn title(self) -> String {
+        match self {
+            DockTab::Totals => tr!("tab-totals"),
+            DockTab::Collisions => tr!("tab-collisions"),
+            DockTab::Discs => tr!("tab-discs"),
+            DockTab::Speeds => tr!("tab-speeds"),
+            DockTab::Momenta => tr!("tab-momenta"),
         }
     }
 }

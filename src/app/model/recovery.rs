@@ -18,6 +18,7 @@
 //! ([`keep`]); a scene too large for it is reported the same way.
 
 use super::Sandbox;
+use crate::app::lang::tr;
 use impulse::Scene;
 use std::path::{Path, PathBuf};
 
@@ -90,13 +91,12 @@ impl Recovery {
                 Ok(scene) => recovery.offered = Some(scene),
                 Err(e) => {
                     message = Some(match recovery.set_aside() {
-                        Ok(to) => format!(
-                            "An unreadable recovery file was moved to {}: {e}",
-                            to.display()
+                        Ok(to) => tr!(
+                            "recovery-unreadable-moved",
+                            file = to.display().to_string(),
+                            error = e
                         ),
-                        Err(why) => {
-                            format!("An unreadable recovery file could not be moved: {why}")
-                        }
+                        Err(why) => tr!("recovery-unreadable-kept", error = why.to_string()),
                     });
                 }
             }
@@ -138,7 +138,11 @@ impl Recovery {
                 None
             }
             Err(e) => {
-                let message = format!("Autosave to {} failed: {e}", keep::place(&self.path));
+                let message = tr!(
+                    "autosave-failed",
+                    place = keep::place(&self.path),
+                    error = e.to_string()
+                );
                 let new = self.error.as_deref() != Some(message.as_str());
                 self.error = Some(message.clone());
                 new.then_some(message)
@@ -178,7 +182,7 @@ impl Recovery {
 
 /// Where the recovery text is kept: files on the desktop.
 #[cfg(not(target_arch = "wasm32"))]
-mod keep {
+pub(super) mod keep {
     use std::path::Path;
 
     /// The text at `path`: `None` when there is none, an error when it
@@ -211,7 +215,7 @@ mod keep {
 /// Where the recovery text is kept: the page's local storage in the
 /// browser, the paths being its keys.
 #[cfg(target_arch = "wasm32")]
-mod keep {
+pub(super) mod keep {
     use crate::web;
     use std::path::Path;
 
@@ -239,7 +243,7 @@ mod keep {
     }
 
     pub fn place(_path: &Path) -> String {
-        "the browser's storage".to_string()
+        tr!("browser-storage")
     }
 }
 
@@ -283,7 +287,10 @@ impl Sandbox {
     /// Opens the session that was offered (its Restore button, or `R`).
     pub(super) fn restore_recovery(&mut self) {
         if let Some(scene) = self.recovery.take_offer() {
-            let origin = format!("recovered from {}", self.recovery.path().display());
+            let origin = tr!(
+                "origin-recovered",
+                file = self.recovery.path().display().to_string()
+            );
             let _ = self.open_scene(scene, origin); // a failure is reported
                                                     // Kept nowhere but in the recovery file: still unsaved work.
             self.open.unsaved = true;
@@ -299,8 +306,8 @@ impl Sandbox {
             return;
         }
         match self.recovery.set_aside() {
-            Ok(to) => self.toast(format!("Earlier session kept in {}", to.display())),
-            Err(e) => self.report(format!("Could not set the earlier session aside: {e}")),
+            Ok(to) => self.toast(tr!("recovery-kept-in", file = to.display().to_string())),
+            Err(e) => self.report(tr!("recovery-not-set-aside", error = e.to_string())),
         }
         self.resume_after_modal();
     }
@@ -310,7 +317,7 @@ impl Sandbox {
     /// copy goes, since it is the sandbox again.
     pub(super) fn reopen_kept(&mut self) {
         if let Some(scene) = self.recovery.aside.clone() {
-            let origin = "your last sandbox, kept by this browser".to_string();
+            let origin = tr!("origin-kept");
             if self.open_scene(scene, origin).is_ok() {
                 self.recovery.aside = None;
                 self.open.unsaved = true;
@@ -344,12 +351,12 @@ impl Sandbox {
                 &self.recovery.path.with_file_name(KEPT_NAME),
                 &scene.to_toml(),
             ) {
-                self.report(format!("Could not keep your last sandbox aside: {e}"));
+                self.report(tr!("kept-not-set-aside", error = e.to_string()));
             }
             self.recovery.aside = Some(scene);
             return;
         }
-        let origin = "your last sandbox, kept by this browser".to_string();
+        let origin = tr!("origin-kept");
         if self.open_scene(scene, origin).is_ok() {
             self.open.unsaved = true;
             self.panels.start_open = false;
@@ -359,13 +366,16 @@ impl Sandbox {
     /// The line shown while an earlier session is offered.
     pub fn recovery_prompt(&self) -> Option<String> {
         self.recovery.offered.as_ref().map(|scene| {
-            let name = scene.name.as_deref().unwrap_or("sandbox");
+            let lang = crate::app::lang::language().code();
+            let name = scene
+                .name_in(lang)
+                .map_or_else(|| tr!("scene-untitled"), str::to_string);
             let n = scene.particles.len();
             if cfg!(target_arch = "wasm32") {
                 // A browser tab is closed, never quit: its sandbox is kept.
-                format!("This browser kept your last sandbox, {name} ({n} discs). Restore it, or set it aside?")
+                tr!("recovery-question-browser", name = name, discs = n)
             } else {
-                format!("The last session did not close normally. Restore its {name} ({n} discs), or set it aside?")
+                tr!("recovery-question", name = name, discs = n)
             }
         })
     }

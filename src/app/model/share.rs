@@ -23,8 +23,10 @@ const MAX_UNPACKED: usize = 4 << 20;
 pub fn fragment_for(scene: &Scene) -> Result<String, String> {
     let discs = scene.particles.len() + scene.fill.as_ref().map_or(0, |f| f.count);
     if discs > MAX_DISCS {
-        return Err(format!(
-            "{discs} discs are too many for a link (at most {MAX_DISCS}): save the scene as a file instead"
+        return Err(crate::app::lang::tr!(
+            "link-too-many-discs",
+            discs = discs,
+            most = MAX_DISCS
         ));
     }
     let packed = miniz_oxide::deflate::compress_to_vec(scene.to_toml().as_bytes(), 9);
@@ -41,13 +43,13 @@ pub fn scene_in(fragment: &str) -> Option<Result<Scene, String>> {
 
 #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
 fn unpack(packed: &str) -> Result<Scene, String> {
-    let damaged = |why: String| format!("the link's scene is damaged ({why})");
+    let damaged = |why: String| crate::app::lang::tr!("link-damaged", error = why);
     let bytes = URL_SAFE_NO_PAD
         .decode(packed.trim())
         .map_err(|e| damaged(e.to_string()))?;
     let text = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, MAX_UNPACKED)
         .map_err(|e| damaged(format!("{e:?}")))?;
-    let text = String::from_utf8(text).map_err(|_| damaged("not text".into()))?;
+    let text = String::from_utf8(text).map_err(|_| damaged("UTF-8".into()))?;
     Scene::parse(&text, "the shared link").map_err(|e| e.to_string())
 }
 

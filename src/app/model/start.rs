@@ -4,6 +4,7 @@
 //! Shown on a plain start (no scene file, no gas, no shared link) and by
 //! the top bar's *Start* button; while it is open nothing runs behind it.
 
+use crate::app::lang::tr;
 use super::{scenes, DockTab, Sandbox};
 
 /// A lesson on the start screen.
@@ -40,26 +41,26 @@ impl Tile {
     ];
 
     /// Its title on the tile.
-    pub fn title(self) -> &'static str {
+    pub fn title(self) -> String {
         match self {
-            Tile::HeadOn => "Head-on (1D)",
-            Tile::Glancing => "Glancing (2D)",
-            Tile::Inelastic => "Inelastic",
-            Tile::PiBlocks => "π blocks",
-            Tile::Gas => "A gas",
-            Tile::FreePlay => "Free play",
+            Tile::HeadOn => tr!("tile-head-on"),
+            Tile::Glancing => tr!("tile-glancing"),
+            Tile::Inelastic => tr!("tile-inelastic"),
+            Tile::PiBlocks => tr!("tile-pi-blocks"),
+            Tile::Gas => tr!("tile-gas"),
+            Tile::FreePlay => tr!("tile-free-play"),
         }
     }
 
     /// One line under the title, in plain words.
-    pub fn blurb(self) -> &'static str {
+    pub fn blurb(self) -> String {
         match self {
-            Tile::HeadOn => "Two discs meet on a line. Is the total momentum the same after?",
-            Tile::Glancing => "One disc hits another off-centre. Which way do they go?",
-            Tile::Inelastic => "Discs that do not bounce back fully. Where does the energy go?",
-            Tile::PiBlocks => "A light block, a heavy one and a wall: count the bumps.",
-            Tile::Gas => "Many discs at once: how are their speeds shared out?",
-            Tile::FreePlay => "Launch your own discs and change everything.",
+            Tile::HeadOn => tr!("tile-head-on-blurb"),
+            Tile::Glancing => tr!("tile-glancing-blurb"),
+            Tile::Inelastic => tr!("tile-inelastic-blurb"),
+            Tile::PiBlocks => tr!("tile-pi-blocks-blurb"),
+            Tile::Gas => tr!("tile-gas-blurb"),
+            Tile::FreePlay => tr!("tile-free-play-blurb"),
         }
     }
 
@@ -129,7 +130,7 @@ impl Sandbox {
                     Ok(scene) => {
                         let _ = self.open_scene(scene, origin); // reported
                     }
-                    Err(e) => self.report(format!("Cannot open the sandbox: {e}")),
+                    Err(e) => self.report(tr!("sandbox-cannot-open", error = e.to_string())),
                 }
             }
         }

@@ -246,7 +246,7 @@ impl Panels {
         panels.push(rects.caption.as_array());
         if let Some(drawer) = rects.drawer {
             let r = points(drawer);
-            egui::Window::new("Controls")
+            egui::Window::new(crate::app::lang::tr!("section-controls"))
                 .id(egui::Id::new("drawer"))
                 .fixed_pos(r.min)
                 .fixed_size(egui::vec2(r.width() - 16.0, r.height() - 48.0))

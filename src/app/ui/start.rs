@@ -3,6 +3,7 @@
 //! scale (three tiles a row where wide, two or one where narrow, scrolling
 //! where short); Esc keeps the scene that is open.
 
+use crate::app::lang::tr;
 use super::Cx;
 use crate::app::model::start::Tile;
 use crate::app::model::Command;
@@ -26,7 +27,7 @@ impl StartScreen {
             (screen.width() - 32.0).clamp(100.0, 1100.0),
             (screen.height() - 64.0).max(80.0),
         );
-        let response = egui::Window::new("What would you like to explore?")
+        let response = egui::Window::new(tr!("start-title"))
             .id(egui::Id::new("start_screen"))
             .anchor(Align2::CENTER_CENTER, Vec2::ZERO)
             .fixed_size(size)
@@ -44,7 +45,7 @@ impl StartScreen {
                         });
                         ui.add_space(8.0);
                     }
-                    ui.label("Esc keeps the scene that is open. The Start button in the top bar brings this back.");
+                    ui.label(tr!("start-footer"));
                 });
             });
         if let Some(r) = response {

@@ -127,8 +127,10 @@ pub struct Scene {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneWords {
+    /// The short title in this language.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+    /// The one-line description in this language.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
 }

@@ -64,7 +64,7 @@ impl BottomDock {
         for (tab, _) in &self.tabs {
             let chosen = model.panels.tab == *tab && expanded;
             let r = strip.selectable_label(chosen, RichText::new(tab.title()).strong());
-            cx.note(format!("tab_{}", tab.title().to_lowercase()), &r);
+            cx.note(format!("tab_{}", tab.key().to_lowercase()), &r);
             let tip = crate::app::model::bindings::tooltip(&Command::ShowTab(*tab));
             let r = if tip.is_empty() {
                 r

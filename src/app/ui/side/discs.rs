@@ -2,6 +2,8 @@
 //! and *Selected disc* (its mass, radius and velocity as text fields that
 //! follow the disc until typed in; Apply or Enter sends the edit).
 
+use crate::app::lang::tr;
+use crate::app::model::edit::FIELDS;
 use super::super::widgets::{command_button, select_all_on_focus, show_note, slider};
 use super::Cx;
 use crate::app::model::bindings::tooltip;
@@ -26,19 +28,18 @@ pub struct DiscFields {
     sent: bool,
 }
 
-const FIELD_LABELS: [&str; 4] = ["mass (kg)", "radius (m)", "v_x (m/s)", "v_y (m/s)"];
+/// Each field's unit, after its name.
+const FIELD_UNITS: [&str; 4] = ["kg", "m", "m/s", "m/s"];
 const FIELD_KEYS: [&str; 4] = ["disc_mass", "disc_radius", "disc_vx", "disc_vy"];
 
 /// Radius and mass of the next disc launched.
 pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
-    ui.label("Drag on empty space to launch one.");
+    ui.label(tr!("new-discs-line"));
     let follows = cx.model.new_discs.size_follows_mass;
     let mut on = follows;
     let r = ui
-        .checkbox(&mut on, "size follows mass (same density)")
-        .on_hover_text(
-            "a 1 kg disc is 0.4 m in radius; the radius grows as √m, for new discs and mass edits",
-        );
+        .checkbox(&mut on, tr!("size-follows-mass"))
+        .on_hover_text(tr!("size-follows-mass-hover"));
     cx.note("size_follows_mass", &r);
     if r.changed() {
         cx.send(Command::SizeFollowsMass(on));
@@ -47,12 +48,12 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
     let disc = cx.model.new_discs.disc;
     if follows {
         let r = radius_for_mass(disc.mass).min(biggest);
-        ui.label(format!("Radius {} (from the mass)", with_unit(r, 2, "m")));
+        ui.label(tr!("radius-from-mass", radius = with_unit(r, 2, "m")));
     } else {
         let mut r = disc.radius;
         let (track, changed) = slider(
             ui,
-            "Radius",
+            &tr!("radius-label"),
             &mut r,
             0.05..=2.0f64.min(biggest).max(0.06),
             true,
@@ -66,7 +67,7 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
         cx.note("new_radius", &track.on_hover_text(tip));
     }
     let mut m = disc.mass;
-    let (track, changed) = slider(ui, "Mass", &mut m, 0.01..=100.0, true, 2, " kg");
+    let (track, changed) = slider(ui, &tr!("mass-label"), &mut m, 0.01..=100.0, true, 2, " kg");
     if changed {
         cx.send(Command::SetNewMass(m));
     }
@@ -79,7 +80,7 @@ impl DiscFields {
     pub fn ui(&mut self, ui: &mut Ui, cx: &mut Cx) {
         let Some(i) = cx.model.selected_disc() else {
             self.disc = None;
-            ui.label("None: click a disc to select it.");
+            ui.label(tr!("selected-none"));
             return;
         };
         let p = cx.model.world.particles[i];
@@ -116,12 +117,13 @@ impl DiscFields {
                     if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                         enter = true;
                     }
-                    ui.label(FIELD_LABELS[k]);
+                    let name = crate::app::lang::text(FIELDS[k], &[]);
+                    ui.label(format!("{name} ({})", FIELD_UNITS[k]));
                     ui.end_row();
                 }
             });
         ui.horizontal(|ui| {
-            let r = ui.button("Apply").on_hover_text("Enter in a field");
+            let r = ui.button(tr!("apply")).on_hover_text(tr!("apply-hover"));
             cx.note("apply", &r);
             if r.clicked() || enter {
                 self.apply(cx, i);

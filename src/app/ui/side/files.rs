@@ -8,12 +8,13 @@ use super::Cx;
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
 use crate::app::model::{next_scale, scenes, Command, Theme, UI_SCALE_RANGE};
 use crate::app::numbers::{plain, with_unit};
+use crate::app::lang::{tr, Lang};
 use egui::{ComboBox, Ui};
 
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
 pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
-    ComboBox::from_label("preset")
-        .selected_text("open a preset…")
+    ComboBox::from_label(tr!("preset-label"))
+        .selected_text(tr!("preset-choose"))
         .show_ui(ui, |ui| {
             for (k, label) in scenes::preset_labels().iter().enumerate() {
                 if ui.selectable_label(false, label).clicked() {
@@ -29,9 +30,9 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
     let in_browser = cfg!(target_arch = "wasm32");
     let mut enter = false;
     if in_browser {
-        ui.label("Open a scene file: drop it on the page.");
+        ui.label(tr!("scene-drop"));
     } else {
-        ui.label("Scene file:");
+        ui.label(tr!("scene-file-label"));
         let r = ui.add(
             egui::TextEdit::singleline(path)
                 .hint_text("assets/scenes/preset-8-gas.toml")
@@ -43,7 +44,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
     }
     ui.horizontal_wrapped(|ui| {
         if !in_browser {
-            let r = ui.button("Open").on_hover_text("Enter in the field");
+            let r = ui.button(tr!("open")).on_hover_text(tr!("open-hover"));
             cx.note("open", &r);
             if r.clicked() || enter {
                 cx.send(Command::OpenFile(path.clone()));
@@ -52,8 +53,8 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         command_button(ui, cx, Command::Save, Some("save"));
         if in_browser {
             let r = ui
-                .button("Share link")
-                .on_hover_text("puts this scene into the page's address, to send as a link");
+                .button(tr!("share"))
+                .on_hover_text(tr!("share-hover"));
             cx.note("share", &r);
             if r.clicked() {
                 cx.send(Command::Share);
@@ -64,9 +65,10 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         command_button(ui, cx, Command::Screenshot, None);
     });
     if in_browser {
-        ui.label("Saves, exports and screenshots download as files.");
+        ui.label(tr!("saves-download"));
     } else {
-        ui.label(format!("Saves go to {}/", cx.model.session.out.display()));
+        let folder = cx.model.session.out.display().to_string();
+        ui.label(tr!("saves-go-to", folder = folder));
     }
     if let Some(note) = &cx.model.messages.scene {
         show_note(ui, note);
@@ -80,7 +82,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     let range = f64::from(*UI_SCALE_RANGE.start())..=f64::from(*UI_SCALE_RANGE.end());
     let (r, changed) = slider(
         ui,
-        "Size of text and controls",
+        &tr!("ui-scale-label"),
         &mut scale,
         range,
         false,
@@ -97,12 +99,10 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     ui.horizontal_wrapped(|ui| {
         command_button(ui, cx, Command::NextScale, Some("projector"));
         let label = match other {
-            Theme::Light => "Light theme",
-            Theme::Dark => "Dark theme",
+            Theme::Light => tr!("theme-light"),
+            Theme::Dark => tr!("theme-dark"),
         };
-        let r = ui
-            .button(label)
-            .on_hover_text("a bright room wants the light one");
+        let r = ui.button(label).on_hover_text(tr!("theme-hover"));
         cx.note("theme", &r);
         if r.clicked() {
             cx.send(Command::SetTheme(other));
@@ -117,49 +117,57 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
         }
         command_button(ui, cx, Command::ToggleDocks, None);
     });
+    language(ui, cx);
+}
+
+/// The language of the window, each named in itself.
+fn language(ui: &mut Ui, cx: &mut Cx) {
+    let current = crate::app::lang::language();
+    let name = |lang: Lang| crate::app::lang::Words::new(lang).get("this-language", &[]);
+    let r = ComboBox::from_label(tr!("language-label"))
+        .selected_text(name(current))
+        .show_ui(ui, |ui| {
+            for lang in Lang::SHIPPED {
+                if ui.selectable_label(lang == current, name(lang)).clicked() && lang != current {
+                    cx.send(Command::SetLanguage(lang));
+                }
+            }
+        })
+        .response
+        .on_hover_text(tr!("language-hover"));
+    cx.note("language", &r);
 }
 
 /// Method, broad phase, substeps, and what the steps cost.
 pub fn details(ui: &mut Ui, cx: &mut Cx) {
     let model = cx.model;
     let w = &model.world;
-    if let Some(m) = setting_combo(ui, ("method", "How the computer works out the collisions: auto chooses; exact finds each one at its instant; the others step in small fixed times and correct overlaps"), &METHODS, w.method) {
+    let (label, hover) = (tr!("method-label"), tr!("method-hover"));
+    if let Some(m) = setting_combo(ui, (&label, &hover), &METHODS, w.method) {
         cx.send(Command::SetMethod(m));
     }
-    if let Some(b) = setting_combo(ui, ("broad phase", "How the computer finds which discs are near each other before checking them closely: it only changes the speed, not the result"), &BROAD_PHASES, w.broad_phase) {
+    let (label, hover) = (tr!("broad-phase-label"), tr!("broad-phase-hover"));
+    if let Some(b) = setting_combo(ui, (&label, &hover), &BROAD_PHASES, w.broad_phase) {
         cx.send(Command::SetBroadPhase(b));
     }
-    if let Some(k) = setting_combo(
-        ui,
-        (
-            "substeps",
-            "How many smaller steps each time step is cut into: more is more accurate and slower",
-        ),
-        &SUBSTEPS,
-        w.substeps,
-    ) {
+    let (label, hover) = (tr!("substeps-label"), tr!("substeps-hover"));
+    if let Some(k) = setting_combo(ui, (&label, &hover), &SUBSTEPS, w.substeps) {
         cx.send(Command::SetSubsteps(k));
     }
     ui.add(egui::Label::new(model.method_line()).wrap());
     let mut micros: Vec<f64> = model.steps.step_micros.iter().copied().collect();
     micros.sort_by(f64::total_cmp);
     let median = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
-    ui.label(format!(
-        "time step dt = {}",
-        with_unit(model.clock.dt * 1e3, 3, "ms")
-    ))
-    .on_hover_text("how much simulated time one step of the computer covers");
-    ui.label(format!(
-        "step time {} (median), {} steps in the last frame",
-        with_unit(median, 1, "µs"),
-        model.steps.steps_last_frame
+    ui.label(tr!("dt-line", dt = with_unit(model.clock.dt * 1e3, 3, "ms")))
+        .on_hover_text(tr!("dt-hover"));
+    ui.label(tr!(
+        "step-time-line",
+        time = with_unit(median, 1, "µs"),
+        steps = model.steps.steps_last_frame
     ));
-    ui.label(format!("{} frames per second", macroquad::time::get_fps()));
-    ui.label(format!("{} discs", w.particles.len()));
+    ui.label(tr!("fps-line", fps = macroquad::time::get_fps()));
+    ui.label(tr!("discs-count", count = w.particles.len()));
     if let Some(rate) = model.sim_rate() {
-        ui.label(format!(
-            "simulated seconds per real second: {}",
-            plain(rate, 2)
-        ));
+        ui.label(tr!("sim-rate-line", rate = plain(rate, 2)));
     }
 }

@@ -3,7 +3,8 @@
 //! laws (roughness and friction). A slider sends its value as a command;
 //! the model keeps it in range and remembers it for undo.
 
-use super::super::widgets::{setting_combo, slider};
+use super::super::widgets::slider;
+use crate::app::lang::tr;
 use super::Cx;
 use crate::app::model::clock::TIME_SCALES;
 use crate::app::model::command::Law;
@@ -51,9 +52,9 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         cx,
         Law::Restitution,
         (
-            "Bounce between discs, restitution e (1: they bounce back fully, 0: they move on together along the line of impact)",
+            &tr!("restitution-label"),
             "restitution",
-            "How much of their approach speed two discs keep, going apart, along the line through their centres: 1 all of it, 0 none (sideways motion is kept)",
+            &tr!("restitution-hover"),
         ),
     );
     coefficient(
@@ -61,9 +62,9 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         cx,
         Law::WallRestitution,
         (
-            "Bounce at the walls, restitution e",
+            &tr!("wall-restitution-label"),
             "wall_restitution",
-            "How much of its speed into a wall a disc keeps, going away from it: 1 all of it, 0 none",
+            &tr!("wall-restitution-hover"),
         ),
     );
     // The slider shows |g| and sets it pointing down; a scene's sideways
@@ -72,7 +73,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     let (lo, hi) = impulse::laws::GRAVITY_RANGE.control;
     let (r, changed) = slider(
         ui,
-        "Gravity, pointing down",
+        &tr!("gravity-label"),
         &mut g,
         lo..=hi,
         false,
@@ -86,27 +87,30 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     cx.note(
         "gravity",
         &r.on_hover_text(format!(
-            "how hard the discs are pulled down; 9.81 m/s² on Earth\n{tip}"
+            "{}\n{tip}",
+            tr!("gravity-hover", gravity = crate::app::numbers::plain(EARTH_GRAVITY, 2))
         )),
     );
     let boundary = cx.model.world.laws.boundary;
-    if let Some(b) = setting_combo(
-        ui,
-        (
-            "edges",
-            "What the sides of the box do: box, walls the discs bounce off; open, no walls \
-             (discs fly away); periodic, a disc leaving on one side comes back on the other",
-        ),
-        &Boundary::ALL.map(Boundary::name),
-        boundary.name(),
-    ) {
-        if let Some(&k) = Boundary::ALL.iter().find(|k| k.name() == b) {
-            cx.send(Command::SetBoundary(k));
-        }
-    }
-    let scales = TIME_SCALES.map(|s| format!("×{s}"));
+    let edge_name = |b: Boundary| match b {
+        Boundary::Box => tr!("edges-box"),
+        Boundary::Open => tr!("edges-open"),
+        Boundary::Periodic => tr!("edges-periodic"),
+    };
+    ComboBox::from_label(tr!("edges-label"))
+        .selected_text(edge_name(boundary))
+        .show_ui(ui, |ui| {
+            for b in Boundary::ALL {
+                if ui.selectable_label(b == boundary, edge_name(b)).clicked() && b != boundary {
+                    cx.send(Command::SetBoundary(b));
+                }
+            }
+        })
+        .response
+        .on_hover_text(tr!("edges-hover"));
+    let scales = TIME_SCALES.map(|s| format!("×{}", crate::app::numbers::field(s)));
     let index = cx.model.clock.time_scale_index();
-    ComboBox::from_label("time scale")
+    ComboBox::from_label(tr!("time-scale-label"))
         .selected_text(scales[index].clone())
         .show_ui(ui, |ui| {
             for (k, label) in scales.iter().enumerate() {
@@ -116,7 +120,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
             }
         })
         .response
-        .on_hover_text("simulated seconds per real second: below 1 is slow motion");
+        .on_hover_text(tr!("time-scale-hover"));
     if spin_shown(&cx.model.world) {
         ui.separator();
         advanced(ui, cx);
@@ -126,27 +130,21 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
 /// Roughness β between discs and at the walls, and friction μ (off: no
 /// limit): for discs that spin.
 pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
-    const ROUGH: &str = "How the touching edges grip in a collision, so that discs start or stop \
-        spinning: −1 smooth (no grip, no spin given), 0 their sliding stops, 1 perfectly rough \
-        (the sliding reverses and no energy is lost)";
+    let rough = tr!("roughness-hover");
     coefficient(
         ui,
         cx,
         Law::Roughness,
-        (
-            "Grip between discs, roughness β (−1 smooth … 1 rough)",
-            "tangential_restitution",
-            ROUGH,
-        ),
+        (&tr!("roughness-label"), "tangential_restitution", &rough),
     );
     coefficient(
         ui,
         cx,
         Law::WallRoughness,
         (
-            "Grip at the walls, roughness β",
+            &tr!("wall-roughness-label"),
             "wall_tangential_restitution",
-            ROUGH,
+            &rough,
         ),
     );
     // μ is off (no limit) or a number: a tick turns it on at the slider's
@@ -154,12 +152,8 @@ pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
     let friction = cx.model.world.laws.friction;
     let mut on = friction.is_some();
     let r = ui
-        .checkbox(&mut on, "Friction μ limits the grip")
-        .on_hover_text(
-            "Friction: the sideways push where discs touch is at most μ times the \
-             head-on push, so fast sliding is only slowed; it also makes discs \
-             lying on each other rub. Off: no limit.",
-        );
+        .checkbox(&mut on, tr!("friction-on-label"))
+        .on_hover_text(tr!("friction-hover"));
     cx.note("friction_on", &r);
     let kept = ui
         .ctx()
@@ -172,7 +166,7 @@ pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
     let (r, changed) = ui
         .add_enabled_ui(on, |ui| {
             let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
-            slider(ui, "Friction μ", &mut mu, lo..=hi, false, 2, "")
+            slider(ui, &tr!("friction-label"), &mut mu, lo..=hi, false, 2, "")
         })
         .inner;
     if changed && on {

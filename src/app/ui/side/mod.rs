@@ -13,6 +13,7 @@ mod discs;
 mod files;
 mod laws;
 
+use crate::app::lang::tr;
 use super::widgets::{command_button, labelled_button};
 use super::{Cx, View};
 use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
@@ -60,13 +61,13 @@ impl View for SideDock {
         egui::ScrollArea::vertical().show(ui, |ui| {
             ui.set_width(ui.available_width());
             if focus != Tile::FreePlay {
-                let line = format!("The controls for {}.", focus.title());
+                let line = tr!("controls-for", lesson = focus.title());
                 ui.add(egui::Label::new(line).wrap());
                 command_button(ui, cx, Command::ShowAllControls, Some("all_controls"));
             }
             let title = match cx.model.selected_disc() {
-                Some(i) => format!("Selected disc ({i})"),
-                None => "Selected disc".to_string(),
+                Some(i) => tr!("selected-disc-numbered", disc = i),
+                None => tr!("section-selected-disc"),
             };
             for s in SECTIONS {
                 if !focus.shows(s) {
@@ -74,37 +75,43 @@ impl View for SideDock {
                 }
                 match s {
                     Section::Collisions => {
-                        section(ui, cx, ("Collisions", "section_collisions", true), laws::laws)
+                        let title = tr!("section-collisions");
+                        section(ui, cx, (&title, "section_collisions", true), laws::laws)
                     }
-                    Section::Show => section(ui, cx, ("Show", "section_show", true), show),
-                    Section::NewDiscs => section(
-                        ui,
-                        cx,
-                        ("New discs", "section_new_discs", false),
-                        discs::new_discs,
-                    ),
+                    Section::Show => {
+                        let title = tr!("section-show");
+                        section(ui, cx, (&title, "section_show", true), show)
+                    }
+                    Section::NewDiscs => {
+                        let title = tr!("section-new-discs");
+                        section(ui, cx, (&title, "section_new_discs", false), discs::new_discs)
+                    }
                     Section::Selected => {
                         section(ui, cx, (&title, "section_selected", false), |ui, cx| {
                             fields.ui(ui, cx);
                         })
                     }
-                    Section::Scene => section(ui, cx, ("Scene", "section_scene", false), |ui, cx| {
-                        files::scene(ui, cx, path);
-                    }),
-                    Section::View => section(ui, cx, ("View", "section_view", false), files::view),
-                    Section::More => section(ui, cx, ("More", "section_more", false), |ui, cx| {
-                        ui.add(
-                            egui::Label::new(
-                                "For spinning discs, and for comparing how the computer works it out.",
-                            )
-                            .wrap(),
-                        );
+                    Section::Scene => {
+                        let title = tr!("section-scene");
+                        section(ui, cx, (&title, "section_scene", false), |ui, cx| {
+                            files::scene(ui, cx, path);
+                        })
+                    }
+                    Section::View => {
+                        let title = tr!("section-view");
+                        section(ui, cx, (&title, "section_view", false), files::view)
+                    }
+                    Section::More => {
+                        let title = tr!("section-more");
+                        section(ui, cx, (&title, "section_more", false), |ui, cx| {
+                        ui.add(egui::Label::new(tr!("section-more-line")).wrap());
                         if !spin_shown(&cx.model.world) {
                             laws::advanced(ui, cx);
                             ui.separator();
                         }
                         files::details(ui, cx);
-                    }),
+                    })
+                    }
                 }
             }
         });
@@ -127,9 +134,9 @@ const SECTIONS: [Section; 7] = [
 fn transport(ui: &mut Ui, cx: &mut Cx) {
     ui.horizontal_wrapped(|ui| {
         let play = if cx.model.clock.paused {
-            "▶ Play"
+            format!("▶ {}", tr!("play"))
         } else {
-            "⏸ Pause"
+            format!("⏸ {}", tr!("pause"))
         };
         labelled_button(ui, cx, play, Command::TogglePause, Some("play"));
         command_button(ui, cx, Command::Step, Some("step"));
@@ -174,68 +181,65 @@ fn toggle(
 fn show(ui: &mut Ui, cx: &mut Cx) {
     let o = cx.model.overlays;
     let names = crate::app::look::arrow_names(cx.model.panels.theme);
+    let colour = |id: &str| crate::app::lang::text(id, &[]);
     toggle(
         ui,
         cx,
         o.velocity,
-        &format!("velocity arrows ({})", names.velocity),
+        &tr!("show-velocity", colour = colour(names.velocity)),
         Command::ToggleVelocity,
-        "where each disc will be half a second from now",
+        &tr!("show-velocity-hover"),
     );
     toggle(
         ui,
         cx,
         o.momentum,
-        &format!("momentum arrows ({})", names.momentum),
+        &tr!("show-momentum", colour = colour(names.momentum)),
         Command::ToggleMomentum,
-        "momentum p = m·v: mass times velocity",
-    );
-    let hover = format!(
-        "each disc's change of momentum, for a second after each collision between discs \
-         (in scenes of up to {DELTA_P_MAX_DISCS} discs: in a gas they would hide the discs)"
+        &tr!("show-momentum-hover"),
     );
     toggle(
         ui,
         cx,
         o.delta_p,
-        &format!("Δp after a collision ({})", names.delta_p),
+        &tr!("show-delta-p", colour = colour(names.delta_p)),
         Command::ToggleDeltaP,
-        &hover,
+        &tr!("show-delta-p-hover", most = DELTA_P_MAX_DISCS),
     );
-    const SCOPES: [(ReadoutScope, &str); 3] = [
-        (ReadoutScope::Off, "none"),
-        (ReadoutScope::Selected, "selected disc"),
-        (ReadoutScope::All, "every disc"),
+    let scopes = [
+        (ReadoutScope::Off, tr!("readouts-none")),
+        (ReadoutScope::Selected, tr!("readouts-selected")),
+        (ReadoutScope::All, tr!("readouts-all")),
     ];
-    let current = SCOPES
+    let current = scopes
         .iter()
         .find(|(s, _)| *s == o.readouts)
-        .map_or("none", |(_, l)| l);
+        .map_or_else(String::new, |(_, l)| l.clone());
     let tip = crate::app::model::bindings::tooltip(&Command::CycleReadouts);
-    ComboBox::from_label("values beside")
+    ComboBox::from_label(tr!("readouts-label"))
         .selected_text(current)
         .show_ui(ui, |ui| {
-            for (scope, label) in SCOPES {
+            for (scope, label) in scopes {
                 if ui.selectable_label(o.readouts == scope, label).clicked() {
                     cx.send(Command::SetReadouts(scope));
                 }
             }
         })
         .response
-        .on_hover_text(format!("{tip}\nwhere labels would cover each other, some discs go without; the world says how many"));
+        .on_hover_text(format!("{tip}\n{}", tr!("readouts-hover")));
     toggle(
         ui,
         cx,
         o.center_of_mass,
-        "centre of mass",
+        &tr!("show-center-of-mass"),
         Command::ToggleCenterOfMass,
-        "the balance point of all the discs, and its velocity",
+        &tr!("show-center-of-mass-hover"),
     );
     toggle(
         ui,
         cx,
         cx.model.record.trails.on,
-        "path traces, a dot every 0.1 s",
+        &tr!("help-trails"),
         Command::ToggleTrails,
         "",
     );
@@ -243,7 +247,7 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         ui,
         cx,
         o.safe_palette,
-        "colour-blind-safe",
+        &tr!("show-safe-palette"),
         Command::TogglePalette,
         "",
     );
@@ -255,10 +259,9 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
             ui,
             cx,
             o.com_view.is_some(),
-            "centre-of-mass view",
+            &tr!("show-com-view"),
             Command::ToggleCenterOfMassView,
-            "the view moves with the centre of mass and arrows show velocities \
-             relative to it; the experiment is not changed",
+            &tr!("show-com-view-hover"),
         );
     });
 }

@@ -1,0 +1,113 @@
+//! What the window remembers between runs: the language the person chose
+//! and whether they turned sound on. A small TOML file, `settings.toml`,
+//! beside the recovery file (`$XDG_STATE_HOME/impulse/`, see
+//! [`super::recovery::folder`]); in the browser the same name in the page's
+//! local storage. Tests isolate it the way they isolate recovery (their own
+//! `XDG_STATE_HOME`). A file that cannot be read is reported once and the
+//! defaults hold; a write that fails is reported and nothing else changes.
+
+use super::recovery::keep;
+use crate::app::lang::{tr, Lang};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// The settings file's name.
+pub const FILE_NAME: &str = "settings.toml";
+
+/// What is remembered.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Settings {
+    /// The language chosen in View (a tag: "es", "pt-BR"); none: the
+    /// system's or the browser's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub language: Option<String>,
+    /// Sound was turned on.
+    pub sound: bool,
+}
+
+/// The settings and where they are kept.
+#[derive(Clone, Debug)]
+pub struct Remembered {
+    path: PathBuf,
+    pub settings: Settings,
+}
+
+impl Remembered {
+    /// The settings kept in `dir`, or the defaults and what was wrong.
+    pub fn load(dir: &Path) -> (Remembered, Option<String>) {
+        let path = dir.join(FILE_NAME);
+        let read = keep::read(&path).map(|text| {
+            text.map_err(|e| e.to_string())
+                .and_then(|t| toml::from_str::<Settings>(&t).map_err(|e| e.message().to_string()))
+        });
+        let (settings, problem) = match read {
+            None => (Settings::default(), None),
+            Some(Ok(settings)) => (settings, None),
+            Some(Err(e)) => (
+                Settings::default(),
+                Some(tr!(
+                    "settings-unreadable",
+                    file = path.display().to_string(),
+                    error = e
+                )),
+            ),
+        };
+        (Remembered { path, settings }, problem)
+    }
+
+    /// The language remembered, if it is one Impulse speaks.
+    pub fn language(&self) -> Option<Lang> {
+        self.settings.language.as_deref().and_then(Lang::from_tag)
+    }
+
+    /// Writes the settings (atomically); what went wrong, if anything.
+    pub fn save(&self) -> Option<String> {
+        let text = toml::to_string(&self.settings).unwrap_or_default();
+        keep::write(&self.path, &text).err().map(|e| {
+            tr!(
+                "settings-not-saved",
+                place = keep::place(&self.path),
+                error = e.to_string()
+            )
+        })
+    }
+}
+
+/// The language to speak: the command line's, else the one chosen before,
+/// else the system's (or the browser's), else English.
+pub fn choose_language(pinned: Option<Lang>, remembered: Option<Lang>, system: Option<Lang>) -> Lang {
+    pinned.or(remembered).or(system).unwrap_or(Lang::En)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn settings_are_remembered_and_a_bad_file_keeps_the_defaults() {
+        let dir = tempfile::tempdir().unwrap();
+        let (mut r, problem) = Remembered::load(dir.path());
+        assert_eq!((r.settings.clone(), problem), (Settings::default(), None));
+        r.settings.language = Some("pt-BR".into());
+        r.settings.sound = true;
+        assert_eq!(r.save(), None);
+        let (again, problem) = Remembered::load(dir.path());
+        assert_eq!(problem, None);
+        assert_eq!(again.language(), Some(Lang::PtBr));
+        assert!(again.settings.sound);
+        std::fs::write(dir.path().join(FILE_NAME), "language = 3\n").unwrap();
+        let (bad, problem) = Remembered::load(dir.path());
+        assert_eq!(bad.settings, Settings::default());
+        assert!(problem.unwrap().contains(FILE_NAME));
+    }
+
+    #[test]
+    fn the_command_line_comes_first_then_the_choice_then_the_system() {
+        use Lang::*;
+        assert_eq!(choose_language(Some(En), Some(De), Some(Fr)), En);
+        assert_eq!(choose_language(None, Some(De), Some(Fr)), De);
+        assert_eq!(choose_language(None, None, Some(Fr)), Fr);
+        assert_eq!(choose_language(None, None, None), En);
+    }
+}
