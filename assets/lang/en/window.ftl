@@ -167,3 +167,92 @@ step-time-line = step time { $time } (median), { $steps } steps in the last fram
 fps-line = { $fps } frames per second
 sim-rate-line = simulated seconds per real second: { $rate }
 page-title = Impulse: collisions of discs
+
+## The Totals tab
+symbol-ke = KE
+totals-energy = energy
+totals-kinetic-energy = kinetic energy
+totals-momentum = momentum
+totals-angular-momentum = angular momentum L
+totals-change = change since { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-none = No record yet: run the simulation.
+totals-rotational-ke = rotational KE
+totals-ke-sum = KE + rotational KE
+totals-sum = sum
+totals-hover = p: momentum, mass times velocity, added up over the discs. L: angular momentum, how much the discs go round the box's bottom-left corner (0, 0) and turn. Collisions between discs keep both; the walls' pushes change them (dashed lines mark where). E: the energy of moving (KE), and with spinning discs of turning too.
+totals-walls-push = walls push
+axis-time = time (s)
+axis-energy = energy (J)
+
+## The Collisions tab (the ledger)
+ledger-pair = discs { $a } and { $b }
+ledger-wall = disc { $disc } and the { $wall ->
+    [left] left
+    [right] right
+    [bottom] bottom
+   *[top] top
+} wall
+ledger-empty = None yet. Next collision (J) runs to the next one, between discs or with a wall, and pauses at the instant of impact.
+ledger-last = The last { $count }, newest first
+ledger-time-hover = when it happened
+ledger-what = what
+ledger-what-hover = which discs, or which disc and wall
+ledger-dp-hover = the change of the total momentum of the discs in it: zero between discs, the wall's push at a wall
+ledger-dke-hover = the change of their kinetic energy, the energy of moving: zero in an elastic collision, less than zero when some is lost
+ledger-newest = Newest: { $who } at t = { $time }
+ledger-disc-p = disc { $disc }: p (kg·m/s)
+ledger-disc-ke = disc { $disc }: { $ke } (J)
+ledger-disc-v = disc { $disc }: v { $part } (m/s)
+ledger-along-impact = along the line of impact
+ledger-across-impact = across it
+ledger-away-from-wall = away from the wall
+ledger-along-wall = along the wall
+ledger-wall-push = the wall's push, Δp (kg·m/s)
+ledger-before = before
+ledger-after = after
+ledger-detail-hover = The line of impact runs through the centres of the two discs (or from the wall to the disc) at the instant they touch; only the speed along it changes in a smooth collision.
+
+## The Discs tab
+table-spin = spin ω
+    (rad/s)
+table-spin-hover = how fast the disc turns: radians per second, anticlockwise positive
+table-rotational-ke-hover = the energy of its turning, ½·I·ω² with I = ½·m·r²
+table-angular-momentum-hover = angular momentum, how much the disc goes round the box's bottom-left corner (0, 0) and turns: m·(x·v_y − y·v_x) of its moving plus I·ω of its turning
+table-disc = disc
+table-line = Click a mass or velocity to change it; Enter applies, Esc cancels.
+table-no-discs = No discs: drag on empty space to launch one.
+
+## The dock's tab row and the Momenta tab
+dock-hide = Hide
+dock-show = Show
+dock-no-room = no room here: L hides the side panel
+momenta-no-discs = No discs.
+momenta-too-many = Too many discs to draw one arrow each: the total is in the top bar.
+momenta-line = Total (thick): { $total }, each disc's momentum tip to tail in its colour
+momenta-hover = { $line }; p_x and p_y are drawn to one scale, so angles are true
+disc-numbered = disc { $disc }
+
+## The Speeds tab
+speeds-axis-rim = speed, rim speed (m/s)
+speeds-axis = speed (m/s)
+speeds-name = speeds |v|
+speeds-discs = discs
+speeds-per = per m/s
+maxwell-boltzmann = Maxwell–Boltzmann
+rim-speeds = rim speeds |ω|·r
+rim-speeds-equal = rim speeds, shared equally
+speeds-too-few = Too few moving discs for a distribution: try preset 8, a gas.
+speeds-line = Bars: how many discs move at each speed. Curve: how a gas settles (Maxwell–Boltzmann).
+speeds-hover = { $line }
+    The curve is where the speeds end up once collisions have shared the energy out at random, for discs with this much energy each on average: kT = KE/N = { $kt } (the temperature, in energy per disc).
+speeds-rim-meaning = Bars: how many discs move (or turn their edge) at each speed, per m/s. Curves: where they settle when the energy is shared equally, at the temperature kT = KE/N = { $kt }: Maxwell–Boltzmann for the speeds (solid), and for the rim speeds (dashed).
+rim-speeds-hover = How fast the edge of each disc moves as it turns: its spin ω times its radius r.
+    { $meaning }
+shares-energy = energy:
+shares-energy-hover = the share of the energy (%) in moving and in turning
+shares-moving = moving
+shares-turning = turning
+shares-one-third = one third
+shares-one-third-hover = Shared equally among the three ways a disc holds energy (moving along x, along y, turning), turning gets one third
+shares-moving-ke = moving (KE)
+shares-turning-ke = turning (rotational KE)

@@ -3,6 +3,7 @@
 //! newest before and after, disc by disc. Side by side where the dock is
 //! wide, one under the other where it is narrow; nothing overlaps.
 
+use crate::app::lang::tr;
 use super::super::widgets::command_button;
 use super::super::{Cx, View};
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
@@ -20,8 +21,8 @@ const SIDE_BY_SIDE: f32 = 760.0;
 /// "discs 1 and 0" or "disc 0 and the left wall".
 fn who(impact: &Impact) -> String {
     match impact {
-        Impact::Pair(c) => format!("discs {} and {}", c.discs[0], c.discs[1]),
-        Impact::Wall(w) => format!("disc {} and the {} wall", w.disc, w.wall.name()),
+        Impact::Pair(c) => tr!("ledger-pair", a = c.discs[0], b = c.discs[1]),
+        Impact::Wall(w) => tr!("ledger-wall", disc = w.disc, wall = w.wall.name()),
     }
 }
 
@@ -42,13 +43,7 @@ impl View for Collisions {
             .copied()
             .collect();
         let Some(newest) = recent.first() else {
-            ui.add(
-                egui::Label::new(
-                    "None yet. Next collision (J) runs to the next one, between discs or with a \
-                     wall, and pauses at the instant of impact.",
-                )
-                .wrap(),
-            );
+            ui.add(egui::Label::new(tr!("ledger-empty")).wrap());
             return;
         };
         if ui.available_width() >= SIDE_BY_SIDE {
@@ -70,7 +65,7 @@ impl View for Collisions {
 
 /// The kept impacts, newest first.
 fn list(ui: &mut egui::Ui, recent: &[Impact]) {
-    ui.strong(format!("The last {}, newest first", recent.len()));
+    ui.strong(tr!("ledger-last", count = recent.len()));
     egui::ScrollArea::both()
         .id_salt("ledger_list")
         .auto_shrink([false, true])
@@ -81,10 +76,10 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
                 .spacing([18.0, 4.0])
                 .show(ui, |ui| {
                     for (h, hover) in [
-                        ("t (s)", "when it happened"),
-                        ("what", "which discs, or which disc and wall"),
-                        ("Δp (kg·m/s)", "the change of the total momentum of the discs in it: zero between discs, the wall's push at a wall"),
-                        ("ΔKE (J)", "the change of their kinetic energy, the energy of moving: zero in an elastic collision, less than zero when some is lost"),
+                        ("t (s)".to_string(), tr!("ledger-time-hover")),
+                        (tr!("ledger-what"), tr!("ledger-what-hover")),
+                        ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
+                        (format!("Δ{} (J)", tr!("symbol-ke")), tr!("ledger-dke-hover")),
                     ] {
                         ui.strong(h).on_hover_text(hover);
                     }
@@ -103,10 +98,10 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
 
 /// The newest impact, disc by disc, before and after.
 fn detail(ui: &mut egui::Ui, impact: &Impact) {
-    ui.strong(format!(
-        "Newest: {} at t = {}",
-        who(impact),
-        with_unit(impact.time(), 3, "s")
+    ui.strong(tr!(
+        "ledger-newest",
+        who = who(impact),
+        time = with_unit(impact.time(), 3, "s")
     ));
     // Per disc: momentum and kinetic energy, and the velocity along the
     // line of impact and across it (at a wall: away from it and along it).
@@ -115,22 +110,27 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
                      (p0, p1): (DVec2, DVec2),
                      (e0, e1): (f64, f64),
                      split: Split,
-                     names: [&str; 2]| {
+                     names: [String; 2]| {
         let ((n0, t0), (n1, t1)) = split;
+        let [along, across] = names;
         [
             (
-                format!("disc {d}: p (kg·m/s)"),
+                tr!("ledger-disc-p", disc = d),
                 vector(p0, 3, ""),
                 vector(p1, 3, ""),
             ),
-            (format!("disc {d}: KE (J)"), plain(e0, 3), plain(e1, 3)),
             (
-                format!("disc {d}: v {} (m/s)", names[0]),
+                tr!("ledger-disc-ke", disc = d, ke = tr!("symbol-ke")),
+                plain(e0, 3),
+                plain(e1, 3),
+            ),
+            (
+                tr!("ledger-disc-v", disc = d, part = along),
                 plain(n0, 3),
                 plain(n1, 3),
             ),
             (
-                format!("disc {d}: v {} (m/s)", names[1]),
+                tr!("ledger-disc-v", disc = d, part = across),
                 plain(t0, 3),
                 plain(t1, 3),
             ),
@@ -140,7 +140,7 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
     match impact {
         Impact::Pair(c) => {
             for k in 0..2 {
-                let names = ["along the line of impact", "across it"];
+                let names = [tr!("ledger-along-impact"), tr!("ledger-across-impact")];
                 let split = c.components(k);
                 rows.extend(disc_rows(
                     c.discs[k],
@@ -152,7 +152,7 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
             }
         }
         Impact::Wall(w) => {
-            let names = ["away from the wall", "along the wall"];
+            let names = [tr!("ledger-away-from-wall"), tr!("ledger-along-wall")];
             rows.extend(disc_rows(
                 w.disc,
                 w.momentum(),
@@ -161,7 +161,7 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
                 names,
             ));
             rows.push((
-                "the wall's push, Δp (kg·m/s)".to_string(),
+                tr!("ledger-wall-push"),
                 String::new(),
                 vector(w.wall_impulse(), 3, ""),
             ));
@@ -176,7 +176,7 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
                 .num_columns(3)
                 .spacing([18.0, 4.0])
                 .show(ui, |ui| {
-                    for h in ["", "before", "after"] {
+                    for h in [String::new(), tr!("ledger-before"), tr!("ledger-after")] {
                         ui.strong(h);
                     }
                     ui.end_row();
@@ -188,10 +188,6 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
                     }
                 })
                 .response
-                .on_hover_text(
-                    "The line of impact runs through the centres of the two discs (or from the \
-                     wall to the disc) at the instant they touch; only the speed along it \
-                     changes in a smooth collision.",
-                );
+                .on_hover_text(tr!("ledger-detail-hover"));
         });
 }

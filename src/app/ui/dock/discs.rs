@@ -6,6 +6,7 @@
 //! and the answer shows above the table, where it is seen without
 //! scrolling.
 
+use crate::app::lang::tr;
 use super::super::widgets::{select_all_on_focus, show_note};
 use super::super::{Cx, View};
 use crate::app::model::command::EditPlace;
@@ -34,34 +35,31 @@ pub struct DiscsTable {
 
 /// The spin columns' headings, with units on a second line, and what they
 /// mean.
-const SPIN_HEADINGS: [(&str, &str); 3] = [
-    (
-        "spin ω\n(rad/s)",
-        "how fast the disc turns: radians per second, anticlockwise positive",
-    ),
-    (
-        "rotational\nKE (J)",
-        "the energy of its turning, ½·I·ω² with I = ½·m·r²",
-    ),
-    (
-        "L\n(kg·m²/s)",
-        "angular momentum, how much the disc goes round the box's bottom-left corner (0, 0) \
-         and turns: m·(x·v_y − y·v_x) of its moving plus I·ω of its turning",
-    ),
-];
+fn spin_headings() -> [(String, String); 3] {
+    [
+        (tr!("table-spin"), tr!("table-spin-hover")),
+        (
+            format!("{}\n(J)", tr!("totals-rotational-ke")),
+            tr!("table-rotational-ke-hover"),
+        ),
+        ("L\n(kg·m²/s)".to_string(), tr!("table-angular-momentum-hover")),
+    ]
+}
 
 /// Column headings, with units.
-const HEADINGS: [&str; 9] = [
-    "disc",
-    "m (kg)",
-    "x (m)",
-    "y (m)",
-    "v_x (m/s)",
-    "v_y (m/s)",
-    "|v| (m/s)",
-    "|p| (kg·m/s)",
-    "KE (J)",
-];
+fn headings() -> [String; 9] {
+    [
+        tr!("table-disc"),
+        "m (kg)".into(),
+        "x (m)".into(),
+        "y (m)".into(),
+        "v_x (m/s)".into(),
+        "v_y (m/s)".into(),
+        "|v| (m/s)".into(),
+        "|p| (kg·m/s)".into(),
+        format!("{} (J)", tr!("symbol-ke")),
+    ]
+}
 
 impl View for DiscsTable {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
@@ -71,14 +69,14 @@ impl View for DiscsTable {
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
         }
         ui.horizontal_wrapped(|ui| {
-            ui.label("Click a mass or velocity to change it; Enter applies, Esc cancels.");
+            ui.label(tr!("table-line"));
             if let Some(note) = &note {
                 let r = show_note(ui, note);
                 cx.note("table_note", &r);
             }
         });
         if model.world.particles.is_empty() {
-            ui.label("No discs: drag on empty space to launch one.");
+            ui.label(tr!("table-no-discs"));
             return;
         }
         let row_height = ui.spacing().interact_size.y + 2.0;
@@ -93,7 +91,8 @@ impl View for DiscsTable {
         let mut select = None;
         let mut focused = false;
         let spin = spin_shown(&model.world);
-        let spin_columns = if spin { SPIN_HEADINGS.len() } else { 0 };
+        let spin_columns = if spin { 3 } else { 0 };
+        let spin_headings = spin_headings();
         // With the spin columns, narrower ones (units under the names), so
         // that all twelve fit the dock of a 1280-pixel window.
         let (column_width, cell_width, header_height) = if spin {
@@ -121,7 +120,7 @@ impl View for DiscsTable {
                     .column(Column::auto().at_least(60.0))
                     .columns(Column::auto().at_least(column_width), 8 + spin_columns)
                     .header(header_height, |mut header| {
-                        for h in HEADINGS {
+                        for h in headings() {
                             let h = if spin {
                                 h.replacen(" (", "\n(", 1)
                             } else {
@@ -131,9 +130,9 @@ impl View for DiscsTable {
                                 ui.strong(h);
                             });
                         }
-                        for (h, meaning) in &SPIN_HEADINGS[..spin_columns] {
+                        for (h, meaning) in &spin_headings[..spin_columns] {
                             header.col(|ui| {
-                                ui.strong(*h).on_hover_text(*meaning);
+                                ui.strong(h).on_hover_text(meaning);
                             });
                         }
                     })

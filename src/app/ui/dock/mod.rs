@@ -77,9 +77,9 @@ impl BottomDock {
         }
         strip.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let label = if model.panels.dock_expanded {
-                "Hide"
+                crate::app::lang::tr!("dock-hide")
             } else {
-                "Show"
+                crate::app::lang::tr!("dock-show")
             };
             let r = ui.button(label);
             cx.note("dock_toggle", &r);
@@ -87,7 +87,7 @@ impl BottomDock {
                 cx.send(Command::ToggleDockExpanded);
             }
             if model.panels.dock_expanded && !content {
-                ui.add(egui::Label::new("no room here: L hides the side panel").truncate());
+                ui.add(egui::Label::new(crate::app::lang::tr!("dock-no-room")).truncate());
             }
         });
         ui.allocate_rect(full, egui::Sense::hover());

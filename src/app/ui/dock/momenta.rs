@@ -1,10 +1,11 @@
 //! The *Momenta* tab: each disc's momentum drawn tip to tail, and their
 //! sum, in one scale for p_x and p_y.
 
+use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::model::totals::DIAGRAM_MAX_DISCS;
-use crate::app::numbers::{plain, vector};
+use crate::app::numbers::vector;
 use egui::Color32;
 use egui_plot::{Arrows, Line, PlotPoints, Points};
 
@@ -17,9 +18,9 @@ impl View for Momenta {
         let ps = &model.world.particles;
         if ps.is_empty() || ps.len() > DIAGRAM_MAX_DISCS {
             ui.label(if ps.is_empty() {
-                "No discs."
+                tr!("momenta-no-discs")
             } else {
-                "Too many discs to draw one arrow each: the total is in the top bar."
+                tr!("momenta-too-many")
             });
             return;
         }
@@ -30,14 +31,9 @@ impl View for Momenta {
             at += p.momentum();
         }
         // One line, so the plot keeps the height: the whole on hover.
-        let line = format!(
-            "Total (thick): {}, each disc's momentum tip to tail in its colour",
-            vector(at, 3, "kg·m/s")
-        );
+        let line = tr!("momenta-line", total = vector(at, 3, "kg·m/s"));
         let r = ui.add(egui::Label::new(line.clone()).truncate());
-        r.on_hover_text(format!(
-            "{line}; p_x and p_y are drawn to one scale, so angles are true"
-        ));
+        r.on_hover_text(tr!("momenta-hover", line = line));
         let sum_color = ui.visuals().strong_text_color();
         let height = ui.available_height();
         // Axis names only where there is room for them beside the plot.
@@ -53,19 +49,19 @@ impl View for Momenta {
             .y_axis_label(if roomy { "p_y (kg·m/s)" } else { "" })
             .include_x(0.0)
             .include_y(0.0)
-            .label_formatter(|_, v| format!("({}, {}) kg·m/s", plain(v.x, 3), plain(v.y, 3)))
+            .label_formatter(|_, v| vector(glam::DVec2::new(v.x, v.y), 3, "kg·m/s"))
             .show(ui, |plot| {
                 plot.line(
                     Line::new(PlotPoints::from(vec![[0.0, 0.0], [at.x, at.y]]))
                         .color(sum_color)
                         .width(5.0)
-                        .name("sum"),
+                        .name(tr!("totals-sum")),
                 );
                 plot.points(
                     Points::new(vec![[at.x, at.y]])
                         .radius(6.0)
                         .color(sum_color)
-                        .name("sum"),
+                        .name(tr!("totals-sum")),
                 );
                 for (k, (a, b, c)) in chain.into_iter().enumerate() {
                     let color = Color32::from_rgb(c.r, c.g, c.b);
@@ -73,12 +69,12 @@ impl View for Momenta {
                         Line::new(PlotPoints::from(vec![[a.x, a.y], [b.x, b.y]]))
                             .color(color)
                             .width(2.5)
-                            .name(format!("disc {k}")),
+                            .name(tr!("disc-numbered", disc = k)),
                     );
                     plot.arrows(
                         Arrows::new(vec![[a.x, a.y]], vec![[b.x, b.y]])
                             .color(color)
-                            .name(format!("disc {k}")),
+                            .name(tr!("disc-numbered", disc = k)),
                     );
                 }
             });

@@ -2,6 +2,7 @@
 //! that holds still, a y range that shows a conserved total as a flat line,
 //! the speed histogram, and a series named in its colour.
 
+use crate::app::lang::tr;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::plain;
 use egui::{Color32, RichText};
@@ -62,10 +63,11 @@ pub fn speed_plot(
         (bars, curve(&|u| r.law(u)))
     });
     let (x_label, speed_name) = if rim.is_some() {
-        ("speed, rim speed (m/s)", "speeds |v|")
+        (tr!("speeds-axis-rim"), tr!("speeds-name"))
     } else {
-        ("speed (m/s)", "discs")
+        (tr!("speeds-axis"), tr!("speeds-discs"))
     };
+    let per = tr!("speeds-per");
     let plot = still_plot("speeds_plot").height(height);
     let plot = if legend {
         plot.legend(Legend::default().position(Corner::RightTop))
@@ -74,26 +76,26 @@ pub fn speed_plot(
     };
     plot.x_axis_label(x_label)
         // Rotated beside a short plot, the name would run past it.
-        .y_axis_label(if height >= ROOMY_PLOT { "per m/s" } else { "" })
+        .y_axis_label(if height >= ROOMY_PLOT { per.clone() } else { String::new() })
         .include_y(0.0)
-        .label_formatter(|_, v| format!("{} m/s\n{} per m/s", plain(v.x, 2), plain(v.y, 3)))
+        .label_formatter(move |_, v| format!("{} m/s\n{} {per}", plain(v.x, 2), plain(v.y, 3)))
         .show(ui, |plot| {
             plot.bar_chart(BarChart::new(bars).name(speed_name).color(PX_COLOR));
             plot.line(
                 Line::new(PlotPoints::from(law))
-                    .name("Maxwell–Boltzmann")
+                    .name(tr!("maxwell-boltzmann"))
                     .color(PY_COLOR)
                     .width(3.0),
             );
             if let Some((bars, law)) = rim {
                 plot.bar_chart(
                     BarChart::new(bars)
-                        .name("rim speeds |ω|·r")
+                        .name(tr!("rim-speeds"))
                         .color(RIM_COLOR),
                 );
                 plot.line(
                     Line::new(PlotPoints::from(law))
-                        .name("rim speeds, shared equally")
+                        .name(tr!("rim-speeds-equal"))
                         .color(RIM_COLOR)
                         .style(LineStyle::dashed_loose())
                         .width(3.0),
@@ -110,7 +112,14 @@ pub fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
 /// A plot that holds still: no scrolling, dragging or zooming, which in a
 /// live plot would only lose the view (hover still reads values).
 pub fn still_plot(id: &str) -> Plot<'static> {
+    // The axes' numbers with the language's decimal separator.
+    let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+        let decimals = (-mark.step_size.log10()).ceil().clamp(0.0, 6.0) as usize;
+        plain(mark.value, decimals)
+    };
     Plot::new(id)
+        .x_axis_formatter(axis)
+        .y_axis_formatter(axis)
         // Never taller than the dock leaves it (egui_plot's least is 64
         // points, which grew a short dock over the world).
         .min_size(egui::vec2(40.0, 16.0))

@@ -2,6 +2,7 @@
 //! spin shown also the rim speeds |ω|·r, and how the energy is shared
 //! between moving and turning over time.
 
+use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::model::overlays::spin_shown;
@@ -16,18 +17,14 @@ impl View for Speeds {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
         let Some(h) = SpeedHistogram::of(&model.world) else {
-            ui.label("Too few moving discs for a distribution: try preset 8, a gas.");
+            ui.label(tr!("speeds-too-few"));
             return;
         };
         if !spin_shown(&model.world) {
             // One line, so the plot keeps its height; the whole on hover.
-            let line = "Bars: how many discs move at each speed. Curve: how a gas settles (Maxwell–Boltzmann).";
-            ui.add(egui::Label::new(line).truncate()).on_hover_text(format!(
-                "{line}\nThe curve is where the speeds end up once collisions have shared the energy \
-                 out at random, for discs with this much energy each on average: kT = KE/N = {} \
-                 (the temperature, in energy per disc).",
-                with_unit(h.kt, 3, "J")
-            ));
+            let line = tr!("speeds-line");
+            ui.add(egui::Label::new(line.clone()).truncate())
+                .on_hover_text(tr!("speeds-hover", line = line, kt = with_unit(h.kt, 3, "J")));
             let height = ui.available_height();
             // The line above names bars and curve; a short plot has no room for a legend box.
             speed_plot(ui, &h, None, height, height >= ROOMY_PLOT);
@@ -45,31 +42,22 @@ impl View for Speeds {
             ui.horizontal_wrapped(|ui| {
                 // Each name stays whole; a narrow column moves it down.
                 ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                let meaning = format!(
-                    "Bars: how many discs move (or turn their edge) at each speed, per m/s. \
-                     Curves: where they settle when the energy is shared equally, at the \
-                     temperature kT = KE/N = {kt}: Maxwell–Boltzmann for the speeds (solid), \
-                     and for the rim speeds (dashed)."
-                );
-                named(ui, "■ speeds |v|", PX_COLOR).on_hover_text(&meaning);
-                named(ui, "■ rim speeds |ω|·r", RIM_COLOR).on_hover_text(format!(
-                    "How fast the edge of each disc moves as it turns: its spin ω times its \
-                     radius r.\n{meaning}"
-                ));
+                let meaning = tr!("speeds-rim-meaning", kt = kt.as_str());
+                named(ui, &format!("■ {}", tr!("speeds-name")), PX_COLOR).on_hover_text(&meaning);
+                named(ui, &format!("■ {}", tr!("rim-speeds")), RIM_COLOR)
+                    .on_hover_text(tr!("rim-speeds-hover", meaning = meaning.as_str()));
             });
             let height = ui.available_height();
             speed_plot(ui, &h, Some(&rims), height, false);
             let ui = &mut columns[1];
             ui.horizontal_wrapped(|ui| {
                 ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                ui.label("energy:")
-                    .on_hover_text("the share of the energy (%) in moving and in turning");
-                named(ui, "— moving", KE_COLOR);
-                named(ui, "— turning", ROT_COLOR);
-                named(ui, "- - one third", ROT_COLOR).on_hover_text(
-                    "Shared equally among the three ways a disc holds energy (moving along x, \
-                     along y, turning), turning gets one third",
-                );
+                ui.label(tr!("shares-energy"))
+                    .on_hover_text(tr!("shares-energy-hover"));
+                named(ui, &format!("— {}", tr!("shares-moving")), KE_COLOR);
+                named(ui, &format!("— {}", tr!("shares-turning")), ROT_COLOR);
+                named(ui, &format!("- - {}", tr!("shares-one-third")), ROT_COLOR)
+                    .on_hover_text(tr!("shares-one-third-hover"));
             });
             let height = ui.available_height();
             let moving: Vec<[f64; 2]> = samples
@@ -82,7 +70,7 @@ impl View for Speeds {
                 .collect();
             still_plot("shares_plot")
                 .height(height)
-                .x_axis_label("time (s)")
+                .x_axis_label(tr!("axis-time"))
                 .y_axis_label(if height >= ROOMY_PLOT { "%" } else { "" })
                 .include_y(0.0)
                 .include_y(100.0)
@@ -92,20 +80,20 @@ impl View for Speeds {
                 .show(ui, |plot| {
                     plot.hline(
                         HLine::new(100.0 / 3.0)
-                            .name("one third")
+                            .name(tr!("shares-one-third"))
                             .color(ROT_COLOR)
                             .style(LineStyle::dashed_loose())
                             .width(1.5),
                     );
                     plot.line(
                         Line::new(PlotPoints::from(moving))
-                            .name("moving (KE)")
+                            .name(tr!("shares-moving-ke"))
                             .color(KE_COLOR)
                             .width(2.5),
                     );
                     plot.line(
                         Line::new(PlotPoints::from(turning))
-                            .name("turning (rotational KE)")
+                            .name(tr!("shares-turning-ke"))
                             .color(ROT_COLOR)
                             .width(2.5),
                     );

@@ -2,6 +2,7 @@
 //! and the energy against time, each in its own plot, with the change since
 //! the record began above them.
 
+use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::model::overlays::spin_shown;
@@ -24,44 +25,43 @@ impl View for Totals {
         // line is put in symbols, so that both fit on one line.
         let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
         let energy_name = match (compact, spin) {
-            (true, _) => "ΔE",
-            (false, true) => "energy",
-            (false, false) => "kinetic energy",
+            (true, _) => "ΔE".to_string(),
+            (false, true) => tr!("totals-energy"),
+            (false, false) => tr!("totals-kinetic-energy"),
         };
         let (p_name, l_name) = if compact {
-            ("Δp", "ΔL")
+            ("Δp".to_string(), "ΔL".to_string())
         } else {
-            ("momentum", "angular momentum L")
+            (tr!("totals-momentum"), tr!("totals-angular-momentum"))
         };
         let drift = match (model.record.totals.drift(), samples.first(), samples.last()) {
-            (Some(_), Some(a), Some(b)) => format!(
-                "change since {}: {p_name} {}, {l_name} {}, {energy_name} {}",
-                with_unit(a.time, 2, "s"),
-                vector(b.momentum - a.momentum, 3, "kg·m/s"),
-                with_unit(b.angular_momentum - a.angular_momentum, 3, "kg·m²/s"),
-                with_unit(b.energy() - a.energy(), 3, "J")
+            (Some(_), Some(a), Some(b)) => tr!(
+                "totals-change",
+                since = with_unit(a.time, 2, "s"),
+                p_name = p_name,
+                momentum = vector(b.momentum - a.momentum, 3, "kg·m/s"),
+                l_name = l_name,
+                angular = with_unit(b.angular_momentum - a.angular_momentum, 3, "kg·m²/s"),
+                e_name = energy_name,
+                energy = with_unit(b.energy() - a.energy(), 3, "J")
             ),
-            _ => "No record yet: run the simulation.".to_string(),
+            _ => tr!("totals-none"),
         };
         let total_color = ui.visuals().strong_text_color();
         // Each energy plotted: its name in the legend, in the compact line
         // of names, and its colour.
-        let mut energies = vec![("KE", "KE", KE_COLOR)];
+        let ke = tr!("symbol-ke");
+        let mut energies = vec![(ke.clone(), ke, KE_COLOR)];
         if spin {
-            energies.push(("rotational KE", "rotational KE", ROT_COLOR));
-            energies.push(("KE + rotational KE", "sum", total_color));
+            let rotational = tr!("totals-rotational-ke");
+            energies.push((rotational.clone(), rotational, ROT_COLOR));
+            energies.push((tr!("totals-ke-sum"), tr!("totals-sum"), total_color));
         }
         ui.horizontal_wrapped(|ui| {
-            ui.label(drift).on_hover_text(
-                "p: momentum, mass times velocity, added up over the discs. L: angular \
-                 momentum, how much the discs go round the box's bottom-left corner (0, 0) \
-                 and turn. Collisions between discs keep both; the walls' pushes change \
-                 them (dashed lines mark where). E: the energy of moving (KE), and with \
-                 spinning discs of turning too.",
-            );
+            ui.label(drift).on_hover_text(tr!("totals-hover"));
             if compact {
                 let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
-                let short = energies.iter().map(|&(_, name, color)| (name, color));
+                let short = energies.iter().map(|(_, name, color)| (name.as_str(), *color));
                 for (name, color) in names.into_iter().chain(short) {
                     ui.label(RichText::new(format!("— {name}")).color(color).strong());
                 }
@@ -90,7 +90,7 @@ impl View for Totals {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label("time (s)")
+            plot.x_axis_label(tr!("axis-time"))
                 // Too low for a rotated label: the line above gives the units.
                 .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
                 .include_y(lo)
@@ -106,7 +106,7 @@ impl View for Totals {
                             .style(LineStyle::dashed_dense())
                             .width(1.0);
                         plot.vline(if k == 0 {
-                            mark.name("walls push")
+                            mark.name(tr!("totals-walls-push"))
                         } else {
                             mark
                         });
@@ -130,7 +130,7 @@ impl View for Totals {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label("time (s)")
+            plot.x_axis_label(tr!("axis-time"))
                 .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
                 .include_y(lo)
                 .include_y(hi)
@@ -152,11 +152,11 @@ impl View for Totals {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label("time (s)")
+            plot.x_axis_label(tr!("axis-time"))
                 .y_axis_label(match (compact, spin) {
-                    (true, _) => "",
-                    (false, true) => "energy (J)",
-                    (false, false) => "KE (J)",
+                    (true, _) => String::new(),
+                    (false, true) => tr!("axis-energy"),
+                    (false, false) => format!("{} (J)", tr!("symbol-ke")),
                 })
                 .include_y(lo)
                 .include_y(hi)
@@ -167,7 +167,7 @@ impl View for Totals {
                     for ((name, _, color), points) in energies.iter().zip(shown) {
                         plot.line(
                             Line::new(PlotPoints::from(points.clone()))
-                                .name(*name)
+                                .name(name)
                                 .color(*color)
                                 .width(2.5),
                         );
