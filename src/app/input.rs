@@ -2,6 +2,7 @@
 //! the bindings table ([`crate::app::model::bindings`]); nothing here
 //! changes the model.
 
+use crate::app::lang::tr;
 use super::model::bindings::{command_for, Key, Trigger};
 use super::model::{Command, Sandbox};
 use super::ui::Panels;
@@ -264,13 +265,13 @@ fn dropped_files(out: &mut Vec<Command>) {
         let name = file
             .path
             .as_ref()
-            .map_or_else(|| "dropped file".to_string(), |p| p.display().to_string());
+            .map_or_else(|| tr!("dropped-file"), |p| p.display().to_string());
         let text = match (&file.bytes, &file.path) {
-            (Some(bytes), _) => {
-                String::from_utf8(bytes.clone()).map_err(|_| format!("{name}: not a text file"))
-            }
-            (None, Some(path)) => std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}")),
-            (None, None) => Err("a dropped file without content".to_string()),
+            (Some(bytes), _) => String::from_utf8(bytes.clone())
+                .map_err(|_| tr!("dropped-not-text", name = name.as_str())),
+            (None, Some(path)) => std::fs::read_to_string(path)
+                .map_err(|e| tr!("dropped-unreadable", name = name.as_str(), error = e.to_string())),
+            (None, None) => Err(tr!("dropped-empty")),
         };
         out.push(Command::OpenText { name, text });
     }

@@ -101,13 +101,21 @@ fn gas_scene(count: usize) -> (Scene, String) {
     world.method = impulse::method::Setting::Auto;
     world.broad_phase = impulse::method::Setting::Auto;
     world.substeps = impulse::method::Setting::Auto;
-    let scene = Scene::from_world(
-        &world,
-        Some(format!("Gas of {count} discs")),
-        Some(format!(
-            "{count} equal discs covering 30 % of a periodic box (--gas {count})"
-        )),
-    );
+    let words = |lang: lang::Lang| {
+        let words = lang::Words::new(lang);
+        impulse::scene::SceneWords {
+            name: Some(words.get("gas-name", &[("count", lang::Arg::Count(count as i64))])),
+            description: Some(words.get(
+                "gas-description",
+                &[("count", lang::Arg::Count(count as i64))],
+            )),
+        }
+    };
+    let mut scene = Scene::from_world(&world, words(lang::Lang::En).name, None);
+    scene.description = words(lang::Lang::En).description;
+    for lang in &lang::Lang::SHIPPED[1..] {
+        scene.translations.insert(lang.code().to_string(), words(*lang));
+    }
     (scene, format!("--gas {count}"))
 }
 
@@ -138,7 +146,12 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     if let Some(problem) = display::problem() {
         anyhow::bail!("{problem}; {}", display::HEADLESS_HINT);
     }
-    let title = match &scene.name {
+    lang::set_language(model::settings::language_at_start(
+        &model::recovery::folder(&options.out),
+        options.lang,
+        system_language(),
+    ));
+    let title = match scene.name_in(lang::language().code()) {
         Some(name) => format!("Impulse - {name}"),
         None => "Impulse".to_string(),
     };
@@ -194,6 +207,11 @@ fn default_options() -> WindowOptions {
 pub fn run_in_browser() {
     impulse::clock::set_clock(crate::web::now);
     let options = default_options();
+    lang::set_language(model::settings::language_at_start(
+        &model::recovery::folder(&options.out),
+        None,
+        system_language(),
+    ));
     let default = || {
         let origin = "built-in default scene".to_string();
         let scene = Scene::parse(DEFAULT_SCENE, &origin).expect("the default scene parses");
@@ -208,7 +226,7 @@ pub fn run_in_browser() {
             (
                 scene,
                 origin,
-                Some(format!("This link's scene cannot open: {why}")),
+                Some(lang::tr!("link-cannot-open", error = why)),
             )
         }
         None => {
@@ -219,7 +237,7 @@ pub fn run_in_browser() {
     let world = match scene.build(&origin) {
         Ok(world) => world,
         Err(e) => {
-            problem = Some(format!("This link's scene cannot open: {e}"));
+            problem = Some(lang::tr!("link-cannot-open", error = e.to_string()));
             (scene, origin) = default();
             scene.build(&origin).expect("the default scene builds")
         }

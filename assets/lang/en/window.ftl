@@ -256,3 +256,11 @@ shares-one-third = one third
 shares-one-third-hover = Shared equally among the three ways a disc holds energy (moving along x, along y, turning), turning gets one third
 shares-moving-ke = moving (KE)
 shares-turning-ke = turning (rotational KE)
+
+## In the world
+readout-spin = spin ω = { $spin }   rotational KE = { $energy }
+readout-angular-momentum = angular momentum about (0, 0): L = { $angular }
+readouts-culled = values beside { $shown } of { $wanted } discs: no room for the rest (zoom in with the wheel)
+launch-no-room = no room here
+gas-name = Gas of { $count } discs
+gas-description = { $count } equal discs covering 30 % of a periodic box (--gas { $count })

@@ -494,7 +494,7 @@ pub fn draw_launch_preview(
     arrow(at, px(tip), 3.0, Color::new(1.0, 0.75, 0.0, 1.0), true);
     let label = match spot {
         Some(_) => crate::app::numbers::with_unit(velocity.length(), 2, "m/s"),
-        None => "no room here".to_string(),
+        None => crate::app::lang::tr!("launch-no-room"),
     };
     readouts::launch_label(text, &label, px(tip), look);
 }

@@ -6,6 +6,7 @@
 //! disc's always (moved out on a leader line when crowded), every other
 //! disc's only where there is room. Backgrounds first, then all text.
 
+use crate::app::lang::tr;
 use super::cull::{
     circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
 };
@@ -88,20 +89,21 @@ pub fn readout_lines(p: &impulse::Particle, spin: bool) -> Vec<String> {
         ),
         format!("p = {}", vector(p.momentum(), 2, "kg·m/s")),
         format!(
-            "m = {}   KE = {}",
+            "m = {}   {} = {}",
             with_unit(p.mass, 3, "kg"),
+            tr!("symbol-ke"),
             with_unit(p.kinetic_energy(), 3, "J")
         ),
     ];
     if spin {
-        lines.push(format!(
-            "spin ω = {}   rotational KE = {}",
-            with_unit(p.spin, 2, "rad/s"),
-            with_unit(p.rotational_energy(), 3, "J")
+        lines.push(tr!(
+            "readout-spin",
+            spin = with_unit(p.spin, 2, "rad/s"),
+            energy = with_unit(p.rotational_energy(), 3, "J")
         ));
-        lines.push(format!(
-            "angular momentum about (0, 0): L = {}",
-            with_unit(p.angular_momentum(), 3, "kg·m²/s")
+        lines.push(tr!(
+            "readout-angular-momentum",
+            angular = with_unit(p.angular_momentum(), 3, "kg·m²/s")
         ));
     }
     lines
@@ -240,10 +242,7 @@ pub fn draw_readouts(
     }
     if labels.len() < wanted {
         // Never silently fewer: say how many, in the world's corner.
-        let note = format!(
-            "values beside {} of {wanted} discs: no room for the rest (zoom in with the wheel)",
-            labels.len()
-        );
+        let note = tr!("readouts-culled", shown = labels.len(), wanted = wanted);
         let (lo, hi) = camera.screen_rect();
         let extent = text.measure(&note, size);
         let at = vec2(lo.x as f32 + 8.0, hi.y as f32 - extent.y - 8.0);

@@ -272,7 +272,7 @@ pub fn text(id: &str, args: &[(&str, Arg)]) -> String {
 }
 
 /// The message `id` in the current language, with named values:
-/// `tr!("disc-count", count = n, name = text)`.
+/// `tr!("discs-count", count = n)`.
 macro_rules! tr {
     ($id:expr) => {
         $crate::app::lang::text($id, &[])

@@ -209,8 +209,15 @@ mod tests {
         );
         assert_eq!(error([None, None, Some("  "), None]), "v_x: type a number");
         assert_eq!(
-            error([None, Some("1,5"), None, None]),
-            "radius: “1,5” is not a number"
+            parse_disc_edit([None, Some("1,5"), None, None], 4.0)
+                .unwrap()
+                .radius,
+            Some(1.5),
+            "a decimal comma"
+        );
+        assert_eq!(
+            error([None, Some("1,5.2"), None, None]),
+            "radius: “1,5.2” is not a number"
         );
         assert_eq!(
             parse_disc_edit([None, None, Some("−2"), None], 4.0)

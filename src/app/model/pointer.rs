@@ -108,10 +108,8 @@ impl Sandbox {
             Released::Launched(i) => self.selected = Some(i),
             Released::NoRoom => self.toast(crate::app::lang::tr!("no-room")),
             Released::Aimed(i, v) => {
-                self.toast(format!(
-                    "Disc {i}: velocity set to ({:+.2}, {:+.2}) m/s",
-                    v.x, v.y
-                ));
+                let velocity = crate::app::numbers::vector(v, 2, "m/s");
+                self.toast(crate::app::lang::tr!("aimed", disc = i, velocity = velocity));
             }
             Released::Flung(..) | Released::Clicked(_) | Released::Nothing => {}
         }

@@ -80,6 +80,14 @@ pub fn choose_language(pinned: Option<Lang>, remembered: Option<Lang>, system: O
     pinned.or(remembered).or(system).unwrap_or(Lang::En)
 }
 
+/// The language a window starting now speaks ([`choose_language`], the
+/// settings read from `dir`, a problem with them left for the sandbox to
+/// report).
+pub fn language_at_start(dir: &Path, pinned: Option<Lang>, system: Option<Lang>) -> Lang {
+    let (remembered, _) = Remembered::load(dir);
+    choose_language(pinned, remembered.language(), system)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -26,6 +26,8 @@ fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) 
         theme: Theme::Dark,
         start_screen: false,
         from_link: false,
+        lang: Some(crate::app::lang::Lang::En),
+        system_lang: None,
     })
 }
 
