@@ -138,7 +138,7 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
         (_, Some(count)) => gas_scene(count),
         (Some(path), None) => (Scene::load(path)?, path.display().to_string()),
         (None, None) => {
-            let origin = "built-in default scene".to_string();
+            let origin = lang::tr!("origin-default");
             (Scene::parse(DEFAULT_SCENE, &origin)?, origin)
         }
     };
@@ -213,14 +213,14 @@ pub fn run_in_browser() {
         system_language(),
     ));
     let default = || {
-        let origin = "built-in default scene".to_string();
+        let origin = lang::tr!("origin-default");
         let scene = Scene::parse(DEFAULT_SCENE, &origin).expect("the default scene parses");
         (scene, origin)
     };
     // A shared link opens its scene; a damaged one says so over the default.
     let (mut scene, mut origin, mut problem) = match model::share::scene_in(&crate::web::fragment())
     {
-        Some(Ok(scene)) => (scene, "the shared link".to_string(), None),
+        Some(Ok(scene)) => (scene, lang::tr!("origin-shared-link"), None),
         Some(Err(why)) => {
             let (scene, origin) = default();
             (
@@ -248,7 +248,7 @@ pub fn run_in_browser() {
         sample_count: 4,
         ..Default::default()
     };
-    let from_link = origin == "the shared link";
+    let from_link = origin == lang::tr!("origin-shared-link");
     let plain = problem.is_none() && !from_link;
     let mut app = App::new(options, (scene, origin, world), plain, from_link);
     if let Some(problem) = problem {

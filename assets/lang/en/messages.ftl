@@ -155,3 +155,5 @@ dropped-not-text = { $name }: not a text file
 dropped-unreadable = { $name }: { $error }
 dropped-empty = a dropped file without content
 link-cannot-open = This link's scene cannot open: { $error }
+origin-default = built-in default scene
+origin-shared-link = the shared link

@@ -176,3 +176,172 @@ fn the_language_is_the_threads() {
     set_language(Lang::En);
     assert!(!decimal_comma());
 }
+
+/// The string literals of a Rust source, with their line, outside comments
+/// and unit tests (raw strings are not used for words here).
+fn literals(source: &str) -> Vec<(usize, String, String)> {
+    let code = source.split("#[cfg(test)]").next().unwrap_or("");
+    let lines: Vec<&str> = code.lines().collect();
+    let mut out = Vec::new();
+    for (n, line) in lines.iter().enumerate() {
+        let trimmed = line.trim_start();
+        if trimmed.starts_with("//") || trimmed.starts_with("#[") {
+            continue;
+        }
+        // The call a literal is in may start a line or two above.
+        let context = lines[n.saturating_sub(2)..=n].join("\n");
+        let mut chars = line.char_indices().peekable();
+        let mut current: Option<String> = None;
+        while let Some((_, c)) = chars.next() {
+            match (&mut current, c) {
+                (None, '/') if chars.peek().is_some_and(|(_, d)| *d == '/') => break,
+                (None, '\'') => {
+                    // A char literal ('"') or a lifetime: skip a quoted char.
+                    let rest: String = chars.clone().take(3).map(|(_, c)| c).collect();
+                    if rest.starts_with("\"'") || rest.starts_with("\\\"") {
+                        chars.next();
+                        chars.next();
+                    }
+                }
+                (None, '"') => current = Some(String::new()),
+                (Some(text), '\\') => {
+                    if let Some((_, e)) = chars.next() {
+                        text.push(e);
+                    }
+                }
+                (Some(text), '"') => {
+                    out.push((n + 1, std::mem::take(text), context.clone()));
+                    current = None;
+                }
+                (Some(text), c) => text.push(c),
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// Whether a literal reads as words a person would read: a word of three
+/// letters or more with a space, or a capitalised word.
+fn reads_as_words(text: &str) -> bool {
+    // What `format!` puts in ({name}, {:.2}) is not a word.
+    let mut bare = String::new();
+    let mut depth = 0;
+    for c in text.chars() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            c if depth == 0 => bare.push(c),
+            _ => {}
+        }
+    }
+    let text = bare.as_str();
+    if text.starts_with("--") {
+        return false; // a command-line flag
+    }
+    let words: Vec<&str> = text
+        .split(|c: char| !c.is_alphabetic())
+        .filter(|w| w.chars().count() >= 3)
+        .collect();
+    let capitalised = words.iter().any(|w| {
+        let mut c = w.chars();
+        c.next().is_some_and(char::is_uppercase) && c.all(char::is_lowercase)
+    });
+    !words.is_empty() && (text.contains(' ') || capitalised)
+}
+
+/// Where a literal is not for a person to read in the window: the terminal
+/// (which stays English), names in the state dump and egui's ids, shader
+/// and thread names, command-line flags, file names.
+const NOT_WORDS: &[&str] = &[
+    "eprintln!(",
+    "println!(",
+    "panic!(",
+    "expect(",
+    "unreachable!(",
+    "anyhow::bail!(",
+    "bail!(",
+    "debug_assert",
+    "assert!(",
+    "Id::new(",
+    "id_salt(",
+    "UniformDesc::new(",
+    "VertexAttribute::",
+    "#[arg(",
+    ".name(\"idle",
+    "HEADLESS_HINT",
+    // A line can say why its literal is not words.
+    "// not words:",
+];
+
+/// Files whose literals are for the terminal, the dump or the lab, not the
+/// window: the state dump, the frame-time CSV, the display check (the
+/// command line's messages), the idle waker's threads, and this module.
+const NOT_THE_WINDOW: &[&str] = &[
+    "dump.rs",
+    "frame_stats.rs",
+    "display.rs",
+    "idle.rs",
+    "lang/mod.rs",
+    "lang/pseudo.rs",
+    "lang/tests.rs",
+];
+
+/// Literals that are symbols and units, the same in every language.
+const SYMBOLS: &[&str] = &[
+    "Impulse",
+    "Impulse - {name}",
+    "Maxwell–Boltzmann",
+];
+
+#[test]
+fn no_words_are_left_in_the_windows_code() {
+    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                out.push(path);
+            }
+        }
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/app");
+    let mut files = Vec::new();
+    walk(&root, &mut files);
+    let mut found = Vec::new();
+    for file in files {
+        let name = file.strip_prefix(&root).unwrap().to_string_lossy().to_string();
+        if NOT_THE_WINDOW.iter().any(|f| name == *f) || name.ends_with("tests.rs") {
+            continue;
+        }
+        let source = std::fs::read_to_string(&file).unwrap();
+        for (line, text, code) in literals(&source) {
+            if !reads_as_words(&text)
+                || SYMBOLS.contains(&text.as_str())
+                || NOT_WORDS.iter().any(|c| code.contains(c))
+            {
+                continue;
+            }
+            found.push(format!("src/app/{name}:{line}: {text:?}"));
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "words outside assets/lang (put them in a .ftl file, or say here why they are not words):\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_scan_finds_words_and_lets_ids_and_units_be() {
+    let found = literals("ui.label(\"Hide\"); cx.note(\"dock_toggle\", &r); let u = \"kg·m/s\";\nx(\"two words\") // \"a comment\"");
+    let words: Vec<&str> = found
+        .iter()
+        .filter(|(_, t, _)| reads_as_words(t))
+        .map(|(_, t, _)| t.as_str())
+        .collect();
+    assert_eq!(words, ["Hide", "two words"]);
+    assert!(!reads_as_words("{name} ({})"));
+    assert!(!reads_as_words("--gas {count}"));
+}

@@ -18,11 +18,11 @@ impl DockTab {
     /// Its name in the state dump and the widget names ("Totals").
     pub fn key(self) -> &'static str {
         match self {
-            DockTab::Totals => "Totals",
-            DockTab::Collisions => "Collisions",
-            DockTab::Discs => "Discs",
-            DockTab::Speeds => "Speeds",
-            DockTab::Momenta => "Momenta",
+            DockTab::Totals => "Totals", // not words: the dump's name
+            DockTab::Collisions => "Collisions", // not words: the dump's name
+            DockTab::Discs => "Discs", // not words: the dump's name
+            DockTab::Speeds => "Speeds", // not words: the dump's name
+            DockTab::Momenta => "Momenta", // not words: the dump's name
         }
     }
 

@@ -50,7 +50,7 @@ pub const PRESETS: [Preset; 16] = [
     preset!("", PI_BLOCKS_1000000),
     preset!("", PRESET_SPIN_OFF_A_WALL),
     preset!("", PRESET_ROUGH_GAS),
-    preset!("Ctrl+N", PRESET_EMPTY),
+    preset!("Ctrl+N", PRESET_EMPTY), // not words: a key, named by keys-new-box
 ];
 
 /// The presets' scenes (parsed once).
@@ -77,6 +77,7 @@ pub fn preset_labels() -> Vec<String> {
                 .map_or_else(|| p.path.to_string(), str::to_string);
             match p.key {
                 "" => name,
+                // not words: the empty box's key, in the window's words
                 "Ctrl+N" => format!("{}   {name}", tr!("keys-new-box")),
                 key => format!("{key}   {name}"),
             }

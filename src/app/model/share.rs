@@ -50,7 +50,7 @@ fn unpack(packed: &str) -> Result<Scene, String> {
     let text = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, MAX_UNPACKED)
         .map_err(|e| damaged(format!("{e:?}")))?;
     let text = String::from_utf8(text).map_err(|_| damaged("UTF-8".into()))?;
-    Scene::parse(&text, "the shared link").map_err(|e| e.to_string())
+    Scene::parse(&text, &crate::app::lang::tr!("origin-shared-link")).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

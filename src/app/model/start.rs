@@ -125,7 +125,7 @@ impl Sandbox {
                 }
             }
             None => {
-                let origin = "built-in default scene".to_string();
+                let origin = tr!("origin-default");
                 match impulse::Scene::parse(impulse::catalogue::DEFAULT.text, &origin) {
                     Ok(scene) => {
                         let _ = self.open_scene(scene, origin); // reported
