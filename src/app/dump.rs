@@ -172,6 +172,10 @@ pub struct UiDump {
     pub typing: bool,
     /// A field was left with Enter: the panel keeps the keyboard.
     pub panel_keyboard: bool,
+    /// The named control that has the keyboard (Tab moves it), if any.
+    pub focus: Option<String>,
+    /// The window's language ("en", "pt-BR", "qps").
+    pub language: String,
     #[serde(flatten)]
     pub edits: EditsDump,
 }
@@ -310,6 +314,8 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 theme: m.panels.theme.name().to_string(),
                 typing: panels.typing,
                 panel_keyboard: panels.panel_keyboard,
+                focus: panels.marks.focused.clone(),
+                language: crate::app::lang::language().code().to_string(),
                 edits: EditsDump {
                     undo_levels: m.undo.levels().into(),
                     scene_edited: m.open.edited,

@@ -33,6 +33,7 @@ fn key_codes(key: Key) -> &'static [KeyCode] {
     use KeyCode as K;
     match key {
         Key::Space => &[K::Space],
+        Key::Enter => &[K::Enter, K::KpEnter],
         Key::Tab => &[K::Tab],
         Key::Escape => &[K::Escape],
         Key::Delete => &[K::Delete],
@@ -113,6 +114,7 @@ fn all_keys() -> impl Iterator<Item = Key> {
     let f = [1, 2, 3, 4, 11, 12].into_iter().map(Key::F);
     let rest = [
         Key::Space,
+        Key::Enter,
         Key::Tab,
         Key::Escape,
         Key::Delete,
@@ -144,7 +146,7 @@ impl Input {
     /// the keyboard back to the world after Enter in a field.
     pub fn commands(&mut self, panels: &mut Panels, model: &Sandbox, mouse: DVec2) -> Vec<Command> {
         let mut out = Vec::new();
-        self.keys(panels, &mut out);
+        self.keys(panels, model.arrows_aim(), &mut out);
         self.touches(&mut out);
         if self.pinch.is_none() {
             self.mouse(panels, model, mouse, &mut out);
@@ -154,7 +156,9 @@ impl Input {
         out
     }
 
-    fn keys(&mut self, panels: &mut Panels, out: &mut Vec<Command>) {
+    /// The keys' commands; `aims`: the arrow keys aim the selected disc
+    /// (paused) instead of panning.
+    fn keys(&mut self, panels: &mut Panels, aims: bool, out: &mut Vec<Command>) {
         let ctrl = held_or_pressed([KeyCode::LeftControl, KeyCode::RightControl]);
         let shift = held_or_pressed([KeyCode::LeftShift, KeyCode::RightShift]);
         if ctrl && is_key_pressed(KeyCode::Q) && !cfg!(target_arch = "wasm32") {
@@ -177,14 +181,19 @@ impl Input {
             if codes.iter().any(|&k| is_key_pressed(k)) {
                 if let Some(c) = command_for(key, ctrl, shift, Trigger::Press) {
                     // The browser's tab is closed by the browser, never by the page.
-                    if !(cfg!(target_arch = "wasm32") && c == Command::Quit) {
+                    let browsers = cfg!(target_arch = "wasm32") && c == Command::Quit;
+                    let aim = matches!(c, Command::AimSelected(_));
+                    if !browsers && (aims || !aim) {
                         out.push(c);
                     }
                 }
             }
             if !ctrl && codes.iter().any(|&k| is_key_down(k)) {
                 if let Some(c) = command_for(key, false, shift, Trigger::Hold) {
-                    out.push(c);
+                    // While the arrows aim, they do not pan.
+                    if !(aims && matches!(c, Command::Pan(_))) {
+                        out.push(c);
+                    }
                 }
             }
         }

@@ -250,6 +250,9 @@ impl Sandbox {
             }
             SizeFollowsMass(on) => self.new_discs.size_follows_mass = on,
             Select(i) => self.selected = i.filter(|&i| i < self.world.particles.len()),
+            SelectNext(step) => self.select_next(step),
+            AimSelected(dv) => self.aim_selected(dv),
+            LaunchAtCentre => self.launch_at_centre(),
             EditDisc { disc, text, from } => self.edit_disc(disc, &text, from),
             DeleteSelected => self.delete_selected(),
             PointerDown(at) => self.pointer_down(at),

@@ -100,6 +100,14 @@ pub enum Command {
     StepNewMass(Dir),
     SizeFollowsMass(bool),
     Select(Option<usize>),
+    /// The next disc (`1`) or the previous one (`-1`) becomes the selected
+    /// one: the world's keyboard path.
+    SelectNext(i32),
+    /// While paused, the selected disc's velocity changes by this much
+    /// (m/s): the arrow keys aim it.
+    AimSelected(DVec2),
+    /// A new disc, at rest, at the centre of the view (Enter).
+    LaunchAtCentre,
     /// New values typed for disc `disc`, in [`super::edit::FIELDS`] order
     /// (`None`: untouched); read and checked by the model.
     EditDisc {
@@ -194,6 +202,8 @@ impl Command {
             SetSubsteps(_) | CycleSubsteps => "edit-substeps",
             EditDisc { .. } => "edit-disc",
             DeleteSelected => "edit-delete",
+            AimSelected(_) => "edit-aim",
+            LaunchAtCentre => "edit-launch",
             // A gesture's release names its own change (pointer.rs).
             _ => return None,
         })
@@ -202,6 +212,12 @@ impl Command {
     /// Whether a change this command makes to the discs means the scene's
     /// caption may no longer hold (a law change keeps the discs).
     pub fn edits_discs(&self) -> bool {
-        matches!(self, Command::EditDisc { .. } | Command::DeleteSelected)
+        matches!(
+            self,
+            Command::EditDisc { .. }
+                | Command::DeleteSelected
+                | Command::AimSelected(_)
+                | Command::LaunchAtCentre
+        )
     }
 }

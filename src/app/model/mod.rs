@@ -30,6 +30,7 @@ pub mod command;
 pub mod edit;
 pub mod export;
 pub mod gesture;
+pub mod keyboard;
 pub mod lesson;
 pub mod overlays;
 pub mod panels;

@@ -33,7 +33,7 @@ fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) 
 
 /// A paused sandbox on `file`'s preset in a 1000 × 700 px world, autosave
 /// off.
-fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
+pub(super) fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
     let mut s = sandbox_with(dir, file, true, 0.0);
     s.place_world([0.0, 0.0, 1000.0, 700.0]);
     s.fit_camera();

@@ -47,6 +47,9 @@ pub struct Cx<'a> {
     pub marks: &'a mut Marks,
     /// The side dock is a drawer: the top bar carries its button.
     pub drawer: bool,
+    /// The keys act on the panels (a control has the keyboard), not on the
+    /// world: the strip says how to give them back.
+    pub keys_in_panels: bool,
 }
 
 impl Cx<'_> {
@@ -57,6 +60,10 @@ impl Cx<'_> {
 
     /// Notes a widget's rectangle under `name` (for the state dump).
     pub fn note(&mut self, name: impl Into<String>, response: &egui::Response) {
+        let name = name.into();
+        if response.has_focus() {
+            self.marks.focused = Some(name.clone());
+        }
         self.marks.note(name, response.rect);
     }
 }
@@ -70,6 +77,8 @@ pub struct Marks {
     pub text_focus: bool,
     /// A text field was left with Enter.
     pub left_with_enter: bool,
+    /// The named widget that has the keyboard, if one does.
+    pub focused: Option<String>,
     /// Pixels per egui point.
     pub ppp: f32,
 }
@@ -125,14 +134,14 @@ pub struct Panels {
     start: start::StartScreen,
     /// This frame's notes.
     pub marks: Marks,
-    /// A text field has the keyboard (or had it last frame, when Esc or
-    /// Tab may have taken it away): the shortcuts stay quiet.
+    /// A control has the keyboard (or had it last frame, when Esc or Tab
+    /// may have taken it away): the world's keys stay quiet.
     pub typing: bool,
     /// A text field was left with Enter: the keyboard stays with the panel
     /// (no shortcuts) until a click in the world or Esc.
     pub panel_keyboard: bool,
-    /// A text field had the keyboard last frame.
-    had_text_focus: bool,
+    /// A control had the keyboard last frame.
+    had_focus: bool,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// This frame's layout.
@@ -154,7 +163,7 @@ impl Panels {
             start: start::StartScreen,
             marks: Marks::default(),
             typing: false,
-            had_text_focus: false,
+            had_focus: false,
             panel_keyboard: false,
             pointer_on_ui: false,
             layout: Layout::default(),
@@ -214,6 +223,7 @@ impl Panels {
             out,
             marks: &mut self.marks,
             drawer: matches!(rects.side_dock, SideDock::Drawer { .. }),
+            keys_in_panels: self.typing || self.panel_keyboard,
         };
         let mut panels = Vec::new();
         egui::TopBottomPanel::top("top_bar")
@@ -270,22 +280,27 @@ impl Panels {
             out.push(Command::CloseDrawer);
         }
         let world = ctx.available_rect();
-        // Only a text field keeps the keyboard. egui moves focus to buttons
-        // on Tab and the arrow keys, which are shortcuts here (Tab hides the
-        // docks, the arrows pan), and a focused button would take Space as
-        // a click.
-        if !self.marks.text_focus {
-            if let Some(id) = ctx.memory(|m| m.focused()) {
-                ctx.memory_mut(|m| m.surrender_focus(id));
-            }
-        }
-        // egui lets go of a field at the start of the frame whose key (Esc,
-        // Tab, Enter) left it: that key belongs to the field, not the world.
-        self.typing = self.marks.text_focus || self.had_text_focus;
-        self.had_text_focus = self.marks.text_focus;
         let over_area = ctx.is_pointer_over_area() || ctx.is_using_pointer();
         let m = egui::pos2(mouse.x as f32 / ppp, mouse.y as f32 / ppp);
         self.pointer_on_ui = over_area || !world.contains(m);
+        // Tab (and Shift+Tab) move the keyboard through the controls; while
+        // one has it, the world's keys are off, until Esc (egui lets go) or
+        // a click in the world.
+        let mut focused = ctx.memory(|m| m.focused());
+        if let Some(id) = focused {
+            if !self.pointer_on_ui && ctx.input(|i| i.pointer.any_pressed()) {
+                ctx.memory_mut(|m| m.surrender_focus(id));
+                focused = None;
+            }
+        }
+        if let Some(id) = focused {
+            focus_ring(ctx, id, p.theme);
+        }
+        // egui lets go of a control at the start of the frame whose key
+        // (Esc, Tab, Enter) left it: that key belongs to the control.
+        let has_focus = focused.is_some() || self.marks.text_focus;
+        self.typing = has_focus || self.had_focus;
+        self.had_focus = has_focus;
         self.layout = Layout {
             window: [window.0, window.1],
             world: rects.world.as_array(),
@@ -302,6 +317,28 @@ impl Panels {
         };
         self.rects = Some(rects);
     }
+}
+
+/// A ring round the control that has the keyboard, over everything, in a
+/// colour that stands out in the theme (egui's own mark of focus is faint).
+fn focus_ring(ctx: &egui::Context, id: egui::Id, theme: crate::app::model::Theme) {
+    let Some(response) = ctx.read_response(id) else {
+        return;
+    };
+    let color = match theme {
+        crate::app::model::Theme::Dark => egui::Color32::from_rgb(255, 200, 0),
+        crate::app::model::Theme::Light => egui::Color32::from_rgb(0, 80, 200),
+    };
+    let painter = ctx.layer_painter(egui::LayerId::new(
+        egui::Order::Tooltip,
+        egui::Id::new("focus_ring"),
+    ));
+    painter.rect_stroke(
+        response.rect.expand(3.0),
+        egui::CornerRadius::same(4),
+        egui::Stroke::new(3.0, color),
+        egui::StrokeKind::Outside,
+    );
 }
 
 /// The app's pixels per egui point. The app's pixels are macroquad's: the

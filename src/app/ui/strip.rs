@@ -47,6 +47,11 @@ impl View for Strip {
             ui.separator();
             // One line whatever it says: a long one is cut with "…", the
             // whole of it on hover.
+            let caption = if cx.keys_in_panels {
+                Some(tr!("keys-in-panels"))
+            } else {
+                caption
+            };
             let (text, name) = match (result, model.message(), caption) {
                 (Some(result), _, _) => (RichText::new(result).strong(), "pi_result"),
                 (None, Some(message), _) => {

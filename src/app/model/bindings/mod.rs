@@ -13,6 +13,7 @@ use crate::app::lang::text;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Key {
     Space,
+    Enter,
     Tab,
     Escape,
     Delete,
@@ -70,11 +71,14 @@ impl Chord {
     }
 }
 
-/// When a key acts: once when pressed, or every frame while held.
+/// When a key acts: once when pressed, or every frame while held; or the
+/// panels take it (Tab moves through the controls), and the help only says
+/// so.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Trigger {
     Press,
     Hold,
+    Panels,
 }
 
 /// One line of the help: its keys (or mouse gesture), what they do, the
@@ -262,7 +266,12 @@ mod tests {
     #[test]
     fn every_help_line_with_keys_has_a_chord_and_every_chord_its_line() {
         for b in BINDINGS {
-            assert!(mentions_the_mouse(b) || !b.acts.is_empty(), "{}", b.name);
+            let panels = b.trigger == Trigger::Panels;
+            assert!(
+                mentions_the_mouse(b) || panels || !b.acts.is_empty(),
+                "{}",
+                b.name
+            );
         }
     }
 

@@ -93,6 +93,33 @@ pub static BINDINGS: &[Binding] = &[
         ],
     },
     line(
+        "aim-keys",
+        None,
+        &[
+            (plain(K::Left), C::AimSelected(glam::DVec2::new(-AIM, 0.0))),
+            (plain(K::Right), C::AimSelected(glam::DVec2::new(AIM, 0.0))),
+            (plain(K::Up), C::AimSelected(glam::DVec2::new(0.0, AIM))),
+            (plain(K::Down), C::AimSelected(glam::DVec2::new(0.0, -AIM))),
+            (shifted(K::Left), C::AimSelected(glam::DVec2::new(-10.0 * AIM, 0.0))),
+            (shifted(K::Right), C::AimSelected(glam::DVec2::new(10.0 * AIM, 0.0))),
+            (shifted(K::Up), C::AimSelected(glam::DVec2::new(0.0, 10.0 * AIM))),
+            (shifted(K::Down), C::AimSelected(glam::DVec2::new(0.0, -10.0 * AIM))),
+        ],
+    ),
+    line(
+        "select-next",
+        None,
+        &[
+            (plain(letter('Q')), C::SelectNext(1)),
+            (shifted(letter('Q')), C::SelectNext(-1)),
+        ],
+    ),
+    line(
+        "launch-centre",
+        None,
+        &[(key(K::Enter), C::LaunchAtCentre)],
+    ),
+    line(
         "zoom",
         Some("section-view"),
         &[
@@ -299,8 +326,14 @@ pub static BINDINGS: &[Binding] = &[
     line(
         "docks",
         Some("section-view"),
-        &[(key(K::Tab), C::ToggleDocks)],
+        &[(key(letter('S')), C::ToggleDocks)],
     ),
+    Binding {
+        name: "focus",
+        control: None,
+        trigger: Trigger::Panels,
+        acts: &[],
+    },
     line(
         "side",
         Some("section-controls"),
@@ -340,6 +373,8 @@ pub static BINDINGS: &[Binding] = &[
 
 /// Keyboard pan speed, pixels per frame.
 const PAN: f64 = 12.0;
+/// One press of an arrow key aiming a disc (m/s).
+const AIM: f64 = crate::app::model::keyboard::AIM_STEP;
 
 /// The on-screen label of each command that has a button (its message in
 /// `keys.ftl`): the buttons read it here, and the help names the control

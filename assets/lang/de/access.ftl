@@ -1,0 +1,1 @@
+# Keyboard, sound and screen-reader access.

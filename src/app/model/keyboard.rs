@@ -1,0 +1,118 @@
+//! The world from the keyboard alone: a key selects the next disc (its
+//! number and velocity said in the strip), the arrow keys aim the selected
+//! disc while the simulation is paused, and Enter puts a new disc at rest
+//! at the centre of the view, selected, ready to be aimed.
+
+use super::Sandbox;
+use crate::app::lang::tr;
+use crate::app::numbers::{vector, with_unit};
+use glam::DVec2;
+use impulse::{Color, Particle};
+
+/// How much one press of an arrow key changes the velocity (m/s); Shift:
+/// ten times as much.
+pub const AIM_STEP: f64 = 0.1;
+
+impl Sandbox {
+    /// Whether the arrow keys aim the selected disc (paused, a disc
+    /// selected) rather than pan.
+    pub fn arrows_aim(&self) -> bool {
+        self.clock.paused && self.selected_disc().is_some()
+    }
+
+    /// Selects the disc `step` after the selected one (before it when
+    /// negative), wrapping round; the first (or last) when none is.
+    pub(super) fn select_next(&mut self, step: i32) {
+        let n = self.world.particles.len();
+        if n == 0 {
+            self.toast(tr!("select-no-discs"));
+            return;
+        }
+        let next = match self.selected_disc() {
+            Some(i) => (i as i64 + i64::from(step)).rem_euclid(n as i64) as usize,
+            None if step >= 0 => 0,
+            None => n - 1,
+        };
+        self.selected = Some(next);
+        let p = &self.world.particles[next];
+        self.toast(tr!(
+            "selected-disc-said",
+            disc = next,
+            discs = n,
+            mass = with_unit(p.mass, 3, "kg"),
+            velocity = vector(p.vel, 2, "m/s")
+        ));
+    }
+
+    /// Changes the selected disc's velocity by `dv` while paused.
+    pub(super) fn aim_selected(&mut self, dv: DVec2) {
+        if !self.arrows_aim() {
+            return;
+        }
+        let Some(i) = self.selected_disc() else {
+            return;
+        };
+        let p = &mut self.world.particles[i];
+        // Whole tenths, so that steps add up to round numbers.
+        p.vel = ((p.vel + dv) / AIM_STEP).round() * AIM_STEP;
+        let v = p.vel;
+        self.record.totals.clear();
+        self.toast(tr!("aimed", disc = i, velocity = vector(v, 2, "m/s")));
+    }
+
+    /// A new disc at rest at the centre of the view (or the nearest free
+    /// place), selected; no room says so.
+    pub(super) fn launch_at_centre(&mut self) {
+        let disc = self.new_disc_now();
+        let centre = self.view.camera.center;
+        let Some(pos) = self.world.free_spot_near(centre, disc.radius) else {
+            self.toast(tr!("no-room"));
+            return;
+        };
+        let color = Color::palette(self.world.particles.len());
+        self.world
+            .particles
+            .push(Particle::new(pos, DVec2::ZERO, disc.mass, disc.radius, color));
+        let i = self.world.particles.len() - 1;
+        self.selected = Some(i);
+        self.toast(tr!("launched-at-centre", disc = i));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::sandbox_in as sandbox_on;
+    use super::super::Command;
+    use glam::DVec2;
+
+    #[test]
+    fn the_world_answers_the_keyboard_alone() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_on(dir.path(), "preset-1-head-on.toml");
+        let n = s.world.particles.len();
+        s.apply(Command::SelectNext(1));
+        assert_eq!(s.selected, Some(0));
+        s.apply(Command::SelectNext(-1));
+        assert_eq!(s.selected, Some(n - 1), "wraps round");
+        // Paused: the arrows aim; undo takes it back.
+        let before = s.world.particles[n - 1].vel;
+        s.apply(Command::AimSelected(DVec2::new(0.0, 0.1)));
+        s.apply(Command::AimSelected(DVec2::new(0.0, 0.1)));
+        let after = s.world.particles[n - 1].vel;
+        assert!((after.y - before.y - 0.2).abs() < 1e-9, "{before} → {after}");
+        s.apply(Command::Undo);
+        assert_eq!(s.world.particles[n - 1].vel, before);
+        // Running: they do not (they pan).
+        s.apply(Command::TogglePause);
+        s.apply(Command::AimSelected(DVec2::new(1.0, 0.0)));
+        assert_eq!(s.world.particles[n - 1].vel, before);
+        assert!(!s.arrows_aim());
+        // Enter: a new disc at rest near the view's centre, selected.
+        s.apply(Command::LaunchAtCentre);
+        assert_eq!(s.world.particles.len(), n + 1);
+        assert_eq!(s.selected, Some(n));
+        assert_eq!(s.world.particles[n].vel, DVec2::ZERO);
+        s.apply(Command::Undo);
+        assert_eq!(s.world.particles.len(), n);
+    }
+}
