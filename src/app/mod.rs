@@ -297,6 +297,7 @@ impl App {
             scale: options.ui_scale,
             start_screen: plain && !options.no_start,
             from_link,
+            sound: false, // until settings remember it
             theme: if options.light {
                 model::Theme::Light
             } else {

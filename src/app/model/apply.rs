@@ -116,6 +116,7 @@ impl Sandbox {
             | NextScale
             | SetTheme(_)
             | ToggleHelp
+            | ToggleSound
             | Fit
             | ZoomIn
             | ZoomOut
@@ -271,6 +272,7 @@ impl Sandbox {
                 self.toast(format!("Discs in {which}"));
             }
             ToggleCenterOfMassView => self.toggle_center_of_mass_view(),
+            ToggleSound => self.toggle_sound(),
             ZoomIn | ZoomOut => {
                 let factor = if command == ZoomIn {
                     ZOOM_STEP

@@ -123,6 +123,8 @@ pub enum Command {
     ToggleTrails,
     TogglePalette,
     ToggleCenterOfMassView,
+    /// A click at each impact, on or off.
+    ToggleSound,
 
     // The view.
     ZoomIn,

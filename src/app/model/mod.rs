@@ -20,7 +20,7 @@
 //! - [`pointer`]: mouse and touch gestures on the world; the camera.
 //! - pure parts: [`camera`], [`clock`], [`gesture`], [`undo`], [`totals`],
 //!   [`trails`], [`overlays`], [`lesson`], [`export`], [`share`],
-//!   [`recovery`].
+//!   [`recovery`], [`sound`] (the clicks each frame plays).
 
 pub mod apply;
 pub mod bindings;
@@ -37,6 +37,7 @@ pub mod pointer;
 pub mod recovery;
 pub mod scenes;
 pub mod share;
+pub mod sound;
 pub mod start;
 pub mod tick;
 pub mod totals;
@@ -167,6 +168,8 @@ pub struct Session {
     pub now: f64,
     /// What only the window can do, asked for by commands.
     pub requests: Requests,
+    /// The sound switch and the clicks the window is to play.
+    pub sound: sound::Sound,
 }
 
 /// The whole sandbox.
@@ -204,6 +207,8 @@ pub struct Start {
     pub start_screen: bool,
     /// The scene came from a shared link (the browser).
     pub from_link: bool,
+    /// Sound on (the choice remembered from the last run; off by default).
+    pub sound: bool,
 }
 
 impl Sandbox {
@@ -249,6 +254,7 @@ impl Sandbox {
                 dt: start.dt,
                 now: 0.0,
                 requests: Requests::default(),
+                sound: sound::Sound::new(start.sound),
             },
         };
         sandbox.panels.start_open = start.start_screen;

@@ -7,7 +7,7 @@ use impulse::Scene;
 
 /// A sandbox on the preset whose file is `file`, its recovery folder
 /// `dir` with autosave every `autosave` seconds (0: off).
-fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) -> Sandbox {
+pub(super) fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) -> Sandbox {
     let preset = scenes::PRESETS
         .iter()
         .find(|p| p.path.ends_with(file))
@@ -26,6 +26,7 @@ fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) 
         theme: Theme::Dark,
         start_screen: false,
         from_link: false,
+        sound: false,
     })
 }
 

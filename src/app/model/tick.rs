@@ -18,6 +18,7 @@ impl Sandbox {
         if !self.world.ledger.is_on() {
             self.world.ledger.keep(LEDGER_KEEP);
         }
+        let listened = self.listen();
         let due = self.clock.advance(frame_seconds);
         let start = impulse::clock::Instant::now();
         let mut steps = 0;
@@ -52,6 +53,7 @@ impl Sandbox {
         self.steps.steps_last_frame = steps;
         self.steps.steps_dropped = due - steps;
         self.after_steps(steps);
+        self.hear(listened, frame_seconds);
         if self.view.fitted && self.follows_discs() {
             self.fit_camera();
         }

@@ -173,6 +173,12 @@ pub static BINDINGS: &[Binding] = &[
         &[(plain(letter('Z')), C::ToggleCenterOfMassView)],
     ),
     line(
+        "S",
+        "sound on / off: a click at each impact, by its impulse (silent while paused or faster than ×2)",
+        None,
+        &[(key(letter('S')), C::ToggleSound)],
+    ),
+    line(
         "J",
         "run to the next collision and pause at impact",
         Some("Show, Collisions tab"),
@@ -408,4 +414,5 @@ pub static LABELS: &[(Command, &str)] = &[
     (C::ToggleDrawer, "☰ Controls"),
     (C::ShowAllControls, "All controls"),
     (C::ReopenKept, "Reopen my last sandbox"),
+    (C::ToggleSound, "Sound"),
 ];
