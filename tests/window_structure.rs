@@ -10,7 +10,7 @@ const LAYERS: &[&[&str]] = &[
     &["numbers", "layout", "display", "frame_stats"],
     &["model"],
     &["look"],
-    &["drawing", "idle"],
+    &["drawing", "idle", "audio"],
     &["ui"],
     &["input"],
     &["dump"],

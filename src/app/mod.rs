@@ -7,6 +7,7 @@
 //! Everything here is presentation; the physics lives in the `impulse`
 //! library.
 
+mod audio;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod display;
 mod drawing;
@@ -20,6 +21,7 @@ pub mod model;
 pub mod numbers;
 mod ui;
 
+use frame_stats::ms_since;
 use glam::DVec2;
 use impulse::{Scene, World};
 use macroquad::miniquad::conf::Conf;
@@ -251,10 +253,6 @@ fn writable_place(flag: &str, file: &std::path::Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64 {
-    end.duration_since(start).as_secs_f64() * 1e3
-}
-
 /// The window's WM_CLASS on X11 (the idle waker finds the window by it).
 const WM_CLASS: &str = "impulse";
 
@@ -356,6 +354,7 @@ impl App {
             let budget = model::clock::physics_budget(previous.0, previous.1);
             self.model.tick(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
+            audio::play(self.model.take_sounds());
             self.keep_for_the_page();
             let timed_out = self
                 .options

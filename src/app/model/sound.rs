@@ -73,7 +73,7 @@ pub const MAX_TIME_SCALE: f64 = 2.0;
 /// The loudness of an impact of impulse `j` (kg·m/s): [`QUIETEST`] to 1,
 /// evenly in log j from [`QUIET_IMPULSE`] to [`LOUD_IMPULSE`].
 pub fn loudness(j: f64) -> f32 {
-    if !(j > QUIET_IMPULSE) {
+    if j.is_nan() || j <= QUIET_IMPULSE {
         return QUIETEST; // also NaN
     }
     let span = (LOUD_IMPULSE / QUIET_IMPULSE).log10();
