@@ -1,7 +1,8 @@
 //! The browser build's bridge to the page (`web/impulse.js`, a miniquad
 //! plugin): the state report the page and its tests read, file downloads,
 //! the browser's local storage, the address's fragment for shared links,
-//! and the clicks of impacts (Web Audio). Only compiled for `wasm32`; the desktop has files instead.
+//! and the clicks of impacts (Web Audio). Only compiled for `wasm32`; the
+//! desktop has files instead.
 
 use std::fmt;
 
