@@ -1,7 +1,8 @@
 //! The browser build's bridge to the page (`web/impulse.js`, a miniquad
 //! plugin): the state report the page and its tests read, file downloads,
-//! the browser's local storage, and the address's fragment for shared
-//! links. Only compiled for `wasm32`; the desktop has files instead.
+//! the browser's local storage, the address's fragment for shared links,
+//! and the clicks of impacts (Web Audio). Only compiled for `wasm32`; the
+//! desktop has files instead.
 
 use std::fmt;
 
@@ -16,8 +17,14 @@ extern "C" {
     fn impulse_take(ptr: *mut u8, len: usize);
     fn impulse_now() -> f64;
     fn impulse_report_fingerprints(ptr: *const u8, len: usize);
+    fn impulse_click(hz: f32, amplitude: f32, attack: f32, decay: f32, seconds: f32, delay: f64);
     fn impulse_browser_language() -> i32;
-    fn impulse_set_page_language(tag: *const u8, tag_len: usize, title: *const u8, title_len: usize);
+    fn impulse_set_page_language(
+        tag: *const u8,
+        tag_len: usize,
+        title: *const u8,
+        title_len: usize,
+    );
 }
 
 /// The browser's language (`navigator.language`, "de-DE").
@@ -37,6 +44,16 @@ pub fn set_page_language(tag: &str, title: &str) {
 pub fn now() -> f64 {
     // SAFETY: no arguments, a number back.
     unsafe { impulse_now() }
+}
+
+/// Plays a click through Web Audio, `delay` seconds from now: a sine of
+/// `hz` rising over `attack` seconds to `amplitude`, decaying with time
+/// constant `decay`, silent after `seconds` (the desktop's synthesis,
+/// `app::audio::synth`). Silent until the page has had a click or a key
+/// (browsers start sound only after a gesture).
+pub fn click(hz: f32, amplitude: f32, attack: f32, decay: f32, seconds: f32, delay: f64) {
+    // SAFETY: numbers only.
+    unsafe { impulse_click(hz, amplitude, attack, decay, seconds, delay) }
 }
 
 /// Computes the physics fingerprints ([`impulse::fingerprint`]) and puts

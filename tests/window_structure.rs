@@ -11,7 +11,7 @@ const LAYERS: &[&[&str]] = &[
     &["numbers", "layout", "display", "frame_stats"],
     &["model"],
     &["look"],
-    &["drawing", "idle"],
+    &["drawing", "idle", "audio"],
     &["ui"],
     &["input"],
     &["dump"],

@@ -1,7 +1,7 @@
 // Impulse's bridge between the page and the app, as a miniquad plugin (the
 // Rust side is src/web.rs): the state report tests and the page read, file
-// downloads, local storage for autosave, and the address's fragment for
-// shared links. Loaded after macroquad's mq_js_bundle.js, whose
+// downloads, local storage for autosave, the address's fragment for shared
+// links, and the clicks of impacts through Web Audio. Loaded after macroquad's mq_js_bundle.js, whose
 // UTF8ToString and wasm_memory it uses.
 "use strict";
 (function () {
@@ -11,6 +11,49 @@
     const give = (string) => {
         pending = new TextEncoder().encode(string);
         return pending.length;
+    };
+    // Sound: browsers start an AudioContext only after a gesture, so it is
+    // made (or resumed) on the first click, touch or key; clicks before
+    // that are silent.
+    let audio = null;
+    const wakeAudio = () => {
+        const Context = window.AudioContext || window.webkitAudioContext;
+        if (!Context) return;
+        if (audio === null) {
+            try {
+                audio = new Context();
+            } catch (e) {
+                return; // no sound here
+            }
+        }
+        if (audio.state === "suspended") audio.resume();
+    };
+    window.addEventListener("pointerdown", wakeAudio, true);
+    window.addEventListener("keydown", wakeAudio, true);
+    // One click, as app::audio::synth makes it on the desktop: a sine of
+    // `hz` rising over `attack` s (half a cosine there, a line here) to
+    // `amplitude`, decaying with time constant `decay`, faded to silence
+    // by `seconds`; `delay` s from now.
+    const FADE = 0.002;
+    const playClick = (hz, amplitude, attack, decay, seconds, delay) => {
+        window.impulseClicks = (window.impulseClicks || 0) + 1;
+        if (audio === null || audio.state !== "running" || !(amplitude > 0)) return;
+        const t = audio.currentTime + 0.005 + Math.max(0, delay);
+        const tone = audio.createOscillator();
+        const gain = audio.createGain();
+        tone.type = "sine";
+        tone.frequency.value = hz;
+        gain.gain.setValueAtTime(0, t);
+        gain.gain.linearRampToValueAtTime(amplitude, t + attack);
+        gain.gain.setTargetAtTime(0, t + attack, decay);
+        const fadeFrom = t + seconds - FADE;
+        gain.gain.setValueAtTime(amplitude * Math.exp(-(seconds - FADE - attack) / decay), fadeFrom);
+        gain.gain.linearRampToValueAtTime(0, t + seconds);
+        tone.connect(gain);
+        gain.connect(audio.destination);
+        tone.start(t);
+        tone.stop(t + seconds);
+        tone.onended = () => gain.disconnect();
     };
     function register(importObject) {
         const env = importObject.env;
@@ -67,6 +110,7 @@
             window.impulseFingerprints = text(ptr, len);
         };
         env.impulse_now = () => performance.now() / 1000;
+        env.impulse_click = playClick;
         env.impulse_browser_language = () => give(navigator.language || "en");
         env.impulse_set_page_language = (tagPtr, tagLen, titlePtr, titleLen) => {
             document.documentElement.lang = text(tagPtr, tagLen);

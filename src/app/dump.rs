@@ -40,6 +40,8 @@ pub struct StateDump<'a> {
     pub recovery: RecoveryDump,
     #[serde(flatten)]
     pub totals: TotalsDump,
+    /// The sound switch and the clicks played.
+    pub sound: SoundDump,
     /// Every disc.
     pub particles: &'a [Particle],
 }
@@ -209,6 +211,15 @@ pub struct RealtimeDump {
     pub steps_dropped: u32,
 }
 
+/// Sound in a dump.
+#[derive(Default, Serialize)]
+pub struct SoundDump {
+    /// The switch (S, the top bar's button).
+    pub on: bool,
+    /// Clicks the model handed to the player so far.
+    pub events_played: u64,
+}
+
 /// Autosave in a dump.
 #[derive(Default, Serialize)]
 pub struct RecoveryDump {
@@ -343,6 +354,10 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
             metrics: world.metrics(),
             total_energy: world.total_energy(),
             spin_shown: super::model::overlays::spin_shown(world),
+        },
+        sound: SoundDump {
+            on: m.session.sound.on,
+            events_played: m.session.sound.played,
         },
         particles: &world.particles,
     }

@@ -114,6 +114,11 @@ impl FrameStats {
     }
 }
 
+/// Milliseconds from `start` to `end`.
+pub fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64 {
+    end.duration_since(start).as_secs_f64() * 1e3
+}
+
 /// Medians of each column.
 pub fn summarize(frames: &[FrameTimes]) -> TimingSummary {
     let column = |f: fn(&FrameTimes) -> f64| median(frames.iter().map(f).collect());

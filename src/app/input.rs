@@ -2,10 +2,10 @@
 //! the bindings table ([`crate::app::model::bindings`]); nothing here
 //! changes the model.
 
-use crate::app::lang::tr;
 use super::model::bindings::{command_for, Key, Trigger};
 use super::model::{Command, Sandbox};
 use super::ui::Panels;
+use crate::app::lang::tr;
 use glam::DVec2;
 use macroquad::prelude::*;
 
@@ -71,6 +71,7 @@ fn key_codes(key: Key) -> &'static [KeyCode] {
             2 => &[K::F2],
             3 => &[K::F3],
             4 => &[K::F4],
+            8 => &[K::F8],
             11 => &[K::F11],
             12 => &[K::F12],
             _ => &[],
@@ -111,7 +112,7 @@ fn key_codes(key: Key) -> &'static [KeyCode] {
 fn all_keys() -> impl Iterator<Item = Key> {
     let letters = ('A'..='Z').map(Key::Letter);
     let digits = (0..=9).map(Key::Digit);
-    let f = [1, 2, 3, 4, 11, 12].into_iter().map(Key::F);
+    let f = [1, 2, 3, 4, 8, 11, 12].into_iter().map(Key::F);
     let rest = [
         Key::Space,
         Key::Enter,
@@ -278,8 +279,13 @@ fn dropped_files(out: &mut Vec<Command>) {
         let text = match (&file.bytes, &file.path) {
             (Some(bytes), _) => String::from_utf8(bytes.clone())
                 .map_err(|_| tr!("dropped-not-text", name = name.as_str())),
-            (None, Some(path)) => std::fs::read_to_string(path)
-                .map_err(|e| tr!("dropped-unreadable", name = name.as_str(), error = e.to_string())),
+            (None, Some(path)) => std::fs::read_to_string(path).map_err(|e| {
+                tr!(
+                    "dropped-unreadable",
+                    name = name.as_str(),
+                    error = e.to_string()
+                )
+            }),
             (None, None) => Err(tr!("dropped-empty")),
         };
         out.push(Command::OpenText { name, text });

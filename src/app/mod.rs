@@ -7,6 +7,7 @@
 //! Everything here is presentation; the physics lives in the `impulse`
 //! library.
 
+mod audio;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod display;
 mod drawing;
@@ -21,6 +22,7 @@ pub mod model;
 pub mod numbers;
 mod ui;
 
+use frame_stats::ms_since;
 use glam::DVec2;
 use impulse::{Scene, World};
 use macroquad::miniquad::conf::Conf;
@@ -114,7 +116,9 @@ fn gas_scene(count: usize) -> (Scene, String) {
     let mut scene = Scene::from_world(&world, words(lang::Lang::En).name, None);
     scene.description = words(lang::Lang::En).description;
     for lang in &lang::Lang::SHIPPED[1..] {
-        scene.translations.insert(lang.code().to_string(), words(*lang));
+        scene
+            .translations
+            .insert(lang.code().to_string(), words(*lang));
     }
     (scene, format!("--gas {count}"))
 }
@@ -275,15 +279,13 @@ fn writable_place(flag: &str, file: &std::path::Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn ms_since(start: impulse::clock::Instant, end: impulse::clock::Instant) -> f64 {
-    end.duration_since(start).as_secs_f64() * 1e3
-}
-
 /// The language the system (the desktop's locale) or the page
 /// (`navigator.language`) asks for, if the window speaks it.
 fn system_language() -> Option<lang::Lang> {
     #[cfg(target_arch = "wasm32")]
-    return crate::web::browser_language().as_deref().and_then(lang::Lang::from_tag);
+    return crate::web::browser_language()
+        .as_deref()
+        .and_then(lang::Lang::from_tag);
     #[cfg(not(target_arch = "wasm32"))]
     lang::system_language()
 }
@@ -393,6 +395,7 @@ impl App {
             let budget = model::clock::physics_budget(previous.0, previous.1);
             self.model.tick(get_frame_time() as f64, budget);
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
+            audio::play(self.model.take_sounds());
             self.keep_for_the_page();
             self.declare_language();
             let timed_out = self

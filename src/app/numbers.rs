@@ -143,10 +143,7 @@ mod tests {
         use crate::app::lang::{set_language, Lang};
         set_language(Lang::De);
         assert_eq!(plain(-2.5, 2), "−2,50");
-        assert_eq!(
-            vector(DVec2::new(2.0, -0.5), 2, "m/s"),
-            "(2,00; −0,50) m/s"
-        );
+        assert_eq!(vector(DVec2::new(2.0, -0.5), 2, "m/s"), "(2,00; −0,50) m/s");
         assert_eq!(field(0.25), "0,25");
         assert_eq!(field(3.0), "3");
         assert_eq!(parse(&field(-2.345678)), Some(-2.345678));

@@ -1,1 +1,159 @@
-# messages
+# Was der Sandkasten sagt: Meldungen in der Leiste, Hinweise unter Feldern, Fehler.
+
+number-not-a-number = keine Zahl
+discs-count = { $count ->
+    [one] 1 Scheibe
+   *[other] { $count } Scheiben
+}
+
+## Zählungen und Lektionen
+count-line = Stöße: { $pairs } zwischen Scheiben
+count-line-walls = Stöße: { $pairs } zwischen Scheiben · { $walls } mit Wänden
+pi-result = { $count } Stöße: π ≈ { $pi }
+
+## Was ein Verfahren nicht versprechen kann
+warning-verlet = verlet: Stöße verlieren Energie; die Stoßzahl e = { $restitution } wird nicht eingehalten
+warning-seed = seed: schnelle Scheiben können durcheinander hindurchfliegen
+warning-substeps = { $substeps ->
+    [one] 1 Teilschritt
+   *[other] { $substeps } Teilschritte
+} pro Schritt: Die schnellste Scheibe legt pro Teilschritt { $radii }-mal ihren Radius zurück und kann durch andere hindurchfliegen
+warning-stall = { $method }: Der Schritt wurde abgebrochen, und die Simulationszeit kommt nicht mehr voran (zu viele Stöße auf einmal); Verfahren impulse wählen
+
+## Szenen und Dateien
+file-cannot-create = { $folder } kann nicht angelegt werden: { $error }
+file-cannot-write = { $file } kann nicht geschrieben werden: { $error }
+scene-cannot-open = { $file } kann nicht geöffnet werden: { $error }
+scene-opened = Geöffnet: { $name }
+scene-kept = { $error } (die aktuelle Szene bleibt)
+scene-reset = Szene zurückgesetzt
+scene-cannot-reset = Zurücksetzen nicht möglich: { $error }
+scene-cleared = Geleert: auf freier Fläche ziehen, um Scheiben abzuschießen
+scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben
+scene-downloaded = Heruntergeladen: { $file }
+scene-saved = Gespeichert: { $file }
+scene-not-saved = Nicht gespeichert: { $error }
+scene-shared = Die Adresse der Seite öffnet jetzt diese Szene: aus der Adressleiste kopieren und verschicken
+scene-not-shared = Nicht geteilt: { $error }
+undone = Rückgängig gemacht: { $what } (Strg+Umschalt+Z oder Strg+Y wiederholt es)
+nothing-to-undo = Nichts rückgängig zu machen
+redone = Wiederholt: { $what }
+nothing-to-redo = Nichts zu wiederholen
+
+## Was Rückgängig nennt
+edit-open-scene = Szene öffnen
+edit-reset = Zurücksetzen
+edit-clear = Leeren
+edit-restitution = Stoßzahl
+edit-wall-restitution = Stoßzahl der Wände
+edit-roughness = Rauigkeit
+edit-wall-roughness = Rauigkeit der Wände
+edit-friction = Reibung
+edit-gravity = Schwerkraft
+edit-edges = Ränder
+edit-method = Verfahren
+edit-broad-phase = Grobphase
+edit-substeps = Teilschritte
+edit-disc = Scheibe bearbeiten
+edit-delete = Löschen
+edit-launch = Abschuss
+edit-fling = Schleudern
+edit-aim = Geschwindigkeit festlegen
+no-room = Hier ist kein Platz für eine neue Scheibe
+
+## Mit einer Taste geänderte Einstellungen
+law-restitution = Stoßzahl e
+law-wall-restitution = Stoßzahl der Wände
+law-roughness = Rauigkeit β
+law-wall-roughness = Rauigkeit der Wände β
+time-scale = Zeitfaktor ×{ $scale }
+gravity-now = Schwerkraft { $gravity }
+method-now = Verfahren: { $method }
+broad-phase-now = Grobphase: { $broad }
+substeps-now = Teilschritte: { $substeps }
+new-disc-radius = Neue Scheiben: Radius { $radius }
+new-disc-mass = Neue Scheiben: Masse { $mass }
+palette-safe = Scheiben in Farben für Farbenblinde (Okabe-Ito, nach Scheibennummer)
+palette-scene = Scheiben in den Farben der Szene
+text-size = Textgröße ×{ $scale }
+com-view-off = Schwerpunktsystem aus: Geschwindigkeiten vom Kasten aus gesehen
+com-view-on = Schwerpunktsystem: Die Ansicht bewegt sich mit dem Schwerpunkt, mit { $velocity }; nochmals Z zum Verlassen
+
+## Zeit: nächster Stoß, Zurückspulen, Export
+separated = exact braucht getrennte Scheiben: Es hat { $pairs ->
+    [one] 1 überlappendes Scheibenpaar
+   *[other] { $pairs } überlappende Scheibenpaare
+} getrennt
+separated-raised = exact braucht getrennte Scheiben: Es hat { $pairs ->
+    [one] 1 überlappendes Scheibenpaar
+   *[other] { $pairs } überlappende Scheibenpaare
+} getrennt, was die Energie um { $energy } erhöht hat
+separated-lowered = exact braucht getrennte Scheiben: Es hat { $pairs ->
+    [one] 1 überlappendes Scheibenpaar
+   *[other] { $pairs } überlappende Scheibenpaare
+} getrennt, was die Energie um { $energy } verringert hat
+next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: Ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
+next-collision-wall = Scheibe { $disc } traf die { $wall ->
+    [left] linke
+    [right] rechte
+    [bottom] untere
+   *[top] obere
+ } Wand bei t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; ihre kinetische Energie änderte sich um { $energy }
+next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
+next-collision-none = Kein Stoß innerhalb von { $limit }
+rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort
+nothing-recorded = Noch nichts aufgezeichnet
+exported-downloaded = Bilanz, Scheiben, Stöße und Wandstöße als CSV-Dateien heruntergeladen
+exported = Bilanz, Scheiben, Stöße und Wandstöße nach { $folder }/ exportiert
+not-exported = Nicht nach { $folder }/ exportiert: { $error }
+wall-name = { $wall ->
+    [left] linke Wand
+    [right] rechte Wand
+    [bottom] untere Wand
+   *[top] obere Wand
+}
+
+## Eine Scheibe bearbeiten
+edit-type-a-number = { $name }: eine Zahl eingeben
+edit-not-a-number = { $name }: „{ $text }“ ist keine Zahl
+edit-not-finite = { $name } muss eine endliche Zahl sein
+edit-not-positive = { $name } muss größer als 0 sein
+edit-radius-too-large = Der Radius darf hier höchstens { $radius } m betragen
+edit-nothing-changed = Nichts geändert: zuerst einen neuen Wert eingeben
+edit-applied = Für Scheibe { $disc } übernommen
+edit-applied-table = Scheibe { $disc }: { $values }
+edit-refused-table = Scheibe { $disc }: { $error }; nichts geändert
+edit-mass-overlaps = bei { $mass } kg hätte die Scheibe { $size } m Radius (Größe folgt der Masse) und würde Scheibe { $disc } überlappen
+edit-mass-crosses-wall = bei { $mass } kg hätte die Scheibe { $size } m Radius (Größe folgt der Masse) und würde über eine Wand hinausragen
+
+## Wiederherstellung
+recovery-unreadable-moved = Eine unlesbare Wiederherstellungsdatei wurde nach { $file } verschoben: { $error }
+recovery-unreadable-kept = Eine unlesbare Wiederherstellungsdatei konnte nicht verschoben werden: { $error }
+autosave-failed = Automatisches Speichern in { $place } fehlgeschlagen: { $error }
+browser-storage = den Speicher des Browsers
+origin-recovered = wiederhergestellt aus { $file }
+origin-kept = dein letzter Sandkasten, von diesem Browser aufbewahrt
+recovery-kept-in = Frühere Sitzung aufbewahrt in { $file }
+recovery-not-set-aside = Die frühere Sitzung konnte nicht beiseitegelegt werden: { $error }
+kept-not-set-aside = Dein letzter Sandkasten konnte nicht beiseitegelegt werden: { $error }
+recovery-question-browser = Dieser Browser hat deinen letzten Sandkasten aufbewahrt: { $name } ({ $discs ->
+    [one] 1 Scheibe
+   *[other] { $discs } Scheiben
+}). Wiederherstellen oder beiseitelegen?
+recovery-question = Die letzte Sitzung wurde nicht normal beendet. Ihre Szene { $name } ({ $discs ->
+    [one] 1 Scheibe
+   *[other] { $discs } Scheiben
+}) wiederherstellen oder beiseitelegen?
+sandbox-cannot-open = Der Sandkasten kann nicht geöffnet werden: { $error }
+link-too-many-discs = { $discs } Scheiben sind zu viele für einen Link (höchstens { $most }): die Szene stattdessen als Datei speichern
+link-damaged = die Szene im Link ist beschädigt ({ $error })
+settings-unreadable = Die Einstellungen in { $file } konnten nicht gelesen werden ({ $error }): Es gelten die Standardwerte
+settings-not-saved = Die Einstellungen wurden nicht in { $place } gespeichert: { $error }
+aimed = Scheibe { $disc }: Geschwindigkeit auf { $velocity } gesetzt
+dropped-file = abgelegte Datei
+dropped-not-text = { $name }: keine Textdatei
+dropped-unreadable = { $name }: { $error }
+dropped-empty = eine abgelegte Datei ohne Inhalt
+link-cannot-open = Die Szene dieses Links kann nicht geöffnet werden: { $error }
+origin-default = eingebaute Standardszene
+origin-shared-link = der geteilte Link

@@ -14,3 +14,10 @@ help-select-next = select the next / the previous disc
 keys-launch-centre = Enter
 help-launch-centre = a new disc at rest at the centre of the view, selected
 keys-in-panels = The keys act on the controls: Esc or a click in the world gives them back to the world.
+
+## Sound
+keys-sound = F8
+help-sound = sound on / off: a click at each impact, louder for a harder one, higher between discs than at a wall (silent while paused or faster than ×2)
+label-toggle-sound = Sound
+sound-on = Sound on: a click at each impact (silent while paused or faster than ×2)
+sound-off = Sound off

@@ -6,10 +6,10 @@
 //! disc's always (moved out on a leader line when crowded), every other
 //! disc's only where there is room. Backgrounds first, then all text.
 
-use crate::app::lang::tr;
 use super::cull::{
     circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
 };
+use crate::app::lang::tr;
 use crate::app::look::{color, Look, MIN_TEXT_POINTS};
 use crate::app::model::camera::Camera;
 use crate::app::model::overlays::{spin_shown, Overlays, ReadoutScope, ARROW_SECONDS};

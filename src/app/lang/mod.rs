@@ -52,7 +52,11 @@ impl Lang {
     /// system (`es_ES.UTF-8`, `de-AT`, `pt_PT`) and the browser (`fr-CA`);
     /// `None` for a language Impulse does not speak (or `C`, `POSIX`).
     pub fn from_tag(tag: &str) -> Option<Lang> {
-        let tag = tag.split(['.', '@']).next().unwrap_or("").to_ascii_lowercase();
+        let tag = tag
+            .split(['.', '@'])
+            .next()
+            .unwrap_or("")
+            .to_ascii_lowercase();
         let primary = tag.split(['-', '_']).next().unwrap_or("");
         Some(match primary {
             "en" => Lang::En,
@@ -97,26 +101,106 @@ pub fn system_language() -> Option<Lang> {
 /// The Fluent files, by folder: embedded, so the binary and the browser
 /// build carry them.
 pub const FILES: &[(&str, &str, &str)] = &[
-    ("en", "window.ftl", include_str!("../../../assets/lang/en/window.ftl")),
-    ("en", "keys.ftl", include_str!("../../../assets/lang/en/keys.ftl")),
-    ("en", "messages.ftl", include_str!("../../../assets/lang/en/messages.ftl")),
-    ("en", "access.ftl", include_str!("../../../assets/lang/en/access.ftl")),
-    ("es", "window.ftl", include_str!("../../../assets/lang/es/window.ftl")),
-    ("es", "keys.ftl", include_str!("../../../assets/lang/es/keys.ftl")),
-    ("es", "messages.ftl", include_str!("../../../assets/lang/es/messages.ftl")),
-    ("es", "access.ftl", include_str!("../../../assets/lang/es/access.ftl")),
-    ("fr", "window.ftl", include_str!("../../../assets/lang/fr/window.ftl")),
-    ("fr", "keys.ftl", include_str!("../../../assets/lang/fr/keys.ftl")),
-    ("fr", "messages.ftl", include_str!("../../../assets/lang/fr/messages.ftl")),
-    ("fr", "access.ftl", include_str!("../../../assets/lang/fr/access.ftl")),
-    ("de", "window.ftl", include_str!("../../../assets/lang/de/window.ftl")),
-    ("de", "keys.ftl", include_str!("../../../assets/lang/de/keys.ftl")),
-    ("de", "messages.ftl", include_str!("../../../assets/lang/de/messages.ftl")),
-    ("de", "access.ftl", include_str!("../../../assets/lang/de/access.ftl")),
-    ("pt-BR", "window.ftl", include_str!("../../../assets/lang/pt-BR/window.ftl")),
-    ("pt-BR", "keys.ftl", include_str!("../../../assets/lang/pt-BR/keys.ftl")),
-    ("pt-BR", "messages.ftl", include_str!("../../../assets/lang/pt-BR/messages.ftl")),
-    ("pt-BR", "access.ftl", include_str!("../../../assets/lang/pt-BR/access.ftl")),
+    (
+        "en",
+        "window.ftl",
+        include_str!("../../../assets/lang/en/window.ftl"),
+    ),
+    (
+        "en",
+        "keys.ftl",
+        include_str!("../../../assets/lang/en/keys.ftl"),
+    ),
+    (
+        "en",
+        "messages.ftl",
+        include_str!("../../../assets/lang/en/messages.ftl"),
+    ),
+    (
+        "en",
+        "access.ftl",
+        include_str!("../../../assets/lang/en/access.ftl"),
+    ),
+    (
+        "es",
+        "window.ftl",
+        include_str!("../../../assets/lang/es/window.ftl"),
+    ),
+    (
+        "es",
+        "keys.ftl",
+        include_str!("../../../assets/lang/es/keys.ftl"),
+    ),
+    (
+        "es",
+        "messages.ftl",
+        include_str!("../../../assets/lang/es/messages.ftl"),
+    ),
+    (
+        "es",
+        "access.ftl",
+        include_str!("../../../assets/lang/es/access.ftl"),
+    ),
+    (
+        "fr",
+        "window.ftl",
+        include_str!("../../../assets/lang/fr/window.ftl"),
+    ),
+    (
+        "fr",
+        "keys.ftl",
+        include_str!("../../../assets/lang/fr/keys.ftl"),
+    ),
+    (
+        "fr",
+        "messages.ftl",
+        include_str!("../../../assets/lang/fr/messages.ftl"),
+    ),
+    (
+        "fr",
+        "access.ftl",
+        include_str!("../../../assets/lang/fr/access.ftl"),
+    ),
+    (
+        "de",
+        "window.ftl",
+        include_str!("../../../assets/lang/de/window.ftl"),
+    ),
+    (
+        "de",
+        "keys.ftl",
+        include_str!("../../../assets/lang/de/keys.ftl"),
+    ),
+    (
+        "de",
+        "messages.ftl",
+        include_str!("../../../assets/lang/de/messages.ftl"),
+    ),
+    (
+        "de",
+        "access.ftl",
+        include_str!("../../../assets/lang/de/access.ftl"),
+    ),
+    (
+        "pt-BR",
+        "window.ftl",
+        include_str!("../../../assets/lang/pt-BR/window.ftl"),
+    ),
+    (
+        "pt-BR",
+        "keys.ftl",
+        include_str!("../../../assets/lang/pt-BR/keys.ftl"),
+    ),
+    (
+        "pt-BR",
+        "messages.ftl",
+        include_str!("../../../assets/lang/pt-BR/messages.ftl"),
+    ),
+    (
+        "pt-BR",
+        "access.ftl",
+        include_str!("../../../assets/lang/pt-BR/access.ftl"),
+    ),
 ];
 
 type Bundle = FluentBundle<FluentResource>;

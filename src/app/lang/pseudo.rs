@@ -36,7 +36,10 @@ mod tests {
     fn every_letter_is_accented_and_the_rest_kept() {
         let out = accent("Pause 2 discs: ABC xyz");
         assert!(!out.chars().any(|c| c.is_ascii_alphabetic()), "{out}");
-        assert_eq!(out.chars().count(), "Pause 2 discs: ABC xyz".chars().count());
+        assert_eq!(
+            out.chars().count(),
+            "Pause 2 discs: ABC xyz".chars().count()
+        );
         assert!(out.contains(" 2 ") && out.contains(':'));
     }
 

@@ -18,7 +18,8 @@ fn messages(folder: &str) -> BTreeMap<String, BTreeSet<String>> {
             }
             let starts_message = !line.starts_with(' ') && line.contains('=');
             let trimmed = line.trim_start();
-            let starts_attribute = line.starts_with(' ') && trimmed.starts_with('.') && trimmed.contains('=');
+            let starts_attribute =
+                line.starts_with(' ') && trimmed.starts_with('.') && trimmed.contains('=');
             if starts_message {
                 message = line.split('=').next().unwrap().trim().to_string();
                 assert!(
@@ -30,7 +31,9 @@ fn messages(folder: &str) -> BTreeMap<String, BTreeSet<String>> {
                 let attribute = trimmed[1..].split('=').next().unwrap().trim();
                 current = Some(format!("{message}.{attribute}"));
             }
-            let id = current.clone().unwrap_or_else(|| panic!("{folder}/{name}: {line}"));
+            let id = current
+                .clone()
+                .unwrap_or_else(|| panic!("{folder}/{name}: {line}"));
             let entry = out.entry(id).or_default();
             for piece in line.split('$').skip(1) {
                 let var: String = piece
@@ -84,7 +87,8 @@ fn ids_in_code() -> BTreeSet<String> {
             let path = entry.unwrap().path();
             if path.is_dir() {
                 walk(&path, out);
-            } else if path.extension().is_some_and(|e| e == "rs") && !path.ends_with("lang/tests.rs")
+            } else if path.extension().is_some_and(|e| e == "rs")
+                && !path.ends_with("lang/tests.rs")
             {
                 out.push(std::fs::read_to_string(path).unwrap());
             }
@@ -288,11 +292,7 @@ const NOT_THE_WINDOW: &[&str] = &[
 ];
 
 /// Literals that are symbols and units, the same in every language.
-const SYMBOLS: &[&str] = &[
-    "Impulse",
-    "Impulse - {name}",
-    "Maxwell–Boltzmann",
-];
+const SYMBOLS: &[&str] = &["Impulse", "Impulse - {name}", "Maxwell–Boltzmann"];
 
 #[test]
 fn no_words_are_left_in_the_windows_code() {
@@ -311,7 +311,11 @@ fn no_words_are_left_in_the_windows_code() {
     walk(&root, &mut files);
     let mut found = Vec::new();
     for file in files {
-        let name = file.strip_prefix(&root).unwrap().to_string_lossy().to_string();
+        let name = file
+            .strip_prefix(&root)
+            .unwrap()
+            .to_string_lossy()
+            .to_string();
         if NOT_THE_WINDOW.iter().any(|f| name == *f) || name.ends_with("tests.rs") {
             continue;
         }

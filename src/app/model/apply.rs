@@ -118,6 +118,7 @@ impl Sandbox {
             | SetTheme(_)
             | SetLanguage(_)
             | ToggleHelp
+            | ToggleSound
             | Fit
             | ZoomIn
             | ZoomOut
@@ -201,7 +202,11 @@ impl Sandbox {
                 let value = law.of_mut(&mut self.world.laws);
                 *value = nudge(*value, dir, law.range().control);
                 let v = *value;
-                self.toast(format!("{} = {}", law_name(law), crate::app::numbers::plain(v, 1)));
+                self.toast(format!(
+                    "{} = {}",
+                    law_name(law),
+                    crate::app::numbers::plain(v, 1)
+                ));
             }
             SetFriction(mu) => {
                 let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
@@ -227,11 +232,17 @@ impl Sandbox {
             }
             CycleBroadPhase => {
                 self.world.broad_phase = cycle(&BROAD_PHASES, self.world.broad_phase);
-                self.toast(tr!("broad-phase-now", broad = self.world.broad_phase.to_string()));
+                self.toast(tr!(
+                    "broad-phase-now",
+                    broad = self.world.broad_phase.to_string()
+                ));
             }
             CycleSubsteps => {
                 self.world.substeps = cycle(&SUBSTEPS, self.world.substeps);
-                self.toast(tr!("substeps-now", substeps = self.world.substeps.to_string()));
+                self.toast(tr!(
+                    "substeps-now",
+                    substeps = self.world.substeps.to_string()
+                ));
             }
             SetNewRadius(r) => self.new_discs.disc.radius = self.radius_within(r),
             SetNewMass(m) => self.new_discs.disc.mass = m.clamp(1e-3, 1e6),
@@ -276,6 +287,7 @@ impl Sandbox {
                 });
             }
             ToggleCenterOfMassView => self.toggle_center_of_mass_view(),
+            ToggleSound => self.toggle_sound(),
             ZoomIn | ZoomOut => {
                 let factor = if command == ZoomIn {
                     ZOOM_STEP

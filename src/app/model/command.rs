@@ -131,6 +131,8 @@ pub enum Command {
     ToggleTrails,
     TogglePalette,
     ToggleCenterOfMassView,
+    /// A click at each impact, on or off.
+    ToggleSound,
 
     // The view.
     ZoomIn,
@@ -193,7 +195,9 @@ impl Command {
                 "edit-wall-restitution"
             }
             SetLaw(Law::Roughness, _) | NudgeLaw(Law::Roughness, _) => "edit-roughness",
-            SetLaw(Law::WallRoughness, _) | NudgeLaw(Law::WallRoughness, _) => "edit-wall-roughness",
+            SetLaw(Law::WallRoughness, _) | NudgeLaw(Law::WallRoughness, _) => {
+                "edit-wall-roughness"
+            }
             SetFriction(_) => "edit-friction",
             SetGravity(_) | ToggleGravity => "edit-gravity",
             SetBoundary(_) => "edit-edges",

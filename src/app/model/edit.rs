@@ -10,7 +10,12 @@ use impulse::Particle;
 
 /// The selected disc's editable quantities, in field order (their names
 /// are messages of `window.ftl`).
-pub const FIELDS: [&str; 4] = ["quantity-mass", "quantity-radius", "quantity-vx", "quantity-vy"];
+pub const FIELDS: [&str; 4] = [
+    "quantity-mass",
+    "quantity-radius",
+    "quantity-vx",
+    "quantity-vy",
+];
 
 /// An edit of a disc's quantities; `None` leaves one as it is.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -152,7 +157,11 @@ impl Sandbox {
             ));
         }
         if !w.laws.boundary.admits(w.laws.walls, w.laws.size, p.pos, r) {
-            return Err(tr!("edit-mass-crosses-wall", mass = plain(m, 3), size = size));
+            return Err(tr!(
+                "edit-mass-crosses-wall",
+                mass = plain(m, 3),
+                size = size
+            ));
         }
         edit.radius = Some(r);
         Ok(edit)

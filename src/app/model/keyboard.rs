@@ -70,9 +70,13 @@ impl Sandbox {
             return;
         };
         let color = Color::palette(self.world.particles.len());
-        self.world
-            .particles
-            .push(Particle::new(pos, DVec2::ZERO, disc.mass, disc.radius, color));
+        self.world.particles.push(Particle::new(
+            pos,
+            DVec2::ZERO,
+            disc.mass,
+            disc.radius,
+            color,
+        ));
         let i = self.world.particles.len() - 1;
         self.selected = Some(i);
         self.toast(tr!("launched-at-centre", disc = i));
@@ -99,7 +103,10 @@ mod tests {
         s.apply(Command::AimSelected(DVec2::new(0.0, 0.1)));
         s.apply(Command::AimSelected(DVec2::new(0.0, 0.1)));
         let after = s.world.particles[n - 1].vel;
-        assert!((after.y - before.y - 0.2).abs() < 1e-9, "{before} → {after}");
+        assert!(
+            (after.y - before.y - 0.2).abs() < 1e-9,
+            "{before} → {after}"
+        );
         s.apply(Command::Undo);
         assert_eq!(s.world.particles[n - 1].vel, before);
         // Running: they do not (they pan).

@@ -20,7 +20,7 @@
 //! - [`pointer`]: mouse and touch gestures on the world; the camera.
 //! - pure parts: [`camera`], [`clock`], [`gesture`], [`undo`], [`totals`],
 //!   [`trails`], [`overlays`], [`lesson`], [`export`], [`share`],
-//!   [`recovery`].
+//!   [`recovery`], [`sound`] (the clicks each frame plays).
 
 pub mod apply;
 pub mod bindings;
@@ -39,6 +39,7 @@ pub mod recovery;
 pub mod scenes;
 pub mod settings;
 pub mod share;
+pub mod sound;
 pub mod start;
 pub mod tick;
 pub mod totals;
@@ -172,6 +173,8 @@ pub struct Session {
     pub requests: Requests,
     /// What is remembered between runs (language, sound).
     pub settings: settings::Remembered,
+    /// The sound switch and the clicks the window is to play.
+    pub sound: sound::Sound,
 }
 
 /// The whole sandbox.
@@ -225,6 +228,7 @@ impl Sandbox {
         let size = start.world.laws.size;
         // The language first, so that every message is in it.
         let (remembered, unreadable) = settings::Remembered::load(&start.recovery.0);
+        let sound_on = remembered.settings.sound;
         crate::app::lang::set_language(settings::choose_language(
             start.lang,
             remembered.language(),
@@ -267,6 +271,7 @@ impl Sandbox {
                 now: 0.0,
                 requests: Requests::default(),
                 settings: remembered,
+                sound: sound::Sound::new(sound_on),
             },
         };
         sandbox.panels.start_open = start.start_screen;

@@ -1,8 +1,8 @@
 //! Which panels, tabs and popups are open, the UI scale and the theme:
 //! the model's part of the screen, which the layout and the views read.
 
-use crate::app::lang::tr;
 use super::start;
+use crate::app::lang::tr;
 
 /// The bottom dock's tabs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,11 +18,11 @@ impl DockTab {
     /// Its name in the state dump and the widget names ("Totals").
     pub fn key(self) -> &'static str {
         match self {
-            DockTab::Totals => "Totals", // not words: the dump's name
+            DockTab::Totals => "Totals",         // not words: the dump's name
             DockTab::Collisions => "Collisions", // not words: the dump's name
-            DockTab::Discs => "Discs", // not words: the dump's name
-            DockTab::Speeds => "Speeds", // not words: the dump's name
-            DockTab::Momenta => "Momenta", // not words: the dump's name
+            DockTab::Discs => "Discs",           // not words: the dump's name
+            DockTab::Speeds => "Speeds",         // not words: the dump's name
+            DockTab::Momenta => "Momenta",       // not words: the dump's name
         }
     }
 

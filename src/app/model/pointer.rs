@@ -109,7 +109,11 @@ impl Sandbox {
             Released::NoRoom => self.toast(crate::app::lang::tr!("no-room")),
             Released::Aimed(i, v) => {
                 let velocity = crate::app::numbers::vector(v, 2, "m/s");
-                self.toast(crate::app::lang::tr!("aimed", disc = i, velocity = velocity));
+                self.toast(crate::app::lang::tr!(
+                    "aimed",
+                    disc = i,
+                    velocity = velocity
+                ));
             }
             Released::Flung(..) | Released::Clicked(_) | Released::Nothing => {}
         }

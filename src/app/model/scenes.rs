@@ -121,12 +121,24 @@ pub fn slug(name: &str) -> String {
 #[cfg(not(target_arch = "wasm32"))]
 pub fn keep_file(dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
     std::fs::create_dir_all(dir)
-        .map_err(|e| tr!("file-cannot-create", folder = dir.display().to_string(), error = e.to_string()))
+        .map_err(|e| {
+            tr!(
+                "file-cannot-create",
+                folder = dir.display().to_string(),
+                error = e.to_string()
+            )
+        })
         .and_then(|()| {
             let path = free_file(dir, stem, ext);
             write_durably(&path, bytes)
                 .map(|()| path.clone())
-                .map_err(|e| tr!("file-cannot-write", file = path.display().to_string(), error = e.to_string()))
+                .map_err(|e| {
+                    tr!(
+                        "file-cannot-write",
+                        file = path.display().to_string(),
+                        error = e.to_string()
+                    )
+                })
         })
 }
 
@@ -172,7 +184,11 @@ impl Sandbox {
                     self.selected = Some(0);
                 }
             }
-            Err(e) => self.report(tr!("scene-cannot-open", file = preset.path, error = e.to_string())),
+            Err(e) => self.report(tr!(
+                "scene-cannot-open",
+                file = preset.path,
+                error = e.to_string()
+            )),
         }
     }
 

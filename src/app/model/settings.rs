@@ -76,7 +76,11 @@ impl Remembered {
 
 /// The language to speak: the command line's, else the one chosen before,
 /// else the system's (or the browser's), else English.
-pub fn choose_language(pinned: Option<Lang>, remembered: Option<Lang>, system: Option<Lang>) -> Lang {
+pub fn choose_language(
+    pinned: Option<Lang>,
+    remembered: Option<Lang>,
+    system: Option<Lang>,
+) -> Lang {
     pinned.or(remembered).or(system).unwrap_or(Lang::En)
 }
 

@@ -4,8 +4,8 @@
 //! Shown on a plain start (no scene file, no gas, no shared link) and by
 //! the top bar's *Start* button; while it is open nothing runs behind it.
 
-use crate::app::lang::tr;
 use super::{scenes, DockTab, Sandbox};
+use crate::app::lang::tr;
 
 /// A lesson on the start screen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -7,7 +7,12 @@ use impulse::Scene;
 
 /// A sandbox on the preset whose file is `file`, its recovery folder
 /// `dir` with autosave every `autosave` seconds (0: off).
-fn sandbox_with(dir: &std::path::Path, file: &str, paused: bool, autosave: f64) -> Sandbox {
+pub(super) fn sandbox_with(
+    dir: &std::path::Path,
+    file: &str,
+    paused: bool,
+    autosave: f64,
+) -> Sandbox {
     let preset = scenes::PRESETS
         .iter()
         .find(|p| p.path.ends_with(file))

@@ -19,6 +19,7 @@ impl Sandbox {
         if !self.world.ledger.is_on() {
             self.world.ledger.keep(LEDGER_KEEP);
         }
+        let listened = self.listen();
         let due = self.clock.advance(frame_seconds);
         let start = impulse::clock::Instant::now();
         let mut steps = 0;
@@ -53,6 +54,7 @@ impl Sandbox {
         self.steps.steps_last_frame = steps;
         self.steps.steps_dropped = due - steps;
         self.after_steps(steps);
+        self.hear(listened, frame_seconds);
         if self.view.fitted && self.follows_discs() {
             self.fit_camera();
         }
@@ -75,9 +77,17 @@ impl Sandbox {
         let said = if energy.abs() < 1e-9 {
             tr!("separated", pairs = pairs)
         } else if energy > 0.0 {
-            tr!("separated-raised", pairs = pairs, energy = with_unit(energy, 3, "J"))
+            tr!(
+                "separated-raised",
+                pairs = pairs,
+                energy = with_unit(energy, 3, "J")
+            )
         } else {
-            tr!("separated-lowered", pairs = pairs, energy = with_unit(-energy, 3, "J"))
+            tr!(
+                "separated-lowered",
+                pairs = pairs,
+                energy = with_unit(-energy, 3, "J")
+            )
         };
         self.toast_for(said, 6.0);
     }

@@ -3,8 +3,8 @@
 //! scale (three tiles a row where wide, two or one where narrow, scrolling
 //! where short); Esc keeps the scene that is open.
 
-use crate::app::lang::tr;
 use super::Cx;
+use crate::app::lang::tr;
 use crate::app::model::start::Tile;
 use crate::app::model::Command;
 use egui::{Align2, Color32, Pos2, RichText, Stroke, Vec2};
@@ -35,7 +35,8 @@ impl StartScreen {
             .resizable(false)
             .show(ctx, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
-                    let per_row = ((ui.available_width() / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
+                    let per_row =
+                        ((ui.available_width() / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
                     let width = ui.available_width() / per_row as f32 - 12.0;
                     for row in Tile::ALL.chunks(per_row) {
                         ui.horizontal(|ui| {

@@ -63,10 +63,7 @@ impl View for Strip {
                     (RichText::new(message).color(color), "message")
                 }
                 (None, None, Some(caption)) => (RichText::new(caption), "caption"),
-                (None, None, None) => (
-                    RichText::new(tr!("caption-none")),
-                    "caption",
-                ),
+                (None, None, None) => (RichText::new(tr!("caption-none")), "caption"),
             };
             let whole = text.text().to_string();
             let r = ui.add(egui::Label::new(text).truncate());

@@ -71,7 +71,11 @@ impl View for TopBar {
             let text = if scale == 1.0 {
                 format!("▶ {}", tr!("state-running"))
             } else {
-                format!("▶ {} ×{}", tr!("state-running"), crate::app::numbers::field(scale))
+                format!(
+                    "▶ {} ×{}",
+                    tr!("state-running"),
+                    crate::app::numbers::field(scale)
+                )
             };
             RichText::new(text).color(running)
         };
@@ -209,6 +213,21 @@ fn walls_pushed(cx: &Cx) -> bool {
     (world.metrics().momentum - first.momentum).length() > 1e-9 * scale
 }
 
+/// The sound button's label: 🔊 on, 🔈 on but silent now (paused, or
+/// faster than ×2), 🔇 off.
+fn sound_label(cx: &Cx, label: &str) -> String {
+    let model = cx.model;
+    let icon = match (
+        model.session.sound.on,
+        model.session.sound.active(&model.clock),
+    ) {
+        (true, true) => "🔊",
+        (true, false) => "🔈",
+        (false, _) => "🔇",
+    };
+    format!("{icon} {label}")
+}
+
 impl TopBar {
     /// Lays the items out on one line: the essential ones, then the others
     /// while they fit, then "⋯ more" with the rest on hover, and the
@@ -229,8 +248,10 @@ impl TopBar {
             )
         };
         let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or_default();
+        let sound = sound_label(cx, &label(&Command::ToggleSound));
         let mut buttons: Vec<(String, Command, &str)> =
             vec![(label(&Command::ShowStart), Command::ShowStart, "start")];
+        buttons.push((sound, Command::ToggleSound, "sound"));
         if cx.drawer && cx.model.panels.docks_open {
             let toggle = Command::ToggleDrawer;
             buttons.push((label(&toggle), toggle, "drawer_toggle"));

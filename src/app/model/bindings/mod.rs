@@ -225,10 +225,10 @@ mod tests {
             cmd(Key::Letter('Z'), false, false),
             Some(Command::ToggleCenterOfMassView)
         );
+        assert_eq!(cmd(Key::Digit(5), true, false), None, "Ctrl+5 does nothing");
         assert_eq!(
-            cmd(Key::Letter('Q'), false, false),
-            None,
-            "Q alone does nothing"
+            cmd(Key::Letter('S'), false, false),
+            Some(Command::ToggleDocks)
         );
         assert_eq!(
             cmd(Key::Digit(0), false, false),

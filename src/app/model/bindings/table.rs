@@ -71,16 +71,10 @@ use Key as K;
 
 /// Every binding, in the help's order.
 pub static BINDINGS: &[Binding] = &[
-    mouse(
-        "launch",
-    ),
-    mouse(
-        "fling",
-    ),
-    mouse(
-        "aim",),
-    mouse(
-        "select",),
+    mouse("launch"),
+    mouse("fling"),
+    mouse("aim"),
+    mouse("select"),
     Binding {
         name: "pan",
         control: None,
@@ -100,10 +94,22 @@ pub static BINDINGS: &[Binding] = &[
             (plain(K::Right), C::AimSelected(glam::DVec2::new(AIM, 0.0))),
             (plain(K::Up), C::AimSelected(glam::DVec2::new(0.0, AIM))),
             (plain(K::Down), C::AimSelected(glam::DVec2::new(0.0, -AIM))),
-            (shifted(K::Left), C::AimSelected(glam::DVec2::new(-10.0 * AIM, 0.0))),
-            (shifted(K::Right), C::AimSelected(glam::DVec2::new(10.0 * AIM, 0.0))),
-            (shifted(K::Up), C::AimSelected(glam::DVec2::new(0.0, 10.0 * AIM))),
-            (shifted(K::Down), C::AimSelected(glam::DVec2::new(0.0, -10.0 * AIM))),
+            (
+                shifted(K::Left),
+                C::AimSelected(glam::DVec2::new(-10.0 * AIM, 0.0)),
+            ),
+            (
+                shifted(K::Right),
+                C::AimSelected(glam::DVec2::new(10.0 * AIM, 0.0)),
+            ),
+            (
+                shifted(K::Up),
+                C::AimSelected(glam::DVec2::new(0.0, 10.0 * AIM)),
+            ),
+            (
+                shifted(K::Down),
+                C::AimSelected(glam::DVec2::new(0.0, -10.0 * AIM)),
+            ),
         ],
     ),
     line(
@@ -114,11 +120,7 @@ pub static BINDINGS: &[Binding] = &[
             (shifted(letter('Q')), C::SelectNext(-1)),
         ],
     ),
-    line(
-        "launch-centre",
-        None,
-        &[(key(K::Enter), C::LaunchAtCentre)],
-    ),
+    line("launch-centre", None, &[(key(K::Enter), C::LaunchAtCentre)]),
     line(
         "zoom",
         Some("section-view"),
@@ -129,21 +131,9 @@ pub static BINDINGS: &[Binding] = &[
             (key(K::KpSubtract), C::ZoomOut),
         ],
     ),
-    line(
-        "fit",
-        None,
-        &[(key(letter('F')), C::Fit)],
-    ),
-    line(
-        "pause",
-        None,
-        &[(key(K::Space), C::TogglePause)],
-    ),
-    line(
-        "step",
-        None,
-        &[(key(letter('N')), C::Step)],
-    ),
+    line("fit", None, &[(key(letter('F')), C::Fit)]),
+    line("pause", None, &[(key(K::Space), C::TogglePause)]),
+    line("step", None, &[(key(letter('N')), C::Step)]),
     line(
         "speed",
         None,
@@ -185,6 +175,7 @@ pub static BINDINGS: &[Binding] = &[
         Some("section-show"),
         &[(plain(letter('Z')), C::ToggleCenterOfMassView)],
     ),
+    line("sound", None, &[(key(K::F(8)), C::ToggleSound)]),
     line(
         "next-collision",
         Some("section-show-collisions-tab"),
@@ -253,11 +244,7 @@ pub static BINDINGS: &[Binding] = &[
         Some("section-scene"),
         &[(key(letter('C')), C::Clear)],
     ),
-    line(
-        "reset",
-        None,
-        &[(key(letter('R')), C::Reset)],
-    ),
+    line("reset", None, &[(key(letter('R')), C::Reset)]),
     line(
         "presets",
         None,
@@ -280,11 +267,7 @@ pub static BINDINGS: &[Binding] = &[
         Some("section-presets-last"),
         &[(ctrl(letter('N')), C::OpenEmpty)],
     ),
-    line(
-        "undo",
-        None,
-        &[(ctrl(letter('Z')), C::Undo)],
-    ),
+    line("undo", None, &[(ctrl(letter('Z')), C::Undo)]),
     line(
         "redo",
         None,
@@ -293,11 +276,7 @@ pub static BINDINGS: &[Binding] = &[
             (ctrl(letter('Y')), C::Redo),
         ],
     ),
-    line(
-        "escape",
-        None,
-        &[(key(K::Escape), C::Escape)],
-    ),
+    line("escape", None, &[(key(K::Escape), C::Escape)]),
     line(
         "save",
         Some("section-scene"),
@@ -366,9 +345,7 @@ pub static BINDINGS: &[Binding] = &[
             (key(K::F(1)), C::ToggleHelp),
         ],
     ),
-    line(
-        "quit",
-        None, &[(ctrl(letter('Q')), C::Quit)]),
+    line("quit", None, &[(ctrl(letter('Q')), C::Quit)]),
 ];
 
 /// Keyboard pan speed, pixels per frame.
@@ -407,4 +384,5 @@ pub static LABELS: &[(Command, &str)] = &[
     (C::ToggleDrawer, "label-toggle-drawer"),
     (C::ShowAllControls, "label-show-all-controls"),
     (C::ReopenKept, "label-reopen-kept"),
+    (C::ToggleSound, "label-toggle-sound"),
 ];

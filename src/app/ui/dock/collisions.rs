@@ -3,9 +3,9 @@
 //! newest before and after, disc by disc. Side by side where the dock is
 //! wide, one under the other where it is narrow; nothing overlaps.
 
-use crate::app::lang::tr;
 use super::super::widgets::command_button;
 use super::super::{Cx, View};
+use crate::app::lang::tr;
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
@@ -79,7 +79,10 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
                         ("t (s)".to_string(), tr!("ledger-time-hover")),
                         (tr!("ledger-what"), tr!("ledger-what-hover")),
                         ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
-                        (format!("Δ{} (J)", tr!("symbol-ke")), tr!("ledger-dke-hover")),
+                        (
+                            format!("Δ{} (J)", tr!("symbol-ke")),
+                            tr!("ledger-dke-hover"),
+                        ),
                     ] {
                         ui.strong(h).on_hover_text(hover);
                     }

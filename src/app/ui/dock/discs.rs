@@ -6,9 +6,9 @@
 //! and the answer shows above the table, where it is seen without
 //! scrolling.
 
-use crate::app::lang::tr;
 use super::super::widgets::{select_all_on_focus, show_note};
 use super::super::{Cx, View};
+use crate::app::lang::tr;
 use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
@@ -42,7 +42,10 @@ fn spin_headings() -> [(String, String); 3] {
             format!("{}\n(J)", tr!("totals-rotational-ke")),
             tr!("table-rotational-ke-hover"),
         ),
-        ("L\n(kg·m²/s)".to_string(), tr!("table-angular-momentum-hover")),
+        (
+            "L\n(kg·m²/s)".to_string(),
+            tr!("table-angular-momentum-hover"),
+        ),
     ]
 }
 

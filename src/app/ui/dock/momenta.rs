@@ -1,9 +1,9 @@
 //! The *Momenta* tab: each disc's momentum drawn tip to tail, and their
 //! sum, in one scale for p_x and p_y.
 
-use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
+use crate::app::lang::tr;
 use crate::app::model::totals::DIAGRAM_MAX_DISCS;
 use crate::app::numbers::vector;
 use egui::Color32;

@@ -76,7 +76,11 @@ pub fn speed_plot(
     };
     plot.x_axis_label(x_label)
         // Rotated beside a short plot, the name would run past it.
-        .y_axis_label(if height >= ROOMY_PLOT { per.clone() } else { String::new() })
+        .y_axis_label(if height >= ROOMY_PLOT {
+            per.clone()
+        } else {
+            String::new()
+        })
         .include_y(0.0)
         .label_formatter(move |_, v| format!("{} m/s\n{} {per}", plain(v.x, 2), plain(v.y, 3)))
         .show(ui, |plot| {
@@ -88,11 +92,7 @@ pub fn speed_plot(
                     .width(3.0),
             );
             if let Some((bars, law)) = rim {
-                plot.bar_chart(
-                    BarChart::new(bars)
-                        .name(tr!("rim-speeds"))
-                        .color(RIM_COLOR),
-                );
+                plot.bar_chart(BarChart::new(bars).name(tr!("rim-speeds")).color(RIM_COLOR));
                 plot.line(
                     Line::new(PlotPoints::from(law))
                         .name(tr!("rim-speeds-equal"))

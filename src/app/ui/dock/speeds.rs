@@ -2,9 +2,9 @@
 //! spin shown also the rim speeds |ω|·r, and how the energy is shared
 //! between moving and turning over time.
 
-use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
+use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::{plain, with_unit};
@@ -24,7 +24,11 @@ impl View for Speeds {
             // One line, so the plot keeps its height; the whole on hover.
             let line = tr!("speeds-line");
             ui.add(egui::Label::new(line.clone()).truncate())
-                .on_hover_text(tr!("speeds-hover", line = line, kt = with_unit(h.kt, 3, "J")));
+                .on_hover_text(tr!(
+                    "speeds-hover",
+                    line = line,
+                    kt = with_unit(h.kt, 3, "J")
+                ));
             let height = ui.available_height();
             // The line above names bars and curve; a short plot has no room for a legend box.
             speed_plot(ui, &h, None, height, height >= ROOMY_PLOT);

@@ -2,9 +2,9 @@
 //! and the energy against time, each in its own plot, with the change since
 //! the record began above them.
 
-use crate::app::lang::tr;
 use super::super::{Cx, View};
 use super::plots::*;
+use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::numbers::{plain, vector, with_unit};
 use egui::RichText;
@@ -61,7 +61,9 @@ impl View for Totals {
             ui.label(drift).on_hover_text(tr!("totals-hover"));
             if compact {
                 let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
-                let short = energies.iter().map(|(_, name, color)| (name.as_str(), *color));
+                let short = energies
+                    .iter()
+                    .map(|(_, name, color)| (name.as_str(), *color));
                 for (name, color) in names.into_iter().chain(short) {
                     ui.label(RichText::new(format!("— {name}")).color(color).strong());
                 }

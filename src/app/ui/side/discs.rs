@@ -2,12 +2,12 @@
 //! and *Selected disc* (its mass, radius and velocity as text fields that
 //! follow the disc until typed in; Apply or Enter sends the edit).
 
-use crate::app::lang::tr;
-use crate::app::model::edit::FIELDS;
 use super::super::widgets::{command_button, select_all_on_focus, show_note, slider};
 use super::Cx;
+use crate::app::lang::tr;
 use crate::app::model::bindings::tooltip;
 use crate::app::model::command::{Dir, EditPlace};
+use crate::app::model::edit::FIELDS;
 use crate::app::model::gesture::radius_for_mass;
 use crate::app::model::Command;
 use crate::app::numbers::{field, with_unit};

@@ -5,10 +5,10 @@
 
 use super::super::widgets::{command_button, setting_combo, show_note, slider};
 use super::Cx;
+use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
 use crate::app::model::{next_scale, scenes, Command, Theme, UI_SCALE_RANGE};
 use crate::app::numbers::{plain, with_unit};
-use crate::app::lang::{tr, Lang};
 use egui::{ComboBox, Ui};
 
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
@@ -52,9 +52,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         }
         command_button(ui, cx, Command::Save, Some("save"));
         if in_browser {
-            let r = ui
-                .button(tr!("share"))
-                .on_hover_text(tr!("share-hover"));
+            let r = ui.button(tr!("share")).on_hover_text(tr!("share-hover"));
             cx.note("share", &r);
             if r.clicked() {
                 cx.send(Command::Share);
@@ -80,15 +78,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     let panels = &cx.model.panels;
     let mut scale = f64::from(panels.scale);
     let range = f64::from(*UI_SCALE_RANGE.start())..=f64::from(*UI_SCALE_RANGE.end());
-    let (r, changed) = slider(
-        ui,
-        &tr!("ui-scale-label"),
-        &mut scale,
-        range,
-        false,
-        1,
-        "×",
-    );
+    let (r, changed) = slider(ui, &tr!("ui-scale-label"), &mut scale, range, false, 1, "×");
     cx.note("ui_scale", &r);
     // Applied when let go: the panel must not change size under the pointer.
     if r.drag_stopped() || (changed && !r.dragged()) {
@@ -158,8 +148,11 @@ pub fn details(ui: &mut Ui, cx: &mut Cx) {
     let mut micros: Vec<f64> = model.steps.step_micros.iter().copied().collect();
     micros.sort_by(f64::total_cmp);
     let median = micros.get(micros.len() / 2).copied().unwrap_or(0.0);
-    ui.label(tr!("dt-line", dt = with_unit(model.clock.dt * 1e3, 3, "ms")))
-        .on_hover_text(tr!("dt-hover"));
+    ui.label(tr!(
+        "dt-line",
+        dt = with_unit(model.clock.dt * 1e3, 3, "ms")
+    ))
+    .on_hover_text(tr!("dt-hover"));
     ui.label(tr!(
         "step-time-line",
         time = with_unit(median, 1, "µs"),

@@ -4,8 +4,8 @@
 //! the model keeps it in range and remembers it for undo.
 
 use super::super::widgets::slider;
-use crate::app::lang::tr;
 use super::Cx;
+use crate::app::lang::tr;
 use crate::app::model::clock::TIME_SCALES;
 use crate::app::model::command::Law;
 use crate::app::model::overlays::spin_shown;
@@ -88,7 +88,10 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         "gravity",
         &r.on_hover_text(format!(
             "{}\n{tip}",
-            tr!("gravity-hover", gravity = crate::app::numbers::plain(EARTH_GRAVITY, 2))
+            tr!(
+                "gravity-hover",
+                gravity = crate::app::numbers::plain(EARTH_GRAVITY, 2)
+            )
         )),
     );
     let boundary = cx.model.world.laws.boundary;

@@ -13,9 +13,9 @@ mod discs;
 mod files;
 mod laws;
 
-use crate::app::lang::tr;
 use super::widgets::{command_button, labelled_button};
 use super::{Cx, View};
+use crate::app::lang::tr;
 use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
 use crate::app::model::start::{Section, Tile};
 use crate::app::model::Command;
@@ -84,7 +84,12 @@ impl View for SideDock {
                     }
                     Section::NewDiscs => {
                         let title = tr!("section-new-discs");
-                        section(ui, cx, (&title, "section_new_discs", false), discs::new_discs)
+                        section(
+                            ui,
+                            cx,
+                            (&title, "section_new_discs", false),
+                            discs::new_discs,
+                        )
                     }
                     Section::Selected => {
                         section(ui, cx, (&title, "section_selected", false), |ui, cx| {
@@ -104,13 +109,13 @@ impl View for SideDock {
                     Section::More => {
                         let title = tr!("section-more");
                         section(ui, cx, (&title, "section_more", false), |ui, cx| {
-                        ui.add(egui::Label::new(tr!("section-more-line")).wrap());
-                        if !spin_shown(&cx.model.world) {
-                            laws::advanced(ui, cx);
-                            ui.separator();
-                        }
-                        files::details(ui, cx);
-                    })
+                            ui.add(egui::Label::new(tr!("section-more-line")).wrap());
+                            if !spin_shown(&cx.model.world) {
+                                laws::advanced(ui, cx);
+                                ui.separator();
+                            }
+                            files::details(ui, cx);
+                        })
                     }
                 }
             }
