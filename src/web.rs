@@ -19,12 +19,53 @@ extern "C" {
     fn impulse_report_fingerprints(ptr: *const u8, len: usize);
     fn impulse_click(hz: f32, amplitude: f32, attack: f32, decay: f32, seconds: f32, delay: f64);
     fn impulse_browser_language() -> i32;
+    fn impulse_mirror(ptr: *const u8, len: usize);
+    fn impulse_say(ptr: *const u8, len: usize);
+    fn impulse_world_keys(on: i32);
     fn impulse_set_page_language(
         tag: *const u8,
         tag_len: usize,
         title: *const u8,
         title_len: usize,
     );
+}
+
+/// Builds (or updates) the page's accessible mirror from its description
+/// (`model::mirror::Mirror` as JSON).
+pub fn set_mirror(json: &str) {
+    // SAFETY: the page reads the string during the call.
+    unsafe { impulse_mirror(json.as_ptr(), json.len()) }
+}
+
+/// A line for the page's `aria-live` region.
+pub fn say(line: &str) {
+    // SAFETY: the page reads the string during the call.
+    unsafe { impulse_say(line.as_ptr(), line.len()) }
+}
+
+/// Whether the world has the keys (no control of the canvas has them):
+/// then Shift+Tab leaves the canvas for the mirror.
+pub fn set_world_keys(on: bool) {
+    // SAFETY: a number.
+    unsafe { impulse_world_keys(i32::from(on)) }
+}
+
+thread_local! {
+    /// The mirror's controls used since the last frame: (list, index).
+    static MIRROR_USES: std::cell::RefCell<Vec<(u32, u32)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The page's mirror used control `index` of `list` (0 buttons, 1 presets,
+/// 2 languages); the window reads it next frame.
+#[no_mangle]
+pub extern "C" fn impulse_mirror_use(list: u32, index: u32) {
+    MIRROR_USES.with(|u| u.borrow_mut().push((list, index)));
+}
+
+/// The mirror's controls used since the last call.
+pub fn take_mirror_uses() -> Vec<(u32, u32)> {
+    MIRROR_USES.with(|u| std::mem::take(&mut *u.borrow_mut()))
 }
 
 /// The browser's language (`navigator.language`, "de-DE").

@@ -2,8 +2,10 @@
 //! UI scales 1 and 2, with every preset, no docked panel covers the world
 //! and no text is too small to read from the back of a room; the Discs
 //! table is edited as a person would (click, select all, type, Enter); a
-//! bad number is refused with a message in view; the docks hide with Tab
-//! while PAUSED stays in the top bar; and a machine too slow for real time
+//! bad number is refused with a message in view; the docks hide with S
+//! while PAUSED stays in the top bar; at the projector scale the layout
+//! holds in English, German and the pseudo-language (nothing cut off or
+//! overlapping); and a machine too slow for real time
 //! slows the simulation, says so, and keeps physics to half of each frame.
 
 #[path = "window_harness/mod.rs"]
@@ -21,8 +23,8 @@ fn main() -> std::process::ExitCode {
             no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset,
         ),
         (
-            "tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar",
-            tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar,
+            "s_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar",
+            s_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar,
         ),
         (
             "a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view",
@@ -39,6 +41,14 @@ fn main() -> std::process::ExitCode {
         (
             "at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room",
             at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room,
+        ),
+        (
+            "in_german_at_the_projector_scale_nothing_is_cut_off_or_overlapping",
+            in_german_at_the_projector_scale_nothing_is_cut_off_or_overlapping,
+        ),
+        (
+            "in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping",
+            in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping,
         ),
         (
             "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
@@ -218,13 +228,13 @@ fn the_rough_presets_fit_with_their_spin_values_at_the_smallest_size_and_both_sc
     }
 }
 
-fn tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar() {
-    let x = Xvfb::start("tab");
+fn s_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar() {
+    let x = Xvfb::start("hide");
     let app = Sandbox::start(&x, &["--paused"]);
     let before = app.wait_frames(3);
     let world_before = rect(&before["layout"]["world"]);
     app.move_to([300.0, 300.0]);
-    app.xdo(&["key", "Tab"]);
+    app.xdo(&["key", "s"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["docks_open"], false);
     let world = rect(&s["layout"]["world"]);
@@ -239,7 +249,7 @@ fn tab_hides_the_docks_for_a_full_size_world_and_paused_stays_in_the_top_bar() {
         "PAUSED is in the top bar: {state:?}"
     );
     assert_eq!(s["paused"], true);
-    app.xdo(&["key", "Tab"]);
+    app.xdo(&["key", "s"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["docks_open"], true);
     app.quit();
@@ -381,10 +391,15 @@ fn a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much() 
 /// controls become a drawer that floats over the world when opened, the
 /// tab row and its Hide button are on screen, and the ledger's rows are
 /// one under the other.
-fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() {
+///
+/// In `lang`: German's long words and the pseudo-language's 40 % longer
+/// text must fit too: every named control of the top bar, the tab row and
+/// the ledger inside the window and none over another.
+fn projector_ledger(lang: &str) {
     let x = Xvfb::start("projector");
     let window = [1024.0, 768.0];
-    let app = Sandbox::start(&x, &["--size", "1024x768", "--ui-scale", "2"]);
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", lang];
+    let app = Sandbox::start(&x, &args);
     app.move_to([500.0, 200.0]);
     app.xdo(&["key", "4"]);
     app.wait_frames(3);
@@ -394,18 +409,44 @@ fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() 
     check_layout(&s, "1024x768 scale 2 after J", 2.0, window);
     assert_eq!(s["layout"]["side"], "drawer", "{}", s["layout"]);
     assert_eq!(s["layout"]["tab_folded"], false, "the ledger is open");
-    for name in [
+    assert_eq!(s["ui"]["language"], lang);
+    // The tabs one by one, or, where their names do not fit, as a list.
+    let tabs = [
         "tab_totals",
+        "tab_collisions",
+        "tab_discs",
+        "tab_speeds",
         "tab_momenta",
+        "tab_words",
         "dock_toggle",
-        "drawer_toggle",
-        "ledger_count",
-    ] {
-        let r = rect(&s["panel_widgets"][name]);
+    ];
+    let menu = ["tab_menu", "dock_toggle"];
+    let row = if s["panel_widgets"]["tab_menu"].is_array() {
+        &menu[..]
+    } else {
+        &tabs[..]
+    };
+    if lang == "en" {
+        assert_eq!(row, tabs, "English fits the row");
+    }
+    let mut bar = vec!["run_state", "sound", "start", "drawer_toggle"];
+    if s["panel_widgets"]["top_bar_more"].is_array() {
+        bar.push("top_bar_more");
+    }
+    for name in row.iter().chain(&bar).chain(&["ledger_count"]) {
+        let r = rect(&s["panel_widgets"][*name]);
         assert!(
             r[0] >= -0.5 && r[0] + r[2] <= window[0] + 0.5 && r[1] + r[3] <= window[1] + 0.5,
-            "{name} is cut off: {r:?}"
+            "{lang}: {name} is cut off: {r:?}"
         );
+    }
+    for names in [row, &bar[..]] {
+        for (k, a) in names.iter().enumerate() {
+            for b in &names[k + 1..] {
+                let (ra, rb) = (rect(&s["panel_widgets"][*a]), rect(&s["panel_widgets"][*b]));
+                assert!(!overlap(ra, rb), "{lang}: {a} {ra:?} over {b} {rb:?}");
+            }
+        }
     }
     // The scale bar measures what is on screen, not kilometres.
     let view = View::of(&s);
@@ -439,6 +480,18 @@ fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() 
         "the help is inside the window: {help:?}"
     );
     app.quit();
+}
+
+fn at_the_projector_scale_the_ledger_opens_beside_a_world_that_keeps_its_room() {
+    projector_ledger("en");
+}
+
+fn in_german_at_the_projector_scale_nothing_is_cut_off_or_overlapping() {
+    projector_ledger("de");
+}
+
+fn in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping() {
+    projector_ledger("qps");
 }
 
 /// Switching the dock's tabs, a long caption, a rewind and the end of the

@@ -13,7 +13,7 @@ const LAYERS: &[&[&str]] = &[
     &["look"],
     &["drawing", "idle", "audio"],
     &["ui"],
-    &["input"],
+    &["input", "page"],
     &["dump"],
     &["mod"],
 ];

@@ -1,8 +1,11 @@
 // Impulse's bridge between the page and the app, as a miniquad plugin (the
 // Rust side is src/web.rs): the state report tests and the page read, file
 // downloads, local storage for autosave, the address's fragment for shared
-// links, and the clicks of impacts through Web Audio. Loaded after macroquad's mq_js_bundle.js, whose
-// UTF8ToString and wasm_memory it uses.
+// links, the clicks of impacts through Web Audio, the page's language, and
+// the accessible mirror beside the canvas (#mirror in index.html: real
+// buttons and lists for the main commands, named in the window's language,
+// and an aria-live region that says what happens). Loaded after macroquad's
+// mq_js_bundle.js, whose UTF8ToString and wasm_memory it uses.
 "use strict";
 (function () {
     // Bytes set aside for the app, which fetches them with impulse_take.
@@ -55,6 +58,100 @@
         tone.stop(t + seconds);
         tone.onended = () => gain.disconnect();
     };
+
+    // The accessible mirror. The app describes it (src/app/model/mirror.rs)
+    // whenever a name or a state changes; a control used is handed back
+    // with impulse_mirror_use(list, index): list 0 buttons, 1 presets,
+    // 2 languages.
+    const use = (list, index) => {
+        if (typeof wasm_exports !== "undefined" && wasm_exports.impulse_mirror_use) {
+            wasm_exports.impulse_mirror_use(list, index);
+        }
+    };
+    let mirrorShape = "";
+    const choice = (id, list, spec) => {
+        const select = document.getElementById(id);
+        const label = document.querySelector(`label[for="${id}"]`);
+        label.textContent = spec.label;
+        select.replaceChildren();
+        if (list === 1) {
+            // Presets: a choice opens one; the first line only names the list.
+            const none = new Option("…", "");
+            select.add(none);
+        }
+        spec.options.forEach((name, i) => select.add(new Option(name, String(i))));
+        if (spec.chosen !== null && spec.chosen !== undefined) select.value = String(spec.chosen);
+        select.onchange = () => {
+            if (select.value !== "") use(list, Number(select.value));
+            if (list === 1) select.value = "";
+        };
+    };
+    const buildMirror = (spec) => {
+        const shape = JSON.stringify([spec.lang, spec.buttons.map((b) => b.label), spec.presets, spec.languages]);
+        const region = document.getElementById("mirror");
+        if (shape !== mirrorShape) {
+            mirrorShape = shape;
+            region.setAttribute("aria-label", spec.title);
+            document.getElementById("mirror-title").textContent = spec.title;
+            const row = document.getElementById("mirror-buttons");
+            const focused = document.activeElement && row.contains(document.activeElement)
+                ? [...row.children].indexOf(document.activeElement) : -1;
+            row.replaceChildren();
+            spec.buttons.forEach((b, i) => {
+                const button = document.createElement("button");
+                button.type = "button";
+                button.textContent = b.label;
+                button.addEventListener("click", () => use(0, i));
+                row.appendChild(button);
+            });
+            if (focused >= 0 && row.children[focused]) row.children[focused].focus();
+            choice("mirror-presets", 1, spec.presets);
+            choice("mirror-languages", 2, spec.languages);
+            document.getElementById("mirror-said-label").textContent = spec.said;
+        }
+        // States and hints change without rebuilding (focus stays put).
+        const row = document.getElementById("mirror-buttons");
+        spec.buttons.forEach((b, i) => {
+            const button = row.children[i];
+            button.title = b.hint;
+            if (b.shortcut) button.setAttribute("aria-keyshortcuts", b.shortcut);
+            if (b.pressed === null || b.pressed === undefined) button.removeAttribute("aria-pressed");
+            else button.setAttribute("aria-pressed", String(b.pressed));
+        });
+    };
+    // What happens, said: at most one update a second (lines that come
+    // together are said together), so a screen reader is not flooded.
+    let toSay = [];
+    let sayTimer = null;
+    const say = (line) => {
+        toSay.push(line);
+        (window.impulseSaid = window.impulseSaid || []).push(line);
+        if (sayTimer !== null) return;
+        const flush = () => {
+            const live = document.getElementById("mirror-said");
+            if (toSay.length === 0) {
+                sayTimer = null;
+                return;
+            }
+            live.textContent = toSay.join(" ");
+            toSay = [];
+            sayTimer = setTimeout(flush, 1000);
+        };
+        flush();
+    };
+    // No keyboard trap: macroquad's canvas keeps Tab for itself (the
+    // panels' controls); while the world has the keys, Shift+Tab leaves the
+    // canvas for the mirror's last control.
+    let worldKeys = true;
+    window.addEventListener("keydown", (e) => {
+        const canvas = document.getElementById("glcanvas");
+        if (e.key !== "Tab" || !e.shiftKey || document.activeElement !== canvas || !worldKeys) return;
+        const controls = document.querySelectorAll("#mirror button, #mirror select");
+        if (controls.length === 0) return;
+        e.preventDefault();
+        e.stopImmediatePropagation();
+        controls[controls.length - 1].focus();
+    }, true);
     function register(importObject) {
         const env = importObject.env;
         env.impulse_report_state = (ptr, len) => {
@@ -115,6 +212,11 @@
         env.impulse_set_page_language = (tagPtr, tagLen, titlePtr, titleLen) => {
             document.documentElement.lang = text(tagPtr, tagLen);
             document.title = text(titlePtr, titleLen);
+        };
+        env.impulse_mirror = (ptr, len) => buildMirror(JSON.parse(text(ptr, len)));
+        env.impulse_say = (ptr, len) => say(text(ptr, len));
+        env.impulse_world_keys = (on) => {
+            worldKeys = on !== 0;
         };
         env.impulse_take = (ptr, len) => {
             new Uint8Array(wasm_memory.buffer, ptr, len).set(pending.subarray(0, len));

@@ -20,6 +20,7 @@ pub mod layout;
 mod look;
 pub mod model;
 pub mod numbers;
+mod page;
 mod ui;
 
 use frame_stats::ms_since;
@@ -307,8 +308,8 @@ struct App {
     idle: idle::Idle,
     /// The state last handed to the page to keep, and when (the browser).
     kept: (u64, f64),
-    /// The language the page last declared (the browser).
-    page_language: Option<lang::Lang>,
+    /// What the browser's page around the canvas was last told.
+    page: page::Page,
 }
 
 impl App {
@@ -358,7 +359,7 @@ impl App {
             frame_stats: frame_stats::FrameStats::new(keep_all),
             idle: idle::Idle::new(WM_CLASS),
             kept: (0, f64::NEG_INFINITY),
-            page_language: None,
+            page: page::Page::default(),
         }
     }
 
@@ -386,6 +387,7 @@ impl App {
                 display::mark_open();
             }
             commands.extend(self.input.commands(&mut self.panels, &self.model, mouse));
+            commands.extend(self.page.commands());
             let running = !self.model.clock.paused;
             for command in commands {
                 self.model.apply(command);
@@ -397,7 +399,8 @@ impl App {
             let step_ms = ms_since(step_start, impulse::clock::Instant::now());
             audio::play(self.model.take_sounds());
             self.keep_for_the_page();
-            self.declare_language();
+            let world_keys = !(self.panels.typing || self.panels.panel_keyboard);
+            self.page.update(&mut self.model, world_keys);
             let timed_out = self
                 .options
                 .exit_after
@@ -466,18 +469,6 @@ impl App {
             timing: self.frame_stats.recent(),
         };
         dump::write(path, &dump::state(&self.model, window));
-    }
-
-    /// In the browser: the page declares the window's language
-    /// (`<html lang>`) and its title in it, whenever it changes.
-    fn declare_language(&mut self) {
-        let now = lang::language();
-        if self.page_language == Some(now) {
-            return;
-        }
-        self.page_language = Some(now);
-        #[cfg(target_arch = "wasm32")]
-        crate::web::set_page_language(now.code(), &lang::tr!("page-title"));
     }
 
     /// In the browser: hands the page the sandbox to keep when it is hidden

@@ -195,9 +195,13 @@ impl Sandbox {
             Some((&"--start-screen", rest)) => (rest.to_vec(), true),
             _ => (args.to_vec(), false),
         };
+        // English, unless the test asks for a language: the messages the
+        // tests read are English, whatever the machine's locale.
+        let lang = !args.contains(&"--lang");
         let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
             .args(&args)
             .args(if start { &[][..] } else { &["--no-start"][..] })
+            .args(if lang { &["--lang", "en"][..] } else { &[][..] })
             .arg("--dump-state")
             .arg(&dump)
             .args(["--exit-after", "120"])

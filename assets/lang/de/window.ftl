@@ -193,7 +193,10 @@ ledger-wall = Scheibe { $disc } und die { $wall ->
    *[top] obere
 } Wand
 ledger-empty = Noch keine. „Nächster Stoß“ (J) lässt die Simulation bis zum nächsten Stoß laufen, zwischen Scheiben oder mit einer Wand, und hält im Augenblick des Aufpralls an.
-ledger-last = Die letzten { $count }, neueste zuerst
+ledger-last = { $count ->
+    [one] Der letzte Stoß
+   *[other] Die letzten { $count }, neueste zuerst
+}
 ledger-time-hover = wann es geschah
 ledger-what = was
 ledger-what-hover = welche Scheiben, oder welche Scheibe und Wand

@@ -21,3 +21,54 @@ help-sound = sound on / off: a click at each impact, louder for a harder one, hi
 label-toggle-sound = Sound
 sound-on = Sound on: a click at each impact (silent while paused or faster than ×2)
 sound-off = Sound off
+
+## Said to a screen reader (the browser's live region, the In words tab)
+said-pair = Disc { $a } hit disc { $b }: momentum before { $before }, after { $after }
+said-wall = Disc { $disc } hit the { $wall ->
+    [left] left
+    [right] right
+    [bottom] bottom
+   *[top] top
+} wall: speed before { $before }, after { $after }
+place-middle = in the middle
+place-left = at the left
+place-right = at the right
+place-bottom = at the bottom
+place-top = at the top
+place-bottom-left = at the bottom left
+place-bottom-right = at the bottom right
+place-top-left = at the top left
+place-top-right = at the top right
+motion-rest = at rest
+motion-moving = moving { $direction } at { $speed }
+direction-right = right
+direction-up-right = up and to the right
+direction-up = up
+direction-up-left = up and to the left
+direction-left = left
+direction-down-left = down and to the left
+direction-down = down
+direction-down-right = down and to the right
+describe-box = { $discs ->
+    [one] One disc
+   *[other] { $discs } discs
+} in a { $width } by { $height } metre { $edges ->
+    [open] space without walls.
+    [periodic] space whose sides join up (a disc leaving on one side comes back on the other).
+   *[box] box.
+}
+describe-gravity = Gravity pulls down at { $gravity }.
+describe-no-gravity = No gravity.
+describe-restitution = Restitution between discs: { $restitution }.
+describe-disc = Disc { $disc }, { $mass }, { $place }, { $motion }.
+describe-more = And { $more } more discs; their mean speed is { $speed }.
+describe-totals = { $state ->
+    [paused] Paused
+   *[running] Running
+} at t = { $time }; total momentum { $momentum }, kinetic energy { $energy }.
+tab-words = In words
+words-line = What happens, in words, newest first (a screen reader reads the same in the browser).
+words-none = Nothing said yet.
+label-describe = Describe the scene
+mirror-title = Impulse: controls for the keyboard and screen readers
+mirror-said = What happens

@@ -1,1 +1,159 @@
-# messages
+# Ce que dit le bac à sable : messages du bandeau, notes sous les champs, erreurs.
+
+number-not-a-number = ce n'est pas un nombre
+discs-count = { $count ->
+    [one] { $count } disque
+   *[other] { $count } disques
+}
+
+## Comptages et leçons
+count-line = collisions : { $pairs } entre disques
+count-line-walls = collisions : { $pairs } entre disques · { $walls } avec les murs
+pi-result = { $count } collisions : π ≈ { $pi }
+
+## Ce qu'une méthode ne peut pas promettre
+warning-verlet = verlet : les collisions perdent de l'énergie ; le coefficient de restitution e = { $restitution } n'est pas respecté
+warning-seed = seed : des disques rapides peuvent se traverser
+warning-substeps = { $substeps ->
+    [one] { $substeps } sous-pas
+   *[other] { $substeps } sous-pas
+} par pas : le disque le plus rapide parcourt { $radii }× son rayon par sous-pas et peut traverser les autres
+warning-stall = { $method } : le pas a été écourté et le temps simulé n'avance plus (trop de collisions à la fois) ; choisissez impulse
+
+## Scènes et fichiers
+file-cannot-create = impossible de créer { $folder } : { $error }
+file-cannot-write = impossible d'écrire { $file } : { $error }
+scene-cannot-open = Impossible d'ouvrir { $file } : { $error }
+scene-opened = Ouvert : { $name }
+scene-kept = { $error } (la scène actuelle est conservée)
+scene-reset = Scène réinitialisée
+scene-cannot-reset = Impossible de réinitialiser : { $error }
+scene-cleared = Disques effacés : glissez dans le vide pour en lancer
+scene-path-empty = Tapez d'abord le chemin d'un fichier de scène
+scene-downloaded = Téléchargé : { $file }
+scene-saved = Enregistré : { $file }
+scene-not-saved = Non enregistré : { $error }
+scene-shared = L'adresse de la page ouvre maintenant cette scène : copiez-la depuis la barre d'adresse et envoyez-la
+scene-not-shared = Non partagé : { $error }
+undone = Annulé : { $what } (Ctrl+Maj+Z ou Ctrl+Y pour rétablir)
+nothing-to-undo = Rien à annuler
+redone = Rétabli : { $what }
+nothing-to-redo = Rien à rétablir
+
+## Ce que nomme l'annulation
+edit-open-scene = ouverture d'une scène
+edit-reset = réinitialisation
+edit-clear = effacement des disques
+edit-restitution = restitution
+edit-wall-restitution = restitution aux murs
+edit-roughness = rugosité
+edit-wall-roughness = rugosité des murs
+edit-friction = frottement
+edit-gravity = pesanteur
+edit-edges = bords
+edit-method = méthode
+edit-broad-phase = phase large
+edit-substeps = sous-pas
+edit-disc = modification d'un disque
+edit-delete = suppression
+edit-launch = lancement d'un disque
+edit-fling = disque attrapé et lancé
+edit-aim = réglage d'une vitesse
+no-room = Pas de place ici pour un nouveau disque
+
+## Réglages modifiés par une touche
+law-restitution = Restitution e
+law-wall-restitution = Restitution aux murs
+law-roughness = Rugosité β
+law-wall-roughness = Rugosité des murs β
+time-scale = Échelle de temps ×{ $scale }
+gravity-now = Pesanteur { $gravity }
+method-now = Méthode : { $method }
+broad-phase-now = Phase large : { $broad }
+substeps-now = Sous-pas : { $substeps }
+new-disc-radius = Nouveaux disques : rayon { $radius }
+new-disc-mass = Nouveaux disques : masse { $mass }
+palette-safe = Disques en couleurs adaptées aux daltoniens (Okabe-Ito, selon le numéro du disque)
+palette-scene = Disques aux couleurs de la scène
+text-size = Taille du texte ×{ $scale }
+com-view-off = Vue du centre de masse désactivée : vitesses vues depuis la boîte
+com-view-on = Vue du centre de masse : la vue suit le centre de masse, qui se déplace à { $velocity } ; Z à nouveau pour en sortir
+
+## Le temps : collision suivante, retour en arrière, export
+separated = exact exige des disques séparés : { $pairs ->
+    [one] { $pairs } paire de disques qui se chevauchaient a été séparée
+   *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
+}
+separated-raised = exact exige des disques séparés : { $pairs ->
+    [one] { $pairs } paire de disques qui se chevauchaient a été séparée
+   *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
+}, ce qui a augmenté l'énergie de { $energy }
+separated-lowered = exact exige des disques séparés : { $pairs ->
+    [one] { $pairs } paire de disques qui se chevauchaient a été séparée
+   *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
+}, ce qui a diminué l'énergie de { $energy }
+next-collision-pair = Collision des disques { $a } et { $b } à t = { $time } : leur quantité de mouvement totale a varié de { $momentum }, leur énergie cinétique de { $energy }
+next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
+    [left] de gauche
+    [right] de droite
+    [bottom] du bas
+   *[top] du haut
+} à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
+next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
+next-collision-none = Aucune collision en { $limit }
+rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
+nothing-recorded = Rien d'enregistré pour l'instant
+exported-downloaded = Totaux, disques, collisions et chocs contre les murs téléchargés en fichiers CSV
+exported = Totaux, disques, collisions et chocs contre les murs exportés dans { $folder }/
+not-exported = Non exporté dans { $folder } : { $error }
+wall-name = { $wall ->
+    [left] mur de gauche
+    [right] mur de droite
+    [bottom] mur du bas
+   *[top] mur du haut
+}
+
+## Modifier un disque
+edit-type-a-number = { $name } : tapez un nombre
+edit-not-a-number = { $name } : « { $text } » n'est pas un nombre
+edit-not-finite = { $name } : il faut un nombre fini
+edit-not-positive = { $name } : il faut une valeur supérieure à 0
+edit-radius-too-large = le rayon ne peut pas dépasser { $radius } m ici
+edit-nothing-changed = Rien n'a changé : tapez d'abord une nouvelle valeur
+edit-applied = Appliqué au disque { $disc }
+edit-applied-table = Disque { $disc } : { $values }
+edit-refused-table = Disque { $disc } : { $error } ; rien n'a changé
+edit-mass-overlaps = avec { $mass } kg, le disque aurait un rayon de { $size } m (taille selon la masse) et chevaucherait le disque { $disc }
+edit-mass-crosses-wall = avec { $mass } kg, le disque aurait un rayon de { $size } m (taille selon la masse) et traverserait un mur
+
+## Récupération
+recovery-unreadable-moved = Un fichier de récupération illisible a été déplacé vers { $file } : { $error }
+recovery-unreadable-kept = Un fichier de récupération illisible n'a pas pu être déplacé : { $error }
+autosave-failed = L'enregistrement automatique dans { $place } a échoué : { $error }
+browser-storage = le stockage du navigateur
+origin-recovered = récupérée depuis { $file }
+origin-kept = votre dernier bac à sable, gardé par ce navigateur
+recovery-kept-in = Session précédente gardée dans { $file }
+recovery-not-set-aside = Impossible de mettre de côté la session précédente : { $error }
+kept-not-set-aside = Impossible de mettre de côté votre dernier bac à sable : { $error }
+recovery-question-browser = Ce navigateur a gardé votre dernier bac à sable, « { $name } » ({ $discs ->
+    [one] { $discs } disque
+   *[other] { $discs } disques
+}). Le restaurer, ou le mettre de côté ?
+recovery-question = La dernière session ne s'est pas fermée normalement. Restaurer sa scène « { $name } » ({ $discs ->
+    [one] { $discs } disque
+   *[other] { $discs } disques
+}), ou la mettre de côté ?
+sandbox-cannot-open = Impossible d'ouvrir le bac à sable : { $error }
+link-too-many-discs = { $discs } disques, c'est trop pour un lien (au plus { $most }) : enregistrez plutôt la scène dans un fichier
+link-damaged = la scène du lien est endommagée ({ $error })
+settings-unreadable = Les réglages de { $file } n'ont pas pu être lus ({ $error }) : les valeurs par défaut s'appliquent
+settings-not-saved = Les réglages n'ont pas été enregistrés dans { $place } : { $error }
+aimed = Disque { $disc } : vitesse réglée à { $velocity }
+dropped-file = fichier déposé
+dropped-not-text = { $name } : ce n'est pas un fichier texte
+dropped-unreadable = { $name } : { $error }
+dropped-empty = un fichier déposé sans contenu
+link-cannot-open = La scène de ce lien ne peut pas s'ouvrir : { $error }
+origin-default = scène par défaut intégrée
+origin-shared-link = le lien partagé

@@ -1,1 +1,159 @@
-# messages
+# O que a caixa diz: mensagens na faixa, notas embaixo dos campos, erros.
+
+number-not-a-number = não é um número
+discs-count = { $count ->
+    [one] { $count } disco
+   *[other] { $count } discos
+}
+
+## Contagens e lições
+count-line = colisões: { $pairs } entre discos
+count-line-walls = colisões: { $pairs } entre discos · { $walls } com paredes
+pi-result = { $count } colisões: π ≈ { $pi }
+
+## O que um método não pode prometer
+warning-verlet = verlet: as colisões perdem energia; o coeficiente de restituição e = { $restitution } não é respeitado
+warning-seed = seed: discos rápidos podem atravessar uns aos outros
+warning-substeps = { $substeps ->
+    [one] { $substeps } subpasso
+   *[other] { $substeps } subpassos
+} por passo: o disco mais rápido anda { $radii }× o seu raio por subpasso e pode atravessar outros
+warning-stall = { $method }: o passo foi encurtado e o tempo da simulação parou de avançar (colisões demais ao mesmo tempo); escolha impulse
+
+## Cenas e arquivos
+file-cannot-create = não foi possível criar { $folder }: { $error }
+file-cannot-write = não foi possível gravar { $file }: { $error }
+scene-cannot-open = Não foi possível abrir { $file }: { $error }
+scene-opened = Cena aberta: { $name }
+scene-kept = { $error } (a cena atual foi mantida)
+scene-reset = Cena reiniciada
+scene-cannot-reset = Não foi possível reiniciar: { $error }
+scene-cleared = Cena limpa: arraste num espaço vazio para lançar discos
+scene-path-empty = Digite primeiro o caminho de um arquivo de cena
+scene-downloaded = Baixado: { $file }
+scene-saved = Salvo: { $file }
+scene-not-saved = Não foi salvo: { $error }
+scene-shared = O endereço da página agora abre esta cena: copie-o da barra de endereço e envie
+scene-not-shared = Não foi compartilhado: { $error }
+undone = Desfeito: { $what } (Ctrl+Shift+Z ou Ctrl+Y refaz)
+nothing-to-undo = Nada para desfazer
+redone = Refeito: { $what }
+nothing-to-redo = Nada para refazer
+
+## Como o desfazer chama as alterações
+edit-open-scene = abrir uma cena
+edit-reset = reiniciar
+edit-clear = limpar
+edit-restitution = restituição
+edit-wall-restitution = restituição nas paredes
+edit-roughness = rugosidade
+edit-wall-roughness = rugosidade nas paredes
+edit-friction = atrito
+edit-gravity = gravidade
+edit-edges = bordas
+edit-method = método
+edit-broad-phase = fase ampla
+edit-substeps = subpassos
+edit-disc = editar um disco
+edit-delete = apagar
+edit-launch = lançar
+edit-fling = arremessar
+edit-aim = definir uma velocidade
+no-room = Sem espaço para um disco novo aqui
+
+## Ajustes mudados por uma tecla
+law-restitution = Restituição e
+law-wall-restitution = Restituição nas paredes
+law-roughness = Rugosidade β
+law-wall-roughness = Rugosidade nas paredes β
+time-scale = Escala de tempo ×{ $scale }
+gravity-now = Gravidade { $gravity }
+method-now = Método: { $method }
+broad-phase-now = Fase ampla: { $broad }
+substeps-now = Subpassos: { $substeps }
+new-disc-radius = Discos novos: raio { $radius }
+new-disc-mass = Discos novos: massa { $mass }
+palette-safe = Discos em cores para daltônicos (Okabe-Ito, pelo número do disco)
+palette-scene = Discos nas cores da cena
+text-size = Tamanho do texto ×{ $scale }
+com-view-off = Vista do centro de massa desligada: velocidades vistas a partir da caixa
+com-view-on = Vista do centro de massa: acompanhando o centro de massa a { $velocity }; Z de novo para sair
+
+## Tempo: próxima colisão, voltar, exportar
+separated = exact precisa dos discos separados: separou { $pairs ->
+    [one] { $pairs } par de discos sobrepostos
+   *[other] { $pairs } pares de discos sobrepostos
+}
+separated-raised = exact precisa dos discos separados: separou { $pairs ->
+    [one] { $pairs } par de discos sobrepostos
+   *[other] { $pairs } pares de discos sobrepostos
+}, o que aumentou a energia em { $energy }
+separated-lowered = exact precisa dos discos separados: separou { $pairs ->
+    [one] { $pairs } par de discos sobrepostos
+   *[other] { $pairs } pares de discos sobrepostos
+}, o que diminuiu a energia em { $energy }
+next-collision-pair = Colisão dos discos { $a } e { $b } em t = { $time }: a quantidade de movimento total deles variou { $momentum }, e a energia cinética, { $energy }
+next-collision-wall = O disco { $disc } bateu na parede { $wall ->
+    [left] esquerda
+    [right] direita
+    [bottom] inferior
+   *[top] superior
+    } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
+next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
+next-collision-none = Nenhuma colisão em { $limit }
+rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
+nothing-recorded = Nada gravado ainda
+exported-downloaded = Totais, discos, colisões e impactos nas paredes baixados como arquivos CSV
+exported = Totais, discos, colisões e impactos nas paredes exportados para { $folder }/
+not-exported = Não foi exportado para { $folder }: { $error }
+wall-name = { $wall ->
+    [left] parede esquerda
+    [right] parede direita
+    [bottom] parede inferior
+   *[top] parede superior
+}
+
+## Editar um disco
+edit-type-a-number = { $name }: digite um número
+edit-not-a-number = { $name }: “{ $text }” não é um número
+edit-not-finite = { $name } precisa ser um número finito
+edit-not-positive = { $name } precisa ser maior que 0
+edit-radius-too-large = o raio pode ser no máximo { $radius } m aqui
+edit-nothing-changed = Nada mudou: digite primeiro um valor novo
+edit-applied = Aplicado ao disco { $disc }
+edit-applied-table = Disco { $disc }: { $values }
+edit-refused-table = Disco { $disc }: { $error }; nada mudou
+edit-mass-overlaps = com { $mass } kg o disco teria { $size } m de raio (tamanho segue a massa) e se sobreporia ao disco { $disc }
+edit-mass-crosses-wall = com { $mass } kg o disco teria { $size } m de raio (tamanho segue a massa) e atravessaria uma parede
+
+## Recuperação
+recovery-unreadable-moved = Um arquivo de recuperação ilegível foi movido para { $file }: { $error }
+recovery-unreadable-kept = Um arquivo de recuperação ilegível não pôde ser movido: { $error }
+autosave-failed = O salvamento automático em { $place } falhou: { $error }
+browser-storage = o armazenamento do navegador
+origin-recovered = recuperada de { $file }
+origin-kept = a sua última caixa livre, guardada por este navegador
+recovery-kept-in = Sessão anterior guardada em { $file }
+recovery-not-set-aside = Não foi possível deixar de lado a sessão anterior: { $error }
+kept-not-set-aside = Não foi possível guardar à parte a sua última caixa livre: { $error }
+recovery-question-browser = Este navegador guardou a sua última caixa livre, { $name } ({ $discs ->
+    [one] { $discs } disco
+   *[other] { $discs } discos
+}). Restaurar ou deixar de lado?
+recovery-question = A última sessão não fechou normalmente. Restaurar a cena dela, { $name } ({ $discs ->
+    [one] { $discs } disco
+   *[other] { $discs } discos
+}), ou deixar de lado?
+sandbox-cannot-open = Não foi possível abrir a caixa livre: { $error }
+link-too-many-discs = { $discs } discos são demais para um link (no máximo { $most }): salve a cena como arquivo
+link-damaged = a cena do link está danificada ({ $error })
+settings-unreadable = Não foi possível ler as configurações em { $file } ({ $error }): valem as configurações padrão
+settings-not-saved = As configurações não foram salvas em { $place }: { $error }
+aimed = Disco { $disc }: velocidade definida como { $velocity }
+dropped-file = arquivo solto
+dropped-not-text = { $name }: não é um arquivo de texto
+dropped-unreadable = { $name }: { $error }
+dropped-empty = um arquivo solto sem conteúdo
+link-cannot-open = A cena deste link não pode ser aberta: { $error }
+origin-default = cena padrão embutida
+origin-shared-link = o link compartilhado

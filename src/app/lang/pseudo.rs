@@ -4,15 +4,16 @@
 
 use std::borrow::Cow;
 
-/// Every ASCII letter of `text` with an accent (Latin-1 and Latin
-/// Extended-A, which the window's fonts draw).
+/// Every ASCII letter of `text` with an accent, or a look-alike where the
+/// window's font (egui's Ubuntu Light) has no accented form (m, v, x: м,
+/// ν, χ).
 pub fn accent(text: &str) -> Cow<'_, str> {
     Cow::Owned(text.chars().map(accented).collect())
 }
 
 fn accented(c: char) -> char {
-    const LOWER: &str = "àƀçďéƒĝĥîĵķļḿñöþɋŕšţüṽŵẋýž";
-    const UPPER: &str = "ÀƁÇĎÉƑĜĤÎĴĶĻḾÑÖÞɊŔŠŢÜṼŴẊÝŽ";
+    const LOWER: &str = "àƀçďéƒĝĥîĵķļмñöþɋŕšţüνŵχýž";
+    const UPPER: &str = "ÀƁÇĎÉƑĜĤÎĴĶĻМÑÖÞɊŔŠŢÜƲŴΧÝŽ";
     match c {
         'a'..='z' => LOWER.chars().nth(c as usize - 'a' as usize).unwrap_or(c),
         'A'..='Z' => UPPER.chars().nth(c as usize - 'A' as usize).unwrap_or(c),

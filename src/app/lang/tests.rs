@@ -16,7 +16,10 @@ fn messages(folder: &str) -> BTreeMap<String, BTreeSet<String>> {
             if line.starts_with('#') || line.trim().is_empty() {
                 continue;
             }
-            let starts_message = !line.starts_with(' ') && line.contains('=');
+            // A message starts at the line's start with its id; a line
+            // that closes a select (`} wall …`) continues the one before.
+            let starts_message =
+                line.starts_with(|c: char| c.is_ascii_alphabetic()) && line.contains('=');
             let trimmed = line.trim_start();
             let starts_attribute =
                 line.starts_with(' ') && trimmed.starts_with('.') && trimmed.contains('=');

@@ -117,6 +117,7 @@ impl Sandbox {
             | NextScale
             | SetTheme(_)
             | SetLanguage(_)
+            | Describe
             | ToggleHelp
             | ToggleSound
             | Fit
@@ -264,6 +265,10 @@ impl Sandbox {
             SelectNext(step) => self.select_next(step),
             AimSelected(dv) => self.aim_selected(dv),
             LaunchAtCentre => self.launch_at_centre(),
+            Describe => {
+                let words = self.describe();
+                self.announce(words);
+            }
             EditDisc { disc, text, from } => self.edit_disc(disc, &text, from),
             DeleteSelected => self.delete_selected(),
             PointerDown(at) => self.pointer_down(at),

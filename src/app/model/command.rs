@@ -108,6 +108,8 @@ pub enum Command {
     AimSelected(DVec2),
     /// A new disc, at rest, at the centre of the view (Enter).
     LaunchAtCentre,
+    /// The scene described in words, said to a screen reader.
+    Describe,
     /// New values typed for disc `disc`, in [`super::edit::FIELDS`] order
     /// (`None`: untouched); read and checked by the model.
     EditDisc {

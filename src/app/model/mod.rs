@@ -32,6 +32,8 @@ pub mod export;
 pub mod gesture;
 pub mod keyboard;
 pub mod lesson;
+pub mod mirror;
+pub mod narration;
 pub mod overlays;
 pub mod panels;
 pub mod pointer;
@@ -148,6 +150,8 @@ pub struct Messages {
     pub table: Option<Note>,
     /// Under the scene's path field.
     pub scene: Option<Note>,
+    /// What is said to a person who cannot see the screen.
+    pub narration: narration::Narration,
 }
 
 /// What only the window can do, asked for by a command and taken by the
@@ -314,7 +318,9 @@ impl Sandbox {
     }
 
     pub fn toast_for(&mut self, message: impl Into<String>, seconds: f64) {
-        self.messages.toast = Some((message.into(), self.session.now + seconds));
+        let message = message.into();
+        self.announce(message.clone());
+        self.messages.toast = Some((message, self.session.now + seconds));
     }
 
     /// The message shown now, if any.

@@ -12,6 +12,7 @@ pub enum DockTab {
     Discs,
     Speeds,
     Momenta,
+    Words,
 }
 
 impl DockTab {
@@ -23,6 +24,7 @@ impl DockTab {
             DockTab::Discs => "Discs",           // not words: the dump's name
             DockTab::Speeds => "Speeds",         // not words: the dump's name
             DockTab::Momenta => "Momenta",       // not words: the dump's name
+            DockTab::Words => "Words",           // not words: the dump's name
         }
     }
 
@@ -34,6 +36,7 @@ impl DockTab {
             DockTab::Discs => tr!("tab-discs"),
             DockTab::Speeds => tr!("tab-speeds"),
             DockTab::Momenta => tr!("tab-momenta"),
+            DockTab::Words => tr!("tab-words"),
         }
     }
 }

@@ -243,7 +243,7 @@ pub(super) mod keep {
     }
 
     pub fn place(_path: &Path) -> String {
-        tr!("browser-storage")
+        crate::app::lang::tr!("browser-storage")
     }
 }
 

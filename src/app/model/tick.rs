@@ -55,6 +55,7 @@ impl Sandbox {
         self.steps.steps_dropped = due - steps;
         self.after_steps(steps);
         self.hear(listened, frame_seconds);
+        self.narrate();
         if self.view.fitted && self.follows_discs() {
             self.fit_camera();
         }

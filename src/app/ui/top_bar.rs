@@ -213,9 +213,10 @@ fn walls_pushed(cx: &Cx) -> bool {
     (world.metrics().momentum - first.momentum).length() > 1e-9 * scale
 }
 
-/// The sound button's label: 🔊 on, 🔈 on but silent now (paused, or
-/// faster than ×2), 🔇 off.
-fn sound_label(cx: &Cx, label: &str) -> String {
+/// The sound button's label, an icon (its name and key on hover, so that
+/// the top bar keeps its room at a projector's scale): 🔊 on, 🔈 on but
+/// silent now (paused, or faster than ×2), 🔇 off.
+fn sound_label(cx: &Cx) -> String {
     let model = cx.model;
     let icon = match (
         model.session.sound.on,
@@ -225,7 +226,7 @@ fn sound_label(cx: &Cx, label: &str) -> String {
         (true, false) => "🔈",
         (false, _) => "🔇",
     };
-    format!("{icon} {label}")
+    icon.to_string()
 }
 
 impl TopBar {
@@ -248,7 +249,7 @@ impl TopBar {
             )
         };
         let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or_default();
-        let sound = sound_label(cx, &label(&Command::ToggleSound));
+        let sound = sound_label(cx);
         let mut buttons: Vec<(String, Command, &str)> =
             vec![(label(&Command::ShowStart), Command::ShowStart, "start")];
         buttons.push((sound, Command::ToggleSound, "sound"));
@@ -264,6 +265,25 @@ impl TopBar {
         let [name, time, state] = essential;
         let fixed =
             galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
+        // Where the buttons' words would leave the time and the state no
+        // room (long words at a projector's scale), the buttons that have
+        // an icon show only it, their words on hover.
+        let padding = ui.spacing().button_padding.x * 2.0 + 8.0;
+        let buttons_width: f32 = buttons
+            .iter()
+            .map(|(l, _, _)| galley(ui, &RichText::new(l.as_str())).size().x + padding)
+            .sum();
+        if ui.available_width() - buttons_width < fixed + more_width + 40.0 + 2.0 * spacing {
+            for (label, _, _) in &mut buttons {
+                if let Some(icon) = label
+                    .split_whitespace()
+                    .next()
+                    .filter(|w| !w.chars().any(char::is_alphanumeric))
+                {
+                    *label = icon.to_string();
+                }
+            }
+        }
         // The buttons first, from the right; the line gets what they leave.
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             ui.spacing_mut().item_spacing.x = 8.0;

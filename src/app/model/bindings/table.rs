@@ -385,4 +385,5 @@ pub static LABELS: &[(Command, &str)] = &[
     (C::ShowAllControls, "label-show-all-controls"),
     (C::ReopenKept, "label-reopen-kept"),
     (C::ToggleSound, "label-toggle-sound"),
+    (C::Describe, "label-describe"),
 ];

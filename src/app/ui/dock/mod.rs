@@ -4,7 +4,9 @@
 //! [`tabs`]: *Totals* plots p_x, p_y, L and the energy against time;
 //! *Collisions* is the ledger; *Discs* the table of every disc; *Speeds*
 //! the histogram against Maxwell–Boltzmann; *Momenta* every disc's
-//! momentum tip to tail and their sum.
+//! momentum tip to tail and their sum; *In words* the scene described and
+//! what was said as it happened (for a screen reader, in the browser's
+//! page too).
 
 mod collisions;
 pub mod discs;
@@ -12,6 +14,7 @@ mod momenta;
 mod plots;
 mod speeds;
 mod totals;
+mod words;
 
 use super::{Cx, View};
 use crate::app::model::{Command, DockTab};
@@ -25,6 +28,7 @@ fn tabs() -> Vec<(DockTab, Box<dyn View>)> {
         (DockTab::Discs, Box::new(discs::DiscsTable::default())),
         (DockTab::Speeds, Box::new(speeds::Speeds)),
         (DockTab::Momenta, Box::new(momenta::Momenta)),
+        (DockTab::Words, Box::new(words::Words)),
     ]
 }
 
@@ -61,7 +65,49 @@ impl BottomDock {
                 .layout(egui::Layout::left_to_right(egui::Align::Center)),
         );
         strip.set_clip_rect(row_rect.intersect(ui.clip_rect()));
-        for (tab, _) in &self.tabs {
+        // The dock's fold button: an arrow (its word on hover), so that
+        // the tabs' names keep the row.
+        let (toggle_label, toggle_hover) = if model.panels.dock_expanded {
+            ("🔽", crate::app::lang::tr!("dock-hide"))
+        } else {
+            ("🔼", crate::app::lang::tr!("dock-show"))
+        };
+        // Where the tabs' names do not all fit on the row (long words, a
+        // projector's scale), the row offers them as one list instead.
+        let spacing = strip.spacing().item_spacing.x;
+        let width = |text: &str| {
+            let padding = strip.spacing().button_padding.x * 2.0;
+            let galley = egui::WidgetText::from(RichText::new(text).strong()).into_galley(
+                &strip,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Button,
+            );
+            galley.size().x + padding
+        };
+        let wanted: f32 = self
+            .tabs
+            .iter()
+            .map(|(t, _)| width(&t.title()))
+            .sum::<f32>()
+            + width(toggle_label)
+            + spacing * self.tabs.len() as f32
+            + 2.0;
+        if wanted > row_rect.width() {
+            let chosen = model.panels.tab;
+            let r = egui::ComboBox::from_id_salt("tab_menu")
+                .selected_text(RichText::new(chosen.title()).strong())
+                .show_ui(&mut strip, |ui| {
+                    for (tab, _) in &self.tabs {
+                        if ui.selectable_label(*tab == chosen, tab.title()).clicked() {
+                            cx.send(Command::ShowTab(*tab));
+                        }
+                    }
+                })
+                .response;
+            cx.note("tab_menu", &r);
+        }
+        for (tab, _) in self.tabs.iter().filter(|_| wanted <= row_rect.width()) {
             let chosen = model.panels.tab == *tab && expanded;
             let r = strip.selectable_label(chosen, RichText::new(tab.title()).strong());
             cx.note(format!("tab_{}", tab.key().to_lowercase()), &r);
@@ -76,12 +122,7 @@ impl BottomDock {
             }
         }
         strip.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            let label = if model.panels.dock_expanded {
-                crate::app::lang::tr!("dock-hide")
-            } else {
-                crate::app::lang::tr!("dock-show")
-            };
-            let r = ui.button(label);
+            let r = ui.button(toggle_label).on_hover_text(toggle_hover);
             cx.note("dock_toggle", &r);
             if r.clicked() {
                 cx.send(Command::ToggleDockExpanded);

@@ -1,0 +1,329 @@
+//! The sandbox in words, for a person who cannot see the screen: what
+//! happens, said as it happens (every message of the strip, the newest
+//! impact at most every [`IMPACT_GAP`] seconds, the π blocks' count once it
+//! is final), and the scene described on request ([`Sandbox::describe`]).
+//! The browser hands each line to its `aria-live` region; the desktop shows
+//! them in the *In words* tab.
+
+use super::lesson::pi_result;
+use super::Sandbox;
+use crate::app::lang::tr;
+use crate::app::numbers::{plain, vector, with_unit};
+use glam::DVec2;
+use impulse::ledger::Impact;
+use std::collections::VecDeque;
+
+/// Least time between two impacts said (window seconds): a gas would
+/// otherwise talk without end.
+pub const IMPACT_GAP: f64 = 2.0;
+/// Lines kept for the *In words* tab.
+pub const KEEP: usize = 30;
+/// Discs a description names one by one; the rest are summed up.
+pub const DESCRIBED_DISCS: usize = 8;
+
+/// What was said and what is still to be handed on.
+#[derive(Clone, Debug, Default)]
+pub struct Narration {
+    /// Lines said, newest last, with the window's time.
+    pub said: VecDeque<(f64, String)>,
+    /// Lines not yet handed to the page's live region.
+    unread: Vec<String>,
+    /// The ledger's impacts counted so far.
+    seen: u64,
+    /// When an impact was last said (window time).
+    impact_said_at: Option<f64>,
+    /// The π blocks' count was said.
+    pi_said: bool,
+}
+
+impl Narration {
+    fn say(&mut self, now: f64, text: String) {
+        if self.said.back().is_some_and(|(_, last)| *last == text) {
+            return;
+        }
+        self.unread.push(text.clone());
+        self.said.push_back((now, text));
+        while self.said.len() > KEEP {
+            self.said.pop_front();
+        }
+    }
+}
+
+/// One impact in words: who hit whom, and the momentum (or speed, at a
+/// wall) before and after.
+pub fn impact_words(impact: &Impact) -> String {
+    match impact {
+        Impact::Pair(c) => {
+            let (a0, a1) = c.momentum(0);
+            let (b0, b1) = c.momentum(1);
+            tr!(
+                "said-pair",
+                a = c.discs[0],
+                b = c.discs[1],
+                before = with_unit((a0 + b0).length(), 2, "kg·m/s"),
+                after = with_unit((a1 + b1).length(), 2, "kg·m/s")
+            )
+        }
+        Impact::Wall(w) => tr!(
+            "said-wall",
+            disc = w.disc,
+            wall = w.wall.name(),
+            before = with_unit(w.before.length(), 2, "m/s"),
+            after = with_unit(w.after.length(), 2, "m/s")
+        ),
+    }
+}
+
+/// Where in the box a point is, in words: "at the left", "at the top
+/// right", "in the middle".
+fn place_words(at: DVec2, size: DVec2) -> String {
+    let third = |v: f64, len: f64| ((v / len * 3.0).floor() as i32).clamp(0, 2);
+    let (col, row) = (third(at.x, size.x), third(at.y, size.y));
+    let id = match (row, col) {
+        (1, 1) => "place-middle",
+        (1, 0) => "place-left",
+        (1, 2) => "place-right",
+        (0, 1) => "place-bottom",
+        (2, 1) => "place-top",
+        (0, 0) => "place-bottom-left",
+        (0, 2) => "place-bottom-right",
+        (2, 0) => "place-top-left",
+        _ => "place-top-right",
+    };
+    crate::app::lang::text(id, &[])
+}
+
+/// A velocity in words: "at rest", or "moving up and to the right at
+/// 2.00 m/s".
+fn motion_words(v: DVec2) -> String {
+    let speed = v.length();
+    if speed < 1e-3 {
+        return tr!("motion-rest");
+    }
+    // Eight directions, counter-clockwise from "right".
+    let k = ((v.y.atan2(v.x) / std::f64::consts::FRAC_PI_4).round() as i32).rem_euclid(8);
+    let direction = crate::app::lang::text(
+        [
+            "direction-right",
+            "direction-up-right",
+            "direction-up",
+            "direction-up-left",
+            "direction-left",
+            "direction-down-left",
+            "direction-down",
+            "direction-down-right",
+        ][k as usize],
+        &[],
+    );
+    tr!(
+        "motion-moving",
+        direction = direction,
+        speed = with_unit(speed, 2, "m/s")
+    )
+}
+
+impl Sandbox {
+    /// Says `text` to a person who cannot see the screen.
+    pub fn announce(&mut self, text: String) {
+        let now = self.session.now;
+        self.messages.narration.say(now, text);
+    }
+
+    /// The lines not yet handed to the page's live region.
+    pub fn take_announcements(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.messages.narration.unread)
+    }
+
+    /// After the frame's steps: the newest impact, unless one was said a
+    /// moment ago, and the π blocks' count once it is final.
+    pub(super) fn narrate(&mut self) {
+        let now = self.session.now;
+        let recorded = self.world.ledger.recorded_impacts();
+        let narration = &mut self.messages.narration;
+        if recorded < narration.seen {
+            // A new scene, a reset, a rewind: counted afresh.
+            narration.seen = recorded;
+            narration.pi_said = false;
+        }
+        let new = recorded > narration.seen;
+        narration.seen = recorded;
+        if let (Some(result), false) = (pi_result(&self.world), narration.pi_said) {
+            narration.pi_said = true;
+            narration.impact_said_at = Some(now);
+            return self.announce(result);
+        }
+        let quiet = narration
+            .impact_said_at
+            .is_none_or(|t| now - t >= IMPACT_GAP);
+        if new && quiet && !self.clock.paused {
+            let newest = self.world.ledger.impacts().next_back().map(impact_words);
+            if let Some(words) = newest {
+                self.messages.narration.impact_said_at = Some(now);
+                self.announce(words);
+            }
+        }
+    }
+
+    /// The scene in words: the box, the laws that matter, each disc (up to
+    /// [`DESCRIBED_DISCS`]: where it is and how it moves), the time and the
+    /// totals.
+    pub fn describe(&self) -> String {
+        let w = &self.world;
+        let size = w.laws.size;
+        let n = w.particles.len();
+        let mut lines = vec![tr!(
+            "describe-box",
+            discs = n,
+            width = plain(size.x, 1),
+            height = plain(size.y, 1),
+            edges = match w.laws.boundary {
+                impulse::Boundary::Box => "box",
+                impulse::Boundary::Open => "open",
+                impulse::Boundary::Periodic => "periodic",
+            }
+        )];
+        let g = w.laws.gravity.length();
+        lines.push(if g > 0.0 {
+            tr!("describe-gravity", gravity = with_unit(g, 2, "m/s²"))
+        } else {
+            tr!("describe-no-gravity")
+        });
+        lines.push(tr!(
+            "describe-restitution",
+            restitution = plain(w.laws.restitution, 2)
+        ));
+        for (i, p) in w.particles.iter().enumerate().take(DESCRIBED_DISCS) {
+            lines.push(tr!(
+                "describe-disc",
+                disc = i,
+                mass = with_unit(p.mass, 3, "kg"),
+                place = place_words(p.pos, size),
+                motion = motion_words(p.vel)
+            ));
+        }
+        if n > DESCRIBED_DISCS {
+            let mean = w.particles.iter().map(|p| p.vel.length()).sum::<f64>() / n as f64;
+            lines.push(tr!(
+                "describe-more",
+                more = n - DESCRIBED_DISCS,
+                speed = with_unit(mean, 2, "m/s")
+            ));
+        }
+        let m = w.metrics();
+        lines.push(tr!(
+            "describe-totals",
+            time = with_unit(w.time, 2, "s"),
+            state = if self.clock.paused {
+                "paused"
+            } else {
+                "running"
+            },
+            momentum = vector(m.momentum, 2, "kg·m/s"),
+            energy = with_unit(m.kinetic_energy, 2, "J")
+        ));
+        lines.join(" ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::sandbox_in;
+    use super::super::Command;
+    use super::*;
+
+    #[test]
+    fn a_description_names_the_box_and_every_disc() {
+        let dir = tempfile::tempdir().unwrap();
+        let s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        let text = s.describe();
+        let n = s.world.particles.len();
+        assert!(text.contains(&format!("{n} discs")), "{text}");
+        for i in 0..n {
+            assert!(text.contains(&format!("Disc {i}, ")), "{text}");
+        }
+        assert!(text.contains("metre box"), "{text}");
+        let moving = s
+            .world
+            .particles
+            .iter()
+            .filter(|p| p.vel.length() > 1e-3)
+            .count();
+        assert_eq!(text.matches("moving ").count(), moving, "{text}");
+    }
+
+    #[test]
+    fn directions_and_places_are_the_right_ones() {
+        assert_eq!(
+            motion_words(DVec2::new(2.0, 0.0)),
+            "moving right at 2.00 m/s"
+        );
+        assert_eq!(
+            motion_words(DVec2::new(-1.0, -1.0)).split(" at ").next(),
+            Some("moving down and to the left")
+        );
+        assert_eq!(motion_words(DVec2::ZERO), "at rest");
+        let size = DVec2::new(9.0, 9.0);
+        assert_eq!(place_words(DVec2::new(1.0, 4.5), size), "at the left");
+        assert_eq!(place_words(DVec2::new(8.0, 8.0), size), "at the top right");
+        assert_eq!(place_words(DVec2::new(4.5, 4.5), size), "in the middle");
+    }
+
+    #[test]
+    fn impacts_are_said_at_most_every_gap_and_the_pi_count_once() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-7-pi-blocks.toml");
+        s.apply(Command::TogglePause);
+        let mut said_at = Vec::new();
+        let mut t = 0.0;
+        for _ in 0..(40 * 60) {
+            t += 1.0 / 60.0;
+            s.begin_frame(t);
+            s.tick(1.0 / 60.0, 1.0);
+            for line in s.take_announcements() {
+                said_at.push((t, line));
+            }
+        }
+        let impacts: Vec<f64> = said_at
+            .iter()
+            .filter(|(_, l)| l.starts_with("Disc "))
+            .map(|(t, _)| *t)
+            .collect();
+        assert!(!impacts.is_empty());
+        for pair in impacts.windows(2) {
+            assert!(pair[1] - pair[0] >= IMPACT_GAP - 1e-9, "{pair:?}");
+        }
+        let pi: Vec<&String> = said_at
+            .iter()
+            .map(|(_, l)| l)
+            .filter(|l| l.contains("π ≈"))
+            .collect();
+        assert_eq!(pi, [&"31 collisions: π ≈ 3.1".to_string()]);
+    }
+
+    #[test]
+    fn a_pair_is_said_with_its_momentum_before_and_after() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        s.apply(Command::NextCollision);
+        let newest = *s.world.ledger.impacts().next_back().unwrap();
+        let words = impact_words(&newest);
+        let Impact::Pair(c) = newest else {
+            panic!("head-on starts with a pair")
+        };
+        let (a0, _) = c.momentum(0);
+        let (b0, _) = c.momentum(1);
+        let p = with_unit((a0 + b0).length(), 2, "kg·m/s");
+        assert_eq!(
+            words,
+            format!(
+                "Disc {} hit disc {}: momentum before {p}, after {p}",
+                c.discs[0], c.discs[1]
+            )
+        );
+        // The toast of J is said too.
+        assert!(s
+            .take_announcements()
+            .iter()
+            .any(|l| l.starts_with("Collision of discs")));
+    }
+}

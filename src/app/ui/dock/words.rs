@@ -1,0 +1,36 @@
+//! The *In words* tab: the scene described, and what the sandbox said as it
+//! happened, newest first: the text a screen reader reads in the browser
+//! (the page's live region), here for anyone who wants it in words.
+
+use super::super::widgets::command_button;
+use super::{Cx, View};
+use crate::app::lang::tr;
+use crate::app::model::Command;
+
+/// The tab (no state of its own).
+pub struct Words;
+
+impl View for Words {
+    fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
+        let model = cx.model;
+        ui.horizontal_wrapped(|ui| {
+            command_button(ui, cx, Command::Describe, Some("describe"));
+            ui.label(tr!("words-line"));
+        });
+        egui::ScrollArea::vertical()
+            .id_salt("words")
+            .auto_shrink([false, true])
+            .show(ui, |ui| {
+                let said = &model.messages.narration.said;
+                if said.is_empty() {
+                    ui.label(tr!("words-none"));
+                }
+                for (at, line) in said.iter().rev() {
+                    ui.horizontal_wrapped(|ui| {
+                        ui.weak(format!("{} s", crate::app::numbers::plain(*at, 1)));
+                        ui.add(egui::Label::new(line).wrap());
+                    });
+                }
+            });
+    }
+}
