@@ -242,3 +242,26 @@ fn value_errors_give_the_line_of_the_field_too() {
     let msg = error_of("[world]\nsize = [10.0, 10.0]\nrestitution = 1.5\n");
     assert!(msg.contains("line 3: world.restitution"), "{msg}");
 }
+
+/// A scene's own name and description in other languages: read, kept when
+/// saved, and the scene's own where a language has none.
+#[test]
+fn translations_are_read_kept_and_fall_back_to_the_scenes_own() {
+    let text = "name = \"Head-on\"\ndescription = \"Two discs\"\n\n[world]\nsize = [4.0, 4.0]\n\n\
+                [translations.es]\nname = \"Choque frontal\"\n\n\
+                [translations.pt-BR]\nname = \"Frontal\"\ndescription = \"Dois discos\"\n";
+    let scene = impulse::Scene::parse(text, "test").unwrap();
+    assert_eq!(scene.name_in("es"), Some("Choque frontal"));
+    assert_eq!(
+        scene.description_in("es"),
+        Some("Two discs"),
+        "no Spanish description"
+    );
+    assert_eq!(scene.description_in("pt-BR"), Some("Dois discos"));
+    assert_eq!(scene.name_in("de"), Some("Head-on"), "no German at all");
+    let again = impulse::Scene::parse(&scene.to_toml(), "again").unwrap();
+    assert_eq!(again.translations, scene.translations);
+    let bad = "[world]\nsize = [4.0, 4.0]\n\n[translations.es]\ntitle = \"x\"\n";
+    let err = impulse::Scene::parse(bad, "bad").unwrap_err().to_string();
+    assert!(err.contains("title"), "{err}");
+}

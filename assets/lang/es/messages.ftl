@@ -1,1 +1,159 @@
-# messages
+# Lo que dice el experimento: mensajes en la franja, notas bajo los campos, errores.
+
+number-not-a-number = no es un número
+discs-count = { $count ->
+    [one] 1 disco
+   *[other] { $count } discos
+}
+
+## Recuentos y lecciones
+count-line = choques: { $pairs } entre discos
+count-line-walls = choques: { $pairs } entre discos · { $walls } con paredes
+pi-result = { $count } choques: π ≈ { $pi }
+
+## Lo que un método no puede prometer
+warning-verlet = verlet: los choques pierden energía; no se respeta la restitución e = { $restitution }
+warning-seed = seed: los discos rápidos pueden atravesarse
+warning-substeps = { $substeps ->
+    [one] 1 subpaso
+   *[other] { $substeps } subpasos
+} por paso: el disco más rápido avanza { $radii }× su radio en cada subpaso y puede atravesar a otros
+warning-stall = { $method }: el paso se cortó y el tiempo de la simulación ha dejado de avanzar (demasiados choques a la vez); elige impulse
+
+## Escenas y archivos
+file-cannot-create = no se puede crear { $folder }: { $error }
+file-cannot-write = no se puede escribir { $file }: { $error }
+scene-cannot-open = No se puede abrir { $file }: { $error }
+scene-opened = Se abrió { $name }
+scene-kept = { $error } (se mantiene la escena actual)
+scene-reset = Escena reiniciada
+scene-cannot-reset = No se puede reiniciar: { $error }
+scene-cleared = Discos quitados: arrastra sobre un espacio vacío para lanzar discos
+scene-path-empty = Escribe primero la ruta de un archivo de escena
+scene-downloaded = Se descargó { $file }
+scene-saved = Se guardó { $file }
+scene-not-saved = No se guardó: { $error }
+scene-shared = La dirección de la página abre ahora esta escena: cópiala de la barra de direcciones y envíala
+scene-not-shared = No se compartió: { $error }
+undone = Deshecho: { $what } (Ctrl+Mayús+Z o Ctrl+Y lo rehace)
+nothing-to-undo = Nada que deshacer
+redone = Rehecho: { $what }
+nothing-to-redo = Nada que rehacer
+
+## Lo que nombra Deshacer
+edit-open-scene = abrir una escena
+edit-reset = reiniciar
+edit-clear = quitar los discos
+edit-restitution = restitución
+edit-wall-restitution = restitución en las paredes
+edit-roughness = rugosidad
+edit-wall-roughness = rugosidad en las paredes
+edit-friction = rozamiento
+edit-gravity = gravedad
+edit-edges = bordes
+edit-method = método
+edit-broad-phase = fase amplia
+edit-substeps = subpasos
+edit-disc = editar un disco
+edit-delete = borrar
+edit-launch = lanzar un disco nuevo
+edit-fling = lanzar un disco
+edit-aim = fijar una velocidad
+no-room = Aquí no hay espacio para un disco nuevo
+
+## Ajustes cambiados con una tecla
+law-restitution = Restitución e
+law-wall-restitution = Restitución en las paredes
+law-roughness = Rugosidad β
+law-wall-roughness = Rugosidad β en las paredes
+time-scale = Escala de tiempo ×{ $scale }
+gravity-now = Gravedad { $gravity }
+method-now = Método: { $method }
+broad-phase-now = Fase amplia: { $broad }
+substeps-now = Subpasos: { $substeps }
+new-disc-radius = Discos nuevos: radio { $radius }
+new-disc-mass = Discos nuevos: masa { $mass }
+palette-safe = Discos con paleta apta para daltónicos (Okabe-Ito, según el número de disco)
+palette-scene = Discos con los colores de la escena
+text-size = Tamaño del texto ×{ $scale }
+com-view-off = Vista del centro de masas desactivada: velocidades vistas desde la caja
+com-view-on = Vista del centro de masas: moviéndose con el centro de masas a { $velocity }; Z otra vez para salir
+
+## Tiempo: siguiente choque, rebobinar, exportar
+separated = exact necesita los discos separados: separó { $pairs ->
+    [one] 1 par de discos solapados
+   *[other] { $pairs } pares de discos solapados
+}
+separated-raised = exact necesita los discos separados: separó { $pairs ->
+    [one] 1 par de discos solapados
+   *[other] { $pairs } pares de discos solapados
+}, lo que aumentó la energía en { $energy }
+separated-lowered = exact necesita los discos separados: separó { $pairs ->
+    [one] 1 par de discos solapados
+   *[other] { $pairs } pares de discos solapados
+}, lo que redujo la energía en { $energy }
+next-collision-pair = Choque de los discos { $a } y { $b } en t = { $time }: su cantidad de movimiento total cambió en { $momentum } y su energía cinética en { $energy }
+next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
+    [left] izquierda
+    [right] derecha
+    [bottom] inferior
+   *[top] superior
+} en t = { $time }: la pared lo empujó con { $impulse }; su energía cinética cambió en { $energy }
+next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
+next-collision-none = Ningún choque en { $limit }
+rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí
+nothing-recorded = Aún no hay nada grabado
+exported-downloaded = Se descargaron los totales, discos, choques e impactos en paredes como archivos CSV
+exported = Se exportaron los totales, discos, choques e impactos en paredes a { $folder }/
+not-exported = No se exportó a { $folder }: { $error }
+wall-name = { $wall ->
+    [left] pared izquierda
+    [right] pared derecha
+    [bottom] pared inferior
+   *[top] pared superior
+}
+
+## Editar un disco
+edit-type-a-number = { $name }: escribe un número
+edit-not-a-number = { $name }: “{ $text }” no es un número
+edit-not-finite = { $name }: debe ser un número finito
+edit-not-positive = { $name }: debe ser mayor que 0
+edit-radius-too-large = aquí el radio debe ser como máximo { $radius } m
+edit-nothing-changed = No cambió nada: escribe primero un valor nuevo
+edit-applied = Aplicado al disco { $disc }
+edit-applied-table = Disco { $disc }: { $values }
+edit-refused-table = Disco { $disc }: { $error }; no cambió nada
+edit-mass-overlaps = con { $mass } kg el disco tendría { $size } m de radio (el tamaño sigue a la masa) y se solaparía con el disco { $disc }
+edit-mass-crosses-wall = con { $mass } kg el disco tendría { $size } m de radio (el tamaño sigue a la masa) y atravesaría una pared
+
+## Recuperación
+recovery-unreadable-moved = Un archivo de recuperación ilegible se movió a { $file }: { $error }
+recovery-unreadable-kept = No se pudo mover un archivo de recuperación ilegible: { $error }
+autosave-failed = Falló el guardado automático en { $place }: { $error }
+browser-storage = el almacenamiento del navegador
+origin-recovered = recuperado de { $file }
+origin-kept = tu último experimento, guardado por este navegador
+recovery-kept-in = Sesión anterior guardada en { $file }
+recovery-not-set-aside = No se pudo dejar aparte la sesión anterior: { $error }
+kept-not-set-aside = No se pudo dejar aparte tu último experimento: { $error }
+recovery-question-browser = Este navegador guardó tu último experimento, { $name } ({ $discs ->
+    [one] 1 disco
+   *[other] { $discs } discos
+}). ¿Restaurarlo o dejarlo aparte?
+recovery-question = La última sesión no se cerró bien. ¿Restaurar su escena, { $name } ({ $discs ->
+    [one] 1 disco
+   *[other] { $discs } discos
+}), o dejarla aparte?
+sandbox-cannot-open = No se puede abrir el experimento: { $error }
+link-too-many-discs = { $discs } discos son demasiados para un enlace (como máximo { $most }): guarda la escena en un archivo
+link-damaged = la escena del enlace está dañada ({ $error })
+settings-unreadable = No se pudieron leer los ajustes de { $file } ({ $error }): se usan los valores predeterminados
+settings-not-saved = Los ajustes no se guardaron en { $place }: { $error }
+aimed = Disco { $disc }: velocidad fijada en { $velocity }
+dropped-file = archivo soltado
+dropped-not-text = { $name }: no es un archivo de texto
+dropped-unreadable = { $name }: { $error }
+dropped-empty = un archivo soltado sin contenido
+link-cannot-open = No se puede abrir la escena de este enlace: { $error }
+origin-default = escena predeterminada incorporada
+origin-shared-link = el enlace compartido

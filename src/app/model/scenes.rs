@@ -418,6 +418,26 @@ mod tests {
     use super::*;
 
     #[test]
+    fn every_preset_has_its_name_and_description_in_every_language() {
+        for p in &PRESETS {
+            let scene = Scene::parse(p.text, p.path).unwrap();
+            for lang in &crate::app::lang::Lang::SHIPPED[1..] {
+                let words = scene.translations.get(lang.code());
+                let (name, description) = words
+                    .map(|w| (w.name.as_deref(), w.description.as_deref()))
+                    .unwrap_or_default();
+                assert!(
+                    name.is_some_and(|n| n != scene.name.as_deref().unwrap_or_default())
+                        && description.is_some(),
+                    "{}: no {} name or description",
+                    p.path,
+                    lang.code()
+                );
+            }
+        }
+    }
+
+    #[test]
     fn slugs_are_file_names() {
         assert_eq!(slug("Head-on, equal masses"), "head-on-equal-masses");
         assert_eq!(slug("  Blocks that count π!  "), "blocks-that-count");

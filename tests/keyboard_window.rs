@@ -1,0 +1,214 @@
+//! The window from the keyboard alone, under Xvfb with xdotool: Tab and
+//! Shift+Tab walk the controls in reading order with a ring round the one
+//! that has the keys (in both themes); while a control has them, the
+//! world's keys rest and Space presses the control; Esc gives them back;
+//! and the world itself answers keys: Q selects a disc, the arrow keys aim
+//! it while paused, Enter puts a new disc at the centre.
+
+#[path = "window_harness/mod.rs"]
+mod harness;
+
+use harness::*;
+use serde_json::Value;
+
+fn main() -> std::process::ExitCode {
+    harness::run(vec![
+        (
+            "tab_walks_the_controls_in_reading_order_with_a_ring_in_the_dark_theme",
+            tab_walks_the_controls_in_reading_order_with_a_ring_in_the_dark_theme,
+        ),
+        (
+            "the_ring_shows_in_the_light_theme_too",
+            the_ring_shows_in_the_light_theme_too,
+        ),
+        (
+            "while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back",
+            while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back,
+        ),
+        (
+            "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
+            q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre,
+        ),
+    ])
+}
+
+fn focus(s: &Value) -> Option<String> {
+    s["ui"]["focus"].as_str().map(str::to_string)
+}
+
+/// Presses Tab `n` times and returns the named control that had the keys
+/// after each press.
+fn tabs(app: &Sandbox, n: usize) -> Vec<Option<String>> {
+    (0..n)
+        .map(|_| {
+            app.xdo(&["key", "Tab"]);
+            focus(&app.wait_frames(3))
+        })
+        .collect()
+}
+
+/// Walks to `name` with Tab, with the window's screenshot taken when it
+/// closes, and checks the ring round it there in `ring` (RGB).
+fn ring_round_a_focused_button(x: &Xvfb, args: &[&str], ring: [u8; 3]) {
+    let dir = tempfile::tempdir().unwrap();
+    let shot = dir.path().join("ring.png");
+    let shot_arg = shot.to_str().unwrap().to_string();
+    let mut all = vec!["--paused", "--screenshot", &shot_arg];
+    all.extend_from_slice(args);
+    let app = Sandbox::start(x, &all);
+    app.move_to([300.0, 300.0]);
+    app.wait_frames(3);
+    let seen = tabs(&app, 3);
+    let Some(name) = seen.last().cloned().flatten() else {
+        panic!("no named control has the keys after three Tabs: {seen:?}");
+    };
+    let s = app.wait_frames(3);
+    let r = s["panel_widgets"][&name].as_array().unwrap().clone();
+    let [x0, y0, w, _] = [0, 1, 2, 3].map(|k| r[k].as_f64().unwrap());
+    app.quit();
+    let image = image::open(&shot).unwrap().to_rgb8();
+    // Above the control's top edge, across its width: the ring's colour.
+    let near = |p: &image::Rgb<u8>| (0..3).all(|k| (p[k] as i32 - ring[k] as i32).abs() <= 40);
+    let mut hits = 0;
+    let mut looked = 0;
+    for dy in 1..=7 {
+        let y = (y0 - dy as f64).round();
+        if y < 0.0 {
+            continue;
+        }
+        for k in 0..20 {
+            let x = (x0 + w * (k as f64 + 0.5) / 20.0).round();
+            looked += 1;
+            if near(image.get_pixel(x as u32, y as u32)) {
+                hits += 1;
+            }
+        }
+    }
+    assert!(
+        hits >= 20,
+        "a ring of {ring:?} above {name} ({r:?}): {hits} of {looked} pixels"
+    );
+}
+
+fn tab_walks_the_controls_in_reading_order_with_a_ring_in_the_dark_theme() {
+    let x = Xvfb::start("tab order");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 300.0]);
+    app.wait_frames(3);
+    let seen = tabs(&app, 8);
+    let at = |name: &str| {
+        seen.iter()
+            .position(|f| f.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("Tab never reached {name}: {seen:?}"))
+    };
+    // The top bar's button, then the side dock from its first row.
+    assert!(
+        at("start") < at("play") && at("play") < at("step") && at("step") < at("reset"),
+        "{seen:?}"
+    );
+    // Shift+Tab goes back one.
+    let before = seen.last().cloned().flatten();
+    app.xdo(&["key", "shift+Tab"]);
+    let back = focus(&app.wait_frames(3));
+    assert_ne!(back, before, "Shift+Tab moved: {seen:?}");
+    assert!(back.is_some(), "to a named control: {seen:?}");
+    app.quit();
+    ring_round_a_focused_button(&x, &[], [255, 200, 0]);
+}
+
+fn the_ring_shows_in_the_light_theme_too() {
+    let x = Xvfb::start("ring");
+    ring_round_a_focused_button(&x, &["--light"], [0, 80, 200]);
+}
+
+fn while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back() {
+    let x = Xvfb::start("keys");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "1"]); // head-on: two discs that meet
+    let start = app.wait_frames(3);
+    let seen = tabs(&app, 8);
+    let k = seen
+        .iter()
+        .position(|f| f.as_deref() == Some("step"))
+        .unwrap_or_else(|| panic!("Tab reaches Step: {seen:?}"));
+    // Back to Step.
+    for _ in k + 1..seen.len() {
+        app.xdo(&["key", "shift+Tab"]);
+        app.wait_frames(2);
+    }
+    assert_eq!(
+        focus(&app.wait_frames(3)).as_deref(),
+        Some("step"),
+        "{seen:?}"
+    );
+    // J is the world's: it waits.
+    app.xdo(&["key", "j"]);
+    let s = app.wait_frames(5);
+    assert_eq!(s["ui"]["tab"], start["ui"]["tab"]);
+    assert_eq!(s["time"], start["time"], "J did not run");
+    assert_eq!(s["ui"]["typing"], true);
+    // Space presses the focused Step: one step, still paused.
+    app.xdo(&["key", "space"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["paused"], true);
+    assert!(
+        s["time"].as_f64().unwrap() > start["time"].as_f64().unwrap(),
+        "a step"
+    );
+    assert_eq!(focus(&s).as_deref(), Some("step"), "Space kept it there");
+    // Esc gives the keys back.
+    app.xdo(&["key", "Escape"]);
+    let s = app.wait_frames(3);
+    assert_eq!(focus(&s), None);
+    app.xdo(&["key", "j"]);
+    let s = app.wait_for("J", 60, |s| s["ui"]["tab"] == "Collisions");
+    assert!(
+        s["collisions_recorded"].as_u64().unwrap() >= 1,
+        "J ran to the collision"
+    );
+    app.quit();
+}
+
+fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {
+    let x = Xvfb::start("world keys");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "1"]);
+    let s = app.wait_frames(3);
+    let n = s["particles"].as_array().unwrap().len();
+    app.xdo(&["key", "q"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["selected"], 0);
+    let vy = |s: &Value| s["particles"][0]["vel"][1].as_f64().unwrap();
+    let before = vy(&s);
+    let camera = View::of(&s).center;
+    for _ in 0..3 {
+        app.xdo(&["key", "Up"]);
+        app.wait_frames(2);
+    }
+    let s = app.wait_frames(3);
+    assert!(
+        (vy(&s) - before - 0.3).abs() < 1e-9,
+        "{} → {}",
+        before,
+        vy(&s)
+    );
+    assert_eq!(
+        View::of(&s).center,
+        camera,
+        "the arrows aimed, they did not pan"
+    );
+    app.xdo(&["key", "shift+q"]);
+    let s = app.wait_frames(3);
+    assert_eq!(
+        s["selected"],
+        n - 1,
+        "Shift+Q: the previous one, round the end"
+    );
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["particles"].as_array().unwrap().len(), n + 1);
+    assert_eq!(s["selected"], n);
+    app.quit();
+}
