@@ -15,7 +15,12 @@ widget() { python3 -c "import json,sys; r=json.load(open('$dump'))['panel_widget
 disc() { python3 -c "
 import json; s=json.load(open('$dump')); c=s['camera']; p=s['particles'][$1]['pos']
 print(round(c['origin'][0]+c['viewport'][0]/2+(p[0]-c['center'][0])*c['scale']), round(c['origin'][1]+c['viewport'][1]/2-(p[1]-c['center'][1])*c['scale']))"; }
-start() { "$bin" --dump-state "$dump" --exit-after 60 --autosave 0 --no-start "$@" & app=$!; sleep 2.5; }
+# English unless a picture asks for a language (the README's pictures are
+# English, whatever this machine's locale).
+start() {
+  local lang=(--lang en); [[ " $* " == *" --lang "* ]] && lang=()
+  "$bin" --dump-state "$dump" --exit-after 60 --autosave 0 --no-start "${lang[@]}" "$@" & app=$!; sleep 2.5
+}
 finish() { xdotool key ctrl+q; wait "$app"; }
 click() { xdotool mousemove $1 $2; sleep 0.3; xdotool click 1; sleep 0.4; }
 
@@ -82,7 +87,7 @@ start --screenshot docs/paths.png
 xdotool mousemove 300 300 key 4; sleep 0.3; xdotool key a; sleep 4.5
 finish
 # 12. The start screen, as a plain start shows it.
-"$bin" --dump-state "$dump" --exit-after 60 --autosave 0 --screenshot docs/start.png & app=$!; sleep 2.5
+"$bin" --dump-state "$dump" --exit-after 60 --autosave 0 --lang en --screenshot docs/start.png & app=$!; sleep 2.5
 xdotool mousemove 640 300; sleep 0.5
 finish
 
@@ -90,5 +95,16 @@ finish
 # at its instant (J), the ledger open, the controls in their drawer.
 start --size 1024x768 --ui-scale 2 --screenshot docs/projector-ledger.png
 xdotool mousemove 300 200 key 4; sleep 0.5; xdotool key j; sleep 1
+finish
+
+# 14. Another classroom: Spanish at the projector's scale, the glancing hit at
+# its instant (J), the ledger open.
+start --size 1024x768 --ui-scale 2 --lang es --screenshot docs/projector-es.png
+xdotool mousemove 300 200 key 4; sleep 0.5; xdotool key j; sleep 1
+finish
+
+# 15. The key list in German.
+start --lang de --screenshot docs/help-de.png
+xdotool mousemove 300 300 key h; sleep 0.5
 finish
 echo "screenshots in docs/"

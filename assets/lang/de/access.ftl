@@ -1,1 +1,77 @@
-# Keyboard, sound and screen-reader access.
+# Zugang über Tastatur, Ton und Screenreader: was das Fenster dazu sagt.
+
+select-no-discs = Keine Scheibe zum Auswählen: Enter setzt eine in die Mitte.
+selected-disc-said = Scheibe { $disc } von { $discs } gewählt: { $mass }, Geschwindigkeit { $velocity }
+launched-at-centre = Scheibe { $disc } ruht in der Mitte: Bei angehaltener Simulation stellen die Pfeiltasten ihre Geschwindigkeit ein
+
+## Der Weg über die Tastatur (Zeilen der Hilfe)
+keys-focus = Tab / Umschalt+Tab
+help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler; Esc oder ein Klick in die Welt gibt die Tasten an die Welt zurück
+keys-aim-keys = Pfeiltasten, angehalten, mit gewählter Scheibe
+help-aim-keys = sie ausrichten: ihre Geschwindigkeit ±0,1 m/s pro Tastendruck (Umschalt: ±1 m/s)
+keys-select-next = Q / Umschalt+Q
+help-select-next = die nächste / die vorige Scheibe auswählen
+keys-launch-centre = Enter
+help-launch-centre = eine neue, ruhende Scheibe in der Mitte der Ansicht, gleich ausgewählt
+keys-in-panels = Die Tasten wirken auf die Bedienelemente: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
+
+## Ton
+keys-sound = F8
+help-sound = Ton an / aus: ein Klicken bei jedem Aufprall, lauter bei einem härteren, höher zwischen Scheiben als an einer Wand (stumm, wenn angehalten oder schneller als ×2)
+label-toggle-sound = Ton
+sound-on = Ton an: ein Klicken bei jedem Aufprall (stumm, wenn angehalten oder schneller als ×2)
+sound-off = Ton aus
+
+## Für einen Screenreader (die Live-Region des Browsers, der Reiter In Worten)
+said-pair = Scheibe { $a } traf Scheibe { $b }: Gesamtimpuls vorher { $before }, nachher { $after }
+said-wall = Scheibe { $disc } traf die { $wall ->
+    [left] linke
+    [right] rechte
+    [bottom] untere
+   *[top] obere
+ } Wand: Geschwindigkeit vorher { $before }, nachher { $after }
+place-middle = in der Mitte
+place-left = links
+place-right = rechts
+place-bottom = unten
+place-top = oben
+place-bottom-left = links unten
+place-bottom-right = rechts unten
+place-top-left = links oben
+place-top-right = rechts oben
+motion-rest = in Ruhe
+motion-moving = bewegt sich mit { $speed } nach { $direction }
+direction-right = rechts
+direction-up-right = rechts oben
+direction-up = oben
+direction-up-left = links oben
+direction-left = links
+direction-down-left = links unten
+direction-down = unten
+direction-down-right = rechts unten
+describe-box = { $discs ->
+    [one] Eine Scheibe
+   *[other] { $discs } Scheiben
+ } in einem { $width } mal { $height } Meter großen { $edges ->
+    [open] Raum ohne Wände.
+    [periodic] Raum, dessen Seiten miteinander verbunden sind (eine Scheibe, die auf einer Seite hinausfliegt, kommt auf der gegenüberliegenden wieder herein).
+   *[box] Kasten.
+ }
+describe-gravity = Die Schwerkraft zieht mit { $gravity } nach unten.
+describe-no-gravity = Keine Schwerkraft.
+describe-restitution = Stoßzahl zwischen Scheiben: { $restitution }.
+describe-disc = Scheibe { $disc }, { $mass }, { $place }, { $motion }.
+describe-more = { $more ->
+    [one] Dazu kommt eine weitere Scheibe
+   *[other] Dazu kommen { $more } weitere Scheiben
+ }; ihre mittlere Geschwindigkeit beträgt { $speed }.
+describe-totals = { $state ->
+    [paused] Angehalten bei t = { $time }
+   *[running] Läuft, t = { $time }
+ }; Gesamtimpuls { $momentum }, kinetische Energie { $energy }.
+tab-words = In Worten
+words-line = Was geschieht, in Worten, das Neueste zuerst (ein Screenreader liest im Browser dasselbe vor).
+words-none = Noch nichts gesagt.
+label-describe = Szene beschreiben
+mirror-title = Impulse: Bedienelemente für Tastatur und Screenreader
+mirror-said = Was geschieht

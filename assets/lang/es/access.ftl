@@ -1,1 +1,77 @@
-# Keyboard, sound and screen-reader access.
+# Acceso con el teclado, el sonido y los lectores de pantalla: lo que dice la ventana sobre ellos.
+
+select-no-discs = No hay discos que seleccionar: Intro pone uno en el centro.
+selected-disc-said = Disco { $disc } de { $discs } seleccionado: { $mass }, velocidad { $velocity }
+launched-at-centre = Disco { $disc } en reposo en el centro: con la simulación en pausa, las flechas fijan su velocidad
+
+## El recorrido con el teclado (líneas de la ayuda)
+keys-focus = Tab / Mayús+Tab
+help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador; Esc o un clic en el mundo devuelven las teclas al mundo
+keys-aim-keys = Flechas, en pausa, con un disco seleccionado
+help-aim-keys = fijar su velocidad: ±0,1 m/s por pulsación (Mayús: ±1 m/s)
+keys-select-next = Q / Mayús+Q
+help-select-next = seleccionar el disco siguiente / el anterior
+keys-launch-centre = Intro
+help-launch-centre = un disco nuevo en reposo en el centro de la vista, ya seleccionado
+keys-in-panels = Las teclas actúan sobre los controles: Esc o un clic en el mundo las devuelven al mundo.
+
+## Sonido
+keys-sound = F8
+help-sound = activar / desactivar el sonido: un clic en cada impacto, más fuerte cuanto más violento es el choque, más agudo entre discos que contra una pared (en silencio en pausa o a más de ×2)
+label-toggle-sound = Sonido
+sound-on = Sonido activado: un clic en cada impacto (en silencio en pausa o a más de ×2)
+sound-off = Sonido desactivado
+
+## Lo que se le dice a un lector de pantalla (la región dinámica del navegador, la pestaña Narración)
+said-pair = El disco { $a } chocó con el disco { $b }: cantidad de movimiento antes { $before }, después { $after }
+said-wall = El disco { $disc } chocó con la pared { $wall ->
+    [left] izquierda
+    [right] derecha
+    [bottom] inferior
+   *[top] superior
+ }: rapidez antes { $before }, después { $after }
+place-middle = en el centro
+place-left = a la izquierda
+place-right = a la derecha
+place-bottom = abajo
+place-top = arriba
+place-bottom-left = abajo a la izquierda
+place-bottom-right = abajo a la derecha
+place-top-left = arriba a la izquierda
+place-top-right = arriba a la derecha
+motion-rest = en reposo
+motion-moving = moviéndose { $direction } a { $speed }
+direction-right = hacia la derecha
+direction-up-right = hacia arriba y a la derecha
+direction-up = hacia arriba
+direction-up-left = hacia arriba y a la izquierda
+direction-left = hacia la izquierda
+direction-down-left = hacia abajo y a la izquierda
+direction-down = hacia abajo
+direction-down-right = hacia abajo y a la derecha
+describe-box = { $discs ->
+    [one] Un disco
+   *[other] { $discs } discos
+ } en { $edges ->
+    [open] un espacio sin paredes de { $width } por { $height } metros.
+    [periodic] un espacio de { $width } por { $height } metros cuyos lados se unen (un disco que sale por un lado vuelve a entrar por el opuesto).
+   *[box] una caja de { $width } por { $height } metros.
+ }
+describe-gravity = La gravedad tira hacia abajo, con una aceleración de { $gravity }.
+describe-no-gravity = Sin gravedad.
+describe-restitution = Coeficiente de restitución entre discos: { $restitution }.
+describe-disc = Disco { $disc }, { $mass }, { $place }, { $motion }.
+describe-more = { $more ->
+    [one] Y un disco más
+   *[other] Y { $more } discos más
+ }; la rapidez media es { $speed }.
+describe-totals = { $state ->
+    [paused] En pausa
+   *[running] En marcha
+ } en t = { $time }; cantidad de movimiento total { $momentum }, energía cinética { $energy }.
+tab-words = Narración
+words-line = Lo que ocurre, contado en palabras, lo más reciente primero (en el navegador, un lector de pantalla lee lo mismo).
+words-none = Todavía no se ha dicho nada.
+label-describe = Describir la escena
+mirror-title = Impulse: controles para el teclado y los lectores de pantalla
+mirror-said = Lo que ocurre

@@ -1,1 +1,77 @@
-# Keyboard, sound and screen-reader access.
+# Accès au clavier, au son et aux lecteurs d'écran : ce qu'en dit la fenêtre.
+
+select-no-discs = Aucun disque à sélectionner : Entrée en place un au centre.
+selected-disc-said = Disque { $disc } sur { $discs } sélectionné : { $mass }, vitesse { $velocity }
+launched-at-centre = Disque { $disc } au repos au centre : simulation en pause, les touches fléchées règlent sa vitesse
+
+## Le parcours au clavier (lignes de l'aide)
+keys-focus = Tab / Maj+Tab
+help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage ; Échap ou un clic dans la simulation rend les touches à la simulation
+keys-aim-keys = Touches fléchées, en pause, avec un disque sélectionné
+help-aim-keys = régler sa vitesse : ±0,1 m/s par appui (Maj : ±1 m/s)
+keys-select-next = Q / Maj+Q
+help-select-next = sélectionner le disque suivant / précédent
+keys-launch-centre = Entrée
+help-launch-centre = un nouveau disque au repos au centre de la vue, sélectionné
+keys-in-panels = Les touches agissent sur les commandes : Échap ou un clic dans la simulation les rend à la simulation.
+
+## Le son
+keys-sound = F8
+help-sound = son activé / désactivé : un clic à chaque choc, plus fort pour un choc plus violent, plus aigu entre disques que contre un mur (muet en pause ou au-delà de ×2)
+label-toggle-sound = Son
+sound-on = Son activé : un clic à chaque choc (muet en pause ou au-delà de ×2)
+sound-off = Son désactivé
+
+## Ce qui est dit à un lecteur d'écran (la zone dynamique du navigateur, l'onglet Récit)
+said-pair = Le disque { $a } a heurté le disque { $b } : quantité de mouvement avant { $before }, après { $after }
+said-wall = Le disque { $disc } a heurté le mur { $wall ->
+    [left] de gauche
+    [right] de droite
+    [bottom] du bas
+   *[top] du haut
+ } : vitesse avant { $before }, après { $after }
+place-middle = au milieu
+place-left = à gauche
+place-right = à droite
+place-bottom = en bas
+place-top = en haut
+place-bottom-left = en bas à gauche
+place-bottom-right = en bas à droite
+place-top-left = en haut à gauche
+place-top-right = en haut à droite
+motion-rest = au repos
+motion-moving = en mouvement { $direction } à { $speed }
+direction-right = vers la droite
+direction-up-right = vers le haut et vers la droite
+direction-up = vers le haut
+direction-up-left = vers le haut et vers la gauche
+direction-left = vers la gauche
+direction-down-left = vers le bas et vers la gauche
+direction-down = vers le bas
+direction-down-right = vers le bas et vers la droite
+describe-box = { $discs ->
+    [one] { $discs } disque
+   *[other] { $discs } disques
+ } { $edges ->
+    [open] dans un espace sans murs de { $width } m sur { $height } m.
+    [periodic] dans un espace de { $width } m sur { $height } m dont les côtés se rejoignent (un disque qui sort d'un côté revient par l'autre).
+   *[box] dans une boîte de { $width } m sur { $height } m.
+ }
+describe-gravity = La pesanteur tire vers le bas, avec une intensité de { $gravity }.
+describe-no-gravity = Pas de pesanteur.
+describe-restitution = Coefficient de restitution entre disques : { $restitution }.
+describe-disc = Disque { $disc }, { $mass }, { $place }, { $motion }.
+describe-more = { $more ->
+    [one] Et { $more } autre disque
+   *[other] Et { $more } autres disques
+ } ; leur vitesse moyenne est de { $speed }.
+describe-totals = { $state ->
+    [paused] En pause
+   *[running] En cours
+ } à t = { $time } ; quantité de mouvement totale { $momentum }, énergie cinétique { $energy }.
+tab-words = Récit
+words-line = Ce qui se passe, raconté avec des mots, le plus récent en premier (dans le navigateur, un lecteur d'écran lit la même chose).
+words-none = Rien n'a encore été dit.
+label-describe = Décrire la scène
+mirror-title = Impulse : commandes pour le clavier et les lecteurs d'écran
+mirror-said = Ce qui se passe

@@ -1,1 +1,77 @@
-# Keyboard, sound and screen-reader access.
+# Acesso pelo teclado, som e leitor de tela: o que a janela diz sobre eles.
+
+select-no-discs = Nenhum disco para selecionar: Enter coloca um no centro.
+selected-disc-said = Disco { $disc } de { $discs } selecionado: { $mass }, velocidade { $velocity }
+launched-at-centre = Disco { $disc } em repouso no centro: com a simulação pausada, as teclas de seta definem a velocidade dele
+
+## O caminho pelo teclado (linhas da ajuda)
+keys-focus = Tab / Shift+Tab
+help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante; Esc ou um clique no mundo devolve as teclas ao mundo
+keys-aim-keys = Teclas de seta, em pausa, com um disco selecionado
+help-aim-keys = mira o disco: a velocidade dele ±0,1 m/s a cada toque (Shift: ±1 m/s)
+keys-select-next = Q / Shift+Q
+help-select-next = seleciona o disco seguinte / o anterior
+keys-launch-centre = Enter
+help-launch-centre = um disco novo em repouso no centro da vista, já selecionado
+keys-in-panels = As teclas agem nos controles: Esc ou um clique no mundo as devolve ao mundo.
+
+## Som
+keys-sound = F8
+help-sound = som ligado / desligado: um clique a cada impacto, mais alto quanto mais forte ele for, mais agudo entre discos do que numa parede (em silêncio quando pausado ou mais rápido que ×2)
+label-toggle-sound = Som
+sound-on = Som ligado: um clique a cada impacto (em silêncio quando pausado ou mais rápido que ×2)
+sound-off = Som desligado
+
+## Dito a um leitor de tela (a região ao vivo do navegador, a aba Narração)
+said-pair = Disco { $a } bateu no disco { $b }: quantidade de movimento antes { $before }, depois { $after }
+said-wall = Disco { $disc } bateu na parede { $wall ->
+    [left] esquerda
+    [right] direita
+    [bottom] inferior
+   *[top] superior
+ }: velocidade antes { $before }, depois { $after }
+place-middle = no meio
+place-left = à esquerda
+place-right = à direita
+place-bottom = embaixo
+place-top = em cima
+place-bottom-left = embaixo à esquerda
+place-bottom-right = embaixo à direita
+place-top-left = em cima à esquerda
+place-top-right = em cima à direita
+motion-rest = em repouso
+motion-moving = movendo-se { $direction } a { $speed }
+direction-right = para a direita
+direction-up-right = para cima e para a direita
+direction-up = para cima
+direction-up-left = para cima e para a esquerda
+direction-left = para a esquerda
+direction-down-left = para baixo e para a esquerda
+direction-down = para baixo
+direction-down-right = para baixo e para a direita
+describe-box = { $discs ->
+    [one] { $discs } disco
+   *[other] { $discs } discos
+ } { $edges ->
+    [open] num espaço de { $width } por { $height } metros, sem paredes.
+    [periodic] num espaço de { $width } por { $height } metros cujos lados se unem (um disco que sai por um lado volta pelo outro).
+   *[box] numa caixa de { $width } por { $height } metros.
+ }
+describe-gravity = Gravidade de { $gravity }, apontando para baixo.
+describe-no-gravity = Sem gravidade.
+describe-restitution = Coeficiente de restituição entre discos: { $restitution }.
+describe-disc = Disco { $disc }, { $mass }, { $place }, { $motion }.
+describe-more = E mais { $more ->
+    [one] { $more } disco
+   *[other] { $more } discos
+ }; a velocidade média deles é { $speed }.
+describe-totals = { $state ->
+    [paused] Pausado
+   *[running] Rodando
+ } em t = { $time }; quantidade de movimento total { $momentum }, energia cinética { $energy }.
+tab-words = Narração
+words-line = O que acontece, em palavras, do mais recente ao mais antigo (um leitor de tela lê o mesmo no navegador).
+words-none = Nada foi dito ainda.
+label-describe = Descrever a cena
+mirror-title = Impulse: controles para teclado e leitores de tela
+mirror-said = O que acontece

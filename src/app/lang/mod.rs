@@ -83,6 +83,7 @@ impl Lang {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// The language the system's locale asks for (`LC_ALL`, `LC_MESSAGES`,
 /// `LANG`, `LANGUAGE`, the first one set), if Impulse speaks it.
 pub fn system_language() -> Option<Lang> {

@@ -202,7 +202,9 @@ impl Sandbox {
             ));
         }
         if n > DESCRIBED_DISCS {
-            let mean = w.particles.iter().map(|p| p.vel.length()).sum::<f64>() / n as f64;
+            // The mean speed of the discs not named one by one.
+            let rest = &w.particles[DESCRIBED_DISCS..];
+            let mean = rest.iter().map(|p| p.vel.length()).sum::<f64>() / rest.len() as f64;
             lines.push(tr!(
                 "describe-more",
                 more = n - DESCRIBED_DISCS,
