@@ -488,6 +488,7 @@ try:
         "return document.getElementById('mirror').contains(document.activeElement)"
     )
     check(inside, "Shift+Tab from the world leaves the canvas for the mirror")
+    d.save_screenshot(SCREENSHOT.replace(".png", "-mirror.png"))
     errors = console_errors(d)
     check(not errors, f"no console errors with the mirror: {errors}")
 finally:

@@ -352,3 +352,38 @@ fn the_scan_finds_words_and_lets_ids_and_units_be() {
     assert!(!reads_as_words("{name} ({})"));
     assert!(!reads_as_words("--gas {count}"));
 }
+
+#[test]
+fn every_letter_of_every_language_is_in_the_windows_font() {
+    use ab_glyph::Font;
+    let definitions = egui::FontDefinitions::default();
+    let family = &definitions.families[&egui::FontFamily::Proportional];
+    let fonts: Vec<ab_glyph::FontRef> = family
+        .iter()
+        .map(|name| {
+            let data = &definitions.font_data[name];
+            ab_glyph::FontRef::try_from_slice(&data.font).unwrap()
+        })
+        .collect();
+    let drawn = |c: char| fonts.iter().any(|f| f.glyph_id(c).0 != 0);
+    assert!(
+        drawn('ß') && drawn('ç') && !drawn('↑'),
+        "the check tells drawn from not"
+    );
+    let mut missing = BTreeSet::new();
+    for (folder, name, text) in FILES {
+        for line in text.lines().filter(|l| !l.starts_with('#')) {
+            for c in line.chars().filter(|c| !c.is_whitespace() && !drawn(*c)) {
+                missing.insert(format!("{c:?} in {folder}/{name}"));
+            }
+        }
+    }
+    // The pseudo-language's letters too.
+    for c in ('a'..='z').chain('A'..='Z') {
+        let accented: String = pseudo::accent(&c.to_string()).into_owned();
+        for a in accented.chars().filter(|a| !drawn(*a)) {
+            missing.insert(format!("{a:?} (qps for {c})"));
+        }
+    }
+    assert!(missing.is_empty(), "drawn as a box: {missing:?}");
+}

@@ -174,8 +174,8 @@ impl Sandbox {
         let mut lines = vec![tr!(
             "describe-box",
             discs = n,
-            width = plain(size.x, 1),
-            height = plain(size.y, 1),
+            width = crate::app::numbers::field(size.x),
+            height = crate::app::numbers::field(size.y),
             edges = match w.laws.boundary {
                 impulse::Boundary::Box => "box",
                 impulse::Boundary::Open => "open",
