@@ -336,6 +336,23 @@ thread_local! {
     static CURRENT: RefCell<Rc<Words>> = RefCell::new(Rc::new(Words::new(Lang::En)));
 }
 
+/// A language's name in itself ("Deutsch"), as the language lists show it:
+/// its `this-language` message, read from the file's text (no bundle is
+/// built for a language only named).
+pub fn native_name(lang: Lang) -> String {
+    let own = FILES
+        .iter()
+        .filter(|(folder, _, _)| *folder == lang.folder())
+        .flat_map(|(_, _, text)| text.lines())
+        .find_map(|line| line.strip_prefix("this-language = "))
+        .unwrap_or(lang.code())
+        .trim();
+    match lang {
+        Lang::Qps => pseudo::lengthen(&pseudo::accent(own)),
+        _ => own.to_string(),
+    }
+}
+
 /// Speaks `lang` from now on (on this thread).
 pub fn set_language(lang: Lang) {
     CURRENT.with(|c| {

@@ -387,3 +387,13 @@ fn every_letter_of_every_language_is_in_the_windows_font() {
     }
     assert!(missing.is_empty(), "drawn as a box: {missing:?}");
 }
+
+#[test]
+fn languages_are_named_in_themselves() {
+    assert_eq!(native_name(Lang::De), "Deutsch");
+    assert_eq!(
+        native_name(Lang::PtBr),
+        Words::new(Lang::PtBr).get("this-language", &[])
+    );
+    assert!(native_name(Lang::Qps).starts_with('['));
+}

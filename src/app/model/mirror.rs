@@ -10,7 +10,7 @@
 use super::bindings::{binding_of, label, tooltip, Key};
 use super::scenes::preset_labels;
 use super::{Command, Sandbox};
-use crate::app::lang::{language, tr, Lang, Words};
+use crate::app::lang::{language, native_name, tr, Lang};
 use serde::Serialize;
 
 /// The commands the mirror offers as buttons, in its order.
@@ -105,10 +105,7 @@ impl Sandbox {
             },
             languages: MirrorChoice {
                 label: tr!("language-label"),
-                options: Lang::SHIPPED
-                    .iter()
-                    .map(|l| Words::new(*l).get("this-language", &[]))
-                    .collect(),
+                options: Lang::SHIPPED.iter().map(|l| native_name(*l)).collect(),
                 chosen: Lang::SHIPPED.iter().position(|l| *l == current),
             },
             said: tr!("mirror-said"),

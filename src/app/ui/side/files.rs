@@ -113,7 +113,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
 /// The language of the window, each named in itself.
 fn language(ui: &mut Ui, cx: &mut Cx) {
     let current = crate::app::lang::language();
-    let name = |lang: Lang| crate::app::lang::Words::new(lang).get("this-language", &[]);
+    let name = crate::app::lang::native_name;
     let r = ComboBox::from_label(tr!("language-label"))
         .selected_text(name(current))
         .show_ui(ui, |ui| {
