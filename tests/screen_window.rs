@@ -51,9 +51,13 @@ fn two_discs_in_the_empty_box_count_the_same_everywhere_and_j_stops_at_walls() {
     let s = app.wait_frames(3);
     assert_eq!(s["particles"].as_array().unwrap().len(), 2);
     // Let them bounce about, then compare the counts.
-    let s = app.wait_for("impacts with walls and between discs", 1800, |s| {
+    app.wait_for("impacts with walls and between discs", 1800, |s| {
         s["wall_hits"].as_u64() >= Some(3)
     });
+    // Paused, so that no impact slips in between reading the counts and J.
+    app.xdo(&["key", "space"]);
+    let s = app.wait_for("a pause", 60, |s| s["paused"] == true);
+    let s = app.wait_for("the same counts twice", 60, |a| counts(a) == counts(&s));
     let (counted, recorded, line) = counts(&s);
     assert_eq!(
         counted, recorded,
