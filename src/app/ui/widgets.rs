@@ -44,6 +44,35 @@ pub fn labelled_button(
     r
 }
 
+/// A combo box named `label`, showing `selected`: the name beside it where
+/// both fit the dock's width, else on a line of its own above it (long
+/// words: German, a projector's scale), so nothing is cut at the edge.
+pub fn combo(ui: &mut Ui, label: &str, selected: &str) -> ComboBox {
+    let width = |text: &str| {
+        egui::WidgetText::from(text)
+            .into_galley(
+                ui,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Button,
+            )
+            .size()
+            .x
+    };
+    let button = ui
+        .spacing()
+        .combo_width
+        .max(width(selected) + 2.0 * ui.spacing().icon_width + ui.spacing().button_padding.x * 2.0);
+    let beside = button + ui.spacing().item_spacing.x + width(label);
+    let combo = ComboBox::from_id_salt(label).selected_text(selected.to_string());
+    if beside > ui.available_width() {
+        ui.add(egui::Label::new(label).wrap());
+        combo
+    } else {
+        ComboBox::from_label(label).selected_text(selected.to_string())
+    }
+}
+
 /// A combo box over `list`, showing `current` even when it is not in the
 /// list (a scene may ask for 3 substeps); returns the new choice.
 pub fn setting_combo<T: Copy + PartialEq + Display>(
@@ -53,8 +82,7 @@ pub fn setting_combo<T: Copy + PartialEq + Display>(
     current: T,
 ) -> Option<T> {
     let mut chosen = None;
-    ComboBox::from_label(label)
-        .selected_text(current.to_string())
+    combo(ui, label, &current.to_string())
         .show_ui(ui, |ui| {
             for &item in list {
                 if ui
@@ -102,8 +130,10 @@ pub fn slider(
             egui::DragValue::new(value)
                 .range(range)
                 .speed(speed)
-                .fixed_decimals(decimals)
-                .suffix(suffix),
+                .suffix(suffix)
+                // In the language's numbers (2,50), either separator typed.
+                .custom_formatter(move |v, _| crate::app::numbers::plain(v, decimals))
+                .custom_parser(crate::app::numbers::parse),
         );
         if boxed.has_focus() {
             // Typed into: the shortcuts stay quiet (a digit is a digit).

@@ -3,25 +3,23 @@
 //! screen, hide the panels) and, under *More*, *Details* (method, broad
 //! phase, substeps and what a step costs).
 
-use super::super::widgets::{command_button, setting_combo, show_note, slider};
+use super::super::widgets::{combo, command_button, setting_combo, show_note, slider};
 use super::Cx;
 use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
 use crate::app::model::{next_scale, scenes, Command, Theme, UI_SCALE_RANGE};
 use crate::app::numbers::{plain, with_unit};
-use egui::{ComboBox, Ui};
+use egui::Ui;
 
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
 pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
-    ComboBox::from_label(tr!("preset-label"))
-        .selected_text(tr!("preset-choose"))
-        .show_ui(ui, |ui| {
-            for (k, label) in scenes::preset_labels().iter().enumerate() {
-                if ui.selectable_label(false, label).clicked() {
-                    cx.send(Command::OpenPreset(k));
-                }
+    combo(ui, &tr!("preset-label"), &tr!("preset-choose")).show_ui(ui, |ui| {
+        for (k, label) in scenes::preset_labels().iter().enumerate() {
+            if ui.selectable_label(false, label).clicked() {
+                cx.send(Command::OpenPreset(k));
             }
-        });
+        }
+    });
     if cx.model.recovery.aside.is_some() {
         command_button(ui, cx, Command::ReopenKept, Some("reopen_kept"));
     }
@@ -114,8 +112,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
 fn language(ui: &mut Ui, cx: &mut Cx) {
     let current = crate::app::lang::language();
     let name = crate::app::lang::native_name;
-    let r = ComboBox::from_label(tr!("language-label"))
-        .selected_text(name(current))
+    let r = combo(ui, &tr!("language-label"), &name(current))
         .show_ui(ui, |ui| {
             for lang in Lang::SHIPPED {
                 if ui.selectable_label(lang == current, name(lang)).clicked() && lang != current {

@@ -3,14 +3,14 @@
 //! laws (roughness and friction). A slider sends its value as a command;
 //! the model keeps it in range and remembers it for undo.
 
-use super::super::widgets::slider;
+use super::super::widgets::{combo, slider};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::clock::TIME_SCALES;
 use crate::app::model::command::Law;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
-use egui::{ComboBox, Ui};
+use egui::Ui;
 use impulse::Boundary;
 
 use crate::app::model::apply::EARTH_GRAVITY;
@@ -100,8 +100,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         Boundary::Open => tr!("edges-open"),
         Boundary::Periodic => tr!("edges-periodic"),
     };
-    ComboBox::from_label(tr!("edges-label"))
-        .selected_text(edge_name(boundary))
+    combo(ui, &tr!("edges-label"), &edge_name(boundary))
         .show_ui(ui, |ui| {
             for b in Boundary::ALL {
                 if ui.selectable_label(b == boundary, edge_name(b)).clicked() && b != boundary {
@@ -113,8 +112,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         .on_hover_text(tr!("edges-hover"));
     let scales = TIME_SCALES.map(|s| format!("×{}", crate::app::numbers::field(s)));
     let index = cx.model.clock.time_scale_index();
-    ComboBox::from_label(tr!("time-scale-label"))
-        .selected_text(scales[index].clone())
+    combo(ui, &tr!("time-scale-label"), &scales[index])
         .show_ui(ui, |ui| {
             for (k, label) in scales.iter().enumerate() {
                 if ui.selectable_label(k == index, label).clicked() {

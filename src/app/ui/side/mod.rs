@@ -19,7 +19,7 @@ use crate::app::lang::tr;
 use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
 use crate::app::model::start::{Section, Tile};
 use crate::app::model::Command;
-use egui::{CollapsingHeader, ComboBox, Ui};
+use egui::{CollapsingHeader, Ui};
 
 /// The side dock's own state: the fields being typed in.
 pub struct SideDock {
@@ -221,8 +221,7 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         .find(|(s, _)| *s == o.readouts)
         .map_or_else(String::new, |(_, l)| l.clone());
     let tip = crate::app::model::bindings::tooltip(&Command::CycleReadouts);
-    ComboBox::from_label(tr!("readouts-label"))
-        .selected_text(current)
+    super::widgets::combo(ui, &tr!("readouts-label"), &current)
         .show_ui(ui, |ui| {
             for (scope, label) in scopes {
                 if ui.selectable_label(o.readouts == scope, label).clicked() {
