@@ -26,6 +26,10 @@ fn main() -> std::process::ExitCode {
             while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back,
         ),
         (
+            "on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one",
+            on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one,
+        ),
+        (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
             q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre,
         ),
@@ -210,5 +214,33 @@ fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {
     let s = app.wait_frames(3);
     assert_eq!(s["particles"].as_array().unwrap().len(), n + 1);
     assert_eq!(s["selected"], n);
+    app.quit();
+}
+
+fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
+    let x = Xvfb::start("start keys");
+    let app = Sandbox::start_plain(&x, &[]);
+    app.wait_for("the start screen", 60, |s| s["ui"]["start_open"] == true);
+    let seen = tabs(&app, 3);
+    let first = seen.iter().flatten().next().cloned();
+    assert_eq!(first.as_deref(), Some("tile_head_on"), "{seen:?}");
+    assert!(
+        seen.iter().flatten().all(|f| f.starts_with("tile_")),
+        "{seen:?}"
+    );
+    // Back to the first tile, then Enter opens its lesson.
+    for _ in 0..10 {
+        if focus(&app.wait_frames(2)).as_deref() == Some("tile_head_on") {
+            break;
+        }
+        app.xdo(&["key", "shift+Tab"]);
+    }
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_for("the lesson", 60, |s| s["ui"]["start_open"] == false);
+    assert!(
+        s["scene_name"].as_str().unwrap_or("").contains("Head-on"),
+        "{}",
+        s["scene_name"]
+    );
     app.quit();
 }

@@ -226,6 +226,10 @@ impl Panels {
             keys_in_panels: self.typing || self.panel_keyboard,
         };
         let mut panels = Vec::new();
+        // The start screen first: egui's Tab walks the controls in the
+        // order they are made, so its tiles come before the panels behind
+        // it (it is drawn over them all the same).
+        self.start.show(ctx, &mut cx);
         egui::TopBottomPanel::top("top_bar")
             .exact_height(points(rects.top_bar).height())
             .show(ctx, |ui| self.top_bar.ui(ui, &mut cx));
@@ -264,7 +268,6 @@ impl Panels {
                 .title_bar(false)
                 .show(ctx, |ui| self.side.ui(ui, &mut cx));
         }
-        self.start.show(ctx, &mut cx);
         self.popups.show(ctx, &mut cx);
         // A slider's value box typed into keeps the keyboard too.
         let boxed = egui::Id::new(widgets::TYPING_IN_A_BOX);

@@ -47,6 +47,8 @@ impl StartScreen {
                         ui.add_space(8.0);
                     }
                     ui.label(tr!("start-footer"));
+                    ui.add_space(8.0);
+                    super::side::files::language(ui, cx);
                 });
             });
         if let Some(r) = response {

@@ -108,8 +108,9 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     language(ui, cx);
 }
 
-/// The language of the window, each named in itself.
-fn language(ui: &mut Ui, cx: &mut Cx) {
+/// The language of the window, each named in itself (also on the start
+/// screen).
+pub fn language(ui: &mut Ui, cx: &mut Cx) {
     let current = crate::app::lang::language();
     let name = crate::app::lang::native_name;
     let r = combo(ui, &tr!("language-label"), &name(current))

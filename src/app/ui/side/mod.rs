@@ -10,7 +10,7 @@
 //! - [`files`]: Scene, View and Details.
 
 mod discs;
-mod files;
+pub mod files;
 mod laws;
 
 use super::widgets::{command_button, labelled_button};
