@@ -35,6 +35,23 @@ pub struct RunArgs {
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Run even when it takes more than 10⁸ steps (many minutes).
+    #[arg(long)]
+    pub yes: bool,
+}
+
+/// Steps beyond which a run asks for `--yes` (at some 10⁷ steps a second
+/// for a small scene, minutes of waiting).
+const ASK_STEPS: f64 = 1e8;
+
+/// Seconds between progress lines on a standard error that is not a
+/// terminal (a log file, CI); `IMPULSE_PROGRESS_SECONDS` sets it (tests).
+fn progress_every() -> f64 {
+    std::env::var("IMPULSE_PROGRESS_SECONDS")
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+        .filter(|s| *s > 0.0)
+        .unwrap_or(5.0)
 }
 
 /// Most steps one run may take, so a typo cannot run for days.
@@ -101,8 +118,20 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
             crate::cli::number(dt)
         );
     }
+    if steps > ASK_STEPS && !args.yes {
+        anyhow::bail!(
+            "--time {} with --dt {} is {steps:.1e} steps, which may take many minutes: \
+             add --yes to run it, or give a larger --dt",
+            crate::cli::number(args.time),
+            crate::cli::number(dt)
+        );
+    }
     let plan = world.plan_for(dt);
     let started = Instant::now();
+    // Off a terminal the bar is hidden: a line every few seconds instead.
+    let lines = !std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let every = progress_every();
+    let mut said = started;
     let mut max_overlap = 0.0f64;
     let mut truncated_steps = 0u64;
     let bar = crate::progress::bar(steps as u64, "simulating");
@@ -112,6 +141,15 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         truncated_steps += u64::from(stats.truncated);
         if k % 256 == 0 {
             bar.set_position(k);
+            if lines && said.elapsed().as_secs_f64() >= every {
+                said = Instant::now();
+                eprintln!(
+                    "impulse: simulating: {:.0} % ({k} of {} steps), {:.0} s elapsed",
+                    100.0 * k as f64 / steps.max(1.0),
+                    steps as u64,
+                    started.elapsed().as_secs_f64()
+                );
+            }
         }
     }
     bar.finish_and_clear();

@@ -252,11 +252,11 @@ fn missing_unreadable_and_garbage_scene_files_are_one_line_naming_the_file() {
     let folder = dir.path().to_str().unwrap().to_string();
     for (path, why) in [
         ("/no/such/file.toml", "No such file"),
-        (folder.as_str(), "cannot read"),
+        (folder.as_str(), "not a regular file (a folder)"),
         (binary.to_str().unwrap(), "UTF-8"),
         (empty.to_str().unwrap(), "world"),
         (not_toml.to_str().unwrap(), "line 1"),
-        ("/dev/zero", "larger than"),
+        ("/dev/zero", "not a regular file (a device)"),
     ] {
         assert_one_line(&[path], 1, &[path, why]);
         assert_one_line(&["run", path, "--time", "1"], 1, &[path, why]);
@@ -326,6 +326,14 @@ fn a_run_too_long_or_a_bad_output_folder_is_refused_at_once() {
         1,
         &["steps"],
     );
+    // Over 10⁸ steps: asked for --yes, at once.
+    let started = std::time::Instant::now();
+    assert_one_line(
+        &["run", &scene, "--time", "2", "--dt", "1e-8"],
+        1,
+        &["2.0e8 steps", "--yes"],
+    );
+    assert!(started.elapsed().as_secs_f64() < 5.0);
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("a-file");
     std::fs::write(&file, "not a folder").unwrap();
@@ -412,4 +420,36 @@ fn negative_numbers_reach_their_check_and_messages_say_things_once() {
     let out = impulse(&["run", &scene, "--time", "1e300"]);
     let err = stderr(&out);
     assert!(err.contains("--time 1e300") && err.len() < 200, "{err}");
+}
+
+/// Off a terminal (a log, CI) a long run still says how far it got, a line
+/// every few seconds (here every 0.1 s) on standard error.
+#[test]
+fn a_long_run_reports_progress_off_a_terminal() {
+    let out = Command::new(env!("CARGO_BIN_EXE_impulse"))
+        .args([
+            "run",
+            &asset("preset-8-gas.toml"),
+            "--time",
+            "120",
+            "--method",
+            "impulse",
+        ])
+        .args(["--substeps", "16"])
+        .env("IMPULSE_PROGRESS_SECONDS", "0.1")
+        .output()
+        .expect("the binary runs");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let lines: Vec<String> = stderr(&out)
+        .lines()
+        .filter(|l| l.starts_with("impulse: simulating: "))
+        .map(str::to_string)
+        .collect();
+    assert!(lines.len() >= 2, "progress lines: {lines:?}");
+    assert!(
+        lines
+            .iter()
+            .all(|l| l.contains(" steps)") && l.contains('%')),
+        "{lines:?}"
+    );
 }

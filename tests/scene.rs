@@ -265,3 +265,92 @@ fn translations_are_read_kept_and_fall_back_to_the_scenes_own() {
     let err = impulse::Scene::parse(bad, "bad").unwrap_err().to_string();
     assert!(err.contains("title"), "{err}");
 }
+
+/// Only regular files are read: a FIFO without a writer, a device and a
+/// folder are refused at once, in one line.
+#[cfg(unix)]
+#[test]
+fn only_regular_files_are_opened() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("scene.toml");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo");
+    let start = std::time::Instant::now();
+    for (path, kind) in [
+        (fifo.as_path(), "a FIFO"),
+        (std::path::Path::new("/dev/zero"), "a device"),
+        (dir.path(), "a folder"),
+    ] {
+        let err = Scene::load(path).unwrap_err().to_string();
+        assert!(
+            err.contains("not a regular file") && err.contains(kind),
+            "{err}"
+        );
+        assert!(!err.contains('\n'), "{err}");
+    }
+    assert!(start.elapsed().as_secs_f64() < 1.0, "refused at once");
+}
+
+/// An error is one line of at most 300 characters whatever the input: a
+/// file of one 8 MB line, nested arrays a hundred thousand deep.
+#[test]
+fn errors_are_one_short_line_whatever_the_input() {
+    let nul = "\0".repeat(8 << 20);
+    let deep = format!("x = {}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let long_string = format!("name = \"{}", "a".repeat(1 << 20));
+    for text in [nul.as_str(), deep.as_str(), long_string.as_str()] {
+        let err = Scene::parse(text, "big.toml").unwrap_err().to_string();
+        assert!(
+            err.chars().count() <= 300,
+            "{} characters",
+            err.chars().count()
+        );
+        assert!(!err.contains('\n'));
+        assert!(err.starts_with("big.toml"), "names the file: {err}");
+    }
+}
+
+/// What a scene would silently ignore is refused, saying what to write:
+/// walls where there is no box, a velocity across a one-dimensional world.
+#[test]
+fn ignored_settings_are_refused_with_what_to_write() {
+    let walls = "[world]\nsize = [4.0, 4.0]\nboundary = \"periodic\"\nwalls = [\"left\"]\n";
+    let err = error_of(walls);
+    assert!(
+        err.contains("world.walls") && err.contains("boundary = \"box\""),
+        "{err}"
+    );
+    let across =
+        "[world]\nsize = [4.0, 4.0]\nconstrain = \"x\"\n\n[[particles]]\npos = [1.0, 2.0]\n\
+                  vel = [1.0, 0.5]\nmass = 1.0\nradius = 0.2\n";
+    let err = error_of(across);
+    assert!(
+        err.contains("particles[0].vel") && err.contains("vel = [vx, 0]"),
+        "{err}"
+    );
+    // Saved from a world whose edges were opened, a scene reopens.
+    let mut world = Scene::parse(
+        "[world]\nsize = [4.0, 4.0]\nwalls = [\"left\"]\n",
+        "pi.toml",
+    )
+    .unwrap()
+    .build("pi.toml")
+    .unwrap();
+    world.laws.boundary = impulse::Boundary::Periodic;
+    let saved = Scene::from_world(&world, None, None).to_toml();
+    Scene::parse(&saved, "saved.toml").unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// A value of the wrong type is named by its field and line, in plain words.
+#[test]
+fn a_type_error_names_its_field() {
+    let text = "[world]\nsize = [4.0, 4.0]\n\n[fill]\ncount = -5\nradius = 0.1\nmass = 1.0\nspeed = 1.0\nseed = 1\n";
+    let err = Scene::parse(text, "t.toml").unwrap_err().to_string();
+    assert_eq!(
+        err,
+        "t.toml, line 5: fill.count: expected a whole number of at least 0, got -5"
+    );
+    let text = "[world]\nsize = [4.0, \"four\"]\n";
+    let err = Scene::parse(text, "t.toml").unwrap_err().to_string();
+    assert!(err.starts_with("t.toml, line 2: world.size"), "{err}");
+}

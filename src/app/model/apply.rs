@@ -223,7 +223,13 @@ impl Sandbox {
                 let g = self.world.laws.gravity.length();
                 self.toast(tr!("gravity-now", gravity = with_unit(g, 2, "m/s²")));
             }
-            SetBoundary(b) => self.world.laws.boundary = b,
+            SetBoundary(b) => {
+                self.world.laws.boundary = b;
+                // Only a box has walls (a scene file refuses them otherwise).
+                if b != impulse::Boundary::Box {
+                    self.world.laws.walls = impulse::Walls::ALL;
+                }
+            }
             SetMethod(m) => self.world.method = m,
             SetBroadPhase(b) => self.world.broad_phase = b,
             SetSubsteps(k) => self.world.substeps = k,

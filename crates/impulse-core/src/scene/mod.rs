@@ -268,6 +268,99 @@ pub enum SceneError {
     },
 }
 
+/// The longest message an error carries (characters): the parser quotes
+/// the offending line, which may be a whole file of one line.
+pub const MAX_MESSAGE_CHARS: usize = 240;
+
+/// A parser's message on one line, at most [`MAX_MESSAGE_CHARS`]
+/// characters, cut with "…".
+fn one_line(message: &str) -> String {
+    let line = message.trim_end().replace('\n', " | ");
+    if line.chars().count() <= MAX_MESSAGE_CHARS {
+        return line;
+    }
+    let cut: String = line.chars().take(MAX_MESSAGE_CHARS - 1).collect();
+    format!("{cut}…")
+}
+
+/// A TOML error in one short line: for a value of the wrong type, the
+/// field's path and line and what was expected, in plain words
+/// (`fill.count: expected a whole number of at least 0, got -5`); for a
+/// syntax error, the parser's own message.
+fn type_error(
+    text: &str,
+    origin: &str,
+    e: serde_path_to_error::Error<toml::de::Error>,
+) -> SceneError {
+    let path = e.path().to_string();
+    let inner = e.into_inner();
+    if path.is_empty() || path == "." {
+        // A syntax error: the parser's message says where.
+        return SceneError::Syntax {
+            origin: origin.to_string(),
+            message: one_line(&inner.to_string()),
+        };
+    }
+    let line = inner
+        .span()
+        .map(|span| text[..span.start.min(text.len())].matches('\n').count() + 1);
+    let origin = match line {
+        Some(line) => format!("{origin}, line {line}"),
+        None => origin.to_string(),
+    };
+    SceneError::Invalid {
+        origin,
+        field: path,
+        reason: one_line(&plain_words(inner.message())),
+    }
+}
+
+/// serde's words for a type error, as a person reads them: "invalid value:
+/// integer `-5`, expected usize" → "expected a whole number of at least 0,
+/// got -5".
+fn plain_words(message: &str) -> String {
+    if !(message.starts_with("invalid value") || message.starts_with("invalid type")) {
+        return message.to_string(); // an unknown field, a missing one: as serde says
+    }
+    let expected = message.split("expected ").nth(1).unwrap_or("").trim();
+    let wanted = match expected {
+        "usize" | "u64" | "u32" | "u16" | "u8" => "a whole number of at least 0",
+        "i64" | "i32" => "a whole number",
+        "f64" | "f32" => "a number",
+        "a boolean" => "true or false",
+        "" => return message.to_string(),
+        other => other,
+    };
+    let got = message.split('`').nth(1);
+    match got {
+        Some(got) => format!("expected {wanted}, got {got}"),
+        None => format!("expected {wanted}"),
+    }
+}
+
+/// What a path that is not a regular file is, in words.
+fn kind_of(meta: &std::fs::Metadata) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let t = meta.file_type();
+        if t.is_fifo() {
+            return "a FIFO";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if meta.is_dir() {
+        "a folder"
+    } else {
+        "not a file"
+    }
+}
+
 impl Scene {
     /// The name in the language `tag` (`"es"`, `"pt-BR"`), else the
     /// scene's own.
@@ -302,6 +395,15 @@ impl Scene {
         };
         // Read at most one byte past the limit, so `/dev/zero` or a huge file
         // is refused instead of filling memory.
+        // Only a regular file: a FIFO with no writer would block for ever,
+        // a device could be endless, a folder is a mistake.
+        let meta = std::fs::metadata(path).map_err(io)?;
+        if !meta.is_file() {
+            return Err(SceneError::Syntax {
+                origin,
+                message: format!("not a regular file ({}): give a scene file", kind_of(&meta)),
+            });
+        }
         let mut bytes = Vec::new();
         std::fs::File::open(path)
             .and_then(|file| {
@@ -324,10 +426,10 @@ impl Scene {
 
     /// Parses and checks scene text; `origin` names it in errors.
     pub fn parse(text: &str, origin: &str) -> Result<Scene, SceneError> {
-        let scene: Scene = toml::from_str(text).map_err(|e| SceneError::Syntax {
-            origin: origin.to_string(),
-            message: e.to_string().trim_end().replace('\n', " | "),
-        })?;
+        // Through serde_path_to_error, so that a value of the wrong type
+        // is named by its field ("fill.count"), as the range checks name it.
+        let scene: Scene = serde_path_to_error::deserialize(toml::Deserializer::new(text))
+            .map_err(|e| type_error(text, origin, e))?;
         scene.validate(origin).map_err(|e| match e {
             SceneError::Invalid {
                 origin,
@@ -384,6 +486,12 @@ impl Scene {
                 "must be a finite number of at least 0",
             ));
         }
+        if w.walls != crate::Walls::ALL && w.boundary != crate::Boundary::Box {
+            return Err(bad(
+                "world.walls".into(),
+                "only a box has walls: remove `walls`, or write boundary = \"box\"",
+            ));
+        }
         // The overlap test looks at the 3×3 cells around each disc (a cell
         // at least the widest diameter): O(n), where testing every earlier
         // disc took a minute for 10⁵ discs (`--gas 100000` built its scene so).
@@ -428,6 +536,20 @@ impl Scene {
             }
             if p.pos.abs().max_element() > limits::POSITION {
                 return Err(bad(field("pos"), "must be within 1e12 m of the origin"));
+            }
+            if let Some(axis) = w.constrain {
+                // The other component would be dropped without a word.
+                let across = p.vel[1 - axis.index()];
+                if across != 0.0 {
+                    let (along, name) = match axis {
+                        crate::boundary::Axis::X => ("x", "vel = [vx, 0]"),
+                        crate::boundary::Axis::Y => ("y", "vel = [0, vy]"),
+                    };
+                    let reason = format!(
+                        "moves across the line of a world constrained to {along}: write {name}"
+                    );
+                    return Err(bad(field("vel"), &reason));
+                }
             }
             if !w.boundary.admits(w.walls, w.size, p.pos, p.radius) {
                 return Err(bad(field("pos"), "puts the disc outside the box"));
@@ -554,7 +676,16 @@ impl Scene {
             translations: Default::default(),
             edited: false,
             overlapping: any_overlap(&world.particles, &world.laws),
-            world: world.laws,
+            // Only a box has walls: a box's walls kept from before the edges
+            // were opened would make the scene refuse to reopen.
+            world: crate::laws::Laws {
+                walls: if world.laws.boundary == crate::Boundary::Box {
+                    world.laws.walls
+                } else {
+                    crate::Walls::ALL
+                },
+                ..world.laws
+            },
             simulation: SimulationSpec {
                 method: world.method,
                 broad_phase: world.broad_phase,
