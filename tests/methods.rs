@@ -3,7 +3,7 @@
 
 mod common;
 use common::{disc, world_with};
-use impulse::auto::{exact_cost_per_second, grid_crowding, MAX_SUBSTEPS};
+use impulse::auto::{exact_cost_per_second, grid_crowding, EXACT_BUDGET, MAX_SUBSTEPS};
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
@@ -248,13 +248,29 @@ fn auto_models_no_more_than_the_scene_needs() {
     let plan = w.plan_for(0.01);
     assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
     assert!(plan.reason.contains("rest"), "{}", plan.reason);
-    // A pile too hot for exact's events to beat impulse's substeps: impulse.
+    // A pile so hot that impulse would need more than its most substeps to
+    // keep the fastest disc within half its radius a substep: not impulse,
+    // which would let discs pass through each other unseen, but exact,
+    // although its events cost more (it says so when it falls behind).
     let mut storm = w.clone();
     for p in &mut storm.particles {
         p.vel *= 1e4;
     }
     let plan = storm.plan_for(0.01);
-    assert_eq!(plan.method, Method::Impulse, "{}", plan.reason);
+    let fastest = storm
+        .particles
+        .iter()
+        .map(|p| p.vel.length())
+        .fold(0.0, f64::max);
+    let smallest = storm
+        .particles
+        .iter()
+        .map(|p| p.radius)
+        .fold(f64::INFINITY, f64::min);
+    let needed = fastest * 0.01 / (0.5 * smallest);
+    assert!(needed > MAX_SUBSTEPS as f64, "the storm is hot: {needed}");
+    assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
+    assert!(plan.reason.contains("substeps"), "{}", plan.reason);
     // Rough discs: exact cannot hold them (no friction in its contact
     // solve), so impulse.
     w.laws.tangential_restitution = 0.0;
@@ -281,7 +297,43 @@ fn auto_models_no_more_than_the_scene_needs() {
         p.vel *= 1000.0;
     }
     assert!(exact_cost_per_second(&hot.particles, &hot.laws, 0.01) > 10.0 * cost);
-    assert_eq!(hot.plan_for(0.01).method, Method::Impulse);
+    // Too costly for exact: impulse, unless impulse could not keep the
+    // fastest disc within half its radius a substep even at its most.
+    let fastest = hot
+        .particles
+        .iter()
+        .map(|p| p.vel.length())
+        .fold(0.0, f64::max);
+    let smallest = hot
+        .particles
+        .iter()
+        .map(|p| p.radius)
+        .fold(f64::INFINITY, f64::min);
+    let plan = hot.plan_for(0.01);
+    if fastest * 0.01 / (0.5 * smallest) > MAX_SUBSTEPS as f64 {
+        assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
+        assert!(plan.reason.contains("substeps"), "{}", plan.reason);
+    } else {
+        assert_eq!(plan.method, Method::Impulse, "{}", plan.reason);
+    }
+    let mut warm = big.clone();
+    for p in &mut warm.particles {
+        p.vel *= 100.0;
+    }
+    let fastest = warm
+        .particles
+        .iter()
+        .map(|p| p.vel.length())
+        .fold(0.0, f64::max);
+    // Within impulse's substeps: the cheaper of the two.
+    assert!(fastest * 0.01 / (0.5 * smallest) <= MAX_SUBSTEPS as f64);
+    let warm_cost = exact_cost_per_second(&warm.particles, &warm.laws, 0.01);
+    let wanted = if warm_cost <= EXACT_BUDGET {
+        Method::Exact
+    } else {
+        Method::Impulse
+    };
+    assert_eq!(warm.plan_for(0.01).method, wanted, "{warm_cost}");
     let mut many = gas(100_000, Boundary::Periodic, 1);
     many.method = Setting::Auto;
     assert_eq!(many.plan_for(0.01).method, Method::Impulse);

@@ -122,3 +122,45 @@ fn warnings_serialise_as_code_and_text() {
     assert_eq!(json[0]["code"], "verlet_loses_energy");
     assert!(json[0]["text"].as_str().unwrap().starts_with("verlet"));
 }
+
+/// A disc far too fast for any fixed step (9×10⁷ m/s in a 1 m box, steps
+/// of 0.5 s): `auto` does not pick a plan that misses its wall hits, and
+/// `impulse`, asked for by name, says what it may miss, measured.
+#[test]
+fn a_bullet_is_never_stepped_in_silence() {
+    let text = "[world]\nsize = [1.0, 1.0]\n\n[[particles]]\npos = [0.5, 0.5]\nvel = [9e7, 0.0]\nmass = 1.0\nradius = 0.1\n";
+    let scene = impulse::Scene::parse(text, "bullet.toml").unwrap();
+    let mut world = scene.build("bullet.toml").unwrap();
+    world.method = impulse::method::Setting::Auto;
+    world.substeps = impulse::method::Setting::Auto;
+    let plan = world.plan_for(0.5);
+    assert_eq!(
+        plan.method,
+        impulse::method::Method::Exact,
+        "{}",
+        plan.reason
+    );
+    world.method = impulse::method::Setting::Fixed(impulse::method::Method::Impulse);
+    let said = impulse::warnings::warnings(&world, 0.5);
+    let substeps = said
+        .iter()
+        .find(|w| w.code == impulse::warnings::SUBSTEPS)
+        .unwrap_or_else(|| panic!("no substeps warning: {said:?}"));
+    // The travel per substep it measured: 9e7 m/s × (0.5 s / 64) / 0.1 m.
+    let radii = substeps
+        .values
+        .iter()
+        .find(|(n, _)| *n == "radii")
+        .unwrap()
+        .1;
+    let k = substeps
+        .values
+        .iter()
+        .find(|(n, _)| *n == "substeps")
+        .unwrap()
+        .1;
+    assert!(
+        (radii - 9e7 * 0.5 / k / 0.1).abs() < 1e-6 * radii,
+        "{radii} with {k}"
+    );
+}

@@ -198,14 +198,17 @@ pub fn exact_cost_per_second(particles: &[Particle], laws: &Laws, dt: f64) -> f6
 /// Substeps that keep the fastest disc (its speed plus a step of gravity)
 /// within [`MAX_TRAVEL_PER_SUBSTEP`] of the smallest radius per substep.
 fn substeps_needed(max_speed: f64, min_r: f64, laws: &Laws, dt: f64, n: usize) -> f64 {
+    substeps_unclamped(max_speed, min_r, laws, dt, n).clamp(1.0, f64::from(MAX_SUBSTEPS))
+}
+
+/// [`substeps_needed`] without its cap.
+fn substeps_unclamped(max_speed: f64, min_r: f64, laws: &Laws, dt: f64, n: usize) -> f64 {
     let fastest = max_speed + laws.gravity.length() * dt;
     let allowed = MAX_TRAVEL_PER_SUBSTEP * min_r;
     if n == 0 || allowed <= 0.0 {
         1.0
     } else {
-        (fastest * dt / allowed)
-            .ceil()
-            .clamp(1.0, f64::from(MAX_SUBSTEPS))
+        (fastest * dt / allowed).ceil().max(1.0)
     }
 }
 
@@ -274,6 +277,26 @@ pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> P
                 }
             }
         }
+    };
+
+    // A fixed step that cannot keep the fastest disc within its radius even
+    // at the most substeps would let it pass through others unseen:
+    // `exact`, which finds every impact whatever the speed (and says so
+    // when it falls behind), where it can hold these discs.
+    let needed = substeps_unclamped(max_speed, min_r, laws, dt, n);
+    let method = if choices.method == Setting::Auto
+        && method == Method::Impulse
+        && needed > f64::from(MAX_SUBSTEPS)
+        && (crate::method::exact::holds_discs(laws)
+            || !(laws.gravity != glam::DVec2::ZERO
+                && (laws.restitution < 1.0 || laws.wall_restitution < 1.0)))
+    {
+        reasons.push(format!(
+            "exact: impulse would need {needed:.0} substeps (at most {MAX_SUBSTEPS}) to keep the fastest disc within half its radius a substep"
+        ));
+        Method::Exact
+    } else {
+        method
     };
 
     let broad_phase = match choices.broad_phase {

@@ -57,14 +57,25 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
         }),
         _ => {}
     }
-    if let (Setting::Fixed(k), Method::Impulse | Method::Verlet) = (world.substeps, method) {
+    // The substeps in use (fixed, or the plan's), against the discs'
+    // speeds now: a disc that moves more than its radius in a substep can
+    // pass through another (or a wall) unseen.
+    let k = match (world.substeps, method) {
+        (_, Method::Seed) => Some(1),
+        (Setting::Fixed(k), Method::Impulse | Method::Verlet) => Some(k),
+        (Setting::Auto, Method::Impulse | Method::Verlet) => Some(plan.substeps),
+        _ => None,
+    };
+    if let Some(k) = k {
         let h = dt / f64::from(k.max(1));
         let worst = world
             .particles
             .iter()
             .map(|p| p.vel.length() * h / p.radius)
             .fold(0.0, f64::max);
-        if several && worst > 1.0 {
+        // One disc can miss walls as well as another disc.
+        let walls = world.laws.boundary == crate::Boundary::Box;
+        if (several || walls && !world.particles.is_empty()) && worst > 1.0 {
             out.push(Warning {
                 code: SUBSTEPS,
                 text: format!(
