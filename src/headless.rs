@@ -204,14 +204,16 @@ impl std::fmt::Display for FellBehind {
 impl std::error::Error for FellBehind {}
 
 /// The one-line warning for a run that fell behind, naming the method and
-/// what to use instead; `None` when it reached the time asked for.
+/// what to do instead (not `--method auto`, which chose `exact` where a
+/// fixed step would have missed impacts); `None` when it reached the time asked for.
 fn fell_behind(s: &Summary) -> Option<String> {
     let short = s.requested_time - s.sim_time > 0.5 * s.dt;
     (s.truncated_steps > 0 && short).then(|| {
         format!(
             "{} cut {} of {} steps short (its event cap) and reached {:.4} s of the {} s asked for: \
-             more collisions per step than an event-driven method can carry; use --method impulse \
-             (a fixed cost per step) or --method auto",
+             more collisions per step than an event-driven method can carry; a smaller --dt \
+             spreads them over more steps, or --method impulse costs the same every step (its \
+             warnings say what it may miss)",
             s.plan.method.name(),
             s.truncated_steps,
             s.steps,
