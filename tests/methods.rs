@@ -233,6 +233,22 @@ fn every_method_stays_finite_and_inside_under_gravity() {
     }
 }
 
+/// The substeps that keep the fastest disc within half the smallest radius
+/// a substep at a step of `dt` (auto's rule, uncapped).
+fn substeps_wanted(w: &World, dt: f64) -> f64 {
+    let fastest = w
+        .particles
+        .iter()
+        .map(|p| p.vel.length())
+        .fold(0.0, f64::max);
+    let smallest = w
+        .particles
+        .iter()
+        .map(|p| p.radius)
+        .fold(f64::INFINITY, f64::min);
+    fastest * dt / (0.5 * smallest)
+}
+
 #[test]
 fn auto_models_no_more_than_the_scene_needs() {
     // Few discs: exact.
@@ -257,17 +273,7 @@ fn auto_models_no_more_than_the_scene_needs() {
         p.vel *= 1e4;
     }
     let plan = storm.plan_for(0.01);
-    let fastest = storm
-        .particles
-        .iter()
-        .map(|p| p.vel.length())
-        .fold(0.0, f64::max);
-    let smallest = storm
-        .particles
-        .iter()
-        .map(|p| p.radius)
-        .fold(f64::INFINITY, f64::min);
-    let needed = fastest * 0.01 / (0.5 * smallest);
+    let needed = substeps_wanted(&storm, 0.01);
     assert!(needed > MAX_SUBSTEPS as f64, "the storm is hot: {needed}");
     assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
     assert!(plan.reason.contains("substeps"), "{}", plan.reason);
@@ -299,18 +305,8 @@ fn auto_models_no_more_than_the_scene_needs() {
     assert!(exact_cost_per_second(&hot.particles, &hot.laws, 0.01) > 10.0 * cost);
     // Too costly for exact: impulse, unless impulse could not keep the
     // fastest disc within half its radius a substep even at its most.
-    let fastest = hot
-        .particles
-        .iter()
-        .map(|p| p.vel.length())
-        .fold(0.0, f64::max);
-    let smallest = hot
-        .particles
-        .iter()
-        .map(|p| p.radius)
-        .fold(f64::INFINITY, f64::min);
     let plan = hot.plan_for(0.01);
-    if fastest * 0.01 / (0.5 * smallest) > MAX_SUBSTEPS as f64 {
+    if substeps_wanted(&hot, 0.01) > MAX_SUBSTEPS as f64 {
         assert_eq!(plan.method, Method::Exact, "{}", plan.reason);
         assert!(plan.reason.contains("substeps"), "{}", plan.reason);
     } else {
@@ -320,13 +316,8 @@ fn auto_models_no_more_than_the_scene_needs() {
     for p in &mut warm.particles {
         p.vel *= 100.0;
     }
-    let fastest = warm
-        .particles
-        .iter()
-        .map(|p| p.vel.length())
-        .fold(0.0, f64::max);
     // Within impulse's substeps: the cheaper of the two.
-    assert!(fastest * 0.01 / (0.5 * smallest) <= MAX_SUBSTEPS as f64);
+    assert!(substeps_wanted(&warm, 0.01) <= MAX_SUBSTEPS as f64);
     let warm_cost = exact_cost_per_second(&warm.particles, &warm.laws, 0.01);
     let wanted = if warm_cost <= EXACT_BUDGET {
         Method::Exact

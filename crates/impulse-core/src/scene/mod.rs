@@ -52,7 +52,10 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
+mod errors;
 mod fill;
+pub use errors::MAX_MESSAGE_CHARS;
+use errors::{kind_of, type_error};
 use fill::DiscCells;
 
 /// The step used when neither the command line nor the scene gives one (s).
@@ -266,99 +269,6 @@ pub enum SceneError {
         /// What is wrong with it.
         reason: String,
     },
-}
-
-/// The longest message an error carries (characters): the parser quotes
-/// the offending line, which may be a whole file of one line.
-pub const MAX_MESSAGE_CHARS: usize = 240;
-
-/// A parser's message on one line, at most [`MAX_MESSAGE_CHARS`]
-/// characters, cut with "…".
-fn one_line(message: &str) -> String {
-    let line = message.trim_end().replace('\n', " | ");
-    if line.chars().count() <= MAX_MESSAGE_CHARS {
-        return line;
-    }
-    let cut: String = line.chars().take(MAX_MESSAGE_CHARS - 1).collect();
-    format!("{cut}…")
-}
-
-/// A TOML error in one short line: for a value of the wrong type, the
-/// field's path and line and what was expected, in plain words
-/// (`fill.count: expected a whole number of at least 0, got -5`); for a
-/// syntax error, the parser's own message.
-fn type_error(
-    text: &str,
-    origin: &str,
-    e: serde_path_to_error::Error<toml::de::Error>,
-) -> SceneError {
-    let path = e.path().to_string();
-    let inner = e.into_inner();
-    if path.is_empty() || path == "." {
-        // A syntax error: the parser's message says where.
-        return SceneError::Syntax {
-            origin: origin.to_string(),
-            message: one_line(&inner.to_string()),
-        };
-    }
-    let line = inner
-        .span()
-        .map(|span| text[..span.start.min(text.len())].matches('\n').count() + 1);
-    let origin = match line {
-        Some(line) => format!("{origin}, line {line}"),
-        None => origin.to_string(),
-    };
-    SceneError::Invalid {
-        origin,
-        field: path,
-        reason: one_line(&plain_words(inner.message())),
-    }
-}
-
-/// serde's words for a type error, as a person reads them: "invalid value:
-/// integer `-5`, expected usize" → "expected a whole number of at least 0,
-/// got -5".
-fn plain_words(message: &str) -> String {
-    if !(message.starts_with("invalid value") || message.starts_with("invalid type")) {
-        return message.to_string(); // an unknown field, a missing one: as serde says
-    }
-    let expected = message.split("expected ").nth(1).unwrap_or("").trim();
-    let wanted = match expected {
-        "usize" | "u64" | "u32" | "u16" | "u8" => "a whole number of at least 0",
-        "i64" | "i32" => "a whole number",
-        "f64" | "f32" => "a number",
-        "a boolean" => "true or false",
-        "" => return message.to_string(),
-        other => other,
-    };
-    let got = message.split('`').nth(1);
-    match got {
-        Some(got) => format!("expected {wanted}, got {got}"),
-        None => format!("expected {wanted}"),
-    }
-}
-
-/// What a path that is not a regular file is, in words.
-fn kind_of(meta: &std::fs::Metadata) -> &'static str {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        let t = meta.file_type();
-        if t.is_fifo() {
-            return "a FIFO";
-        }
-        if t.is_char_device() || t.is_block_device() {
-            return "a device";
-        }
-        if t.is_socket() {
-            return "a socket";
-        }
-    }
-    if meta.is_dir() {
-        "a folder"
-    } else {
-        "not a file"
-    }
 }
 
 impl Scene {
