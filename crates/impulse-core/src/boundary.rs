@@ -208,7 +208,11 @@ impl Boundary {
         wall_law: (f64, crate::rough::Tangential),
         impact_speed: f64,
     ) -> WallReport {
-        self.apply_recording(particles, edges, gravity, wall_law, impact_speed, None)
+        let contact = WallContact {
+            impact_speed,
+            rewind: 0.0,
+        };
+        self.apply_recording(particles, edges, gravity, wall_law, contact, None)
     }
 
     /// [`Boundary::apply`], which with `record` = (`hits`, `time`) also
@@ -221,9 +225,10 @@ impl Boundary {
         (size, walls): (DVec2, Walls),
         gravity: DVec2,
         (wall_restitution, rough): (f64, crate::rough::Tangential),
-        impact_speed: f64,
+        contact: WallContact,
         mut record: Option<(&mut Vec<WallHit>, f64)>,
     ) -> WallReport {
+        let impact_speed = contact.impact_speed;
         match self {
             Boundary::Open => WallReport::default(),
             Boundary::Periodic => {
@@ -241,24 +246,25 @@ impl Boundary {
                 for (k, p) in particles.iter_mut().enumerate() {
                     let (before, spin_before) = (p.vel, p.spin);
                     let (x, y) = (&mut p.pos.x, &mut p.pos.y);
-                    let bounced_x = bounce_axis(
-                        x,
-                        &mut p.vel.x,
+                    let (bounced_x, ago_x) = bounce_axis(
+                        (x, &mut p.vel.x),
                         p.radius,
                         (size.x, [walls.left, walls.right]),
                         gravity.x,
                         wall_restitution,
+                        contact,
                     );
                     let after_x = p.vel;
-                    let bounced_y = bounce_axis(
-                        y,
-                        &mut p.vel.y,
+                    let (bounced_y, ago_y) = bounce_axis(
+                        (y, &mut p.vel.y),
                         p.radius,
                         (size.y, [walls.bottom, walls.top]),
                         gravity.y,
                         wall_restitution,
+                        contact,
                     );
                     let bounced = [bounced_x, bounced_y];
+                    let ago = [ago_x, ago_y];
                     let hit = [0, 1].map(|axis| {
                         bounced[axis] && crate::impact::is_impact(before[axis].abs(), impact_speed)
                     });
@@ -273,6 +279,8 @@ impl Boundary {
                             if bounced[axis] {
                                 let (vel, spin) = (p.vel, p.spin);
                                 rub(p, axis, before[axis], hit[axis], rough);
+                                // On from the touch with the rub's change too.
+                                p.pos += (p.vel - vel) * ago[axis];
                                 change[axis].0 += p.vel - vel;
                                 change[axis].1 += p.spin - spin;
                             }
@@ -365,6 +373,20 @@ fn record_hits(
     }
 }
 
+/// How the walls meet a disc: which bounces are impacts, and how far back
+/// an impact may be rewound to the moment the disc touched the wall.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WallContact {
+    /// Speed into the wall above which a bounce is an impact (see
+    /// [`crate::impact`]).
+    pub impact_speed: f64,
+    /// The substep's length (s) for the impulse method, which places a
+    /// bouncing disc where it would be had it turned at the touch (the
+    /// mirror of its overshoot, shortened by the restitution); 0 for the
+    /// others, which put it at the wall.
+    pub rewind: f64,
+}
+
 /// What the walls did in one boundary stage.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WallReport {
@@ -403,41 +425,61 @@ fn wrap(d: f64, len: f64) -> f64 {
 /// Keeps one coordinate of a disc within `[radius, extent − radius]`, at
 /// the ends that have walls (`sides`: lower, upper).
 ///
-/// Returns whether the disc bounced (was moving into the wall it touched).
+/// Returns whether the disc bounced (was moving into the wall it touched),
+/// and how long ago it touched the wall if it was placed as from that
+/// moment (0 if it was put at the wall).
 fn bounce_axis(
-    pos: &mut f64,
-    vel: &mut f64,
+    (pos, vel): (&mut f64, &mut f64),
     radius: f64,
     (extent, [lower, upper]): (f64, [bool; 2]),
     gravity: f64,
     restitution: f64,
-) -> bool {
+    contact: WallContact,
+) -> (bool, f64) {
     let (lo, hi) = (radius, extent - radius);
     if lo > hi && lower && upper {
         // A disc wider than the box: keep it centred, at rest along this axis.
         *pos = 0.5 * extent;
         *vel = 0.0;
-        return false;
+        return (false, 0.0);
     }
     let (target, into_wall) = if *pos < lo && lower {
         (lo, *vel < 0.0)
     } else if *pos > hi && upper {
         (hi, *vel > 0.0)
     } else {
-        return false;
+        return (false, 0.0);
+    };
+    // An impact within the substep: it touched overshoot / speed ago.
+    let impact = into_wall && crate::impact::is_impact(vel.abs(), contact.impact_speed);
+    let ago = if impact {
+        let ago = (target - *pos).abs() / vel.abs();
+        if ago <= contact.rewind {
+            ago
+        } else {
+            0.0
+        }
+    } else {
+        0.0
     };
     if into_wall {
         *vel *= -restitution;
     }
+    let place = target + *vel * ago;
+    let (place, ago) = if (lo..=hi).contains(&place) {
+        (place, ago)
+    } else {
+        (target, 0.0)
+    };
     // Moving the disc by `shift` against gravity costs −g·shift per unit mass.
-    let shift = target - *pos;
-    *pos = target;
+    let shift = place - *pos;
+    *pos = place;
     let potential_gain = -gravity * shift;
     if potential_gain > 0.0 {
         let speed_sq = (*vel * *vel - 2.0 * potential_gain).max(0.0);
         *vel = speed_sq.sqrt().copysign(*vel);
     }
-    into_wall
+    (into_wall, ago)
 }
 
 #[cfg(test)]
@@ -543,7 +585,10 @@ mod tests {
                 (size, Walls::ALL),
                 DVec2::ZERO,
                 (e, rough),
-                0.0,
+                WallContact {
+                    impact_speed: 0.0,
+                    rewind: 0.0,
+                },
                 Some((&mut hits, 7.0)),
             );
             assert_eq!(report.hits, 2);
@@ -571,11 +616,22 @@ mod tests {
     #[test]
     fn floor_bounce_under_gravity_never_gains_energy() {
         let g = -9.81;
-        for depth in [0.0, 1e-6, 0.01, 0.3] {
-            for v in [-3.0, -0.01, 0.0, 0.5] {
+        // Put at the floor, and (impulse) placed as from the touch.
+        let h = 1.0 / 240.0;
+        let contacts = [0.0, h].map(|rewind| WallContact {
+            impact_speed: crate::impact::threshold(DVec2::new(0.0, g), h),
+            rewind,
+        });
+        for (depth, v, contact) in [0.0, 1e-6, 0.01, 0.3]
+            .into_iter()
+            .flat_map(|d| [-3.0, -0.01, 0.0, 0.5].map(|v| (d, v)))
+            .flat_map(|(d, v)| contacts.map(|c| (d, v, c)))
+        {
+            {
                 let (mut pos, mut vel) = (0.5 - depth, v);
                 let before = 0.5 * v * v - g * pos;
-                bounce_axis(&mut pos, &mut vel, 0.5, (10.0, [true, true]), g, 1.0);
+                let at = (10.0, [true, true]);
+                bounce_axis((&mut pos, &mut vel), 0.5, at, g, 1.0, contact);
                 let after = 0.5 * vel * vel - g * pos;
                 assert!(pos >= 0.5, "disc left inside the floor");
                 // Never more than before, unless the disc had too little

@@ -1,7 +1,7 @@
 //! Narrow phase, the second stage: which candidate pairs really overlap.
 //!
 //! For each overlapping pair it records the unit normal n̂ from the first disc
-//! to the second and the overlap depth. Coincident centres have no direction
+//! to the second, the overlap depth and the pair's relative velocity. Coincident centres have no direction
 //! of their own; they get the fixed normal +x, so the result is deterministic
 //! and never NaN.
 //!
@@ -29,6 +29,10 @@ pub struct Contact {
     pub normal: DVec2,
     /// How far the discs overlap: r₁ + r₂ − distance (> 0).
     pub depth: f64,
+    /// Velocity of disc `j` relative to disc `i` when the contact was found,
+    /// before any impulse of the pass that resolves it: what
+    /// [`crate::resolution`] rewinds the pair along to the moment it touched.
+    pub relative_velocity: DVec2,
 }
 
 /// The normal used when two centres coincide.
@@ -50,6 +54,7 @@ pub fn find_contacts(
             j,
             normal,
             depth,
+            relative_velocity: b.vel - a.vel,
         })
     }));
 }

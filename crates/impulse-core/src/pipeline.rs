@@ -5,7 +5,7 @@
 //! step's [`StageTimings`](crate::stats::StageTimings). The world owns one
 //! and runs a substep through it; the pipeline knows no method.
 
-use crate::boundary::WallReport;
+use crate::boundary::{WallContact, WallReport};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::laws::Laws;
 use crate::ledger::{Ledger, WallHit};
@@ -127,6 +127,7 @@ impl Pipeline {
             restitution: laws.restitution,
             impact_speed: crate::impact::threshold(laws.gravity, h),
             tangential: laws.rough(),
+            substep: h,
         };
         let (contacts, parallel) = (&self.contacts, self.parallel);
         let report: ResolutionReport = self.banded.resolve(
@@ -160,7 +161,9 @@ impl Pipeline {
 
     /// The boundary stage after a (sub)step of `h` seconds, adding what the
     /// walls did to `stats` and, when the ledger is on, each wall hit to it
-    /// at `time` (the end of the (sub)step, when the walls act). It runs
+    /// at `time` (the end of the (sub)step, when the walls act). With
+    /// `at_touch` (the impulse method) a bouncing disc is placed as if it
+    /// had turned when it touched the wall; see [`crate::boundary::WallContact`]. It runs
     /// chunk by chunk, serially too, and the chunks' wall impulses are
     /// added in chunk order, so the sum does not depend on the threads;
     /// the hits go into the ledger in chunk order too.
@@ -168,14 +171,17 @@ impl Pipeline {
         &mut self,
         particles: &mut [Particle],
         laws: &Laws,
-        h: f64,
+        (h, at_touch): (f64, bool),
         (ledger, time): (&mut Ledger, f64),
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
         let (edges, gravity) = ((laws.size, laws.walls), laws.gravity);
         let e = (laws.wall_restitution, laws.wall_rough());
-        let impact_speed = crate::impact::threshold(gravity, h);
+        let contact = WallContact {
+            impact_speed: crate::impact::threshold(gravity, h),
+            rewind: if at_touch { h } else { 0.0 },
+        };
         let recording = ledger.is_on();
         parallel::map_chunks_mut(
             self.parallel,
@@ -184,8 +190,7 @@ impl Pipeline {
                 let mut hits = Vec::new();
                 let record = recording.then_some((&mut hits, time));
                 let boundary = laws.boundary;
-                let report =
-                    boundary.apply_recording(chunk, edges, gravity, e, impact_speed, record);
+                let report = boundary.apply_recording(chunk, edges, gravity, e, contact, record);
                 (report, hits)
             },
             &mut self.walls,

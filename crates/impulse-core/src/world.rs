@@ -207,7 +207,13 @@ impl World {
         pipeline.narrow_phase(particles, laws, stats);
         pipeline.resolve(particles, (laws, h), rule, (&mut *ledger, time), stats);
         pipeline.integrate(particles, laws.gravity, h, stats);
-        pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
+        pipeline.apply_boundary(
+            particles,
+            laws,
+            (h, rule.at_touch),
+            (ledger, time + h),
+            stats,
+        );
     }
 
     /// Plans again when anything `auto` looks at may have changed (the

@@ -15,7 +15,9 @@
 //!
 //! 1. a contact (or a disc at a wall) that comes into the substep faster
 //!    than the [`crate::impact::threshold`] is an *impact*: [`PASSES`] Gauss–Seidel
-//!    sweeps apply the collision law with restitution e to the impacts;
+//!    sweeps apply the collision law with restitution e to the impacts
+//!    (one made within the substep where the pair touched, as
+//!    [`crate::resolution`] does it);
 //! 2. then gravity acts (v ← v + g·h), and every contact that still
 //!    approaches is *resting*: [`PASSES`] sweeps, bottom-up, make them
 //!    stop (restitution 0), walls included, so support travels up;
@@ -45,7 +47,7 @@ use crate::laws::Laws;
 use crate::ledger::{Collision, Ledger, Wall, WallHit};
 use crate::narrow_phase::Contact;
 use crate::pipeline::Pipeline;
-use crate::resolution::{collision_velocities, push_apart, rough_pair, rough_wall};
+use crate::resolution::{collision_velocities, push_apart, rough_pair, rough_wall, Touch};
 use crate::rough::Tangential;
 use crate::stats::{Lap, StepStats};
 use crate::{Boundary, Particle};
@@ -70,6 +72,9 @@ pub(crate) struct Scratch {
     fast_at_walls: Vec<[bool; 2]>,
     /// Per contact: is it an impact?
     impacts: Vec<bool>,
+    /// Per contact: when and where an impact touched, if that is defined
+    /// (see [`crate::resolution`]'s "at the touch").
+    touches: Vec<Option<Touch>>,
 }
 
 /// Whether a world needs this substep: gravity, and collisions that lose
@@ -98,6 +103,7 @@ pub(crate) fn substep(
     let Scratch {
         fast_at_walls,
         impacts,
+        touches,
     } = scratch;
     fast_at_walls.clear();
     fast_at_walls.extend(
@@ -120,6 +126,15 @@ pub(crate) fn substep(
             .iter()
             .map(|c| approach(particles, c) < -resting_speed),
     );
+    // An impact made within the last substep is resolved where the pair
+    // touched, with the normal there, and each disc moved on by τ·Δv.
+    touches.clear();
+    touches.extend(contacts.iter().zip(impacts.iter()).map(|(c, &impact)| {
+        let reach = particles[c.i as usize].radius + particles[c.j as usize].radius;
+        impact
+            .then(|| Touch::of(c, reach, (resting_speed, h)))
+            .flatten()
+    }));
     let walls = Walls {
         laws,
         fast: fast_at_walls,
@@ -132,13 +147,22 @@ pub(crate) fn substep(
     let mut pair_impacts = 0;
     for pass in 0..PASSES {
         walls.hold(particles, stats, Hold::Impacts, (&mut *ledger, time));
-        for (c, &impact) in contacts.iter().zip(impacts.iter()) {
+        for ((c, &impact), touch) in contacts.iter().zip(impacts.iter()).zip(touches.iter()) {
             if impact {
                 let (i, j) = (c.i as usize, c.j as usize);
                 let before = [particles[i].vel, particles[j].vel];
                 let spins_before = [particles[i].spin, particles[j].spin];
+                let at_touch = touch.map(|t| Contact {
+                    normal: t.normal,
+                    ..*c
+                });
+                let c = at_touch.as_ref().unwrap_or(c);
                 let counted = pass == 0 && approach(particles, c) < 0.0;
                 collide(particles, c, laws.restitution, None, Some(laws.rough()));
+                if let Some(t) = touch {
+                    particles[i].pos += (particles[i].vel - before[0]) * t.ago;
+                    particles[j].pos += (particles[j].vel - before[1]) * t.ago;
+                }
                 pair_impacts += usize::from(counted);
                 if counted && ledger.is_on() {
                     ledger.push(Collision {
@@ -193,7 +217,7 @@ pub(crate) fn substep(
     // catches is a disc that moved into a wall during this substep, counted
     // there as an impact if fast; its resting contacts are counted above.
     let resting = stats.resting_contacts;
-    pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
+    pipeline.apply_boundary(particles, laws, (h, true), (ledger, time + h), stats);
     stats.resting_contacts = resting;
 }
 

@@ -110,5 +110,5 @@ pub(crate) fn substep(
         }
     }
     stats.timings.resolution += lap.elapsed();
-    pipeline.apply_boundary(particles, laws, h, (ledger, time + h), stats);
+    pipeline.apply_boundary(particles, laws, (h, false), (ledger, time + h), stats);
 }

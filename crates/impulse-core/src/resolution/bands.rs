@@ -365,6 +365,7 @@ mod tests {
                     j,
                     normal: DVec2::X,
                     depth: 0.1,
+                    relative_velocity: DVec2::ZERO,
                 };
                 (contact, [band(&mut rng), band(&mut rng)])
             })

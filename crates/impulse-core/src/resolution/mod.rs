@@ -18,6 +18,19 @@
 //!
 //! Overlap is then removed by moving the discs apart along n̂, each by a share
 //! proportional to its inverse mass, so the centre of mass does not move.
+//!
+//! **At the touch** ([`Rule::at_touch`], the impulse method): an overlap
+//! found now was made by the previous substep, so the discs touched τ
+//! seconds ago, τ ∈ [0, h]. For an impact the pair is rewound along the
+//! velocities it had when found ([`Contact::relative_velocity`]) to where
+//! |x₂ − x₁| = r₁ + r₂; the normal is taken there (and, for rough discs, the
+//! contact point with it), the impulse applied, and each disc moved on by
+//! τ·Δv, as if the impulse had acted at the touch. An isolated impact then
+//! gives the closed form, and total angular momentum (orbital plus spin) is
+//! kept, since the impulse acts along the line of centres at the touch.
+//! Where τ is not defined (discs overlapping from the start, resting
+//! contacts, a pair not closing when found) the contact falls back to the
+//! normal where the discs overlap and push-apart.
 
 mod bands;
 
@@ -38,15 +51,20 @@ pub struct ContactLaw {
     pub impact_speed: f64,
     /// What impacts do along the contact.
     pub tangential: Tangential,
+    /// Length of the substep that made the overlaps (s): how far back a
+    /// [`Rule::at_touch`] resolution may rewind a pair (0: not at all).
+    pub substep: f64,
 }
 
 impl ContactLaw {
-    /// Smooth discs with restitution `e`, impacts above `impact_speed`.
+    /// Smooth discs with restitution `e`, impacts above `impact_speed`,
+    /// resolved where they overlap (no substep to rewind).
     pub fn smooth(restitution: f64, impact_speed: f64) -> ContactLaw {
         ContactLaw {
             restitution,
             impact_speed,
             tangential: Tangential::SMOOTH,
+            substep: 0.0,
         }
     }
 }
@@ -102,23 +120,31 @@ pub struct Rule {
     pub velocities: Velocities,
     /// Overlap removal.
     pub push_apart: PushApart,
+    /// Resolve impacts where the discs touched, not where they overlap
+    /// (see the module's doc); falls back to the overlap where that moment
+    /// is not defined.
+    pub at_touch: bool,
 }
 
 impl Rule {
-    /// Impulse method: approaching pairs only, inverse-mass push-apart.
+    /// Impulse method: approaching pairs only, impacts at the touch, else
+    /// inverse-mass push-apart.
     pub const IMPULSE: Rule = Rule {
         velocities: Velocities::ApproachingOnly,
         push_apart: PushApart::InverseMass,
+        at_touch: true,
     };
     /// The presentation's method: every overlapping pair, half each.
     pub const SEED: Rule = Rule {
         velocities: Velocities::Always,
         push_apart: PushApart::HalfEach,
+        at_touch: false,
     };
     /// Position projection (Verlet): no velocity change, inverse-mass push.
     pub const PROJECTION: Rule = Rule {
         velocities: Velocities::Never,
         push_apart: PushApart::InverseMass,
+        at_touch: false,
     };
 }
 
@@ -154,11 +180,16 @@ fn resolve_contact(
     let (restitution, impact_speed) = (law.restitution, law.impact_speed);
     let before = [a.vel, b.vel];
     let spins_before = [a.spin, b.spin];
-    let closing = (a.vel - b.vel).dot(c.normal);
+    let touch = match rule.at_touch {
+        true => Touch::of(c, a.radius + b.radius, (law.impact_speed, law.substep)),
+        false => None,
+    };
+    let normal = touch.map_or(c.normal, |t| t.normal);
+    let closing = (a.vel - b.vel).dot(normal);
     let collided = match rule.velocities {
-        Velocities::ApproachingOnly => collide(a, b, c.normal, restitution),
+        Velocities::ApproachingOnly => collide(a, b, normal, restitution),
         Velocities::Always => {
-            apply_collision_law(a, b, c.normal, restitution);
+            apply_collision_law(a, b, normal, restitution);
             true
         }
         Velocities::Never => false,
@@ -171,8 +202,8 @@ fn resolve_contact(
             law.tangential.resting()
         };
         if let Some(rubs) = rubs {
-            let normal_impulse = a.mass * (a.vel - before[0]).dot(c.normal).abs();
-            rough_pair(a, b, c.normal, normal_impulse, rubs);
+            let normal_impulse = a.mass * (a.vel - before[0]).dot(normal).abs();
+            rough_pair(a, b, normal, normal_impulse, rubs);
         }
     }
     report.collisions += usize::from(impact);
@@ -181,7 +212,7 @@ fn resolve_contact(
         ledger.push(Collision {
             time,
             discs: [c.i as usize, c.j as usize],
-            normal: c.normal,
+            normal,
             masses: [a.mass, b.mass],
             before,
             after: [a.vel, b.vel],
@@ -190,14 +221,64 @@ fn resolve_contact(
             spins_after: [a.spin, b.spin],
         });
     }
-    match rule.push_apart {
-        PushApart::InverseMass => push_apart(a, b, c.normal, c.depth),
-        PushApart::HalfEach => {
+    match (touch, rule.push_apart) {
+        // On from the touch with the new velocities: no overlap is left.
+        (Some(t), _) if collided => {
+            a.pos += (a.vel - before[0]) * t.ago;
+            b.pos += (b.vel - before[1]) * t.ago;
+        }
+        (_, PushApart::InverseMass) => push_apart(a, b, c.normal, c.depth),
+        (_, PushApart::HalfEach) => {
             a.pos -= c.normal * (0.5 * c.depth);
             b.pos += c.normal * (0.5 * c.depth);
         }
     }
     report.max_overlap = report.max_overlap.max(c.depth);
+}
+
+/// When and where an overlapping pair touched (see the module's doc).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Touch {
+    /// How long ago (s), in [0, the substep].
+    pub(crate) ago: f64,
+    /// Unit normal from the first disc to the second at that moment.
+    pub(crate) normal: DVec2,
+}
+
+impl Touch {
+    /// The touch of contact `c` between discs whose radii add up to
+    /// `reach`, if it was an impact (closing faster than `impact_speed`)
+    /// made within the last `substep` seconds: the root τ ≥ 0 of
+    /// |d − τ·u| = reach, with d the centres' separation and u the
+    /// relative velocity when the contact was found.
+    pub(crate) fn of(
+        c: &Contact,
+        reach: f64,
+        (impact_speed, substep): (f64, f64),
+    ) -> Option<Touch> {
+        let u = c.relative_velocity;
+        let distance = reach - c.depth;
+        let d = c.normal * distance;
+        let du = d.dot(u);
+        // Closing, and fast enough to be an impact (resting contacts and
+        // pairs not closing when found keep the overlap's rule).
+        if !crate::impact::is_impact(-u.dot(c.normal), impact_speed) || du >= 0.0 {
+            return None;
+        }
+        // |u|²τ² − 2(d·u)τ + (|d|² − reach²) = 0 has one root of each sign
+        // (|d| < reach); the positive one, written without cancellation.
+        let gap = (distance - reach) * (distance + reach);
+        let root = (du * du - u.length_squared() * gap).sqrt();
+        let ago = gap / (du - root);
+        if !(0.0..=substep).contains(&ago) {
+            return None; // overlapping from before the substep began
+        }
+        // |d − τ·u| = reach to rounding: a unit normal without a square root.
+        Some(Touch {
+            ago,
+            normal: (d - u * ago) / reach,
+        })
+    }
 }
 
 /// Applies the collision law along `normal` (from `a` to `b`) if the pair
