@@ -77,6 +77,9 @@ struct Summary {
     /// Whether no collision can happen any more (see `World::collisions_over`).
     collisions_over: bool,
     max_overlap: f64,
+    /// The largest distance a disc moved in one substep, in its own radii
+    /// (measured; 0 for `exact`): above 1 it may have passed through another.
+    max_travel: f64,
     momentum: DVec2,
     /// Of translation; rotation is `rotational_energy`.
     kinetic_energy: f64,
@@ -133,11 +136,13 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
     let every = progress_every();
     let mut said = started;
     let mut max_overlap = 0.0f64;
+    let mut max_travel = 0.0f64;
     let mut truncated_steps = 0u64;
     let bar = crate::progress::bar(steps as u64, "simulating");
     for k in 0..steps as u64 {
         let stats = world.step(dt);
         max_overlap = max_overlap.max(stats.max_overlap);
+        max_travel = max_travel.max(stats.max_travel);
         truncated_steps += u64::from(stats.truncated);
         if k % 256 == 0 {
             bar.set_position(k);
@@ -166,12 +171,16 @@ pub fn run(args: &RunArgs) -> anyhow::Result<()> {
         wall_hits: world.total_wall_hits,
         collisions_over: world.collisions_over(),
         max_overlap,
+        max_travel,
         momentum: metrics.momentum,
         kinetic_energy: metrics.kinetic_energy,
         rotational_energy: metrics.rotational_energy,
         angular_momentum: metrics.angular_momentum,
         wall_clock_seconds: started.elapsed().as_secs_f64(),
-        warnings: impulse::warnings::warnings(&world, dt),
+        warnings: {
+            let measured = (steps >= 1.0).then_some(max_travel);
+            impulse::warnings::warnings_with_travel(&world, dt, measured)
+        },
         plan,
         particles: world.particles,
     };
@@ -251,6 +260,9 @@ fn summary_text(s: &Summary) -> String {
     println!("pair collisions  {}", s.pair_collisions);
     println!("wall hits        {}", s.wall_hits);
     println!("max overlap      {:.3e} m", s.max_overlap);
+    if s.max_travel > 0.0 {
+        println!("max travel       {:.3} radii per substep", s.max_travel);
+    }
     println!(
         "momentum         ({:.9}, {:.9}) kg m/s",
         s.momentum.x, s.momentum.y

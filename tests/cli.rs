@@ -397,6 +397,24 @@ fn a_run_that_falls_behind_says_so_and_exits_with_its_own_code() {
     let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(summary["truncated_steps"], 0);
     assert!((summary["sim_time"].as_f64().unwrap() - 3.0).abs() < 1e-9);
+    // ...and says it may have missed hits, with the travel it measured: at
+    // 10⁶ m/s a substep of at most 1/64 s is over 10⁴ radii.
+    let travel = summary["max_travel"].as_f64().unwrap();
+    assert!(travel > 1e4, "{travel}");
+    let warnings = summary["warnings"].as_array().unwrap();
+    let substeps = warnings
+        .iter()
+        .find(|w| w["code"] == "substeps_too_few")
+        .unwrap_or_else(|| panic!("{warnings:?}"));
+    let radii = substeps["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|v| v[0] == "radii")
+        .unwrap()[1]
+        .as_f64()
+        .unwrap();
+    assert_eq!(radii, travel, "the warning quotes the measured travel");
 }
 
 #[test]

@@ -164,3 +164,39 @@ fn a_bullet_is_never_stepped_in_silence() {
         "{radii} with {k}"
     );
 }
+
+/// The travel a warning quotes is measured by the steps that ran, not
+/// guessed from the speeds at the end: a disc at 2 radii per substep that
+/// a dead wall (restitution 0) stops is at rest when the run ends, yet the
+/// run's warnings say it moved 2 radii in a substep (48 m/s × 1/240 s /
+/// 0.1 m), and its last step, measured at rest, no longer warns the top bar.
+#[test]
+fn the_travel_a_warning_quotes_is_measured_over_the_run() {
+    let mut w = World::new(DVec2::splat(10.0));
+    w.laws.wall_restitution = 0.0;
+    w.method = Setting::Fixed(Method::Impulse);
+    w.substeps = Setting::Fixed(1);
+    w.particles = vec![Particle::new(
+        DVec2::new(5.0, 5.0),
+        DVec2::new(48.0, 0.0),
+        1.0,
+        0.1,
+        Color::palette(0),
+    )];
+    let mut travelled = 0.0f64;
+    for _ in 0..120 {
+        travelled = travelled.max(w.step(DT).max_travel);
+    }
+    assert_eq!(w.particles[0].vel, DVec2::ZERO, "stopped by the wall");
+    assert!((travelled - 2.0).abs() < 1e-12, "measured {travelled}");
+    let said = warnings::warnings_with_travel(&w, DT, Some(travelled));
+    let substeps = said
+        .iter()
+        .find(|x| x.code == warnings::SUBSTEPS)
+        .unwrap_or_else(|| panic!("the run's warnings: {said:?}"));
+    assert!(substeps.text.contains("moved 2.0×"), "{}", substeps.text);
+    assert!(
+        !codes(&warnings(&w, DT)).contains(&warnings::SUBSTEPS),
+        "the last step, at rest, moved nothing"
+    );
+}

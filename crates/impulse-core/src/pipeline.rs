@@ -32,6 +32,8 @@ pub(crate) struct Pipeline {
     walls: Vec<(WallReport, Vec<WallHit>)>,
     /// Scratch: large contact lists grouped into bands for resolution.
     banded: crate::resolution::Banded,
+    /// Scratch: the largest travel per chunk of discs in the integration.
+    travels: Vec<f64>,
 }
 
 impl Pipeline {
@@ -45,6 +47,7 @@ impl Pipeline {
             contact_chunks: Vec::new(),
             walls: Vec::new(),
             banded: Default::default(),
+            travels: Vec::new(),
         }
     }
 
@@ -144,18 +147,24 @@ impl Pipeline {
         stats.timings.resolution += lap.elapsed();
     }
 
-    /// The integration stage (semi-implicit Euler), chunk by chunk.
+    /// The integration stage (semi-implicit Euler), chunk by chunk; keeps
+    /// the largest travel in [`StepStats::max_travel`].
     pub(crate) fn integrate(
-        &self,
+        &mut self,
         particles: &mut [Particle],
         gravity: DVec2,
         h: f64,
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
-        parallel::for_chunks_mut(self.parallel, particles, |chunk| {
-            crate::integration::integrate(chunk, gravity, h)
-        });
+        parallel::map_chunks_mut(
+            self.parallel,
+            particles,
+            |chunk| crate::integration::integrate(chunk, gravity, h),
+            &mut self.travels,
+        );
+        let travel = self.travels.iter().copied().fold(0.0, f64::max);
+        stats.max_travel = stats.max_travel.max(travel);
         stats.timings.integration += lap.elapsed();
     }
 

@@ -69,6 +69,10 @@ pub struct StepStats {
     pub max_overlap: f64,
     /// Substeps the step was split into.
     pub substeps: u32,
+    /// The largest distance a disc moved in one substep, in its own radii
+    /// (fixed-step methods; 0 for `exact`, which never passes a disc
+    /// through another). Above 1 a disc may have passed through another.
+    pub max_travel: f64,
     /// Events the exact method processed (collisions, wall hits, cell
     /// crossings, re-predictions of stale events).
     pub events: usize,

@@ -30,9 +30,18 @@ pub const SUBSTEPS: &str = "substeps_too_few";
 pub const STALL: &str = "step_cut_short";
 
 /// The warnings that apply to `world` stepped at `dt` now: the method the
-/// last step used (or would use), the discs' speeds against the substep,
-/// and whether the last step was cut short.
+/// last step used (or would use), how far a disc moved in a substep of the
+/// last step (measured; before the first step, from the speeds), and
+/// whether the last step was cut short.
 pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
+    let measured = (world.steps > 0).then(|| world.last_stats().max_travel);
+    warnings_with_travel(world, dt, measured)
+}
+
+/// [`warnings`] with the largest travel per substep (in radii) `measured`
+/// over a whole run, as `run` reports it (`None`: nothing ran yet, so it
+/// is judged from the speeds now).
+pub fn warnings_with_travel(world: &World, dt: f64, measured: Option<f64>) -> Vec<Warning> {
     let mut out = Vec::new();
     let plan = world.plan().cloned().unwrap_or_else(|| world.plan_for(dt));
     // A method just switched to applies from the next step on.
@@ -68,22 +77,33 @@ pub fn warnings(world: &World, dt: f64) -> Vec<Warning> {
     };
     if let Some(k) = k {
         let h = dt / f64::from(k.max(1));
-        let worst = world
-            .particles
-            .iter()
-            .map(|p| p.vel.length() * h / p.radius)
-            .fold(0.0, f64::max);
+        // Measured by the steps that ran with these substeps; else judged
+        // from the speeds now.
+        let measured = measured.filter(|_| world.last_stats().substeps == k.max(1));
+        let worst = measured.unwrap_or_else(|| {
+            world
+                .particles
+                .iter()
+                .map(|p| p.vel.length() * h / p.radius)
+                .fold(0.0, f64::max)
+        });
+        let plural = if k == 1 { "" } else { "s" };
+        let text = match measured {
+            Some(_) => format!(
+                "{k} substep{plural} per step: a disc moved {worst:.1}× its radius in one substep \
+                 and may have passed through others"
+            ),
+            None => format!(
+                "{k} substep{plural} per step: the fastest disc moves {worst:.1}× its radius per \
+                 substep and can pass through others"
+            ),
+        };
         // One disc can miss walls as well as another disc.
         let walls = world.laws.boundary == crate::Boundary::Box;
         if (several || walls && !world.particles.is_empty()) && worst > 1.0 {
             out.push(Warning {
                 code: SUBSTEPS,
-                text: format!(
-                    "{k} substep{} per step: the fastest disc moves {:.1}× its radius per substep \
-                     and can pass through others",
-                    if k == 1 { "" } else { "s" },
-                    worst
-                ),
+                text,
                 values: vec![("substeps", f64::from(k)), ("radii", worst)],
             });
         }

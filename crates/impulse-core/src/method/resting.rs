@@ -208,10 +208,8 @@ pub(crate) fn substep(
         stats.max_overlap = stats.max_overlap.max(c.depth);
     }
     stats.timings.resolution += lap.lap();
-    for p in particles.iter_mut() {
-        p.pos += p.vel * h;
-        p.angle += p.spin * h;
-    }
+    let travel = crate::integration::integrate(particles, DVec2::ZERO, h);
+    stats.max_travel = stats.max_travel.max(travel);
     stats.timings.integration += lap.elapsed();
     // The sweeps held the discs at the walls: what the wall stage still
     // catches is a disc that moved into a wall during this substep, counted
