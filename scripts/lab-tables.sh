@@ -9,6 +9,8 @@
 # tests/lab_tables.rs checks that the deterministic columns of the quick tables
 # (counts, errors, drifts; not timings) still match what the code produces, so
 # after a change to the physics that moves them, run this and commit the result.
+# tests/lab_figures.rs checks that every figure README.md and the lab notes
+# quote is what its committed table holds; the full run rewrites those quotes.
 set -eu
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
@@ -21,5 +23,9 @@ if [ "${1:-}" != "--quick" ]; then
     "$bin" bench --out docs/lab
     "$bin" accuracy --out docs/lab
     "$bin" stress --out docs/lab
+    # The figures README.md and docs/lab/NOTES.md quote, each marked with the
+    # table cell it comes from, rewritten from the new tables (the same test
+    # then checks them on every `cargo test`).
+    IMPULSE_UPDATE_FIGURES=1 cargo test --quiet --test lab_figures
 fi
-echo "lab tables written; commit docs/lab"
+echo "lab tables written; commit docs/lab (and README.md, if its quoted figures moved)"
