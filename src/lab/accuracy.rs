@@ -12,16 +12,22 @@
 //! - wall pressure: relative error of the momentum the walls transfer.
 //!
 //! The scene is a 100-disc elastic gas at 30 % area fraction in a closed box.
-//! Points on the Pareto front (no other point is both cheaper and more
-//! accurate) are marked. Errors of exactly zero are drawn at 1e-16.
+//! In the charts each method has its colour (as in every lab chart), each
+//! substep count its marker and line style, a method's points are joined in
+//! order of step size and each carries its step ("1/240"), and each line is
+//! named at its end. Points on the Pareto front of cost against |error| (no
+//! other point is both cheaper and more accurate) are ringed, where they lie
+//! above the noise floor and below an error of 1 (a run that gains 40× its
+//! energy is not on it, however cheap). Errors of exactly zero are drawn at
+//! 1e-16.
 //!
 //! After a few collisions a gas is chaotic: two runs that differ only in
 //! rounding part ways, and counts over [`HORIZON`] then differ by sampling
 //! noise. `exact` run at other step sizes measures that noise floor (it
-//! differs from the reference only in rounding), drawn as a dashed line:
-//! errors below it are not the method's.
+//! differs from the reference only in rounding), drawn as a labelled dashed
+//! line with the band under it shaded: errors below it are not the method's.
 
-use super::chart::{write_chart, Chart, Series};
+use super::chart::{method_colour, write_chart, Chart, Series};
 use crate::progress;
 use impulse::boundary::Boundary;
 use impulse::method::{Method, Setting};
@@ -252,130 +258,152 @@ pub fn run(args: &AccuracyArgs) -> anyhow::Result<()> {
     print!("{table}");
     crate::files::write_atomically(&args.out.join("accuracy.md"), table.as_bytes())?;
     crate::files::write_atomically(&args.out.join("accuracy.csv"), csv(&points).as_bytes())?;
+    write_charts(&points, &args.out)
+}
+
+/// One chart per error measure, `accuracy-<name>.png` and `.svg` in `out`.
+pub(crate) fn write_charts(points: &[Point], out: &std::path::Path) -> anyhow::Result<()> {
     for (name, label, error) in METRICS {
-        let mut series = series_by_method(&points, error);
-        let floor = noise_floor(&points, error);
-        // Below the noise floor the errors are rounding, not accuracy.
-        let mut front = pareto_front(&points, error);
-        let level = floor.points.first().map_or(0.0, |p| p.1);
-        for p in &mut front.points {
-            p.1 = p.1.max(level);
-        }
-        series.push(floor);
+        let series = series_by_method(points, error);
+        let floor = noise_floor(points, error);
+        let front = pareto_front(points, error, floor);
+        let subtitle = if front.points.is_empty() {
+            let at_floor = points
+                .iter()
+                .filter(|p| error(p).abs() <= floor)
+                .min_by(|a, b| a.cost.total_cmp(&b.cost))
+                .map_or("none", |p| p.method.name());
+            format!("beside each point: its step dt (s) · Pareto front on |error|: none above the noise floor (cheapest at the floor: {at_floor})")
+        } else {
+            "beside each point: its step dt (s) · black rings: Pareto front on |error|, above the noise floor (errors ≥ 1 not on it)".to_owned()
+        };
         let title = format!("Speed against accuracy: {name}");
         let chart = Chart {
             title: &title,
+            subtitle: &subtitle,
             x_label: "cost: wall-clock seconds per simulated second",
             y_label: label,
             log_x: true,
             log_y: true,
             series: &series,
             highlight: Some(&front),
+            direct_labels: true,
+            floor: Some((floor, FLOOR_LABEL)),
         };
-        let (png, _) = write_chart(&chart, &args.out.join(format!("accuracy-{name}")))?;
+        let (png, _) = write_chart(&chart, &out.join(format!("accuracy-{name}")))?;
         println!("wrote {}", png.display());
     }
     Ok(())
 }
 
-/// One series per method and substep count: a colour per method, a marker
-/// per substep count, its points joined in step order (largest step, the
-/// cheapest, first), so that each line is a convergence curve.
-fn series_by_method(points: &[Point], error: fn(&Point) -> f64) -> Vec<Series> {
-    let mut series: Vec<(Method, u32, Series)> = Vec::new();
+/// What the shaded band under the floor is.
+const FLOOR_LABEL: &str = "noise floor (rounding): exact against exact at other steps";
+
+/// An error of this size or more (100 %, or a disc radius) is no accuracy at
+/// all: such a point is not on the Pareto front however cheap it is.
+const NO_ACCURACY: f64 = 1.0;
+
+/// `dt` as a reader knows it: "1/240" where it is one over a whole number,
+/// else the decimal ("0.03").
+pub fn dt_label(dt: f64) -> String {
+    let n = 1.0 / dt;
+    if n.is_finite() && n >= 1.0 && (n - n.round()).abs() < 1e-6 * n {
+        format!("1/{}", n.round())
+    } else {
+        format!("{dt}")
+    }
+}
+
+/// One series per method and substep count, its points joined in order of
+/// step size (largest step, the cheapest, first: a convergence curve, no
+/// zig-zag), each labelled with its step. A colour per method (as in every
+/// chart); a marker and line style per substep count (circle and solid 1,
+/// square and dashed up to 8, triangle and dotted more); `exact` diamonds;
+/// `seed`, which lies on `impulse, 1 substep` at larger steps, hollow rings
+/// on a dash-dot line so that both show. Impulse first, so seed is drawn
+/// over it.
+pub(crate) fn series_by_method(points: &[Point], error: fn(&Point) -> f64) -> Vec<Series> {
+    let mut keys: Vec<(Method, u32)> = Vec::new();
     for p in points {
-        let xy = (p.cost, error(p).max(ZERO_ERROR));
-        match series
-            .iter_mut()
-            .find(|(m, k, _)| *m == p.method && *k == p.substeps)
-        {
-            Some((_, _, s)) => s.points.push(xy),
-            None => series.push((
-                p.method,
-                p.substeps,
-                Series {
-                    name: match (p.method.uses_substeps(), p.substeps) {
-                        (false, _) => p.method.name().to_string(),
-                        (true, 1) => format!("{}, 1 substep", p.method.name()),
-                        (true, k) => format!("{}, {k} substeps", p.method.name()),
-                    },
-                    points: vec![xy],
-                    colour: Some(method_colour(p.method)),
-                    marker: Some(substep_marker(p.method, p.substeps)),
-                    ..Default::default()
-                },
-            )),
+        if !keys.contains(&(p.method, p.substeps)) {
+            keys.push((p.method, p.substeps));
         }
     }
-    series.sort_by_key(|(m, k, _)| (method_colour(*m), *k));
-    series.into_iter().map(|(_, _, s)| s).collect()
-}
-
-/// The method's colour in the charts (indices into the chart palette:
-/// orange, sky blue, bluish green, blue), the same in every chart.
-pub fn method_colour(method: Method) -> usize {
-    match method {
-        Method::Seed => 0,
-        Method::Impulse => 1,
+    let rank = |m: Method| match m {
+        Method::Impulse => 0,
+        Method::Seed => 1,
         Method::Verlet => 2,
-        Method::Exact => 4,
-    }
+        Method::Exact => 3,
+    };
+    keys.sort_by_key(|&(m, k)| (rank(m), k));
+    keys.into_iter()
+        .map(|(method, substeps)| {
+            let mut mine: Vec<&Point> = points
+                .iter()
+                .filter(|p| p.method == method && p.substeps == substeps)
+                .collect();
+            mine.sort_by(|a, b| b.dt.total_cmp(&a.dt));
+            let style = match substeps {
+                0..=1 => 0,
+                2..=8 => 1,
+                _ => 2,
+            };
+            Series {
+                name: match (method.uses_substeps(), substeps) {
+                    (false, _) => method.name().to_string(),
+                    (true, 1) => format!("{method}, 1 substep"),
+                    (true, k) => format!("{method}, {k} substeps"),
+                },
+                points: mine
+                    .iter()
+                    .map(|p| (p.cost, error(p).abs().max(ZERO_ERROR)))
+                    .collect(),
+                point_labels: mine.iter().map(|p| dt_label(p.dt)).collect(),
+                colour: Some(method_colour(method)),
+                marker: Some(match method {
+                    Method::Exact => 3,
+                    _ => style,
+                }),
+                line: Some(match method {
+                    Method::Seed => 3,
+                    Method::Exact => 0,
+                    _ => style,
+                }),
+                hollow: method == Method::Seed,
+                ..Default::default()
+            }
+        })
+        .collect()
 }
 
-/// A marker per substep count: circle 1, square 4 (or 8), triangle 16;
-/// `exact` a diamond.
-fn substep_marker(method: Method, substeps: u32) -> usize {
-    match (method, substeps) {
-        (Method::Exact, _) => 3,
-        (_, 0..=1) => 0,
-        (_, 2..=8) => 1,
-        _ => 2,
-    }
-}
-
-/// The largest error of `exact` against itself at other step sizes, drawn
-/// across the whole cost range.
-fn noise_floor(points: &[Point], error: fn(&Point) -> f64) -> Series {
-    let floor = points
+/// The largest error of `exact` against itself at other step sizes: what
+/// rounding alone gives (errors of zero count as [`ZERO_ERROR`]).
+pub(crate) fn noise_floor(points: &[Point], error: fn(&Point) -> f64) -> f64 {
+    points
         .iter()
         .filter(|p| p.method == Method::Exact)
-        .map(error)
-        .fold(ZERO_ERROR, f64::max);
-    let (lo, hi) = points
-        .iter()
-        .map(|p| p.cost)
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), c| {
-            (lo.min(c), hi.max(c))
-        });
-    Series {
-        name: "noise floor (exact vs exact)".into(),
-        points: vec![(lo, floor), (hi, floor)],
-        dashed: true,
-        colour: Some(7),
-        marker: Some(4),
-        line: None,
-    }
+        .map(|p| error(p).abs())
+        .fold(ZERO_ERROR, f64::max)
 }
 
-/// The points no other point beats on both cost and error.
-pub fn pareto_front(points: &[Point], error: fn(&Point) -> f64) -> Series {
-    let mut sorted: Vec<(f64, f64)> = points
+/// The Pareto front of cost against |error| (no other point both cheaper and
+/// more accurate), drawn only where it says something: points above the
+/// noise `floor` (at or below it the errors are rounding) and below
+/// [`NO_ACCURACY`] (a run that gains 40× its energy is not accurate, even
+/// if nothing is cheaper).
+pub fn pareto_front(points: &[Point], error: fn(&Point) -> f64, floor: f64) -> Series {
+    let xy: Vec<(f64, f64)> = points
         .iter()
-        .map(|p| (p.cost, error(p).max(ZERO_ERROR)))
+        .map(|p| (p.cost, error(p).abs().max(ZERO_ERROR)))
         .collect();
-    sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let mut front = Vec::new();
-    let mut best = f64::INFINITY;
-    for (cost, err) in sorted {
-        if err < best {
-            best = err;
-            front.push((cost, err));
-        }
-    }
+    let front = super::chart::pareto_front(&xy)
+        .into_iter()
+        .map(|i| xy[i])
+        .filter(|&(_, e)| e > floor && e < NO_ACCURACY)
+        .collect();
     Series {
-        name: "Pareto front (not below the noise floor)".into(),
+        name: "Pareto front on |error| (above the noise floor)".into(),
         points: front,
-        dashed: true,
         ..Default::default()
     }
 }
@@ -451,8 +479,15 @@ mod tests {
             point(0.5, 0.9),
             point(4.0, 0.1),
         ];
-        let front = pareto_front(&points, |p| p.trajectory_error);
+        let front = pareto_front(&points, |p| p.trajectory_error, 1e-3);
         assert_eq!(front.points, vec![(0.5, 0.9), (1.0, 0.5), (3.0, 0.1)]);
+        // Not at or below the floor, and not at an error of 100 % or more.
+        let front = pareto_front(&points, |p| p.trajectory_error, 0.1);
+        assert_eq!(front.points, vec![(0.5, 0.9), (1.0, 0.5)]);
+        let mut gains = points.to_vec();
+        gains.push(point(0.1, 43.7));
+        let front = pareto_front(&gains, |p| p.trajectory_error, 0.1);
+        assert_eq!(front.points, vec![(0.5, 0.9), (1.0, 0.5)]);
     }
 
     /// The order p of `error ≈ C·dtᵖ`: the least-squares slope of

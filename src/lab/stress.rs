@@ -9,7 +9,7 @@
 //! to `stress.png` and `stress.svg`. Failed cells are findings, not errors:
 //! the command fails only when it cannot write its files.
 
-use super::chart::{font_has, write_grid, Grid, GridCell};
+use super::chart::{font_has, setting_colour, write_grid, Grid, GridCell};
 use crate::progress;
 use anyhow::Context as _;
 use impulse::stress::{self, Outcome, Size, METHODS};
@@ -264,14 +264,17 @@ fn chart(
             fill: if o.pass { PASS_FILL } else { FAIL_FILL },
         })
         .collect();
+    // Each method's colour in the line charts, as a bar under its name.
+    let colours: Vec<RGBColor> = METHODS.iter().map(|&m| setting_colour(m)).collect();
     let pass = format!("{yes} criterion held");
     let fail = format!("{no} criterion missed");
-    let note = format!("{size} suite; cells: the figure named under each scenario (— none: the run stalled or failed first)");
+    let note = format!("{size} suite; cells: the figure named under each scenario (— none: the run stalled or failed first); bar under a method: its colour in the line charts");
     let grid = Grid {
         title: "Stability suite: where each method fails",
         legend: &[(&pass, PASS_FILL), (&fail, FAIL_FILL)],
         note: &note,
         columns: methods,
+        column_colours: &colours,
         rows: &labels,
         cells: &cells,
     };

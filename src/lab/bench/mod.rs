@@ -22,7 +22,7 @@
 
 mod crossovers;
 
-use super::chart::{write_chart, Chart, Series};
+use super::chart::{method_colour, write_chart, Chart, Series};
 use crate::progress;
 use crossovers::{crossovers, crowded_resolution, resting_piles, thread_crossover};
 use impulse::alloc_count::live_bytes;
@@ -196,17 +196,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     print!("{table}");
     write_csv(&args.out.join("bench.csv"), &rows)?;
     crate::files::write_atomically(&args.out.join("bench.md"), table.as_bytes())?;
-    let series = series_of(&rows);
-    let chart = Chart {
-        title: "Cost of a step per disc (gas, 30 % area fraction)",
-        x_label: "discs n",
-        y_label: "ns per particle-step",
-        log_x: true,
-        log_y: true,
-        series: &series,
-        highlight: None,
-    };
-    let (png, svg) = write_chart(&chart, &args.out.join("bench"))?;
+    let (png, svg) = write_bench_chart(&rows, &args.out)?;
     println!(
         "wrote {}, {}, {}",
         args.out.join("bench.csv").display(),
@@ -417,25 +407,64 @@ fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
     Ok(crate::files::write_atomically(path, csv.as_bytes())?)
 }
 
-fn series_of(rows: &[Row]) -> Vec<Series> {
+/// The chart of ns per particle-step against n, `bench.png` and `.svg`.
+pub(crate) fn write_bench_chart(rows: &[Row], out: &Path) -> anyhow::Result<(PathBuf, PathBuf)> {
+    let series = series_of(rows);
+    let threads = rows.iter().map(|r| r.threads).max().unwrap_or(1);
+    let subtitle = if threads > 1 {
+        format!("colour: method · line: broad phase (brute solid, grid dashed, sap dotted, quadtree dash-dot; exact's cells solid) · hollow triangles: {threads} threads")
+    } else {
+        "colour: method · line: broad phase (brute solid, grid dashed, sap dotted, quadtree dash-dot; exact's cells solid)".to_owned()
+    };
+    let chart = Chart {
+        title: "Cost of a step per disc (gas, 30 % area fraction)",
+        subtitle: &subtitle,
+        x_label: "discs n",
+        y_label: "ns per particle-step",
+        log_x: true,
+        log_y: true,
+        series: &series,
+        highlight: None,
+        direct_labels: true,
+        floor: None,
+    };
+    write_chart(&chart, &out.join("bench"))
+}
+
+/// The line style of a broad phase: brute solid, grid dashed, sap dotted,
+/// quadtree dash-dot (`exact`'s own cells solid).
+fn broad_phase_line(name: &str) -> usize {
+    match name {
+        "grid" => 1,
+        "sap" => 2,
+        "quadtree" => 3,
+        _ => 0,
+    }
+}
+
+/// One series per row label (method, broad phase, threads): a colour per
+/// method (as in every chart), a line style per broad phase, filled circles
+/// on one thread and hollow triangles on several.
+pub(crate) fn series_of(rows: &[Row]) -> Vec<Series> {
     let mut series: Vec<Series> = Vec::new();
     for r in rows {
         let name = label(r);
+        let xy = (r.n as f64, r.ns_per_particle_step);
         match series.iter_mut().find(|s| s.name == name) {
-            Some(s) => s.points.push((r.n as f64, r.ns_per_particle_step)),
-            // A colour per method (as in every chart), a line style per
-            // broad phase, a triangle for the runs on several threads.
+            Some(s) => s.points.push(xy),
             None => series.push(Series {
                 name,
-                points: vec![(r.n as f64, r.ns_per_particle_step)],
-                colour: Some(crate::lab::accuracy::method_colour(r.method)),
-                line: BroadPhaseKind::ALL
-                    .iter()
-                    .position(|k| k.name() == r.broad_phase),
+                points: vec![xy],
+                colour: Some(method_colour(r.method)),
+                line: Some(broad_phase_line(&r.broad_phase)),
                 marker: Some(if r.threads > 1 { 2 } else { 0 }),
+                hollow: r.threads > 1,
                 ..Default::default()
             }),
         }
+    }
+    for s in &mut series {
+        s.points.sort_by(|a, b| a.0.total_cmp(&b.0));
     }
     series
 }

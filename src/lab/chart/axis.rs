@@ -1,7 +1,5 @@
 //! Chart axes: linear or logarithmic ranges, tick positions and labels.
 
-use super::*;
-
 /// Values beyond this magnitude are treated like non-finite ones on a linear
 /// axis: the span arithmetic would overflow.
 pub(super) const LINEAR_LIMIT: f64 = 1e300;
@@ -13,11 +11,6 @@ pub(super) enum Labels {
     Linear { step: f64 },
     /// Log axis, ticks on whole decades: `10ⁿ`.
     Decades,
-    /// Log axis, ticks at 1, 2 and 5 times a power of ten.
-    OneTwoFive,
-    /// Log axis spanning much less than a decade: linear ticks `step` apart,
-    /// plotted at their logarithms.
-    LinearInLog { step: f64 },
 }
 
 /// One axis in plot space: on a log axis every value is its `log10`.
@@ -57,9 +50,17 @@ impl Axis {
             (lo, hi) = (lo - half, hi + half);
         }
         let pad = 0.04 * (hi - lo);
-        let (lo, hi) = (lo - pad, hi + pad);
+        let (mut lo, mut hi) = (lo - pad, hi + pad);
+        if log && hi.floor() - lo.ceil() < 1.0 {
+            // Fewer than two decades inside: out to the decades around.
+            (lo, hi) = (lo.floor(), hi.ceil());
+            if hi - lo < 2.0 {
+                hi = lo + 2.0;
+            }
+        }
         let (bold, light, labels) = if log {
-            log_ticks(lo, hi, max_labels)
+            let (bold, light) = log_ticks(lo, hi, max_labels);
+            (bold, light, Labels::Decades)
         } else {
             let (bold, light, step) = linear_ticks(lo, hi, max_labels);
             (bold, light, Labels::Linear { step })
@@ -72,6 +73,18 @@ impl Axis {
             light,
             labels,
         }
+    }
+
+    /// The pixel of `t` (plot space) on a span running from pixel `from`
+    /// (at `lo`) to `to` (at `hi`); far-off values are clamped, NaN gives
+    /// `from`.
+    pub(super) fn pixel(&self, t: f64, from: i32, to: i32) -> i32 {
+        let f = (t - self.lo) / (self.hi - self.lo);
+        let pixel = f64::from(from) + f * f64::from(to - from);
+        if pixel.is_nan() {
+            return from;
+        }
+        pixel.round().clamp(-1e6, 1e6) as i32
     }
 
     /// The text of the tick at `t` (plot space), with a typographic minus.
@@ -87,44 +100,7 @@ impl Axis {
         match self.labels {
             Labels::Linear { step } => format_linear(t, step),
             Labels::Decades => format!("10{}", superscript(t.round() as i64)),
-            Labels::OneTwoFive => {
-                let k = (t + 1e-9).floor();
-                let m = 10f64.powf(t - k).round();
-                let k = k as i64;
-                if (-3..=5).contains(&k) {
-                    format!("{:.*}", (-k).max(0) as usize, m * 10f64.powi(k as i32))
-                } else {
-                    format!("{m}e{k}")
-                }
-            }
-            Labels::LinearInLog { step } => format_linear(10f64.powf(t), step),
         }
-    }
-}
-
-/// The axis as a plotters coordinate: linear in plot space, with our own
-/// ticks (plotters' `WithKeyPoints` would not take a label formatter).
-impl Ranged for Axis {
-    type FormatOption = DefaultFormatting;
-    type ValueType = f64;
-
-    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
-        let t = (value - self.lo) / (self.hi - self.lo);
-        let pixel = f64::from(limit.0) + t * f64::from(limit.1 - limit.0);
-        // Far-off values are clamped rather than wrapped; NaN maps to 0.
-        pixel.round().clamp(-1e6, 1e6) as i32
-    }
-
-    fn key_points<H: KeyPointHint>(&self, hint: H) -> Vec<f64> {
-        if hint.weight().allow_light_points() {
-            self.light.clone()
-        } else {
-            self.bold.clone()
-        }
-    }
-
-    fn range(&self) -> std::ops::Range<f64> {
-        self.lo..self.hi
     }
 }
 
@@ -184,72 +160,40 @@ pub(super) fn linear_ticks(lo: f64, hi: f64, max: usize) -> (Vec<f64>, Vec<f64>,
     (bold, light, step)
 }
 
-/// Ticks for a log axis over `lo..hi` (exponents of ten).
-pub(super) fn log_ticks(lo: f64, hi: f64, max: usize) -> (Vec<f64>, Vec<f64>, Labels) {
+/// Ticks for a log axis over `lo..hi` (exponents of ten): labelled ticks
+/// on whole decades only (every one, or every second, fifth, … when there
+/// are more than `max`), and light ones at 2…9 × 10ᵏ between them when
+/// there are few decades, at the unlabelled decades when there are many.
+pub(super) fn log_ticks(lo: f64, hi: f64, max: usize) -> (Vec<f64>, Vec<f64>) {
     let max = max.max(2);
+    if !(lo.is_finite() && hi.is_finite() && hi > lo) || hi - lo > 10_000.0 {
+        return (Vec::new(), Vec::new());
+    }
     let decades: Vec<i64> = ((lo.ceil() as i64)..=(hi.floor() as i64)).collect();
-    let minors = |keep: &dyn Fn(f64) -> bool| -> Vec<f64> {
+    let every = [1, 2, 3, 4, 5, 10, 20, 25, 50, 100, 200, 500, 1000]
+        .into_iter()
+        .find(|&s| decades.iter().filter(|k| k.rem_euclid(s) == 0).count() <= max)
+        .unwrap_or(1000);
+    let bold: Vec<f64> = decades
+        .iter()
+        .filter(|k| k.rem_euclid(every) == 0)
+        .map(|&k| k as f64)
+        .collect();
+    let light = if every > 1 {
+        decades
+            .iter()
+            .filter(|k| k.rem_euclid(every) != 0)
+            .map(|&k| k as f64)
+            .collect()
+    } else if hi - lo <= 8.5 {
         ((lo.floor() as i64)..=(hi.ceil() as i64))
             .flat_map(|k| (2..=9).map(move |m| k as f64 + f64::from(m).log10()))
-            .filter(|&t| t >= lo && t <= hi && keep(t))
-            .collect()
-    };
-
-    if decades.len() >= 3 {
-        // Label every `every`-th decade; with few decades, light lines at 2..9.
-        let every = [1, 2, 3, 4, 5, 10, 20, 25, 50, 100, 200, 500]
-            .into_iter()
-            .find(|&s| decades.iter().filter(|k| k.rem_euclid(s) == 0).count() <= max)
-            .unwrap_or(1000);
-        let bold: Vec<f64> = decades
-            .iter()
-            .filter(|k| k.rem_euclid(every) == 0)
-            .map(|&k| k as f64)
-            .collect();
-        let light = if every > 1 {
-            decades
-                .iter()
-                .filter(|k| k.rem_euclid(every) != 0)
-                .map(|&k| k as f64)
-                .collect()
-        } else if hi - lo <= 8.0 {
-            minors(&|_| true)
-        } else {
-            Vec::new()
-        };
-        return (bold, light, Labels::Decades);
-    }
-
-    // Under three decades: 1-2-5 ticks if that gives a few labels.
-    let one_two_five: Vec<f64> = ((lo.floor() as i64)..=(hi.ceil() as i64))
-        .flat_map(|k| [1.0f64, 2.0, 5.0].map(|m| k as f64 + m.log10()))
-        .filter(|&t| t >= lo && t <= hi)
-        .collect();
-    if (3..=max).contains(&one_two_five.len()) {
-        let light = minors(&|t| {
-            let m = 10f64.powf(t - t.floor()).round();
-            m != 2.0 && m != 5.0
-        });
-        return (one_two_five, light, Labels::OneTwoFive);
-    }
-    if decades.len() == 2 {
-        return (
-            decades.iter().map(|&k| k as f64).collect(),
-            minors(&|_| true),
-            Labels::Decades,
-        );
-    }
-
-    // A small fraction of a decade: ordinary linear ticks, placed at their logs.
-    let (bold, light, step) = linear_ticks(10f64.powf(lo), 10f64.powf(hi), max);
-    let logs = |v: Vec<f64>| -> Vec<f64> {
-        v.into_iter()
-            .filter(|&v| v > 0.0)
-            .map(f64::log10)
             .filter(|&t| t >= lo && t <= hi)
             .collect()
+    } else {
+        Vec::new()
     };
-    (logs(bold), logs(light), Labels::LinearInLog { step })
+    (bold, light)
 }
 
 /// `v` with as many decimals as ticks `step` apart need; scientific notation
@@ -288,5 +232,3 @@ pub(super) fn superscript(n: i64) -> String {
     }
     out
 }
-
-// ---------------------------------------------------------------- drawing

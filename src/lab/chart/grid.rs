@@ -30,6 +30,9 @@ pub struct Grid<'a> {
     pub note: &'a str,
     /// Column labels, left to right.
     pub columns: &'a [String],
+    /// A colour bar under each column label (a method's colour, say); empty
+    /// for none.
+    pub column_colours: &'a [RGBColor],
     /// Row labels, top to bottom: a label and a smaller line under it.
     pub rows: &'a [(String, String)],
     /// The cells, row by row (`rows.len() × columns.len()` of them; missing
@@ -54,15 +57,6 @@ const MIN_COLUMN: i32 = 120;
 /// Whether the bundled font draws `c` (rather than an empty box).
 pub fn font_has(c: char) -> bool {
     font_metrics().is_some_and(|m| m.glyph(c) != 0)
-}
-
-/// Width of `text` at `size` px by the bundled font's metrics (a generous
-/// guess if they cannot be read).
-fn width_of(text: &str, size: f64) -> i32 {
-    let w = font_metrics().map_or(0.62 * size * text.chars().count() as f64, |m| {
-        m.layout(text, size).1
-    });
-    w.ceil() as i32
 }
 
 /// Pixel positions shared by both renderings.
@@ -186,8 +180,20 @@ fn draw_grid<DB: DrawingBackend>(
     let cw = layout.column_width;
     let centre = (HPos::Center, VPos::Center);
     for (c, name) in grid.columns.iter().enumerate() {
-        let at = (x0 + c as i32 * cw + cw / 2, HEADER_TOP + HEADER_HEIGHT / 2);
+        let at = (
+            x0 + c as i32 * cw + cw / 2,
+            HEADER_TOP + HEADER_HEIGHT / 2 - 3,
+        );
         put_text(root, ts, name, HEADER, centre, at, false)?;
+        if let Some(&colour) = grid.column_colours.get(c) {
+            let left = x0 + c as i32 * cw;
+            let bar = [
+                (left + 2, HEADER_TOP + HEADER_HEIGHT - 7),
+                (left + cw - 2, HEADER_TOP + HEADER_HEIGHT - 2),
+            ];
+            root.draw(&Rectangle::new(bar, colour.filled()))
+                .map_err(draw_error)?;
+        }
     }
     let y0 = HEADER_TOP + HEADER_HEIGHT;
     for (r, (label, sublabel)) in grid.rows.iter().enumerate() {
@@ -258,6 +264,7 @@ mod tests {
             legend: &[("pass", blue)],
             note: "note",
             columns: &columns,
+            column_colours: &[],
             rows: &rows,
             cells: &cells,
         };
@@ -271,6 +278,47 @@ mod tests {
         assert!(img.pixels().filter(|p| p.0 == [0xB0, 0xDD, 0xF5]).count() > 4 * 1000);
         let text = fs::read_to_string(&svg).unwrap();
         assert!(text.contains("a rather wide cell text") && text.contains("first row"));
+    }
+
+    #[test]
+    fn every_row_is_drawn() {
+        let dir = tempfile::tempdir().unwrap();
+        let columns: Vec<String> = ["seed", "auto"].map(String::from).to_vec();
+        let rows: Vec<(String, String)> = (1..=12)
+            .map(|i| (format!("{i}. scenario"), "figure".to_owned()))
+            .collect();
+        let cells: Vec<GridCell> = (0..24)
+            .map(|i| GridCell {
+                text: format!("cell {i}"),
+                fill: RGBColor(0xB0, 0xDD, 0xF5),
+            })
+            .collect();
+        let colours = [PALETTE[0], PALETTE[5]];
+        let grid = Grid {
+            title: "t",
+            legend: &[],
+            note: "",
+            columns: &columns,
+            column_colours: &colours,
+            rows: &rows,
+            cells: &cells,
+        };
+        let (png, svg) = write_grid(&grid, &dir.path().join("g")).unwrap();
+        let img = image::open(&png).unwrap().to_rgb8();
+        let bottom = HEADER_TOP + HEADER_HEIGHT + 12 * ROW_HEIGHT;
+        assert!(
+            img.dimensions().1 as i32 >= bottom,
+            "{:?}",
+            img.dimensions()
+        );
+        // The last row's cells are filled.
+        let y = (bottom - ROW_HEIGHT / 2) as u32;
+        assert!((0..img.width()).any(|x| img.get_pixel(x, y).0 == [0xB0, 0xDD, 0xF5]));
+        let text = fs::read_to_string(&svg).unwrap();
+        for (label, _) in &rows {
+            assert!(text.contains(label.as_str()), "{label}");
+        }
+        assert!(text.contains("cell 23"));
     }
 
     #[test]

@@ -2,18 +2,28 @@
 //! charts ([`Chart`]) and grid charts, a heat map of labelled cells ([`Grid`],
 //! in `grid.rs`).
 //!
-//! A [`Chart`] is a title, two axis labels, a linear or logarithmic scale per
-//! axis, some [`Series`] and optionally one highlighted series (say a Pareto
-//! front) drawn thick and black beneath the others, whose markers stay
-//! visible on it. [`write_chart`] renders
-//! it at 1200×800 with grid lines, one marker per point, a legend to the right
-//! of the plot, and the Okabe–Ito colour-blind-safe palette.
+//! A [`Chart`] is a title (and a line of explanation under it), two axis
+//! labels, a linear or logarithmic scale per axis, some [`Series`],
+//! optionally one highlighted series (say a Pareto front: a grey band under
+//! its points and a black ring around each) and optionally a labelled
+//! horizontal floor (say the noise floor of a measurement, the band under it
+//! shaded). [`write_chart`] renders it at 1500×1000 with grid lines, one
+//! marker per point, and either a legend to the right of the plot or, with
+//! [`Chart::direct_labels`], each line's name at its last point, moved up or
+//! down until no two names overlap. Text given per point (a step size, say)
+//! is set beside its point where it covers no marker and no other label.
+//!
+//! Colours come from the Okabe–Ito colour-blind-safe palette, one per method
+//! in every chart ([`method_colour`]); line styles (solid, dashed, dotted,
+//! dash-dot) and marker shapes tell apart series of one colour. Log axes are
+//! labelled at whole decades, 10ᵏ, with minor ticks at 2…9 × 10ᵏ between.
 //!
 //! Text is drawn with DejaVu Sans, embedded in the binary
 //! (`assets/fonts/DejaVuSans.ttf`, licence next to it), so no fontconfig or
 //! system font is needed at run time. In the PNG, strings are laid out glyph
 //! by glyph from the font's own metrics (see [`Metrics`]), because plotters'
-//! layout puts letters unevenly.
+//! layout puts letters unevenly. Where labels go is worked out once, in
+//! pixels, from those metrics ([`Plan`]), and both images draw the same plan.
 //!
 //! Nothing here panics on odd data: points that a log axis cannot show (zero,
 //! negative) and non-finite points are skipped, and a line is broken where a
@@ -25,9 +35,8 @@
 
 use anyhow::{anyhow, Context, Result};
 use image::ImageEncoder;
-use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
+use impulse::method::{Method, Setting};
 use plotters::coord::Shift;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontTransform;
@@ -40,17 +49,19 @@ use std::sync::{Once, OnceLock};
 
 mod axis;
 mod grid;
+mod place;
 mod text;
 
 use axis::*;
 pub use grid::{font_has, write_grid, Grid, GridCell};
+use place::*;
 use text::*;
 
 /// One line of a chart: points joined in the given order, with a marker on
 /// each.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Series {
-    /// Legend entry (and text in the SVG).
+    /// Legend entry or line-end label (and text in the SVG).
     pub name: String,
     /// `(x, y)` data points, joined in this order. Points that cannot be shown
     /// (non-finite, or not positive on a log axis) are skipped and break the
@@ -65,31 +76,42 @@ pub struct Series {
     /// triangle, diamond, cross); by default the series' own index.
     pub marker: Option<usize>,
     /// Line style, an index into [`LINE_STYLES`] (solid, dashed, dotted,
-    /// long dashes); by default solid, or dashed if `dashed`.
+    /// dash-dot); by default solid, or dashed if `dashed`.
     pub line: Option<usize>,
+    /// Text set beside each point (the i-th for the i-th point; missing or
+    /// empty ones are none). A label equal to one already set at the same
+    /// spot is not repeated.
+    pub point_labels: Vec<String>,
+    /// Markers drawn as outlines, larger than filled ones, so that a series
+    /// lying on another one shows both.
+    pub hollow: bool,
 }
 
-/// A legend entry: name, colour, marker, line pattern, highlighted.
-type LegendEntry<'a> = (&'a str, RGBColor, Marker, Option<(u32, u32)>, bool);
+/// A legend entry: name, colour, marker, line pattern, hollow.
+type LegendEntry<'a> = (&'a str, RGBColor, Marker, &'static [u32], bool);
 
-/// Line styles: `None` solid, else (dash, gap) in pixels.
-pub const LINE_STYLES: [Option<(u32, u32)>; 4] = [None, Some((12, 7)), Some((3, 5)), Some((24, 6))];
+/// Line styles as dash patterns in pixels (drawn, skipped, …): solid,
+/// dashed, dotted, dash-dot.
+pub const LINE_STYLES: [&[u32]; 4] = [&[], &[16, 8], &[3, 6], &[16, 6, 3, 6]];
 
 impl Series {
-    /// The (dash, gap) the line is drawn with, or `None` for solid.
-    fn pattern(&self) -> Option<(u32, u32)> {
+    /// The dash pattern the line is drawn with (empty for solid).
+    fn pattern(&self) -> &'static [u32] {
         match self.line {
             Some(k) => LINE_STYLES[k % LINE_STYLES.len()],
-            None => self.dashed.then_some((12, 7)),
+            None if self.dashed => LINE_STYLES[1],
+            None => LINE_STYLES[0],
         }
     }
 }
 
 /// Everything [`write_chart`] draws.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub struct Chart<'a> {
     /// Title above the plot.
     pub title: &'a str,
+    /// A line of explanation under the title (may be empty).
+    pub subtitle: &'a str,
     /// Label under the x axis.
     pub x_label: &'a str,
     /// Label beside the y axis.
@@ -100,15 +122,20 @@ pub struct Chart<'a> {
     pub log_y: bool,
     /// The series, coloured in order from the Okabe–Ito palette.
     pub series: &'a [Series],
-    /// A series drawn thick and black beneath the others, e.g. a Pareto
-    /// front; it gets the last legend entry.
+    /// Points drawn on a grey band beneath the others, each ringed in black
+    /// (a Pareto front, say); in the legend last.
     pub highlight: Option<&'a Series>,
+    /// Name each line at its last point instead of in a legend.
+    pub direct_labels: bool,
+    /// A dashed horizontal line across the plot at this height, labelled
+    /// with the text, and the band under it shaded (a noise floor, say).
+    pub floor: Option<(f64, &'a str)>,
 }
 
 /// Pixel size of the PNG (and the SVG's view box).
-pub const SIZE: (u32, u32) = (1200, 800);
+pub const SIZE: (u32, u32) = (1500, 1000);
 
-/// Okabe & Ito's colour-blind-safe palette, in the order series use it.
+/// Okabe & Ito's colour-blind-safe palette.
 pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0xE6, 0x9F, 0x00), // orange
     RGBColor(0x56, 0xB4, 0xE9), // sky blue
@@ -119,6 +146,52 @@ pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0xCC, 0x79, 0xA7), // reddish purple
     RGBColor(0x00, 0x00, 0x00), // black
 ];
+
+/// A method's colour, an index into [`PALETTE`], the same in every chart:
+/// seed orange, impulse blue, verlet bluish green, exact reddish purple
+/// (`auto`, which picks among them, is [`AUTO_COLOUR`]). No two are the
+/// two blues or otherwise near each other.
+pub fn method_colour(method: Method) -> usize {
+    match method {
+        Method::Seed => 0,
+        Method::Impulse => 4,
+        Method::Verlet => 2,
+        Method::Exact => 6,
+    }
+}
+
+/// `auto`'s colour (vermillion).
+pub const AUTO_COLOUR: usize = 5;
+
+/// The colour of a method setting: a fixed method's, or `auto`'s.
+pub fn setting_colour(setting: Setting<Method>) -> RGBColor {
+    PALETTE[match setting {
+        Setting::Fixed(m) => method_colour(m),
+        Setting::Auto => AUTO_COLOUR,
+    }]
+}
+
+/// Indices of the points on the Pareto front of cost (`x`) against the size
+/// of the error, `|y|`: the points no other point beats on both, in order
+/// of cost. Points with a non-finite coordinate take no part.
+pub fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].0.is_finite() && points[i].1.is_finite())
+        .collect();
+    order.sort_by(|&a, &b| {
+        let (pa, pb) = (points[a], points[b]);
+        pa.0.total_cmp(&pb.0)
+            .then(pa.1.abs().total_cmp(&pb.1.abs()))
+    });
+    let mut best = f64::INFINITY;
+    order.retain(|&i| {
+        let err = points[i].1.abs();
+        let on = err < best;
+        best = best.min(err);
+        on
+    });
+    order
+}
 
 /// `<stem>.png` and `<stem>.svg`, or an error if `stem` names no file.
 fn image_paths(stem: &Path) -> Result<(PathBuf, PathBuf)> {
@@ -131,16 +204,17 @@ fn image_paths(stem: &Path) -> Result<(PathBuf, PathBuf)> {
     Ok((with_suffix(stem, ".png"), with_suffix(stem, ".svg")))
 }
 
-/// Writes `<stem>.png` (1200x800) and `<stem>.svg` side by side; returns the two paths.
+/// Writes `<stem>.png` (1500×1000) and `<stem>.svg` side by side; returns the
+/// two paths.
 ///
 /// `.png` and `.svg` are appended to `stem` (so `out/bench.v2` gives
 /// `out/bench.v2.png`). The directory must exist. Both images are rendered
 /// before either file is written, and each file is replaced atomically.
 pub fn write_chart(chart: &Chart, stem: &Path) -> Result<(PathBuf, PathBuf)> {
     let (png_path, svg_path) = image_paths(stem)?;
-    let layout = Layout::new(chart);
-    let pixels = render_rgb(chart, &layout)?;
-    let svg = render_svg(chart, &layout)?;
+    let plan = Plan::new(chart);
+    let pixels = render_rgb(chart, &plan)?;
+    let svg = render_svg(chart, &plan)?;
 
     write_atomically(&png_path, |w| {
         image::codecs::png::PngEncoder::new(w)
@@ -151,19 +225,119 @@ pub fn write_chart(chart: &Chart, stem: &Path) -> Result<(PathBuf, PathBuf)> {
     Ok((png_path, svg_path))
 }
 
-// ---------------------------------------------------------------- font
+// ---------------------------------------------------------------- layout
 
-/// Axes and plot-space polylines, shared by both renderings.
-struct Layout {
-    x: Axis,
-    y: Axis,
-    /// Per series: its runs of consecutive drawable points (plot space).
-    series: Vec<Vec<Vec<(f64, f64)>>>,
-    highlight: Option<Vec<Vec<(f64, f64)>>>,
+const SERIES_WIDTH: u32 = 3;
+const MARKER_SIZE: i32 = 6;
+const HOLLOW_SIZE: i32 = 10;
+const FRONT_WIDTH: u32 = 14;
+const FRONT_RING: i32 = 13;
+const HALO: RGBColor = RGBColor(0xFF, 0xFF, 0xFF);
+const FLOOR_COLOUR: RGBColor = RGBColor(0x44, 0x44, 0x44);
+
+// Font sizes in px, chosen to stay legible with the image shown at half
+// size. Keep them even: plotters puts a glyph's top at `trunc(size / 2 +
+// top)` below the anchor, which for odd sizes jumps a pixel between glyphs
+// whose tops differ by one ("e" and "x" at 17 px).
+const TITLE_SIZE: f64 = 34.0;
+const SUBTITLE_SIZE: f64 = 20.0;
+const LABEL_SIZE: f64 = 24.0;
+const TICK_SIZE: f64 = 22.0;
+const LEGEND_SIZE: f64 = 20.0;
+const END_SIZE: f64 = 20.0;
+const POINT_SIZE: f64 = 18.0;
+
+/// Space around the image and room for the axis text (px).
+const EDGE: i32 = 10;
+const Y_TEXT_ROOM: i32 = 140;
+const X_TEXT_ROOM: i32 = 96;
+
+/// What a placed label is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum LabelKind {
+    /// A series' name at its last point.
+    End,
+    /// Text beside one point.
+    Point,
+    /// The floor's label.
+    Floor,
 }
 
-impl Layout {
-    fn new(chart: &Chart) -> Layout {
+/// A label with its place: text drawn left-aligned in `rect` (padding
+/// included), in `colour`, and a thin leader line from the point it belongs
+/// to if it had to move away.
+#[derive(Debug, Clone, PartialEq)]
+struct Placed {
+    kind: LabelKind,
+    text: String,
+    size: f64,
+    rect: PxRect,
+    colour: RGBColor,
+    leader: Option<((i32, i32), (i32, i32))>,
+}
+
+/// Horizontal padding inside a label's box (px).
+const PAD: i32 = 4;
+
+/// Everything both renderings draw, in pixels of the image.
+struct Plan {
+    x: Axis,
+    y: Axis,
+    /// The plot area.
+    plot: PxRect,
+    /// Per series: each drawable point in pixels (`None` where skipped).
+    points: Vec<Vec<Option<(i32, i32)>>>,
+    highlight: Vec<Option<(i32, i32)>>,
+    /// The floor's height in pixels.
+    floor: Option<i32>,
+    labels: Vec<Placed>,
+    /// The legend's box, if there is a legend.
+    legend: Option<PxRect>,
+}
+
+/// Runs of consecutive drawable points.
+fn runs(points: &[Option<(i32, i32)>]) -> Vec<Vec<(i32, i32)>> {
+    let mut runs = vec![Vec::new()];
+    for p in points {
+        match p {
+            Some(p) => {
+                if let Some(run) = runs.last_mut() {
+                    run.push(*p);
+                }
+            }
+            None => runs.push(Vec::new()),
+        }
+    }
+    runs.retain(|r| !r.is_empty());
+    runs
+}
+
+/// A colour darkened for text on white (pale ones would not read).
+fn text_colour(c: RGBColor) -> RGBColor {
+    let f = |v: u8| (f64::from(v) * 0.72).round() as u8;
+    RGBColor(f(c.0), f(c.1), f(c.2))
+}
+
+impl Series {
+    fn colour_at(&self, i: usize) -> RGBColor {
+        PALETTE[self.colour.unwrap_or(i) % PALETTE.len()]
+    }
+
+    fn marker_at(&self, i: usize) -> Marker {
+        MARKERS[self.marker.unwrap_or(i) % MARKERS.len()]
+    }
+
+    fn marker_radius(&self) -> i32 {
+        if self.hollow {
+            HOLLOW_SIZE
+        } else {
+            MARKER_SIZE
+        }
+    }
+}
+
+impl Plan {
+    fn new(chart: &Chart) -> Plan {
         let all = || {
             chart
                 .series
@@ -171,56 +345,265 @@ impl Layout {
                 .chain(chart.highlight)
                 .flat_map(|s| &s.points)
         };
+        let floor_y = chart.floor.map(|f| f.0);
         let x = Axis::fit(all().map(|p| p.0), chart.log_x, 12);
-        let y = Axis::fit(all().map(|p| p.1), chart.log_y, 10);
-        let runs = |s: &Series| -> Vec<Vec<(f64, f64)>> {
-            let mut runs = vec![Vec::new()];
-            for &(px, py) in &s.points {
-                match (to_plot(px, x.log), to_plot(py, y.log)) {
-                    (Some(px), Some(py)) => {
-                        if let Some(run) = runs.last_mut() {
-                            run.push((px, py));
-                        }
-                    }
-                    _ => runs.push(Vec::new()),
-                }
-            }
-            runs.retain(|r| !r.is_empty());
-            runs
+        let y = Axis::fit(all().map(|p| p.1).chain(floor_y), chart.log_y, 10);
+
+        let top = if chart.subtitle.is_empty() { 72 } else { 104 };
+        let (width, height) = (SIZE.0 as i32, SIZE.1 as i32);
+        // Room on the right: the legend, or the widest line-end label.
+        let names = chart.series.iter().map(|s| s.name.as_str());
+        let (right_room, legend) = if chart.direct_labels {
+            let widest = names.map(|n| width_of(n, END_SIZE)).max().unwrap_or(0);
+            ((widest + 2 * PAD + 24).clamp(30, width * 2 / 5), None)
+        } else if chart.series.is_empty() && chart.highlight.is_none() {
+            (30, None)
+        } else {
+            let widest = names
+                .chain(chart.highlight.map(|h| h.name.as_str()))
+                .map(|n| width_of(n, LEGEND_SIZE))
+                .max()
+                .unwrap_or(0);
+            let w = (widest + 96).clamp(190, 440);
+            (w + 20, Some(w))
         };
-        let series = chart.series.iter().map(runs).collect();
-        let highlight = chart.highlight.map(runs);
-        Layout {
+        let plot = PxRect {
+            x0: EDGE + Y_TEXT_ROOM,
+            y0: top,
+            x1: width - EDGE - right_room,
+            y1: height - EDGE - X_TEXT_ROOM,
+        };
+        let legend = legend.map(|w| {
+            let rows = chart.series.len() + usize::from(chart.highlight.is_some());
+            let max_rows = ((plot.y1 - plot.y0 - 20) / LEGEND_ROW) as usize;
+            let rows = rows.min(max_rows.max(1)) as i32;
+            PxRect {
+                x0: width - EDGE - w,
+                y0: plot.y0,
+                x1: width - EDGE,
+                y1: plot.y0 + 10 + rows * LEGEND_ROW,
+            }
+        });
+        let to_pixels = |s: &Series| -> Vec<Option<(i32, i32)>> {
+            s.points
+                .iter()
+                .map(|&(px, py)| {
+                    let (px, py) = (to_plot(px, x.log)?, to_plot(py, y.log)?);
+                    Some((x.pixel(px, plot.x0, plot.x1), y.pixel(py, plot.y1, plot.y0)))
+                })
+                .collect()
+        };
+        let points: Vec<_> = chart.series.iter().map(to_pixels).collect();
+        let highlight = chart.highlight.map(to_pixels).unwrap_or_default();
+        let floor = floor_y
+            .and_then(|v| to_plot(v, y.log))
+            .map(|v| y.pixel(v, plot.y1, plot.y0));
+
+        let mut plan = Plan {
             x,
             y,
-            series,
+            plot,
+            points,
             highlight,
+            floor,
+            labels: Vec::new(),
+            legend,
+        };
+        plan.place_labels(chart);
+        plan
+    }
+
+    /// Line-end names first (nearest their line's end, top line first),
+    /// then the floor's label, then the text beside each point.
+    fn place_labels(&mut self, chart: &Chart) {
+        let plot = self.plot;
+        let mut placer = Placer {
+            bounds: PxRect {
+                x0: plot.x0 + 2,
+                y0: plot.y0 + 2,
+                x1: plot.x1 - 2,
+                y1: plot.y1 - 2,
+            },
+            taken: Vec::new(),
+            markers: Vec::new(),
+            lines: Vec::new(),
+        };
+        for (s, pts) in chart.series.iter().zip(&self.points) {
+            let r = s.marker_radius() + 1;
+            placer
+                .markers
+                .extend(pts.iter().flatten().map(|&p| PxRect::around(p, r)));
+            for run in runs(pts) {
+                placer.lines.extend(samples(&run, 4.0));
+            }
+        }
+        placer.markers.extend(
+            self.highlight
+                .iter()
+                .flatten()
+                .map(|&p| PxRect::around(p, FRONT_RING)),
+        );
+        for run in runs(&self.highlight) {
+            placer.lines.extend(samples(&run, 4.0));
+        }
+        if let Some(fy) = self.floor {
+            let mut x = plot.x0;
+            while x <= plot.x1 {
+                placer.lines.push((x, fy));
+                x += 4;
+            }
+        }
+        let line_height = |size: f64| size.round() as i32 + 8;
+
+        if chart.direct_labels {
+            let mut ends: Vec<(usize, (i32, i32))> = self
+                .points
+                .iter()
+                .enumerate()
+                .filter_map(|(i, pts)| Some((i, *pts.iter().rev().flatten().next()?)))
+                .collect();
+            // Columns of lines that end at about the same x, right first;
+            // in each, the names stacked in the order the lines end, top
+            // first, so that leaders do not cross.
+            ends.sort_by_key(|&(i, p)| (std::cmp::Reverse(p.0), i));
+            let inner = placer.bounds;
+            // Names may reach into the room right of the plot.
+            placer.bounds.x1 = SIZE.0 as i32 - EDGE;
+            let h = line_height(END_SIZE);
+            while let Some(&(_, (right, _))) = ends.first() {
+                let split = ends.iter().position(|&(_, p)| right - p.0 > 24);
+                let rest = ends.split_off(split.unwrap_or(ends.len()));
+                let mut column = std::mem::replace(&mut ends, rest);
+                column.sort_by_key(|&(i, p)| (p.1, i));
+                let x0 = column
+                    .iter()
+                    .map(|&(i, p)| p.0 + chart.series[i].marker_radius())
+                    .max()
+                    .unwrap_or(0)
+                    + 8;
+                let wishes: Vec<i32> = column.iter().map(|&(_, p)| p.1).collect();
+                let ys = stack(&wishes, h, inner.y0, inner.y1);
+                for (&(i, end), cy) in column.iter().zip(ys) {
+                    let s = &chart.series[i];
+                    let w = width_of(&s.name, END_SIZE) + 2 * PAD;
+                    let mut spots = vec![PxRect::left_centre(x0, cy, w, h)];
+                    spots.extend(beside_end(x0, end.1, w, h, inner.y0, inner.y1));
+                    let Some(rect) = placer.place(&spots) else {
+                        continue;
+                    };
+                    let moved = (rect.centre_y() - end.1).abs() > h / 3
+                        || rect.x0 - end.0 > s.marker_radius() + 14;
+                    self.labels.push(Placed {
+                        kind: LabelKind::End,
+                        text: s.name.clone(),
+                        size: END_SIZE,
+                        rect,
+                        colour: text_colour(s.colour_at(i)),
+                        leader: moved.then_some((end, (rect.x0, rect.centre_y()))),
+                    });
+                }
+            }
+            placer.bounds = inner;
+        }
+
+        if let (Some((_, text)), Some(fy)) = (chart.floor, self.floor) {
+            let w = width_of(text, POINT_SIZE) + 2 * PAD;
+            let h = line_height(POINT_SIZE);
+            // Just above the line at the left, else just below, else anywhere
+            // along it.
+            let mut spots = Vec::new();
+            let mut x0 = plot.x0 + 8;
+            while x0 + w < plot.x1 {
+                spots.push(PxRect {
+                    x0,
+                    y0: fy - h - 1,
+                    x1: x0 + w,
+                    y1: fy - 1,
+                });
+                spots.push(PxRect {
+                    x0,
+                    y0: fy + 2,
+                    x1: x0 + w,
+                    y1: fy + 2 + h,
+                });
+                x0 += 12;
+            }
+            if let Some(rect) = placer.place(&spots) {
+                self.labels.push(Placed {
+                    kind: LabelKind::Floor,
+                    text: text.to_owned(),
+                    size: POINT_SIZE,
+                    rect,
+                    colour: FLOOR_COLOUR,
+                    leader: None,
+                });
+            }
+        }
+
+        for (i, (s, pts)) in chart.series.iter().zip(&self.points).enumerate() {
+            for (p, text) in pts.iter().zip(&s.point_labels) {
+                let (Some(p), false) = (p, text.is_empty()) else {
+                    continue;
+                };
+                let repeated = self.labels.iter().any(|l| {
+                    l.kind == LabelKind::Point
+                        && l.text == *text
+                        && l.leader
+                            .is_some_and(|(a, _)| (a.0 - p.0).abs() <= 12 && (a.1 - p.1).abs() <= 6)
+                });
+                if repeated {
+                    continue;
+                }
+                let w = width_of(text, POINT_SIZE) + 2 * PAD;
+                let h = line_height(POINT_SIZE) - 4;
+                let spots = around_point(*p, s.marker_radius(), w, h, 3);
+                let Some(rect) = placer.place_near(&spots) else {
+                    continue;
+                };
+                self.labels.push(Placed {
+                    kind: LabelKind::Point,
+                    text: text.clone(),
+                    size: POINT_SIZE,
+                    rect,
+                    colour: text_colour(s.colour_at(i)),
+                    // Where the label belongs; drawn only if it is far.
+                    leader: Some((*p, nearest_on(&rect, *p))),
+                });
+            }
         }
     }
 }
+
+/// The point of `r`'s outline nearest `p`.
+fn nearest_on(r: &PxRect, p: (i32, i32)) -> (i32, i32) {
+    (p.0.clamp(r.x0, r.x1), p.1.clamp(r.y0, r.y1))
+}
+
+/// How far a point label may sit from its point before a leader is drawn.
+const LEADER_FROM: i32 = 16;
 
 fn draw_error(e: impl Display) -> anyhow::Error {
     anyhow!("drawing the chart: {e}")
 }
 
-fn render_rgb(chart: &Chart, layout: &Layout) -> Result<Vec<u8>> {
+fn render_rgb(chart: &Chart, plan: &Plan) -> Result<Vec<u8>> {
     ensure_font()?;
     let typesetting = font_metrics().map_or(Typesetting::Whole, Typesetting::Glyphs);
     let mut pixels = vec![0u8; SIZE.0 as usize * SIZE.1 as usize * 3];
     {
         let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
-        draw(&root, chart, layout, typesetting)?;
+        draw(&root, chart, plan, typesetting)?;
         root.present().map_err(draw_error)?;
     }
     Ok(pixels)
 }
 
-fn render_svg(chart: &Chart, layout: &Layout) -> Result<String> {
+fn render_svg(chart: &Chart, plan: &Plan) -> Result<String> {
     ensure_font()?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        draw(&root, chart, layout, Typesetting::Whole)?;
+        draw(&root, chart, plan, Typesetting::Whole)?;
         root.present().map_err(draw_error)?;
     }
     Ok(svg)
@@ -254,10 +637,10 @@ const MARKERS: [Marker; 5] = [
     Marker::Cross,
 ];
 
-/// Draws one marker of half-size `r` centred on `at` (any coordinate system).
-fn draw_marker<DB: DrawingBackend, CT: CoordTranslate>(
-    area: &DrawingArea<DB, CT>,
-    at: CT::From,
+/// Draws one marker of half-size `r` centred on `at` (pixels).
+fn draw_marker<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    at: (i32, i32),
     marker: Marker,
     r: i32,
     style: ShapeStyle,
@@ -265,252 +648,269 @@ fn draw_marker<DB: DrawingBackend, CT: CoordTranslate>(
     let at = EmptyElement::at(at);
     match marker {
         Marker::Circle => area.draw(&(at + Circle::new((0, 0), r, style))),
-        Marker::Square => area.draw(&(at + Rectangle::new([(-r, -r), (r, r)], style))),
-        Marker::Triangle => area.draw(&(at + TriangleMarker::new((0, 0), r + 1, style))),
-        Marker::Diamond => {
-            let d = r + 1;
-            area.draw(&(at + Polygon::new(vec![(0, -d), (d, 0), (0, d), (-d, 0)], style)))
+        Marker::Square => {
+            let r = r * 7 / 8;
+            area.draw(&(at + Rectangle::new([(-r, -r), (r, r)], style)))
         }
-        Marker::Cross => area.draw(&(at + Cross::new((0, 0), r, style.stroke_width(2)))),
+        Marker::Triangle => {
+            let d = r + 2;
+            let tri = vec![(0, -d), (d, d * 3 / 4), (-d, d * 3 / 4), (0, -d)];
+            if style.filled {
+                area.draw(&(at + Polygon::new(tri, style)))
+            } else {
+                area.draw(&(at + PathElement::new(tri, style)))
+            }
+        }
+        Marker::Diamond => {
+            let d = r + 2;
+            let dia = vec![(0, -d), (d, 0), (0, d), (-d, 0), (0, -d)];
+            if style.filled {
+                area.draw(&(at + Polygon::new(dia, style)))
+            } else {
+                area.draw(&(at + PathElement::new(dia, style)))
+            }
+        }
+        Marker::Cross => area.draw(&(at + Cross::new((0, 0), r, style.stroke_width(3)))),
     }
     .map_err(draw_error)
 }
 
-/// Draws a polyline, solid or with (dash, gap) `pattern` (any coordinate
-/// system).
-fn draw_line<DB: DrawingBackend, CT: CoordTranslate>(
-    area: &DrawingArea<DB, CT>,
-    points: Vec<CT::From>,
-    pattern: Option<(u32, u32)>,
+/// A marker as a series draws it: filled, or an outline if `hollow`.
+fn series_marker<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    at: (i32, i32),
+    marker: Marker,
+    colour: RGBColor,
+    hollow: bool,
+) -> Result<()> {
+    if hollow {
+        draw_marker(area, at, marker, HOLLOW_SIZE, colour.stroke_width(3))
+    } else {
+        draw_marker(area, at, marker, MARKER_SIZE + 1, HALO.filled())?;
+        draw_marker(area, at, marker, MARKER_SIZE, colour.filled())
+    }
+}
+
+/// Draws a polyline (pixels) with a dash `pattern` (empty: solid).
+fn draw_line<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    points: &[(i32, i32)],
+    pattern: &[u32],
     style: ShapeStyle,
-) -> Result<()>
-where
-    CT::From: Clone,
-{
-    match pattern {
-        Some((dash, gap)) => area.draw(&DashedPathElement::new(points, dash, gap, style)),
-        None => area.draw(&PathElement::new(points, style)),
+) -> Result<()> {
+    for piece in dashes(points, pattern) {
+        area.draw(&PathElement::new(piece, style))
+            .map_err(draw_error)?;
     }
-    .map_err(draw_error)
+    Ok(())
 }
-
-const SERIES_WIDTH: u32 = 2;
-const MARKER_SIZE: i32 = 4;
-const HIGHLIGHT_WIDTH: u32 = 4;
-const HIGHLIGHT_MARKER: i32 = 6;
-const HALO: RGBColor = RGBColor(0xFF, 0xFF, 0xFF);
-
-// Font sizes in px. Keep them even: plotters puts a glyph's top at
-// `trunc(size / 2 + top)` below the anchor, which for odd sizes jumps a pixel
-// between glyphs whose tops differ by one ("e" and "x" at 17 px).
-const TITLE_SIZE: f64 = 30.0;
-const LABEL_SIZE: f64 = 20.0;
-const TICK_SIZE: f64 = 16.0;
-const LEGEND_SIZE: f64 = 16.0;
 
 fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     chart: &Chart,
-    layout: &Layout,
+    plan: &Plan,
     ts: Typesetting,
 ) -> Result<()> {
     root.fill(&WHITE).map_err(draw_error)?;
     let (width, _) = root.dim_in_pixel();
+    let centre_top = (HPos::Center, VPos::Top);
     put_text(
         root,
         ts,
         chart.title,
         TITLE_SIZE,
-        (HPos::Center, VPos::Top),
-        (width as i32 / 2, 12),
+        centre_top,
+        (width as i32 / 2, 14),
         false,
     )?;
-    let (_, body) = root.margin(0, 8, 8, 8).split_vertically(56);
-
-    // Legend entries: (name, colour, marker, line pattern, highlighted).
-    let mut entries: Vec<LegendEntry> = chart
-        .series
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let colour = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
-            let marker = MARKERS[s.marker.unwrap_or(i) % MARKERS.len()];
-            (s.name.as_str(), colour, marker, s.pattern(), false)
-        })
-        .collect();
-    if let Some(h) = chart.highlight {
-        entries.push((h.name.as_str(), BLACK, Marker::Circle, h.pattern(), true));
+    if !chart.subtitle.is_empty() {
+        let at = (width as i32 / 2, 60);
+        put_text(
+            root,
+            ts,
+            chart.subtitle,
+            SUBTITLE_SIZE,
+            centre_top,
+            at,
+            false,
+        )?;
     }
-    let mut text_room = 0.0f64;
-    for entry in &entries {
-        text_room = text_room.max(text_width(&body, ts, entry.0, LEGEND_SIZE)?);
-    }
-    let (body_width, _) = body.dim_in_pixel();
-    let legend_width = if entries.is_empty() {
-        0
-    } else {
-        (text_room.ceil() as u32 + 90).clamp(170, 380)
+    let plot = plan.plot;
+    let (x, y) = (&plan.x, &plan.y);
+    let px = |t: f64| x.pixel(t, plot.x0, plot.x1);
+    let py = |t: f64| y.pixel(t, plot.y1, plot.y0);
+    let line = |a: (i32, i32), b: (i32, i32), style: ShapeStyle| {
+        root.draw(&PathElement::new(vec![a, b], style))
+            .map_err(draw_error)
     };
-    let (plot, legend) = body.split_horizontally(body_width.saturating_sub(legend_width) as i32);
 
-    // Grid and ticks from plotters; their labels are drawn below with
-    // `put_text`, so the mesh gets empty ones.
-    let (x, y) = (&layout.x, &layout.y);
-    let mut cc = ChartBuilder::on(&plot)
-        .margin_top(12)
-        .margin_right(12)
-        .x_label_area_size(72)
-        .y_label_area_size(104)
-        .build_cartesian_2d(x.clone(), y.clone())
-        .map_err(draw_error)?;
-    let no_label = |_: &f64| String::new();
-    cc.configure_mesh()
-        .x_label_formatter(&no_label)
-        .y_label_formatter(&no_label)
-        .bold_line_style(BLACK.mix(0.2))
-        .light_line_style(BLACK.mix(0.07))
-        .axis_style(BLACK.mix(0.8))
-        .draw()
-        .map_err(draw_error)?;
-    let area = cc.plotting_area();
-    area.draw(&Rectangle::new(
-        [(x.lo, y.lo), (x.hi, y.hi)],
+    // Below the floor: shaded, what rounding alone gives.
+    if let Some(fy) = plan.floor {
+        let band = [(plot.x0, fy), (plot.x1, plot.y1)];
+        root.draw(&Rectangle::new(band, BLACK.mix(0.06).filled()))
+            .map_err(draw_error)?;
+    }
+    // Grid: light lines at minor ticks, darker at labelled ones.
+    for &t in &x.light {
+        line((px(t), plot.y0), (px(t), plot.y1), BLACK.mix(0.07).into())?;
+    }
+    for &t in &y.light {
+        line((plot.x0, py(t)), (plot.x1, py(t)), BLACK.mix(0.07).into())?;
+    }
+    for &t in &x.bold {
+        line((px(t), plot.y0), (px(t), plot.y1), BLACK.mix(0.2).into())?;
+    }
+    for &t in &y.bold {
+        line((plot.x0, py(t)), (plot.x1, py(t)), BLACK.mix(0.2).into())?;
+    }
+    // Frame, and ticks outside it: long at labels, short at minor ticks.
+    root.draw(&Rectangle::new(
+        [(plot.x0, plot.y0), (plot.x1, plot.y1)],
         BLACK.mix(0.8).stroke_width(1),
     ))
     .map_err(draw_error)?;
+    let tick = BLACK.mix(0.8).stroke_width(1);
+    for (ticks, len) in [(&x.bold, 9), (&x.light, 5)] {
+        for &t in ticks {
+            line((px(t), plot.y1), (px(t), plot.y1 + len), tick)?;
+        }
+    }
+    for (ticks, len) in [(&y.bold, 9), (&y.light, 5)] {
+        for &t in ticks {
+            line((plot.x0 - len, py(t)), (plot.x0, py(t)), tick)?;
+        }
+    }
 
-    // Axis text, in pixels of the whole image.
-    let (xs, ys) = area.get_pixel_range();
+    // Axis text.
     for &t in &x.bold {
-        let (px, _) = cc.backend_coord(&(t, y.lo));
-        let at = (px, ys.end + 8);
-        put_text(
-            root,
-            ts,
-            &x.label(t),
-            TICK_SIZE,
-            (HPos::Center, VPos::Top),
-            at,
-            false,
-        )?;
+        let at = (px(t), plot.y1 + 14);
+        put_text(root, ts, &x.label(t), TICK_SIZE, centre_top, at, false)?;
     }
     for &t in &y.bold {
-        let (_, py) = cc.backend_coord(&(x.lo, t));
-        let at = (xs.start - 10, py);
-        put_text(
-            root,
-            ts,
-            &y.label(t),
-            TICK_SIZE,
-            (HPos::Right, VPos::Center),
-            at,
-            false,
-        )?;
+        let at = (plot.x0 - 14, py(t));
+        let anchor = (HPos::Right, VPos::Center);
+        put_text(root, ts, &y.label(t), TICK_SIZE, anchor, at, false)?;
     }
-    let centre = ((xs.start + xs.end) / 2, (ys.start + ys.end) / 2);
-    let anchor = (HPos::Center, VPos::Top);
-    put_text(
-        root,
-        ts,
-        chart.x_label,
-        LABEL_SIZE,
-        anchor,
-        (centre.0, ys.end + 40),
-        false,
-    )?;
+    let centre = ((plot.x0 + plot.x1) / 2, (plot.y0 + plot.y1) / 2);
+    let at = (centre.0, plot.y1 + 54);
+    put_text(root, ts, chart.x_label, LABEL_SIZE, centre_top, at, false)?;
     let anchor = (HPos::Center, VPos::Center);
-    put_text(
-        root,
-        ts,
-        chart.y_label,
-        LABEL_SIZE,
-        anchor,
-        (xs.start - 88, centre.1),
-        true,
-    )?;
+    let at = (plot.x0 - Y_TEXT_ROOM + 18, centre.1);
+    put_text(root, ts, chart.y_label, LABEL_SIZE, anchor, at, true)?;
 
-    // The highlight first, so that no data point is hidden under it.
-    if let (Some(runs), Some(h)) = (&layout.highlight, chart.highlight) {
-        // A white halo first, so the line reads on top of whatever it crosses.
-        for run in runs {
-            let halo = HALO.stroke_width(HIGHLIGHT_WIDTH + 4);
-            draw_line(area, run.clone(), None, halo)?;
-        }
-        for run in runs {
-            let line = BLACK.stroke_width(HIGHLIGHT_WIDTH);
-            draw_line(area, run.clone(), h.pattern(), line)?;
-            for &p in run {
-                draw_marker(area, p, Marker::Circle, HIGHLIGHT_MARKER + 2, HALO.filled())?;
-                draw_marker(area, p, Marker::Circle, HIGHLIGHT_MARKER, BLACK.filled())?;
+    // The floor line.
+    if let Some(fy) = plan.floor {
+        let style = FLOOR_COLOUR.stroke_width(2);
+        draw_line(root, &[(plot.x0, fy), (plot.x1, fy)], &[10, 6], style)?;
+    }
+
+    // The highlight beneath everything else: a grey band along it.
+    for run in runs(&plan.highlight) {
+        let band = BLACK.mix(0.16).stroke_width(FRONT_WIDTH);
+        draw_line(root, &run, &[], band)?;
+    }
+
+    // Leaders of labels that had to move, under the lines.
+    for l in &plan.labels {
+        if let Some((from, to)) = l.leader {
+            let far = (from.0 - to.0).abs().max((from.1 - to.1).abs());
+            if l.kind == LabelKind::End || far > LEADER_FROM {
+                line(from, to, l.colour.mix(0.7).stroke_width(1))?;
             }
         }
     }
 
-    for (i, runs) in layout.series.iter().enumerate() {
-        let (_, colour, marker, pattern, _) = entries[i];
-        for run in runs {
-            draw_line(
-                area,
-                run.clone(),
-                pattern,
-                colour.stroke_width(SERIES_WIDTH),
-            )?;
-            for &p in run {
-                draw_marker(area, p, marker, MARKER_SIZE, colour.filled())?;
-            }
+    // Lines first, then markers, so that no line hides a marker.
+    for (i, (s, pts)) in chart.series.iter().zip(&plan.points).enumerate() {
+        for run in runs(pts) {
+            let style = s.colour_at(i).stroke_width(SERIES_WIDTH);
+            draw_line(root, &run, s.pattern(), style)?;
         }
     }
-    if !entries.is_empty() {
-        draw_legend(&legend, ts, &entries)?;
+    for (i, (s, pts)) in chart.series.iter().zip(&plan.points).enumerate() {
+        for &p in pts.iter().flatten() {
+            series_marker(root, p, s.marker_at(i), s.colour_at(i), s.hollow)?;
+        }
+    }
+    for &p in plan.highlight.iter().flatten() {
+        root.draw(&Circle::new(p, FRONT_RING, BLACK.stroke_width(3)))
+            .map_err(draw_error)?;
+    }
+
+    // Labels on a white ground.
+    for l in &plan.labels {
+        let r = l.rect;
+        let ground = [(r.x0, r.y0), (r.x1, r.y1)];
+        root.draw(&Rectangle::new(ground, WHITE.mix(0.85).filled()))
+            .map_err(draw_error)?;
+        let anchor = (HPos::Left, VPos::Center);
+        let at = (r.x0 + PAD, r.centre_y());
+        put_text_in(root, ts, &l.text, l.size, anchor, at, false, &l.colour)?;
+    }
+
+    if let Some(rect) = plan.legend {
+        let mut entries: Vec<LegendEntry> = chart
+            .series
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let (c, m) = (s.colour_at(i), s.marker_at(i));
+                (s.name.as_str(), c, m, s.pattern(), s.hollow)
+            })
+            .collect();
+        if let Some(h) = chart.highlight {
+            entries.push((h.name.as_str(), BLACK, Marker::Circle, &[], true));
+        }
+        draw_legend(root, ts, rect, &entries)?;
     }
     Ok(())
 }
 
-/// The legend, top-aligned with the plot, one entry per row; names too long
-/// for the panel end in "…", and rows that do not fit become "… and N more".
+const LEGEND_ROW: i32 = 32;
+
+/// The legend in `rect`, one entry per row; names too long for the panel
+/// end in "…", and rows that do not fit become "… and N more".
 fn draw_legend<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
+    root: &DrawingArea<DB, Shift>,
     ts: Typesetting,
+    rect: PxRect,
     entries: &[LegendEntry],
 ) -> Result<()> {
-    const ROW: i32 = 30;
-    const TOP: i32 = 12;
-    const TEXT_X: i32 = 70;
-    let (width, height) = area.dim_in_pixel();
-    let (width, height) = (width as i32, height as i32);
-    let max_rows = ((height - 2 * TOP - 12) / ROW).max(1) as usize;
+    let max_rows = ((rect.y1 - rect.y0 - 10) / LEGEND_ROW).max(1) as usize;
     let shown = if entries.len() > max_rows {
         max_rows - 1
     } else {
         entries.len()
     };
-    let rows = shown + usize::from(shown < entries.len());
-    let frame = [(4, TOP), (width - 6, TOP + 8 + rows as i32 * ROW)];
-    area.draw(&Rectangle::new(frame, WHITE.filled()))
+    let frame = [(rect.x0, rect.y0), (rect.x1, rect.y1)];
+    root.draw(&Rectangle::new(frame, WHITE.filled()))
         .map_err(draw_error)?;
-    area.draw(&Rectangle::new(frame, BLACK.mix(0.35).stroke_width(1)))
+    root.draw(&Rectangle::new(frame, BLACK.mix(0.35).stroke_width(1)))
         .map_err(draw_error)?;
 
     let anchor = (HPos::Left, VPos::Center);
-    let text_room = f64::from((width - TEXT_X - 12).max(10));
-    for (row, &(name, colour, marker, pattern, highlighted)) in entries[..shown].iter().enumerate()
-    {
-        let cy = TOP + 4 + ROW / 2 + row as i32 * ROW;
-        let (line_width, marker_size) = if highlighted {
-            (HIGHLIGHT_WIDTH, HIGHLIGHT_MARKER)
-        } else {
-            (SERIES_WIDTH, MARKER_SIZE)
-        };
-        let sample = vec![(14, cy), (56, cy)];
-        draw_line(area, sample, pattern, colour.stroke_width(line_width))?;
-        draw_marker(area, (35, cy), marker, marker_size, colour.filled())?;
-        let text = fit_text(area, ts, name, text_room)?;
-        put_text(area, ts, &text, LEGEND_SIZE, anchor, (TEXT_X, cy), false)?;
+    let text_x = rect.x0 + 76;
+    let text_room = f64::from((rect.x1 - text_x - 8).max(10));
+    for (row, &(name, colour, marker, pattern, hollow)) in entries[..shown].iter().enumerate() {
+        let cy = rect.y0 + 5 + LEGEND_ROW / 2 + row as i32 * LEGEND_ROW;
+        let sample = [(rect.x0 + 10, cy), (rect.x0 + 62, cy)];
+        draw_line(root, &sample, pattern, colour.stroke_width(SERIES_WIDTH))?;
+        series_marker(root, (rect.x0 + 36, cy), marker, colour, hollow)?;
+        let text = fit_text(root, ts, name, text_room)?;
+        put_text(root, ts, &text, LEGEND_SIZE, anchor, (text_x, cy), false)?;
     }
     if shown < entries.len() {
-        let cy = TOP + 4 + ROW / 2 + shown as i32 * ROW;
+        let cy = rect.y0 + 5 + LEGEND_ROW / 2 + shown as i32 * LEGEND_ROW;
         let more = format!("… and {} more", entries.len() - shown);
-        put_text(area, ts, &more, LEGEND_SIZE, anchor, (14, cy), false)?;
+        put_text(
+            root,
+            ts,
+            &more,
+            LEGEND_SIZE,
+            anchor,
+            (rect.x0 + 10, cy),
+            false,
+        )?;
     }
     Ok(())
 }

@@ -192,6 +192,15 @@ pub(super) fn text_width<DB: DrawingBackend>(
     }
 }
 
+/// Width of `text` at `size` px by the bundled font's metrics (a generous
+/// guess if they cannot be read), whole pixels up.
+pub(super) fn width_of(text: &str, size: f64) -> i32 {
+    let w = font_metrics().map_or(0.62 * size * text.chars().count() as f64, |m| {
+        m.layout(text, size).1
+    });
+    w.ceil() as i32
+}
+
 /// Draws black `text` at `size` px anchored at `at` (pixels in `area`);
 /// `vertical` text reads bottom to top, its anchor taken along the text.
 pub(super) fn put_text<DB: DrawingBackend>(
@@ -199,9 +208,24 @@ pub(super) fn put_text<DB: DrawingBackend>(
     typesetting: Typesetting,
     text: &str,
     size: f64,
+    anchor: (HPos, VPos),
+    at: (i32, i32),
+    vertical: bool,
+) -> Result<()> {
+    put_text_in(area, typesetting, text, size, anchor, at, vertical, &BLACK)
+}
+
+/// [`put_text`] in `colour`.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn put_text_in<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    typesetting: Typesetting,
+    text: &str,
+    size: f64,
     (h_pos, v_pos): (HPos, VPos),
     at: (i32, i32),
     vertical: bool,
+    colour: &RGBColor,
 ) -> Result<()> {
     let transform = if vertical {
         FontTransform::Rotate270
@@ -212,7 +236,7 @@ pub(super) fn put_text<DB: DrawingBackend>(
         (FONT, size)
             .into_font()
             .transform(transform.clone())
-            .color(&BLACK)
+            .color(colour)
             .pos(Pos::new(h_pos, v_pos))
     };
     match typesetting {
