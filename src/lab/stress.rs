@@ -1,7 +1,7 @@
 //! `impulse stress`: the stability suite ([`impulse::stress`]) run under every
 //! method, as a table of where each one fails.
 //!
-//! Every scenario runs under every method in [`METHODS`] (11 × 5 runs; a
+//! Every scenario runs under every method in [`METHODS`] (12 × 5 runs; a
 //! few seconds with `--quick`, minutes without). The command prints a
 //! Markdown table (one row per scenario, one column per method, each cell the
 //! scenario's figure and ✓ or ✗), the pass criteria and every run's summary,
