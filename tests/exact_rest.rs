@@ -113,7 +113,8 @@ fn a_resting_pile_still_answers_a_hit() {
     }
     assert_eq!(w.metrics().kinetic_energy, 0.0, "settled");
     let before: Vec<DVec2> = w.particles.iter().map(|p| p.pos).collect();
-    let momentum = w.metrics().momentum;
+    let pile = w.particles.len();
+    let pile_energy = w.total_energy();
     // A disc thrown hard at the pile from high up on the left.
     w.particles.push(Particle::new(
         DVec2::new(1.0, 8.0),
@@ -122,8 +123,19 @@ fn a_resting_pile_still_answers_a_hit() {
         0.3,
         Color::palette(1),
     ));
-    for _ in 0..(1.5 / DT) as usize {
+    let total = w.total_energy();
+    let mut energy = total;
+    for step in 0..(1.5 / DT) as usize {
         w.step(DT);
+        // e = 0.5 ≤ 1 everywhere and exact moves discs on their parabolas
+        // exactly: no step may add energy beyond rounding.
+        let now = w.total_energy();
+        assert!(
+            now - energy <= 1e-12 * total.abs(),
+            "step {step}: energy rose by {:e} J",
+            now - energy
+        );
+        energy = now;
     }
     let moved = before
         .iter()
@@ -132,5 +144,29 @@ fn a_resting_pile_still_answers_a_hit() {
         .count();
     assert!(moved >= 3, "only {moved} discs of the pile moved");
     assert!(common::deepest_pair_overlap(&w) < 1e-9);
-    assert_eq!(momentum, DVec2::ZERO);
+    // The hit is answered with energy: the resting pile sat at rest (no
+    // kinetic energy); what it holds now above that came from the thrown
+    // disc, which gave up energy to it, and whatever the impacts lost
+    // (e = 0.5 keeps a quarter of each approach's kinetic energy) left the
+    // whole with less than it started with.
+    let mut pile_now = w.clone();
+    pile_now.particles.truncate(pile);
+    let gained = pile_now.metrics().kinetic_energy + pile_now.metrics().rotational_energy;
+    let thrown_left = w.total_energy() - pile_now.total_energy();
+    let thrown_given = (total - pile_energy) - thrown_left;
+    eprintln!(
+        "pile KE {gained:e} J; thrown gave {thrown_given:e} J of {:e}",
+        total - pile_energy
+    );
+    assert!(gained > 0.0, "the pile took no kinetic energy from the hit");
+    assert!(
+        thrown_given > 0.0,
+        "the thrown disc gave up no energy ({thrown_given:e} J)"
+    );
+    assert!(
+        w.total_energy() < total,
+        "inelastic impacts lost nothing: {} J → {} J",
+        total,
+        w.total_energy()
+    );
 }

@@ -56,21 +56,27 @@ fn the_pile_comes_to_rest_and_stops_counting() {
 }
 
 /// A ball dropped from `height` onto the floor with restitution `e`: its
-/// k-th bounce starts at eᵏ·√(2gH). Those faster than the impact speed are
-/// impacts; it comes to rest after them.
-fn expected_bounces(height: f64, e: f64, g: f64) -> u64 {
+/// k-th bounce starts at eᵏ·√(2gH). Those faster than the impact speed
+/// (`RESTING_SPEED`·g·dt) plus `margin` are impacts; it comes to rest
+/// after them.
+fn bounces_above(height: f64, e: f64, g: f64, margin: f64) -> u64 {
     let v0 = (2.0 * g * height).sqrt();
-    let limit = RESTING_SPEED * g * DT;
+    let limit = RESTING_SPEED * g * DT + margin;
     (0..).take_while(|&k| v0 * e.powi(k) > limit).count() as u64
 }
 
 #[test]
 fn a_dropped_ball_counts_its_bounces_and_then_rests() {
     let (g, e, height) = (9.81, 0.7, 2.0);
-    let expected = expected_bounces(height - 0.5, e, g);
-    // (the discrete methods lose a little more than e at each bounce, where
-    // the wall takes the potential energy of putting the disc back: they
-    // count the bounces they make, which may be fewer)
+    let expected = bounces_above(height - 0.5, e, g, 0.0);
+    // impulse meets the floor inside a step whose gravity kick g·dt it has
+    // already taken in full (semi-implicit Euler): reflected at the touch,
+    // its bounce leaves up to (1 + e)·g·dt slower than e times its arrival
+    // (measured: about 1.2·g·dt). Over the bounces that loss adds up to
+    // at most (1 + e)·g·dt·(1 + e + e² + …) = (1 + e)·g·dt/(1 − e), so every
+    // bounce whose exact speed clears the impact speed by that much is
+    // still an impact under impulse. exact has no such loss.
+    let impulse_fewest = bounces_above(height - 0.5, e, g, (1.0 + e) * g * DT / (1.0 - e));
     for method in [Method::Exact, Method::Impulse] {
         let mut w = World::new(DVec2::new(4.0, 4.0));
         w.laws.gravity = DVec2::new(0.0, -g);
@@ -88,11 +94,12 @@ fn a_dropped_ball_counts_its_bounces_and_then_rests() {
             w.step(DT);
         }
         let hits = w.total_wall_hits;
-        // Discretisation can move the last impact across the line by one.
+        // For exact, rounding of the event times can move the last impact
+        // across the line by one.
         let fewest = if method == Method::Exact {
             expected - 1
         } else {
-            expected - 3
+            impulse_fewest
         };
         assert!(
             (fewest..=expected + 1).contains(&hits),

@@ -488,6 +488,22 @@ fn billiards_break_keeps_momentum_until_the_first_cushion_and_energy_between_bal
     );
 }
 
+/// The Kolmogorov–Smirnov distance between the discs' speeds and the 2D
+/// Maxwell–Boltzmann (Rayleigh) law with ⟨v²⟩ = s²: F(v) = 1 − e^(−v²/s²).
+fn rayleigh_distance(world: &World, s: f64) -> f64 {
+    let mut speeds: Vec<f64> = world.particles.iter().map(|p| p.vel.length()).collect();
+    speeds.sort_by(f64::total_cmp);
+    let n = speeds.len() as f64;
+    speeds
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            let f = 1.0 - (-(v * v) / (s * s)).exp();
+            (f - i as f64 / n).abs().max((i as f64 + 1.0) / n - f)
+        })
+        .fold(0.0, f64::max)
+}
+
 #[test]
 fn gas_keeps_its_energy_and_spreads_from_one_speed_towards_maxwell_boltzmann() {
     let file = "preset-8-gas.toml";
@@ -515,13 +531,17 @@ fn gas_keeps_its_energy_and_spreads_from_one_speed_towards_maxwell_boltzmann() {
         world.total_pair_collisions as usize >= n,
         "{file}: too few collisions to spread the speeds"
     );
-    // The speeds have spread from the single spike towards the 2D
-    // Maxwell–Boltzmann (Rayleigh) distribution with the same ⟨v²⟩ = s²,
-    // whose mean is s·√π/2 ≈ 0.886·s (the spike's is s). The tolerance is
-    // about twice the sampling noise of a mean over 200 discs.
-    let mean = world.particles.iter().map(|p| p.vel.length()).sum::<f64>() / n as f64;
-    let rayleigh = speed * std::f64::consts::PI.sqrt() / 2.0;
-    assert_close(mean, rayleigh, 0.06 * speed, "mean speed after 3 s");
+    // The speeds have relaxed from the single spike to the 2D
+    // Maxwell–Boltzmann (Rayleigh) law with the same ⟨v²⟩ = s²: the
+    // Kolmogorov–Smirnov distance passes at the 1 % level, D < 1.63/√n
+    // (0.115 for 200 discs). The spike is 1 − e⁻¹ ≈ 0.63 away from it.
+    let distance = rayleigh_distance(&world, speed);
+    let critical = 1.63 / (n as f64).sqrt();
+    assert!(
+        distance < critical,
+        "{file}: speeds {distance:.3} from the Rayleigh law after 3 s (1 % critical value \
+         {critical:.3})"
+    );
     for p in &world.particles {
         let r = DVec2::splat(p.radius);
         assert!(
@@ -550,6 +570,26 @@ fn pile_settles_inside_the_box_under_auto_within_six_seconds() {
         .iter()
         .map(|p| p.mass * g * (p.pos.y - p.radius))
         .sum();
+    // By the geometric series of its bounces a disc dropped from the top
+    // on the floor (e < 1) would be at rest after √(2h/g) + 2e·v₀/(g(1 − e))
+    // (≈ 4.2 s here); landing on others it rests sooner. Six seconds is
+    // past that: no disc is still bouncing, and what moves is frictionless
+    // discs settling into gaps, one at a time, each with at most the energy
+    // of dropping by its own diameter, m·g·2r.
+    let top = world
+        .particles
+        .iter()
+        .map(|p| p.pos.y - p.radius)
+        .fold(0.0, f64::max);
+    let e = world.laws.restitution.max(world.laws.wall_restitution);
+    let v0 = (2.0 * g * top).sqrt();
+    let series = (2.0 * top / g).sqrt() + 2.0 * e * v0 / (g * (1.0 - e));
+    assert!(series < 6.0, "{file}: bounces for {series:.2} s");
+    let settling = world
+        .particles
+        .iter()
+        .map(|p| p.mass * g * 2.0 * p.radius)
+        .fold(0.0, f64::max);
     step_until(&mut world, dt, 6.0, |_| false);
     let tol = 1e-6;
     for (k, p) in world.particles.iter().enumerate() {
@@ -562,7 +602,8 @@ fn pile_settles_inside_the_box_under_auto_within_six_seconds() {
     }
     let kinetic = kinetic_energy(&world);
     assert!(
-        kinetic < 0.01 * potential,
-        "{file}: still moving after 6 s: KE {kinetic:.3} J against {potential:.1} J of height"
+        kinetic < settling,
+        "{file}: still moving after 6 s: KE {kinetic:.3} J, more than one disc settling \
+         into a gap ({settling:.2} J; {potential:.1} J of height at the start)"
     );
 }
