@@ -415,3 +415,100 @@ fn figures_parse_as_written_and_markers_find_their_figure() {
     );
     assert!(unmarked_figures("10⁶ discs, 1024 px, e = 0.5").is_empty());
 }
+
+/// The words of every `<text>` of an SVG chart, unescaped.
+fn svg_texts(path: &Path) -> Vec<String> {
+    let svg = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| {
+            let body = &t[t.find('>')? + 1..t.find("</text>")?];
+            Some(
+                body.trim()
+                    .replace("&lt;", "<")
+                    .replace("&gt;", ">")
+                    .replace("&quot;", "\"")
+                    .replace("&apos;", "'")
+                    .replace("&#39;", "'")
+                    .replace("&amp;", "&"),
+            )
+        })
+        .collect()
+}
+
+/// The committed stability table and chart have a row for every scenario
+/// of the suite, under every method.
+#[test]
+fn the_committed_stability_table_and_chart_cover_the_whole_suite() {
+    use impulse::stress::{scenarios, Size, METHODS};
+    let lab = root().join("docs/lab");
+    let texts = svg_texts(&lab.join("stress.svg"));
+    let csv = &tables(&lab.join("stress.csv"))[0];
+    let markdown = std::fs::read_to_string(lab.join("stress.md")).unwrap();
+    let suite = scenarios();
+    for s in &suite {
+        let title = s.title_for(Size::Full);
+        assert!(
+            texts.iter().any(|t| t.contains(title)),
+            "stress.svg has no row {title:?} (scripts/lab-tables.sh regenerates it)"
+        );
+        assert!(markdown.contains(title), "stress.md has no row {title:?}");
+    }
+    for m in METHODS {
+        let name = m.to_string();
+        assert!(texts.contains(&name), "stress.svg has no column {name}");
+    }
+    assert_eq!(
+        csv.rows.len(),
+        suite.len() * METHODS.len(),
+        "stress.csv: a row per scenario and method"
+    );
+}
+
+/// The committed bench chart has a line for every series of its table, and
+/// each accuracy chart one for every method and substep count of the sweep.
+#[test]
+fn the_committed_bench_and_accuracy_charts_have_every_series() {
+    let lab = root().join("docs/lab");
+    let bench = tables(&lab.join("bench.md"));
+    let main = bench
+        .iter()
+        .find(|t| {
+            t.header
+                .first()
+                .is_some_and(|h| h == "method / broad phase")
+        })
+        .expect("bench.md's main table");
+    let texts = svg_texts(&lab.join("bench.svg"));
+    let mut series: Vec<&String> = main.rows.iter().map(|r| &r[0]).collect();
+    series.dedup();
+    assert!(series.len() >= 10, "{series:?}");
+    for s in series {
+        assert!(texts.contains(s), "bench.svg has no line labelled {s:?}");
+    }
+    let sweep = &tables(&lab.join("accuracy.csv"))[0];
+    let column = |name: &str| sweep.header.iter().position(|h| h == name).unwrap();
+    let (method, substeps) = (column("method"), column("substeps"));
+    let mut runs: Vec<(String, String)> = sweep
+        .rows
+        .iter()
+        .map(|r| (r[method].clone(), r[substeps].clone()))
+        .collect();
+    runs.sort();
+    runs.dedup();
+    for chart in ["trajectory", "collisions", "energy", "pressure"] {
+        let texts = svg_texts(&lab.join(format!("accuracy-{chart}.svg")));
+        for (m, k) in &runs {
+            let several = runs.iter().filter(|(n, _)| n == m).count() > 1;
+            let label = match (several, k.as_str()) {
+                (false, _) => m.clone(),
+                (true, "1") => format!("{m}, 1 substep"),
+                (true, k) => format!("{m}, {k} substeps"),
+            };
+            assert!(
+                texts.contains(&label),
+                "accuracy-{chart}.svg has no line labelled {label:?}"
+            );
+        }
+    }
+}

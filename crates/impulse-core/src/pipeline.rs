@@ -142,6 +142,7 @@ impl Pipeline {
             parallel,
         );
         stats.pair_collisions += report.collisions;
+        stats.at_touch += report.at_touch;
         stats.resting_contacts += report.resting;
         stats.max_overlap = stats.max_overlap.max(report.max_overlap);
         stats.timings.resolution += lap.elapsed();

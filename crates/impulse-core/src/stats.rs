@@ -58,6 +58,9 @@ pub struct StepStats {
     /// Pair impacts resolved: approaching faster than the
     /// [`crate::impact::threshold`].
     pub pair_collisions: usize,
+    /// Of the pair impacts, those `impulse` resolved where the discs
+    /// touched (the rest: where they overlap, see [`crate::resolution`]).
+    pub at_touch: usize,
     /// Discs that hit a wall faster than the threshold.
     pub wall_hits: usize,
     /// Resting contacts met, between discs and at walls: approaching, but

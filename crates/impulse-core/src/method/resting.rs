@@ -164,6 +164,7 @@ pub(crate) fn substep(
                     particles[j].pos += (particles[j].vel - before[1]) * t.ago;
                 }
                 pair_impacts += usize::from(counted);
+                stats.at_touch += usize::from(counted && touch.is_some());
                 if counted && ledger.is_on() {
                     ledger.push(Collision {
                         time,

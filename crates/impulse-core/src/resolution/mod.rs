@@ -78,6 +78,9 @@ pub struct ResolutionReport {
     /// Resting contacts: approaching pairs slower than that (resolved too,
     /// but not counted or recorded as collisions).
     pub resting: usize,
+    /// Impacts resolved where the discs touched ([`Rule::at_touch`]); the
+    /// others fell back to the overlap's normal and push-apart.
+    pub at_touch: usize,
     /// Deepest overlap found (m).
     pub max_overlap: f64,
 }
@@ -88,6 +91,7 @@ impl ResolutionReport {
         ResolutionReport {
             collisions: self.collisions + other.collisions,
             resting: self.resting + other.resting,
+            at_touch: self.at_touch + other.at_touch,
             max_overlap: self.max_overlap.max(other.max_overlap),
         }
     }
@@ -207,6 +211,7 @@ fn resolve_contact(
         }
     }
     report.collisions += usize::from(impact);
+    report.at_touch += usize::from(impact && touch.is_some());
     report.resting += usize::from(collided && !impact);
     if impact && ledger.is_on() {
         ledger.push(Collision {
