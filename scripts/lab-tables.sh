@@ -2,7 +2,8 @@
 # Regenerates every committed lab table and chart, the one way they are made:
 #
 #   scripts/lab-tables.sh          the full runs into docs/lab/ (bench, accuracy,
-#                                  stress: about 40 minutes on 2 cores) and the
+#                                  stress: about 5 minutes on 2 cores on a quiet
+#                                  hour, 4.5 on 2026-11-26) and the
 #                                  quick ones into docs/lab/quick/
 #   scripts/lab-tables.sh --quick  only the quick ones (about 2 minutes)
 #

@@ -21,6 +21,9 @@
 //! `IMPULSE_UPDATE_FIGURES=1 cargo test --test lab_figures` (the script does
 //! it), which rewrites each quoted value from its cell.
 
+mod common;
+
+use common::csv_fields;
 use std::path::{Path, PathBuf};
 
 fn root() -> PathBuf {
@@ -33,25 +36,6 @@ struct Table {
     rows: Vec<Vec<String>>,
 }
 
-/// The fields of one CSV line (quoted fields may hold commas; `""` is a
-/// quote).
-fn csv_fields(line: &str) -> Vec<String> {
-    let (mut out, mut field, mut quoted) = (Vec::new(), String::new(), false);
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                field.push('"');
-                chars.next();
-            }
-            '"' => quoted = !quoted,
-            ',' if !quoted => out.push(std::mem::take(&mut field)),
-            _ => field.push(c),
-        }
-    }
-    out.push(field);
-    out
-}
 
 /// Every table of a file: the Markdown tables in it, or the CSV itself.
 fn tables(path: &Path) -> Vec<Table> {

@@ -5,28 +5,12 @@
 //! errors and drifts) must match the committed CSV exactly. Timings (the
 //! accuracy table's cost) are left out: they are measurements of a machine.
 
+mod common;
+
+use common::csv_fields as fields;
 use std::path::Path;
 use std::process::Command;
 
-/// The fields of one CSV line (quoted fields may hold commas; `""` is a
-/// quote).
-fn fields(line: &str) -> Vec<String> {
-    let (mut out, mut field, mut quoted) = (Vec::new(), String::new(), false);
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                field.push('"');
-                chars.next();
-            }
-            '"' => quoted = !quoted,
-            ',' if !quoted => out.push(std::mem::take(&mut field)),
-            _ => field.push(c),
-        }
-    }
-    out.push(field);
-    out
-}
 
 /// The table's rows without the columns named in `skip`, header first.
 fn table(text: &str, skip: &[&str]) -> Vec<Vec<String>> {

@@ -288,7 +288,7 @@ pub(crate) fn write_charts(points: &[Point], out: &std::path::Path) -> anyhow::R
             series: &series,
             highlight: Some(&front),
             direct_labels: true,
-            floor: Some((floor, FLOOR_LABEL)),
+            floor: Some((floor, floor_label(name))),
         };
         let (png, _) = write_chart(&chart, &out.join(format!("accuracy-{name}")))?;
         println!("wrote {}", png.display());
@@ -296,8 +296,15 @@ pub(crate) fn write_charts(points: &[Point], out: &std::path::Path) -> anyhow::R
     Ok(())
 }
 
-/// What the shaded band under the floor is.
-const FLOOR_LABEL: &str = "noise floor (rounding): exact against exact at other steps";
+/// What the shaded band under the floor is: rounding for the smooth
+/// measures, chaos for the counts and the pressure over 10 s (a collision
+/// moved by an ulp changes which come after it).
+fn floor_label(metric: &str) -> &'static str {
+    match metric {
+        "collisions" | "pressure" => "noise floor (chaos): exact against exact at other steps",
+        _ => "noise floor (rounding): exact against exact at other steps",
+    }
+}
 
 /// An error of this size or more (100 %, or a disc radius) is no accuracy at
 /// all: such a point is not on the Pareto front however cheap it is.

@@ -506,29 +506,44 @@ impl Plan {
             placer.bounds = inner;
         }
 
-        if let (Some((_, text)), Some(fy)) = (chart.floor, self.floor) {
-            let w = width_of(text, POINT_SIZE) + 2 * PAD;
+        if let (Some((_, full)), Some(fy)) = (chart.floor, self.floor) {
             let h = line_height(POINT_SIZE);
             // Just above the line at the left, else just below, else anywhere
-            // along it.
-            let mut spots = Vec::new();
-            let mut x0 = plot.x0 + 8;
-            while x0 + w < plot.x1 {
-                spots.push(PxRect {
-                    x0,
-                    y0: fy - h - 1,
-                    x1: x0 + w,
-                    y1: fy - 1,
+            // along it; where the whole text fits nowhere, its first words
+            // ("noise floor (…)"), and where those do not either, above the
+            // line at the left all the same: the floor is always named.
+            let spots_for = |text: &str| {
+                let w = width_of(text, POINT_SIZE) + 2 * PAD;
+                let mut spots = Vec::new();
+                let mut x0 = plot.x0 + 8;
+                while x0 + w < plot.x1 {
+                    spots.push(PxRect {
+                        x0,
+                        y0: fy - h - 1,
+                        x1: x0 + w,
+                        y1: fy - 1,
+                    });
+                    spots.push(PxRect {
+                        x0,
+                        y0: fy + 2,
+                        x1: x0 + w,
+                        y1: fy + 2 + h,
+                    });
+                    x0 += 12;
+                }
+                spots
+            };
+            let short = full.split(':').next().unwrap_or(full);
+            let placed = placer
+                .place(&spots_for(full))
+                .map(|rect| (full, rect))
+                .or_else(|| placer.place(&spots_for(short)).map(|rect| (short, rect)))
+                .or_else(|| {
+                    let rect = *spots_for(short).first()?;
+                    placer.taken.push(rect);
+                    Some((short, rect))
                 });
-                spots.push(PxRect {
-                    x0,
-                    y0: fy + 2,
-                    x1: x0 + w,
-                    y1: fy + 2 + h,
-                });
-                x0 += 12;
-            }
-            if let Some(rect) = placer.place(&spots) {
+            if let Some((text, rect)) = placed {
                 self.labels.push(Placed {
                     kind: LabelKind::Floor,
                     text: text.to_owned(),
