@@ -174,8 +174,27 @@ fn step_checked(mut world: World, steps: usize, dt: f64) -> Result<World, TestCa
     let (e0, e_scale) = energy(&world);
     let (l0, l_scale) = angular_momentum(&world);
     let mut methods = Vec::new();
+    // What the contacts `impulse` did not resolve cleanly at the touch may
+    // move the angular momentum by (see tests/rough.rs): push-apart by
+    // depth d along n, m*·d·|g|; a disc met twice in one pass, rewound
+    // along a velocity the first contact changed, τ·J·|Δg| ≤ 4·m*·|g|²·h.
+    // |g| is at most twice the fastest disc's speed (its spin's rim speed
+    // included), m* at most half the heaviest mass.
+    let heaviest = world.particles.iter().map(|p| p.mass).fold(0.0, f64::max);
+    let mut fallback_allowance = 0.0;
     for _ in 0..steps {
-        world.step(dt);
+        let fastest = world
+            .particles
+            .iter()
+            .map(|p| p.vel.length() + p.spin.abs() * p.radius)
+            .fold(0.0, f64::max);
+        let stats = world.step(dt);
+        let changed = stats.at_touch_changed;
+        let pushed = stats.contacts.saturating_sub(stats.at_touch + changed) as f64;
+        let (g, h) = (2.0 * fastest, dt / f64::from(stats.substeps.max(1)));
+        let reduced = 0.5 * heaviest;
+        fallback_allowance +=
+            reduced * g * (pushed * stats.max_overlap + changed as f64 * 4.0 * g * h);
         if let Some(plan) = world.plan() {
             if !methods.contains(&plan.method) {
                 methods.push(plan.method);
@@ -214,6 +233,19 @@ fn step_checked(mut world: World, steps: usize, dt: f64) -> Result<World, TestCa
         prop_assert!(
             (l1 - l0).abs() <= 1e-9 * l_scale,
             "angular momentum moved from {l0:e} to {l1:e} (Σ|L| {l_scale:e}) under {methods:?}"
+        );
+    }
+    // `impulse` resolves impacts at the touch, which keeps L; only its
+    // fallback contacts may move it, by the allowance above.
+    if open_space
+        && methods
+            .iter()
+            .all(|m| matches!(m, Method::Impulse | Method::Exact))
+    {
+        prop_assert!(
+            (l1 - l0).abs() <= fallback_allowance + 1e-9 * l_scale,
+            "angular momentum moved from {l0:e} to {l1:e} (Σ|L| {l_scale:e}, fallbacks allow \
+             {fallback_allowance:e}) under {methods:?}"
         );
     }
     Ok(world)

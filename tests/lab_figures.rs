@@ -36,7 +36,6 @@ struct Table {
     rows: Vec<Vec<String>>,
 }
 
-
 /// Every table of a file: the Markdown tables in it, or the CSV itself.
 fn tables(path: &Path) -> Vec<Table> {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

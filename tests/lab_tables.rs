@@ -11,7 +11,6 @@ use common::csv_fields as fields;
 use std::path::Path;
 use std::process::Command;
 
-
 /// The table's rows without the columns named in `skip`, header first.
 fn table(text: &str, skip: &[&str]) -> Vec<Vec<String>> {
     let mut lines = text.lines().filter(|l| !l.is_empty());

@@ -312,10 +312,15 @@ fn exact_keeps_angular_momentum_in_an_open_rough_gas() {
 /// rewind to a touch within the substep (a pair found overlapping without
 /// closing, or deeper than one substep of closing makes, as when a disc
 /// hit another in the substep before) is pushed apart by its depth d along
-/// n, which moves L by m*·d·|n × g|, g the relative velocity. So L may move
-/// by at most Σ m*·d·|g| over the contacts not resolved at the touch
-/// (`StepStats::at_touch` counts those that were), with d the step's
-/// deepest overlap and |g| ≤ 2·(v + ω·r) of its fastest disc. A torque at
+/// n, which moves L by m*·d·|n × g|, g the relative velocity; and a disc
+/// met by two others in one pass is rewound, at its second contact, along
+/// a velocity the first changed, which moves L by τ·J·|Δg| ≤ 4·m*·|g|²·h.
+/// A step whose every contact is an impact resolved cleanly at the touch
+/// keeps L to rounding. Over the run, L may move by at most m*·|g|·d for
+/// each contact pushed apart (those
+/// neither in `StepStats::at_touch` nor in `at_touch_changed`) plus
+/// 4·m*·|g|²·h for each of `at_touch_changed`, with d the step's deepest
+/// overlap and |g| ≤ 2·(v + ω·r) of its fastest disc. A torque at
 /// each impact (a wrong lever arm or moment of inertia) moves L at every
 /// impact instead, by about m*·|g|·r.
 #[test]
@@ -328,19 +333,38 @@ fn impulse_keeps_angular_momentum_in_an_open_rough_gas() {
         w.method = Setting::Fixed(Method::Impulse);
         let reduced = w.particles.iter().map(|p| p.mass).fold(0.0, f64::max) / 2.0;
         let (before, scale) = angular_momentum(&w);
-        let (mut allowed, mut at_touch) = (0.0, 0);
+        let (mut allowed, mut at_touch, mut clean_steps) = (0.0, 0, 0);
         while w.total_pair_collisions < 5_000 {
             let fastest = w
                 .particles
                 .iter()
                 .map(|p| p.vel.length() + p.spin.abs() * p.radius)
                 .fold(0.0, f64::max);
+            let (l_before, _) = angular_momentum(&w);
             let stats = w.step(DT);
-            let fallbacks = stats.contacts - stats.at_touch;
-            allowed += fallbacks as f64 * reduced * stats.max_overlap * 2.0 * fastest;
+            let changed = stats.at_touch_changed;
+            let pushed = (stats.contacts - stats.at_touch - changed) as f64;
+            if pushed == 0.0 && changed == 0 && stats.at_touch > 0 {
+                // Every contact of the step an impact resolved cleanly at
+                // the touch: L to rounding.
+                let (l_after, _) = angular_momentum(&w);
+                assert!(
+                    (l_after - l_before).abs() <= 1e-12 * scale,
+                    "β = {beta}: a step of {} clean impacts moved L by {:e} of Σ|L|",
+                    stats.at_touch,
+                    (l_after - l_before).abs() / scale
+                );
+                clean_steps += 1;
+            }
+            let (g, h) = (2.0 * fastest, DT / f64::from(stats.substeps.max(1)));
+            allowed += reduced * g * (pushed * stats.max_overlap + changed as f64 * 4.0 * g * h);
             at_touch += stats.at_touch;
             assert!(w.time < 60.0, "the gas stopped colliding");
         }
+        assert!(
+            clean_steps > 100,
+            "{clean_steps} steps of clean impacts only"
+        );
         let (after, _) = angular_momentum(&w);
         let moved = (after - before).abs();
         eprintln!(

@@ -59,8 +59,15 @@ pub struct StepStats {
     /// [`crate::impact::threshold`].
     pub pair_collisions: usize,
     /// Of the pair impacts, those `impulse` resolved where the discs
-    /// touched (the rest: where they overlap, see [`crate::resolution`]).
+    /// touched, neither disc changed by an earlier contact of its pass:
+    /// each keeps the angular momentum exactly (the rest: where they
+    /// overlap, or a disc met twice in one pass; see
+    /// [`crate::resolution::ResolutionReport::at_touch`]).
     pub at_touch: usize,
+    /// Of the pair impacts, those resolved at the touch along a velocity an
+    /// earlier contact of the pass had changed (a disc met twice in one
+    /// pass): each moves the angular momentum by at most τ·J·|Δg|.
+    pub at_touch_changed: usize,
     /// Discs that hit a wall faster than the threshold.
     pub wall_hits: usize,
     /// Resting contacts met, between discs and at walls: approaching, but

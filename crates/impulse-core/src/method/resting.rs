@@ -158,13 +158,15 @@ pub(crate) fn substep(
                 });
                 let c = at_touch.as_ref().unwrap_or(c);
                 let counted = pass == 0 && approach(particles, c) < 0.0;
+                let untouched = before[1] - before[0] == c.relative_velocity;
                 collide(particles, c, laws.restitution, None, Some(laws.rough()));
                 if let Some(t) = touch {
                     particles[i].pos += (particles[i].vel - before[0]) * t.ago;
                     particles[j].pos += (particles[j].vel - before[1]) * t.ago;
                 }
                 pair_impacts += usize::from(counted);
-                stats.at_touch += usize::from(counted && touch.is_some());
+                stats.at_touch += usize::from(counted && touch.is_some() && untouched);
+                stats.at_touch_changed += usize::from(counted && touch.is_some() && !untouched);
                 if counted && ledger.is_on() {
                     ledger.push(Collision {
                         time,

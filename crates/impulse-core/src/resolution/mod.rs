@@ -78,9 +78,15 @@ pub struct ResolutionReport {
     /// Resting contacts: approaching pairs slower than that (resolved too,
     /// but not counted or recorded as collisions).
     pub resting: usize,
-    /// Impacts resolved where the discs touched ([`Rule::at_touch`]); the
-    /// others fell back to the overlap's normal and push-apart.
+    /// Impacts resolved where the discs touched ([`Rule::at_touch`]) whose
+    /// discs no earlier contact of the pass had changed: each keeps the
+    /// angular momentum exactly. The others fell back to the overlap's
+    /// normal and push-apart, or (a disc met twice in one pass) were
+    /// rewound along velocities the earlier contact had changed.
     pub at_touch: usize,
+    /// Impacts resolved at the touch along a velocity an earlier contact
+    /// of the pass had changed (a disc met twice in one pass).
+    pub at_touch_changed: usize,
     /// Deepest overlap found (m).
     pub max_overlap: f64,
 }
@@ -92,6 +98,7 @@ impl ResolutionReport {
             collisions: self.collisions + other.collisions,
             resting: self.resting + other.resting,
             at_touch: self.at_touch + other.at_touch,
+            at_touch_changed: self.at_touch_changed + other.at_touch_changed,
             max_overlap: self.max_overlap.max(other.max_overlap),
         }
     }
@@ -189,6 +196,9 @@ fn resolve_contact(
         false => None,
     };
     let normal = touch.map_or(c.normal, |t| t.normal);
+    // No earlier contact of this pass changed either disc: rewound and
+    // moved on along the same velocities, the pair keeps L exactly.
+    let untouched = touch.is_some() && b.vel - a.vel == c.relative_velocity;
     let closing = (a.vel - b.vel).dot(normal);
     let collided = match rule.velocities {
         Velocities::ApproachingOnly => collide(a, b, normal, restitution),
@@ -211,7 +221,8 @@ fn resolve_contact(
         }
     }
     report.collisions += usize::from(impact);
-    report.at_touch += usize::from(impact && touch.is_some());
+    report.at_touch += usize::from(impact && untouched);
+    report.at_touch_changed += usize::from(impact && touch.is_some() && !untouched);
     report.resting += usize::from(collided && !impact);
     if impact && ledger.is_on() {
         ledger.push(Collision {
