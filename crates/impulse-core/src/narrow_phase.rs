@@ -35,6 +35,12 @@ pub struct Contact {
     pub relative_velocity: DVec2,
 }
 
+/// How many pairs ahead the narrow phase asks for a disc.
+const AHEAD: usize = 16;
+/// From how many discs it does: about where they outgrow the last cache
+/// (72 bytes each; at 10⁵ discs prefetching made the stage 13 % slower).
+const PREFETCH_FROM: usize = 200_000;
+
 /// The normal used when two centres coincide.
 pub const COINCIDENT_NORMAL: DVec2 = DVec2::X;
 
@@ -47,7 +53,7 @@ pub fn find_contacts(
     out: &mut Vec<Contact>,
 ) {
     out.clear();
-    out.extend(pairs.iter().filter_map(|&Pair { i, j }| {
+    let contact = |&Pair { i, j }: &Pair| {
         let (a, b) = (&particles[i as usize], &particles[j as usize]);
         contact_between(a, b, boundary, size).map(|(normal, depth)| Contact {
             i,
@@ -56,7 +62,25 @@ pub fn find_contacts(
             depth,
             relative_velocity: b.vel - a.vel,
         })
-    }));
+    };
+    if particles.len() < PREFETCH_FROM {
+        out.extend(pairs.iter().filter_map(contact));
+    } else {
+        // The disc a pair some way ahead will read is asked for now:
+        // beyond the caches the loop otherwise waits on each (a million
+        // discs: the stage 1.4× faster; from the cache it was slower).
+        let ahead = pairs
+            .iter()
+            .skip(AHEAD)
+            .map(Some)
+            .chain(std::iter::repeat(None));
+        out.extend(pairs.iter().zip(ahead).filter_map(|(pair, next)| {
+            if let Some(next) = next {
+                crate::parallel::prefetch(&particles[next.j as usize]);
+            }
+            contact(pair)
+        }));
+    }
 }
 
 /// [`find_contacts`] on rayon's pool: each chunk of [`PAIR_CHUNK`] pairs

@@ -114,6 +114,21 @@ where
     )
 }
 
+/// Asks the memory for the cache line holding `value`; nothing else (for
+/// the loops over more discs than the caches hold).
+#[inline(always)]
+pub fn prefetch<T>(value: &T) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch is only a hint: it reads nothing into the program
+    // and never faults, and SSE is part of every x86-64 processor.
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>((value as *const T).cast());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = value;
+}
+
 /// The number of threads a parallel stage would use here: rayon's current
 /// pool (inside `ThreadPool::install`, that pool; otherwise the global one,
 /// sized by `RAYON_NUM_THREADS` or the number of cores).

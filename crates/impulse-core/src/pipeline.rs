@@ -21,6 +21,9 @@ pub(crate) struct Pipeline {
     pub(crate) kind: BroadPhaseKind,
     broad_phase: Box<dyn BroadPhase + Send>,
     pairs: Vec<Pair>,
+    /// Whether the broad phase keeps its own list (read in place) rather
+    /// than filling `pairs`.
+    kept: bool,
     /// Contacts found by the last [`Pipeline::detect`].
     pub(crate) contacts: Vec<Contact>,
     /// Run the order-free stages on rayon's pool (the plan's choice).
@@ -34,6 +37,14 @@ pub(crate) struct Pipeline {
     banded: crate::resolution::Banded,
     /// Scratch: the largest travel per chunk of discs in the integration.
     travels: Vec<f64>,
+    /// Scratch: per chunk of the fused integration and boundary stage, what
+    /// the walls did, the largest travel and the two stages' times.
+    #[allow(clippy::type_complexity)]
+    fused: Vec<(
+        (WallReport, Vec<WallHit>),
+        f64,
+        (std::time::Duration, std::time::Duration),
+    )>,
 }
 
 impl Pipeline {
@@ -42,12 +53,14 @@ impl Pipeline {
             kind,
             broad_phase: kind.build(),
             pairs: Vec::new(),
+            kept: false,
             contacts: Vec::new(),
             parallel: false,
             contact_chunks: Vec::new(),
             walls: Vec::new(),
             banded: Default::default(),
             travels: Vec::new(),
+            fused: Vec::new(),
         }
     }
 
@@ -76,10 +89,23 @@ impl Pipeline {
     ) {
         let lap = Lap::start();
         self.broad_phase.set_parallel(self.parallel);
-        self.broad_phase
-            .candidate_pairs(particles, laws.boundary, laws.size, &mut self.pairs);
-        stats.candidate_pairs += self.pairs.len();
+        let (boundary, size) = (laws.boundary, laws.size);
+        self.kept = self.broad_phase.refresh_kept(particles, boundary, size);
+        if !self.kept {
+            self.broad_phase
+                .candidate_pairs(particles, boundary, size, &mut self.pairs);
+        }
+        stats.candidate_pairs += self.pairs().len();
         stats.timings.broad_phase += lap.elapsed();
+    }
+
+    /// The candidate pairs of the last broad phase.
+    fn pairs(&self) -> &[Pair] {
+        if self.kept {
+            self.broad_phase.kept_pairs()
+        } else {
+            &self.pairs
+        }
     }
 
     /// The narrow phase: the candidate pairs that overlap, as contacts
@@ -91,10 +117,15 @@ impl Pipeline {
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
+        let pairs = if self.kept {
+            self.broad_phase.kept_pairs()
+        } else {
+            &self.pairs[..]
+        };
         if self.parallel {
             find_contacts_in_chunks(
                 particles,
-                &self.pairs,
+                pairs,
                 laws.boundary,
                 laws.size,
                 &mut self.contact_chunks,
@@ -103,7 +134,7 @@ impl Pipeline {
         } else {
             find_contacts(
                 particles,
-                &self.pairs,
+                pairs,
                 laws.boundary,
                 laws.size,
                 &mut self.contacts,
@@ -174,9 +205,9 @@ impl Pipeline {
     /// walls did to `stats` and, when the ledger is on, each wall hit to it
     /// at `time` (the end of the (sub)step, when the walls act). With
     /// `at_touch` (the impulse method) a bouncing disc is placed as if it
-    /// had turned when it touched the wall; see [`crate::boundary::WallContact`]. It runs
-    /// chunk by chunk, serially too, and the chunks' wall impulses are
-    /// added in chunk order, so the sum does not depend on the threads;
+    /// had turned when it touched the wall; see [`crate::boundary::WallContact`].
+    /// It runs chunk by chunk, serially too, and the chunks' wall impulses
+    /// are added in chunk order, so the sum does not depend on the threads;
     /// the hits go into the ledger in chunk order too.
     pub(crate) fn apply_boundary(
         &mut self,
@@ -187,36 +218,121 @@ impl Pipeline {
         stats: &mut StepStats,
     ) {
         let lap = Lap::start();
-        let (edges, gravity) = ((laws.size, laws.walls), laws.gravity);
-        let e = (laws.wall_restitution, laws.wall_rough());
-        let contact = WallContact {
-            impact_speed: crate::impact::threshold(gravity, h),
-            rewind: if at_touch { h } else { 0.0 },
-        };
-        let recording = ledger.is_on();
+        let walls = Walls::of(laws, (h, at_touch), ledger.is_on(), time);
+        parallel::map_chunks_mut(
+            self.parallel,
+            particles,
+            |chunk| walls.apply(chunk),
+            &mut self.walls,
+        );
+        book_walls(&self.walls, ledger, stats);
+        stats.timings.boundary += lap.elapsed();
+    }
+
+    /// The integration stage then the boundary stage, chunk by chunk while
+    /// a chunk is in cache (one pass over the discs instead of two): the
+    /// same result, bit for bit, as [`Pipeline::integrate`] then
+    /// [`Pipeline::apply_boundary`], since each disc's integration and
+    /// boundary depend on that disc alone and the chunks are booked in
+    /// order. The stage's time is shared between the two stages' timings
+    /// as the chunks' own clocks split it.
+    pub(crate) fn integrate_and_bound(
+        &mut self,
+        particles: &mut [Particle],
+        laws: &Laws,
+        (h, at_touch): (f64, bool),
+        (ledger, time): (&mut Ledger, f64),
+        stats: &mut StepStats,
+    ) {
+        let lap = Lap::start();
+        let gravity = laws.gravity;
+        let walls = Walls::of(laws, (h, at_touch), ledger.is_on(), time);
         parallel::map_chunks_mut(
             self.parallel,
             particles,
             |chunk| {
-                let mut hits = Vec::new();
-                let record = recording.then_some((&mut hits, time));
-                let boundary = laws.boundary;
-                let report = boundary.apply_recording(chunk, edges, gravity, e, contact, record);
-                (report, hits)
+                let start = crate::clock::Instant::now();
+                let travel = crate::integration::integrate(chunk, gravity, h);
+                let moved = crate::clock::Instant::now();
+                let walled = walls.apply(chunk);
+                let split = (moved.duration_since(start), moved.elapsed());
+                (walled, travel, split)
             },
-            &mut self.walls,
+            &mut self.fused,
         );
-        let mut impulse = 0.0;
-        for (chunk, (w, hits)) in self.walls.iter().enumerate() {
-            stats.wall_hits += w.hits;
-            stats.resting_contacts += w.resting;
-            impulse += w.impulse;
-            for hit in hits {
-                let disc = chunk * parallel::CHUNK + hit.disc;
-                ledger.push(WallHit { disc, ..*hit });
-            }
+        let (mut travel, mut integrating, mut bounding) = (0.0f64, 0.0, 0.0);
+        self.walls.clear();
+        for (walled, t, (i, b)) in self.fused.drain(..) {
+            self.walls.push(walled);
+            travel = travel.max(t);
+            integrating += i.as_secs_f64();
+            bounding += b.as_secs_f64();
         }
-        stats.wall_impulse += impulse;
-        stats.timings.boundary += lap.elapsed();
+        stats.max_travel = stats.max_travel.max(travel);
+        book_walls(&self.walls, ledger, stats);
+        let elapsed = lap.elapsed();
+        let share = integrating / (integrating + bounding).max(f64::MIN_POSITIVE);
+        let integration = elapsed.mul_f64(share.clamp(0.0, 1.0));
+        stats.timings.integration += integration;
+        stats.timings.boundary += elapsed - integration;
     }
+}
+
+/// The boundary stage's law for one (sub)step, applied chunk by chunk.
+struct Walls {
+    boundary: crate::boundary::Boundary,
+    edges: (DVec2, crate::boundary::Walls),
+    gravity: DVec2,
+    law: (f64, crate::rough::Tangential),
+    contact: WallContact,
+    /// Record the hits (at this time) for the ledger.
+    recording: Option<f64>,
+}
+
+impl Walls {
+    fn of(laws: &Laws, (h, at_touch): (f64, bool), recording: bool, time: f64) -> Walls {
+        Walls {
+            boundary: laws.boundary,
+            edges: (laws.size, laws.walls),
+            gravity: laws.gravity,
+            law: (laws.wall_restitution, laws.wall_rough()),
+            contact: WallContact {
+                impact_speed: crate::impact::threshold(laws.gravity, h),
+                rewind: if at_touch { h } else { 0.0 },
+            },
+            recording: recording.then_some(time),
+        }
+    }
+
+    /// What the walls did to one chunk, and its hits (disc indices within
+    /// the chunk; none while the ledger is off).
+    fn apply(&self, chunk: &mut [Particle]) -> (WallReport, Vec<WallHit>) {
+        let mut hits = Vec::new();
+        let record = self.recording.map(|time| (&mut hits, time));
+        let report = self.boundary.apply_recording(
+            chunk,
+            self.edges,
+            self.gravity,
+            self.law,
+            self.contact,
+            record,
+        );
+        (report, hits)
+    }
+}
+
+/// Adds what the walls did, chunk by chunk in order, to `stats`, and each
+/// hit to `ledger` with its disc's index in the whole slice.
+fn book_walls(walls: &[(WallReport, Vec<WallHit>)], ledger: &mut Ledger, stats: &mut StepStats) {
+    let mut impulse = 0.0;
+    for (chunk, (w, hits)) in walls.iter().enumerate() {
+        stats.wall_hits += w.hits;
+        stats.resting_contacts += w.resting;
+        impulse += w.impulse;
+        for hit in hits {
+            let disc = chunk * parallel::CHUNK + hit.disc;
+            ledger.push(WallHit { disc, ..*hit });
+        }
+    }
+    stats.wall_impulse += impulse;
 }

@@ -177,7 +177,7 @@ impl World {
 
     /// One substep of `h` seconds of a fixed-step method, starting at
     /// `time`: broad phase → narrow phase → resolution → integration →
-    /// boundaries. `verlet` integrates first, and `impulse` under gravity
+    /// boundaries (the last two chunk by chunk in one pass). `verlet` integrates first, and `impulse` under gravity
     /// with e < 1 resolves impacts and resting contacts apart; see
     /// [`crate::method`].
     fn substep(
@@ -206,14 +206,8 @@ impl World {
         pipeline.broad_phase(particles, laws, stats);
         pipeline.narrow_phase(particles, laws, stats);
         pipeline.resolve(particles, (laws, h), rule, (&mut *ledger, time), stats);
-        pipeline.integrate(particles, laws.gravity, h, stats);
-        pipeline.apply_boundary(
-            particles,
-            laws,
-            (h, rule.at_touch),
-            (ledger, time + h),
-            stats,
-        );
+        let at_touch = (h, rule.at_touch);
+        pipeline.integrate_and_bound(particles, laws, at_touch, (ledger, time + h), stats);
     }
 
     /// Plans again when anything `auto` looks at may have changed (the

@@ -9,8 +9,10 @@
 //! instead of a full broad phase. Adding, removing or resizing a disc, or
 //! changing the box, rebuilds at once.
 //!
-//! In parallel ([`BroadPhase::set_parallel`]) the check, the rebuild's copies
-//! and the copy of the list run on rayon's pool, chunk by chunk; the mean
+//! The pipeline reads the list in place ([`BroadPhase::kept_pairs`]);
+//! [`BroadPhase::candidate_pairs`] copies it. In parallel
+//! ([`BroadPhase::set_parallel`]) the check, the rebuild's copies and the
+//! copy of the list run on rayon's pool, chunk by chunk; the mean
 //! radius is summed per [`CHUNK`] and the chunk sums in order either way, so
 //! the list is the same whatever the threads.
 
@@ -155,5 +157,16 @@ impl<B: BroadPhase> BroadPhase for Skinned<B> {
 
     fn set_parallel(&mut self, parallel: bool) {
         self.parallel = parallel;
+    }
+
+    fn refresh_kept(&mut self, particles: &[Particle], boundary: Boundary, size: DVec2) -> bool {
+        if !self.still_valid(particles, boundary, size) {
+            self.rebuild(particles, boundary, size);
+        }
+        true
+    }
+
+    fn kept_pairs(&self) -> &[Pair] {
+        &self.pairs
     }
 }

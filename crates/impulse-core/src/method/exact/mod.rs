@@ -48,6 +48,7 @@ use crate::boundary::Boundary;
 use crate::clock::Instant;
 use crate::laws::Laws;
 use crate::ledger::{Impact, Ledger};
+use crate::parallel::prefetch;
 use crate::particle::Particle;
 use crate::stats::StepStats;
 use glam::DVec2;
@@ -176,20 +177,6 @@ impl Exact {
     pub fn forget(&mut self) {
         self.sim = None;
     }
-}
-
-/// Asks the memory for the cache line holding `value`; nothing else.
-#[inline(always)]
-fn prefetch<T>(value: &T) {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: a prefetch is only a hint: it reads nothing into the program
-    // and never faults, and SSE is part of every x86-64 processor.
-    unsafe {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        _mm_prefetch::<_MM_HINT_T0>((value as *const T).cast());
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = value;
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
