@@ -1,7 +1,8 @@
 //! Criterion benchmarks of `World::step` on the benchmark gas (equal discs
 //! r = 0.5 m at 30 % area fraction, periodic, dt = 0.01 s), so regressions
-//! show: the step of `impulse` / `grid` at several n, every broad phase, and
-//! the grid methods serial against parallel.
+//! show: the step of `impulse` / `grid` at several n, every broad phase, the
+//! grid methods serial against parallel, and `exact`'s event loop with long
+//! steps.
 //!
 //! `cargo bench --bench step` (about two minutes); `cargo bench --bench step
 //! -- broad_phase` for one group. Times are per step; criterion also reports
@@ -98,5 +99,37 @@ fn threads(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, step_against_n, broad_phases, threads);
+/// `exact`'s event loop beside the grid's step: the bench's "exact, long
+/// steps" gas (2-second steps, about two collisions per disc each) at 10⁴
+/// and 10⁵ discs, one thread. Criterion's throughput is discs per second;
+/// `impulse bench` reports the same runs as collisions per second.
+fn exact_event_loop(c: &mut Criterion) {
+    let mut group = short_group(c, "exact_long_steps", 6);
+    for n in [10_000, 100_000] {
+        let mut world = Gas {
+            count: n,
+            ..Gas::default()
+        }
+        .build();
+        world.method = Setting::Fixed(Method::Exact);
+        world.parallel = Setting::Fixed(false);
+        world.step(EXACT_DT);
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| world.step(EXACT_DT))
+        });
+    }
+    group.finish();
+}
+
+/// The step of `exact_event_loop` (s), as `impulse bench` takes it.
+const EXACT_DT: f64 = 2.0;
+
+criterion_group!(
+    benches,
+    step_against_n,
+    broad_phases,
+    threads,
+    exact_event_loop
+);
 criterion_main!(benches);
