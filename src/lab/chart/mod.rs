@@ -660,31 +660,26 @@ fn draw_marker<DB: DrawingBackend>(
     r: i32,
     style: ShapeStyle,
 ) -> Result<()> {
-    let at = EmptyElement::at(at);
+    let centre = at;
+    let at = EmptyElement::at(centre);
+    // A closed outline around the centre: filled, or its line only.
+    let shape = |corners: Vec<(i32, i32)>| {
+        let at = EmptyElement::at(centre);
+        if style.filled {
+            area.draw(&(at + Polygon::new(corners, style)))
+        } else {
+            area.draw(&(at + PathElement::new(corners, style)))
+        }
+    };
+    let d = r + 2;
     match marker {
         Marker::Circle => area.draw(&(at + Circle::new((0, 0), r, style))),
         Marker::Square => {
             let r = r * 7 / 8;
             area.draw(&(at + Rectangle::new([(-r, -r), (r, r)], style)))
         }
-        Marker::Triangle => {
-            let d = r + 2;
-            let tri = vec![(0, -d), (d, d * 3 / 4), (-d, d * 3 / 4), (0, -d)];
-            if style.filled {
-                area.draw(&(at + Polygon::new(tri, style)))
-            } else {
-                area.draw(&(at + PathElement::new(tri, style)))
-            }
-        }
-        Marker::Diamond => {
-            let d = r + 2;
-            let dia = vec![(0, -d), (d, 0), (0, d), (-d, 0), (0, -d)];
-            if style.filled {
-                area.draw(&(at + Polygon::new(dia, style)))
-            } else {
-                area.draw(&(at + PathElement::new(dia, style)))
-            }
-        }
+        Marker::Triangle => shape(vec![(0, -d), (d, d * 3 / 4), (-d, d * 3 / 4), (0, -d)]),
+        Marker::Diamond => shape(vec![(0, -d), (d, 0), (0, d), (-d, 0), (0, -d)]),
         Marker::Cross => area.draw(&(at + Cross::new((0, 0), r, style.stroke_width(3)))),
     }
     .map_err(draw_error)
