@@ -132,12 +132,7 @@ pub fn write_grid(grid: &Grid, stem: &Path) -> Result<(PathBuf, PathBuf)> {
         root.present().map_err(draw_error)?;
     }
 
-    write_atomically(&png_path, |w| {
-        image::codecs::png::PngEncoder::new(w)
-            .write_image(&pixels, size.0, size.1, image::ColorType::Rgb8)
-            .context("encoding PNG")
-    })?;
-    write_atomically(&svg_path, |w| Ok(w.write_all(svg.as_bytes())?))?;
+    write_images((&png_path, &pixels, size), (&svg_path, &svg))?;
     Ok((png_path, svg_path))
 }
 
@@ -236,6 +231,7 @@ fn draw_grid<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::fs;
 
     #[test]
     fn the_image_grows_with_its_text_and_both_files_are_written() {
