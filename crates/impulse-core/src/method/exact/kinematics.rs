@@ -10,27 +10,65 @@ pub(super) const CREEP: f64 = 1e-12;
 
 /// Time until two discs at separation `d` with relative velocity `dv`
 /// touch (distance `sigma`), if they approach; zero if they already overlap
-/// and approach; infinity if they never touch. Computed without branches
-/// (the prediction loop runs it for every neighbour, and whether a pair
-/// approaches is a coin toss a branch predictor cannot learn).
+/// and approach; infinity if they never touch.
 #[inline]
 pub(super) fn pair_time(d: DVec2, dv: DVec2, sigma: f64) -> f64 {
-    let b = d.dot(dv);
-    let gap = d.length_squared() - sigma * sigma;
-    let disc = b * b - dv.length_squared() * gap;
-    let overlapping = gap <= 0.0;
-    // In contact, a pair closing slower than CREEP is not approaching
-    // (round-off in a pile falling together would collide it forever).
-    let meets = b < 0.0 && (!overlapping | (b < -CREEP * sigma)) && (overlapping | (disc > 0.0));
-    let t = if overlapping {
-        0.0
-    } else {
-        gap / (-b + disc.max(0.0).sqrt())
-    };
-    if meets {
-        t
+    let terms = PairTerms::of(d, dv, sigma);
+    if terms.meets() {
+        terms.time()
     } else {
         f64::INFINITY
+    }
+}
+
+/// What [`pair_time`] is made of, for a caller that skips the square root
+/// and the division of a pair that never meets (most neighbours).
+#[derive(Clone, Copy)]
+pub(super) struct PairTerms {
+    /// d·dv: negative while they approach.
+    b: f64,
+    /// |d|² − σ²: negative when they overlap.
+    gap: f64,
+    /// The quadratic's discriminant, b² − |dv|²·gap.
+    disc: f64,
+    sigma: f64,
+}
+
+impl PairTerms {
+    #[inline]
+    pub(super) fn of(d: DVec2, dv: DVec2, sigma: f64) -> Self {
+        let b = d.dot(dv);
+        let gap = d.length_squared() - sigma * sigma;
+        let disc = b * b - dv.length_squared() * gap;
+        PairTerms {
+            b,
+            gap,
+            disc,
+            sigma,
+        }
+    }
+
+    /// Whether they touch while approaching. Without branches: whether a
+    /// pair approaches is a coin toss a branch predictor cannot learn.
+    #[inline]
+    pub(super) fn meets(&self) -> bool {
+        let overlapping = self.gap <= 0.0;
+        // In contact, a pair closing slower than CREEP is not approaching
+        // (round-off in a pile falling together would collide it forever).
+        (self.b < 0.0)
+            & (!overlapping | (self.b < -CREEP * self.sigma))
+            & (overlapping | (self.disc > 0.0))
+    }
+
+    /// When they touch, if they [meet](PairTerms::meets): the smaller
+    /// root, written without cancellation; zero if they overlap already.
+    #[inline]
+    pub(super) fn time(&self) -> f64 {
+        if self.gap <= 0.0 {
+            0.0
+        } else {
+            self.gap / (-self.b + self.disc.max(0.0).sqrt())
+        }
     }
 }
 

@@ -9,7 +9,7 @@
 //! a full prediction, for the commonest event of a gas.
 
 use super::grid::NIL;
-use super::kinematics::{accelerating_pair_time, first_crossing, pair_time};
+use super::kinematics::{accelerating_pair_time, first_crossing, pair_time, PairTerms};
 use super::queue::Event;
 use super::sleep::Rest;
 use super::{Body, Kind, Sim};
@@ -18,6 +18,10 @@ use glam::DVec2;
 
 /// No partner.
 const NOBODY: u32 = NIL;
+
+/// Slots of the scan's ring of discs to visit: never more than the nine
+/// cells' lists are waiting, one disc each.
+const RING: usize = 16;
 
 /// A disc's earliest pair collision, as last predicted.
 #[derive(Clone, Copy, Debug)]
@@ -124,15 +128,97 @@ impl Sim {
         mut guess: PairGuess,
         reach: Reach,
     ) -> PairGuess {
+        // Sleepers lie still: a moving disc meets one on a parabola.
+        if GRAVITY && self.sleepers > 0 {
+            return self.scan_among_sleepers::<IMAGES_BY_CELL>(i, me, guess, reach);
+        }
+        // The cells first, then one loop over their discs: the loop is
+        // where the method spends its time, and a closure per cell kept
+        // it from being compiled as one.
+        let mut cells = [(0usize, DVec2::ZERO); 9];
+        let mut count = 0;
+        let gather = |cell: usize, shift: DVec2| {
+            cells[count] = (cell, shift);
+            count += 1;
+        };
+        match reach {
+            Reach::Around => self.grid.for_each_neighbour(me.cell, gather),
+            Reach::New { axis, upper } => self
+                .grid
+                .for_each_new_in_reach(me.cell, axis, upper, gather),
+        }
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
         let g = laws.gravity;
-        // Sleepers lie still: a moving disc meets one on a parabola.
-        let resting = GRAVITY && self.sleepers > 0;
-        let my_rest = if resting {
-            self.rest[i as usize]
-        } else {
-            Rest::Free
-        };
+        // The discs are visited from a small ring: each cell's first disc,
+        // then each visited disc's follower. One loop, whose only hard-to-
+        // guess branch is its end, and the next lists' loads start while
+        // this one's arrive. Each disc carries its place in the order of a
+        // walk cell by cell, list by list (`rank`), so that a tie goes to
+        // the disc that walk would have met first, as it always did.
+        let mut ring = [(NIL, 0u32); RING];
+        let (mut head, mut tail) = (0usize, 0usize);
+        for (slot, &(cell, _)) in cells[..count].iter().enumerate() {
+            let first = self.grid.first(cell);
+            ring[tail % RING] = (first, ((slot as u32) << 24) + 1);
+            tail += usize::from(first != NIL);
+        }
+        // The guess brought in wins ties (rank 0).
+        let mut best_rank = 0u32;
+        while head != tail {
+            let (j, rank) = ring[head % RING];
+            head += 1;
+            let other = &bodies[j as usize];
+            let next = other.next_in_cell;
+            ring[tail % RING] = (next, rank + 1);
+            tail += usize::from(next != NIL);
+            let tau = now - other.time;
+            let (pj, vj) = if GRAVITY {
+                (
+                    other.pos + other.vel * tau + 0.5 * g * tau * tau,
+                    other.vel + g * tau,
+                )
+            } else {
+                (other.pos + other.vel * tau, other.vel)
+            };
+            let d = if IMAGES_BY_CELL {
+                pj + cells[(rank >> 24) as usize].1 - me.pos
+            } else {
+                laws.boundary.separation(me.pos, pj, laws.size)
+            };
+            let terms = PairTerms::of(d, vj - me.vel, me.radius + other.radius);
+            // Most neighbours never meet it: no root to take. (The disc
+            // itself, met in its own cell, is one of them.)
+            if !terms.meets() || j == i {
+                continue;
+            }
+            let t = now + terms.time();
+            if t < guess.time || (t == guess.time && rank < best_rank) {
+                guess = PairGuess {
+                    time: t,
+                    partner: j,
+                    gen: other.gen,
+                };
+                best_rank = rank;
+            }
+        }
+        guess
+    }
+
+    /// [`Sim::scan_with`] under gravity while some discs sleep or are
+    /// held: a free disc meets a still one on a parabola, and held discs
+    /// meet each other through the contact solve.
+    #[cold]
+    #[inline(never)]
+    fn scan_among_sleepers<const IMAGES_BY_CELL: bool>(
+        &self,
+        i: u32,
+        me: &Body,
+        mut guess: PairGuess,
+        reach: Reach,
+    ) -> PairGuess {
+        let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
+        let my_rest = self.rest[i as usize];
+        let mine = self.accel(i);
         let visit = |cell: usize, shift: DVec2| {
             let mut next = self.grid.first(cell);
             while next != NIL {
@@ -142,44 +228,29 @@ impl Sim {
                 if j == i {
                     continue;
                 }
-                if resting && (my_rest != Rest::Free || self.rest[j as usize] != Rest::Free) {
-                    let its_rest = self.rest[j as usize];
-                    if my_rest == its_rest && my_rest != Rest::Free {
-                        // Neither moves, or both are held: held discs meet
-                        // through the contact solve ([`super::held`]).
-                        continue;
-                    }
-                    let (mine, its) = (self.accel(i), self.accel(j));
-                    let tau = now - other.time;
-                    let pj = other.pos + other.vel * tau + 0.5 * its * tau * tau;
-                    let vj = other.vel + its * tau;
-                    let d = laws.boundary.separation(me.pos, pj, laws.size);
-                    let sigma = me.radius + other.radius;
-                    let t = now + accelerating_pair_time(d, vj - me.vel, its - mine, sigma);
-                    if t < guess.time {
-                        guess = PairGuess {
-                            time: t,
-                            partner: j,
-                            gen: other.gen,
-                        };
-                    }
+                let its_rest = self.rest[j as usize];
+                if my_rest == its_rest && my_rest != Rest::Free {
+                    // Neither moves, or both are held: held discs meet
+                    // through the contact solve ([`super::held`]).
                     continue;
                 }
+                let its = self.accel(j);
                 let tau = now - other.time;
-                let (pj, vj) = if GRAVITY {
-                    (
-                        other.pos + other.vel * tau + 0.5 * g * tau * tau,
-                        other.vel + g * tau,
-                    )
+                let pj = other.pos + other.vel * tau + 0.5 * its * tau * tau;
+                let vj = other.vel + its * tau;
+                let sigma = me.radius + other.radius;
+                let t = if my_rest == Rest::Free && its_rest == Rest::Free {
+                    // Both fall alike: as in the plain scan.
+                    let d = if IMAGES_BY_CELL {
+                        pj + shift - me.pos
+                    } else {
+                        laws.boundary.separation(me.pos, pj, laws.size)
+                    };
+                    now + pair_time(d, vj - me.vel, sigma)
                 } else {
-                    (other.pos + other.vel * tau, other.vel)
+                    let d = laws.boundary.separation(me.pos, pj, laws.size);
+                    now + accelerating_pair_time(d, vj - me.vel, its - mine, sigma)
                 };
-                let d = if IMAGES_BY_CELL {
-                    pj + shift - me.pos
-                } else {
-                    laws.boundary.separation(me.pos, pj, laws.size)
-                };
-                let t = now + pair_time(d, vj - me.vel, me.radius + other.radius);
                 if t < guess.time {
                     guess = PairGuess {
                         time: t,
