@@ -126,7 +126,7 @@ impl Grid {
 
     /// Whether cell `c` has neighbours on all sides without wrapping.
     #[inline]
-    fn is_inner(&self, c: [i32; 2]) -> bool {
+    pub(super) fn is_inner(&self, c: [i32; 2]) -> bool {
         c[0] > 0 && c[0] < self.dims[0] - 1 && c[1] > 0 && c[1] < self.dims[1] - 1
     }
 
