@@ -15,8 +15,6 @@ use crate::broad_phase::Pair;
 use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
-#[cfg(feature = "parallel")]
-use rayon::prelude::*;
 
 /// Two overlapping discs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,10 +99,13 @@ pub fn find_contacts_in_chunks(
     crate::parallel::pool_or_here!(
         true,
         {
-            pairs
-                .par_chunks(PAIR_CHUNK)
-                .zip(chunks.par_iter_mut())
-                .for_each(find);
+            // Each thread the same run of chunks every step: pairs come in
+            // the order of their first disc, so that is mostly the discs
+            // its integration keeps in its caches.
+            crate::parallel::on_each_part(chunks, 1, |first, founds| {
+                let mine = pairs.chunks(PAIR_CHUNK).skip(first);
+                mine.zip(founds.iter_mut()).for_each(find);
+            });
         },
         {
             pairs

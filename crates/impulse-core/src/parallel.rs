@@ -24,9 +24,6 @@
 //! runs which chunk, which changes nothing. `tests/parallel.rs` holds a
 //! 20,000-disc gas to that on one and two threads for every grid method.
 
-#[cfg(feature = "parallel")]
-use rayon::prelude::*;
-
 /// `$par` (on rayon's pool) when `$cond` holds and the crate is built with
 /// its `parallel` feature; `$serial` otherwise. Both give the same result:
 /// the parallel stages are written so that they do, bit for bit.
@@ -64,6 +61,115 @@ where
     }
 }
 
+/// How long the pool's other threads stay awake after a step ends (so that
+/// the next step, if it comes at once, finds them awake), and the longest a
+/// helper waits for work while a step runs before it gives up its thread.
+#[cfg(feature = "parallel")]
+const HELPER_PATIENCE: std::time::Duration = std::time::Duration::from_millis(1);
+
+#[cfg(feature = "parallel")]
+mod awake {
+    use std::cell::Cell;
+    use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+    use std::sync::OnceLock;
+    use std::time::Instant;
+
+    /// Steps running with the pool kept awake, over all worlds.
+    pub static STEPS: AtomicUsize = AtomicUsize::new(0);
+    /// When the last of them ended (ns since [`epoch`]).
+    pub static LAST_END: AtomicU64 = AtomicU64::new(0);
+
+    thread_local! {
+        /// This thread runs a step, or already helps: no helper here.
+        pub static BUSY: Cell<bool> = const { Cell::new(false) };
+    }
+
+    pub fn epoch() -> Instant {
+        static EPOCH: OnceLock<Instant> = OnceLock::new();
+        *EPOCH.get_or_init(Instant::now)
+    }
+
+    pub fn now_ns() -> u64 {
+        epoch().elapsed().as_nanos() as u64
+    }
+
+    /// Takes work from the pool (a stage's part) until no step has run
+    /// for [`super::HELPER_PATIENCE`], or none has wanted work for that
+    /// long; spins in between rather than sleeping.
+    pub fn help() {
+        if BUSY.with(|busy| busy.replace(true)) {
+            return;
+        }
+        let patience = super::HELPER_PATIENCE.as_nanos() as u64;
+        let mut last_work = now_ns();
+        let mut idle = 0u32;
+        loop {
+            if rayon::yield_now() == Some(rayon::Yield::Executed) {
+                idle = 0;
+                last_work = now_ns();
+                continue;
+            }
+            // Looking for work touches the other threads' queues: look
+            // now and then, not flat out.
+            for _ in 0..64 {
+                std::hint::spin_loop();
+            }
+            idle += 1;
+            if idle % 64 == 0 {
+                let now = now_ns();
+                let stepping = STEPS.load(Ordering::Acquire) > 0;
+                let since_step = now.saturating_sub(LAST_END.load(Ordering::Acquire));
+                let since_work = now.saturating_sub(last_work);
+                if since_work > patience && (!stepping || since_work > 4 * patience)
+                    || !stepping && since_step > patience
+                {
+                    break;
+                }
+            }
+        }
+        BUSY.with(|busy| busy.set(false));
+    }
+}
+
+/// Runs `f` (a step) with the pool's other threads kept awake, when
+/// `parallel`: between the step's parallel stages each waits for the next
+/// by spinning instead of sleeping, and it goes on waiting for
+/// [`HELPER_PATIENCE`] after the step. A pool thread that sleeps takes
+/// 60–400 µs to wake on this machine (a 2-core VM): at 10⁵ discs, where a
+/// step has half a dozen stages of about 100 µs, two threads were slower
+/// than one. Which thread runs which part never changes a result
+/// ([module docs](self)).
+pub fn with_pool_awake<R: Send>(parallel: bool, f: impl FnOnce() -> R + Send) -> R {
+    #[cfg(feature = "parallel")]
+    {
+        use std::sync::atomic::Ordering;
+        if parallel && rayon::current_num_threads() > 1 {
+            let run = move || {
+                awake::STEPS.fetch_add(1, Ordering::AcqRel);
+                let was_busy = awake::BUSY.with(|busy| busy.replace(true));
+                // One helper per pool thread (each in its own queue, so
+                // only that thread runs it); one that is already helping,
+                // or runs this step, declines.
+                rayon::spawn_broadcast(|_| awake::help());
+                let result = f();
+                awake::BUSY.with(|busy| busy.set(was_busy));
+                awake::LAST_END.store(awake::now_ns(), Ordering::Release);
+                awake::STEPS.fetch_sub(1, Ordering::AcqRel);
+                result
+            };
+            // On a thread of the pool, which then does its share of each
+            // stage itself instead of waiting for the others to.
+            return if rayon::current_thread_index().is_some() {
+                run()
+            } else {
+                rayon::scope(|_| run())
+            };
+        }
+    }
+    let _ = parallel;
+    f()
+}
+
 /// Discs per chunk of the per-disc stages (integration, boundaries, the skin
 /// check). Large enough that a chunk costs far more than handing it to a
 /// thread (a few µs against about 1 µs), small enough that 10⁴ discs still
@@ -78,7 +184,7 @@ pub const BAND_ROWS: usize = 16;
 
 /// Calls `f` on each [`CHUNK`] of `items` (the last one may be shorter) and
 /// puts the results into `out`, in chunk order; on rayon's pool if
-/// `parallel`, else on this thread. `out` keeps its allocation.
+/// `parallel` ([`on_each_part`]), else on this thread.
 pub fn map_chunks_mut<T, R, F>(parallel: bool, items: &mut [T], f: F, out: &mut Vec<R>)
 where
     T: Send,
@@ -89,7 +195,10 @@ where
     pool_or_here!(
         parallel,
         {
-            items.par_chunks_mut(CHUNK).map(f).collect_into_vec(out);
+            let per_part = on_each_part(items, CHUNK, |_, part| {
+                part.chunks_mut(CHUNK).map(&f).collect::<Vec<R>>()
+            });
+            out.extend(per_part.into_iter().flatten());
         },
         {
             out.extend(items.chunks_mut(CHUNK).map(f));
@@ -97,7 +206,8 @@ where
     )
 }
 
-/// Calls `f` on each [`CHUNK`] of `items`; on rayon's pool if `parallel`.
+/// Calls `f` on each [`CHUNK`] of `items`; on rayon's pool if `parallel`
+/// ([`on_each_part`]).
 pub fn for_chunks_mut<T, F>(parallel: bool, items: &mut [T], f: F)
 where
     T: Send,
@@ -106,12 +216,72 @@ where
     pool_or_here!(
         parallel,
         {
-            items.par_chunks_mut(CHUNK).for_each(f);
+            on_each_part(items, CHUNK, |_, part| part.chunks_mut(CHUNK).for_each(&f));
         },
         {
             items.chunks_mut(CHUNK).for_each(f);
         }
     )
+}
+
+/// The run of `count` chunk indices that thread `k` of `threads` takes:
+/// contiguous, and the same at every stage and step.
+#[cfg(feature = "parallel")]
+fn run_of(k: usize, threads: usize, count: usize) -> std::ops::Range<usize> {
+    count * k / threads..count * (k + 1) / threads
+}
+
+/// `f(run)` on every thread of the pool, each with its own [run](run_of)
+/// of the chunk indices `0..count`; the results in thread order.
+///
+/// Why not work stealing: on this machine (two cores of a VM) a core reads
+/// what the other core last wrote at about the speed of one core alone
+/// (a pass over 7 MB: 108 µs, the same halves each time 79 µs, one core
+/// 107 µs). Giving each thread the same discs at every stage keeps them in
+/// its own caches from stage to stage and step to step.
+#[cfg(feature = "parallel")]
+pub fn on_each_run<R, F>(count: usize, f: F) -> Vec<R>
+where
+    R: Send,
+    F: Fn(std::ops::Range<usize>) -> R + Sync,
+{
+    rayon::broadcast(|ctx| f(run_of(ctx.index(), ctx.num_threads(), count)))
+}
+
+/// `f(first, part)` on every thread of the pool, each with its part of
+/// `items`: whole chunks of `chunk` items, the same [run](run_of) every
+/// time, starting at chunk `first`. The results in thread order.
+#[cfg(feature = "parallel")]
+pub fn on_each_part<T, R, F>(items: &mut [T], chunk: usize, f: F) -> Vec<R>
+where
+    T: Send,
+    R: Send,
+    F: Fn(usize, &mut [T]) -> R + Sync,
+{
+    use std::sync::Mutex;
+    let threads = rayon::current_num_threads();
+    let count = items.len().div_ceil(chunk);
+    let mut parts = Vec::with_capacity(threads);
+    let mut rest = items;
+    for k in 0..threads {
+        let run = run_of(k, threads, count);
+        let len = if k + 1 == threads {
+            rest.len()
+        } else {
+            (run.len() * chunk).min(rest.len())
+        };
+        let (part, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        parts.push(Mutex::new(Some((run.start, part))));
+        rest = tail;
+    }
+    rayon::broadcast(|ctx| {
+        // Each thread takes its own part, once.
+        let taken = parts[ctx.index()].lock().map(|mut p| p.take());
+        match taken {
+            Ok(Some((first, part))) => f(first, part),
+            _ => unreachable!("each part is taken by its own thread, once"),
+        }
+    })
 }
 
 /// Asks the memory for the cache line holding `value`; nothing else (for

@@ -162,10 +162,12 @@ impl World {
             self.methods.exact.forget();
             stats.substeps = substeps;
             let h = dt / f64::from(substeps);
-            for k in 0..substeps {
-                let time = self.time + f64::from(k) * h;
-                self.substep(method, &laws, (h, time), &mut stats);
-            }
+            parallel::with_pool_awake(self.pipeline.parallel, || {
+                for k in 0..substeps {
+                    let time = self.time + f64::from(k) * h;
+                    self.substep(method, &laws, (h, time), &mut stats);
+                }
+            });
             dt
         };
         if let Some(line) = &line {

@@ -58,13 +58,18 @@ impl<B: BroadPhase> Skinned<B> {
         crate::parallel::pool_or_here!(
             self.parallel,
             {
-                particles
-                    .par_chunks(CHUNK)
-                    .zip(self.anchors.par_chunks(CHUNK))
-                    .zip(self.radii.par_chunks(CHUNK))
-                    .all(|((ps, anchors), radii)| {
-                        ps.iter().zip(anchors.iter().zip(radii)).all(near)
-                    })
+                let n = particles.len();
+                let (anchors, radii) = (&self.anchors, &self.radii);
+                crate::parallel::on_each_run(n.div_ceil(CHUNK), |run| {
+                    let span = run.start * CHUNK..(run.end * CHUNK).min(n);
+                    let (anchors, radii) = (&anchors[span.clone()], &radii[span.clone()]);
+                    particles[span]
+                        .iter()
+                        .zip(anchors.iter().zip(radii))
+                        .all(near)
+                })
+                .into_iter()
+                .all(|near| near)
             },
             {
                 particles
