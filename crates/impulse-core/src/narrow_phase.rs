@@ -11,7 +11,7 @@
 //! same list, in the same order, as [`find_contacts`] makes.
 
 use crate::boundary::Boundary;
-use crate::broad_phase::Pair;
+use crate::broad_phase::{KeptCheck, Pair};
 use crate::parallel::PAIR_CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
@@ -51,16 +51,7 @@ pub fn find_contacts(
     out: &mut Vec<Contact>,
 ) {
     out.clear();
-    let contact = |&Pair { i, j }: &Pair| {
-        let (a, b) = (&particles[i as usize], &particles[j as usize]);
-        contact_between(a, b, boundary, size).map(|(normal, depth)| Contact {
-            i,
-            j,
-            normal,
-            depth,
-            relative_velocity: b.vel - a.vel,
-        })
-    };
+    let contact = |pair: &Pair| contact_of(particles, pair, boundary, size);
     if particles.len() < PREFETCH_FROM {
         out.extend(pairs.iter().filter_map(contact));
     } else {
@@ -79,6 +70,63 @@ pub fn find_contacts(
             contact(pair)
         }));
     }
+}
+
+/// [`find_contacts`] over a kept list (a Verlet list) whose discs have not
+/// been checked yet: checks each disc against `check` as the pairs reach it
+/// (they come in the order of their first disc), so that the discs are read
+/// once for both instead of twice (a million discs: the check was a pass
+/// of 3.3 ns per disc of its own). Returns false, with `out` incomplete, at
+/// the first disc that fails; true, with the very contacts
+/// [`find_contacts`] gives, if all hold.
+pub fn find_contacts_checked(
+    particles: &[Particle],
+    pairs: &[Pair],
+    check: &KeptCheck,
+    out: &mut Vec<Contact>,
+) -> bool {
+    out.clear();
+    let (boundary, size) = (check.boundary, check.size);
+    let prefetching = particles.len() >= PREFETCH_FROM;
+    // Discs before `checked` hold.
+    let mut checked = 0;
+    for (k, pair) in pairs.iter().enumerate() {
+        let i = pair.i as usize;
+        while checked <= i {
+            if !check.holds(checked, &particles[checked]) {
+                return false;
+            }
+            checked += 1;
+        }
+        if prefetching {
+            if let Some(next) = pairs.get(k + AHEAD) {
+                crate::parallel::prefetch(&particles[next.j as usize]);
+            }
+        }
+        if let Some(contact) = contact_of(particles, pair, boundary, size) {
+            out.push(contact);
+        }
+    }
+    let rest = particles.iter().enumerate().skip(checked);
+    rest.fold(true, |holds, (k, p)| holds && check.holds(k, p))
+}
+
+/// The contact of a candidate pair, if its discs overlap.
+#[inline]
+fn contact_of(
+    particles: &[Particle],
+    &Pair { i, j }: &Pair,
+    boundary: Boundary,
+    size: DVec2,
+) -> Option<Contact> {
+    let (a, b) = (&particles[i as usize], &particles[j as usize]);
+    contact_between(a, b, boundary, size).map(|(normal, depth)| Contact {
+        i,
+        j,
+        normal,
+        depth,
+        relative_velocity: b.vel - a.vel,
+    })
 }
 
 /// [`find_contacts`] on rayon's pool: each chunk of [`PAIR_CHUNK`] pairs

@@ -9,7 +9,7 @@ use crate::boundary::{WallContact, WallReport};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::laws::Laws;
 use crate::ledger::{Ledger, WallHit};
-use crate::narrow_phase::{find_contacts, find_contacts_in_chunks, Contact};
+use crate::narrow_phase::{find_contacts, find_contacts_checked, find_contacts_in_chunks, Contact};
 use crate::parallel;
 use crate::particle::Particle;
 use crate::resolution::{ResolutionReport, Rule};
@@ -24,6 +24,9 @@ pub(crate) struct Pipeline {
     /// Whether the broad phase keeps its own list (read in place) rather
     /// than filling `pairs`.
     kept: bool,
+    /// The kept list was taken without checking the discs: the narrow
+    /// phase checks them ([`BroadPhase::kept_unchecked`]).
+    unchecked: bool,
     /// Contacts found by the last [`Pipeline::detect`].
     pub(crate) contacts: Vec<Contact>,
     /// Run the order-free stages on rayon's pool (the plan's choice).
@@ -54,6 +57,7 @@ impl Pipeline {
             broad_phase: kind.build(),
             pairs: Vec::new(),
             kept: false,
+            unchecked: false,
             contacts: Vec::new(),
             parallel: false,
             contact_chunks: Vec::new(),
@@ -80,13 +84,30 @@ impl Pipeline {
         self.narrow_phase(particles, laws, stats);
     }
 
-    /// The broad phase: candidate pairs, whose boxes may touch.
+    /// The broad phase: candidate pairs, whose boxes may touch. On one
+    /// thread a kept list is taken as it stands and checked by the narrow
+    /// phase ([`BroadPhase::kept_unchecked`]).
     pub(crate) fn broad_phase(
         &mut self,
         particles: &[Particle],
         laws: &Laws,
         stats: &mut StepStats,
     ) {
+        let (boundary, size) = (laws.boundary, laws.size);
+        self.unchecked = !self.parallel
+            && (self.broad_phase)
+                .kept_unchecked(particles.len(), boundary, size)
+                .is_some();
+        if self.unchecked {
+            self.kept = true;
+        } else {
+            self.refresh(particles, laws, stats);
+        }
+    }
+
+    /// The broad phase proper: brings a kept list up to date, or makes the
+    /// candidate pairs afresh.
+    fn refresh(&mut self, particles: &[Particle], laws: &Laws, stats: &mut StepStats) {
         let lap = Lap::start();
         self.broad_phase.set_parallel(self.parallel);
         let (boundary, size) = (laws.boundary, laws.size);
@@ -116,6 +137,26 @@ impl Pipeline {
         laws: &Laws,
         stats: &mut StepStats,
     ) {
+        if std::mem::take(&mut self.unchecked) {
+            let lap = Lap::start();
+            let (boundary, size) = (laws.boundary, laws.size);
+            if let Some((pairs, check)) =
+                self.broad_phase
+                    .kept_unchecked(particles.len(), boundary, size)
+            {
+                let holds = find_contacts_checked(particles, pairs, &check, &mut self.contacts);
+                let candidates = pairs.len();
+                stats.timings.narrow_phase += lap.elapsed();
+                if holds {
+                    stats.candidate_pairs += candidates;
+                    stats.contacts += self.contacts.len();
+                    return;
+                }
+            }
+            // A disc moved too far for the list (or was edited): the broad
+            // phase brings it up to date, and the pairs are tested again.
+            self.refresh(particles, laws, stats);
+        }
         let lap = Lap::start();
         let pairs = if self.kept {
             self.broad_phase.kept_pairs()

@@ -96,6 +96,51 @@ pub trait BroadPhase {
     fn kept_pairs(&self) -> &[Pair] {
         &[]
     }
+
+    /// For a phase that keeps its list: the list as it stands, if it was
+    /// built for this boundary, box and disc count, with what must hold of
+    /// every disc for it to be what [`BroadPhase::refresh_kept`] would give
+    /// ([`KeptCheck`]). The narrow phase checks that as it reads the discs
+    /// anyway, instead of a pass of its own; where it fails, it calls
+    /// `refresh_kept`. `None`: call `refresh_kept`.
+    fn kept_unchecked(
+        &self,
+        _count: usize,
+        _boundary: Boundary,
+        _size: DVec2,
+    ) -> Option<(&[Pair], KeptCheck<'_>)> {
+        None
+    }
+}
+
+/// What every disc must satisfy for a kept list to hold: it is within
+/// `limit` of where it was when the list was built (its anchor), and its
+/// radius has not changed.
+#[derive(Clone, Copy, Debug)]
+pub struct KeptCheck<'a> {
+    /// Each disc's position when the list was built.
+    pub anchors: &'a [DVec2],
+    /// Each disc's radius then.
+    pub radii: &'a [f64],
+    /// The square of the farthest a disc may have moved.
+    pub limit_sq: f64,
+    /// The boundary the list was built for (how far "moved" is measured).
+    pub boundary: Boundary,
+    /// The box it was built for.
+    pub size: DVec2,
+}
+
+impl KeptCheck<'_> {
+    /// Whether disc `k`, now `p`, still satisfies it.
+    #[inline]
+    pub fn holds(&self, k: usize, p: &Particle) -> bool {
+        p.radius == self.radii[k]
+            && self
+                .boundary
+                .separation(self.anchors[k], p.pos, self.size)
+                .length_squared()
+                <= self.limit_sq
+    }
 }
 
 /// The broad phases a world can use; scene files and the CLI name them.

@@ -16,7 +16,7 @@
 //! radius is summed per [`CHUNK`] and the chunk sums in order either way, so
 //! the list is the same whatever the threads.
 
-use super::{BroadPhase, Pair};
+use super::{BroadPhase, KeptCheck, Pair};
 use crate::boundary::Boundary;
 use crate::parallel::CHUNK;
 use crate::particle::Particle;
@@ -49,11 +49,10 @@ impl<B: BroadPhase> Skinned<B> {
         {
             return false;
         }
-        let limit = 0.5 * self.skin;
-        let limit_sq = limit * limit;
+        let check = self.check(boundary, size);
         let near = |(p, (anchor, &radius)): (&Particle, (&DVec2, &f64))| {
             p.radius == radius
-                && boundary.separation(*anchor, p.pos, size).length_squared() <= limit_sq
+                && boundary.separation(*anchor, p.pos, size).length_squared() <= check.limit_sq
         };
         crate::parallel::pool_or_here!(
             self.parallel,
@@ -78,6 +77,18 @@ impl<B: BroadPhase> Skinned<B> {
                     .all(near)
             }
         )
+    }
+
+    /// What every disc must satisfy for the list to hold.
+    fn check(&self, boundary: Boundary, size: DVec2) -> KeptCheck<'_> {
+        let limit = 0.5 * self.skin;
+        KeptCheck {
+            anchors: &self.anchors,
+            radii: &self.radii,
+            limit_sq: limit * limit,
+            boundary,
+            size,
+        }
     }
 
     fn rebuild(&mut self, particles: &[Particle], boundary: Boundary, size: DVec2) {
@@ -173,5 +184,16 @@ impl<B: BroadPhase> BroadPhase for Skinned<B> {
 
     fn kept_pairs(&self) -> &[Pair] {
         &self.pairs
+    }
+
+    fn kept_unchecked(
+        &self,
+        count: usize,
+        boundary: Boundary,
+        size: DVec2,
+    ) -> Option<(&[Pair], KeptCheck<'_>)> {
+        let built = self.built_for == Some((boundary, [size.x.to_bits(), size.y.to_bits()]));
+        (built && self.anchors.len() == count)
+            .then(|| (&self.pairs[..], self.check(boundary, size)))
     }
 }
