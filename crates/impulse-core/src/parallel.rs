@@ -340,4 +340,77 @@ mod tests {
         for_chunks_mut(true, &mut items, |c| c.iter_mut().for_each(|x| *x *= 2));
         assert_eq!(items[3 * CHUNK + 16], 2 * (3 * CHUNK as u64 + 16));
     }
+
+    fn pool(threads: usize) -> rayon::ThreadPool {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+    }
+
+    #[test]
+    fn each_thread_takes_the_same_run_every_time() {
+        for threads in [2, 3, 5] {
+            pool(threads).install(|| {
+                // (thread that took it, times visited, index it was told)
+                let mut items = vec![(usize::MAX, 0, 0); 7 * CHUNK + 5];
+                for round in 0..4 {
+                    let runs = on_each_part(&mut items, CHUNK, |first, part| {
+                        let me = rayon::current_thread_index().expect("a pool thread");
+                        for (k, item) in part.iter_mut().enumerate() {
+                            if round == 0 {
+                                item.0 = me;
+                            }
+                            assert_eq!(item.0, me, "the same thread every round");
+                            item.1 += 1;
+                            item.2 = first * CHUNK + k;
+                        }
+                        me
+                    });
+                    assert_eq!(runs, (0..threads).collect::<Vec<_>>(), "thread order");
+                }
+                let told: Vec<usize> = items.iter().map(|item| item.2).collect();
+                assert_eq!(told, (0..items.len()).collect::<Vec<_>>());
+                assert!(
+                    items.iter().all(|item| item.1 == 4),
+                    "each item once a round"
+                );
+                assert!(
+                    items.windows(2).all(|w| w[0].0 <= w[1].0),
+                    "contiguous runs"
+                );
+            });
+        }
+    }
+
+    #[test]
+    fn steps_with_the_pool_awake_finish_from_any_thread() {
+        // Steps on a shared two-thread pool from four threads at once, from
+        // inside and outside the pool, nested too: each returns its own
+        // result (a helper that found itself on a busy thread gives it up).
+        let shared = pool(2);
+        std::thread::scope(|scope| {
+            for t in 0..4u64 {
+                let shared = &shared;
+                scope.spawn(move || {
+                    for k in 0..200u64 {
+                        let step = || {
+                            let mut items: Vec<u64> = (0..2 * CHUNK as u64).collect();
+                            for_chunks_mut(true, &mut items, |c| {
+                                c.iter_mut().for_each(|x| *x += t)
+                            });
+                            with_pool_awake(true, || items.iter().sum::<u64>() + k)
+                        };
+                        let got = if k % 2 == 0 {
+                            shared.install(|| with_pool_awake(true, step))
+                        } else {
+                            with_pool_awake(true, step)
+                        };
+                        let n = 2 * CHUNK as u64;
+                        assert_eq!(got, n * (n - 1) / 2 + n * t + k);
+                    }
+                });
+            }
+        });
+    }
 }
