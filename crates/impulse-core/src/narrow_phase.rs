@@ -89,6 +89,72 @@ pub fn find_contacts_checked(
     check: &KeptCheck,
     out: &mut Vec<Contact>,
 ) -> bool {
+    check_and_find(particles, pairs, 0..particles.len(), check, out)
+}
+
+/// [`find_contacts_checked`] on rayon's pool, chunk by chunk like
+/// [`find_contacts_in_chunks`]: each chunk checks the discs from its first
+/// pair's first disc to the next chunk's (the first chunk from disc 0, the
+/// last to the end), so that together they check every disc.
+pub fn find_contacts_in_chunks_checked(
+    particles: &[Particle],
+    pairs: &[Pair],
+    check: &KeptCheck,
+    chunks: &mut Vec<Vec<Contact>>,
+    out: &mut Vec<Contact>,
+) -> bool {
+    out.clear();
+    let count = pairs.len().div_ceil(PAIR_CHUNK);
+    chunks.resize_with(count, Vec::new);
+    let n = particles.len();
+    let first_disc = |c: usize| match c {
+        0 => 0,
+        c if c >= count => n,
+        c => pairs[c * PAIR_CHUNK].i as usize,
+    };
+    let find = |c: usize, found: &mut Vec<Contact>| {
+        let mine = &pairs[c * PAIR_CHUNK..((c + 1) * PAIR_CHUNK).min(pairs.len())];
+        check_and_find(
+            particles,
+            mine,
+            first_disc(c)..first_disc(c + 1),
+            check,
+            found,
+        )
+    };
+    let holds = crate::parallel::pool_or_here!(
+        true,
+        {
+            let per_thread = crate::parallel::on_each_part(chunks, 1, |first, founds| {
+                let mut found = founds.iter_mut().enumerate();
+                found.all(|(k, found)| find(first + k, found))
+            });
+            per_thread.into_iter().all(|holds| holds)
+        },
+        {
+            let mut found = chunks.iter_mut().enumerate();
+            found.all(|(c, found)| find(c, found))
+        }
+    );
+    let holds = holds && (count > 0 || check_and_find(particles, &[], 0..n, check, out));
+    if holds {
+        for found in chunks.iter() {
+            out.extend_from_slice(found);
+        }
+    }
+    holds
+}
+
+/// The contacts among `pairs` into `out`, checking as it goes the discs
+/// `discs` (which hold the first discs of `pairs`, and maybe more) against
+/// `check`; false at the first that fails.
+fn check_and_find(
+    particles: &[Particle],
+    pairs: &[Pair],
+    discs: std::ops::Range<usize>,
+    check: &KeptCheck,
+    out: &mut Vec<Contact>,
+) -> bool {
     out.clear();
     let (boundary, size) = (check.boundary, check.size);
     let contact = |pair: &Pair| contact_of(particles, pair, boundary, size);
@@ -96,8 +162,8 @@ pub fn find_contacts_checked(
         let discs = particles[span.clone()].iter().zip(span);
         discs.fold(true, |holds, (p, k)| holds & check.holds(k, p))
     };
-    // Discs before `checked` hold.
-    let mut checked = 0;
+    // Discs from `discs.start` to `checked` hold.
+    let mut checked = discs.start;
     if particles.len() < PREFETCH_FROM {
         // A block of pairs at a time: first its discs (the first ones of
         // its pairs) are checked in one tight loop, then its pairs are
@@ -132,7 +198,7 @@ pub fn find_contacts_checked(
             }
         }
     }
-    holds(checked..particles.len())
+    checked >= discs.end || holds(checked..discs.end)
 }
 
 /// The contact of a candidate pair, if its discs overlap.

@@ -9,7 +9,10 @@ use crate::boundary::{WallContact, WallReport};
 use crate::broad_phase::{BroadPhase, BroadPhaseKind, Pair};
 use crate::laws::Laws;
 use crate::ledger::{Ledger, WallHit};
-use crate::narrow_phase::{find_contacts, find_contacts_checked, find_contacts_in_chunks, Contact};
+use crate::narrow_phase::{
+    find_contacts, find_contacts_checked, find_contacts_in_chunks, find_contacts_in_chunks_checked,
+    Contact,
+};
 use crate::parallel;
 use crate::particle::Particle;
 use crate::resolution::{ResolutionReport, Rule};
@@ -84,9 +87,9 @@ impl Pipeline {
         self.narrow_phase(particles, laws, stats);
     }
 
-    /// The broad phase: candidate pairs, whose boxes may touch. On one
-    /// thread a kept list is taken as it stands and checked by the narrow
-    /// phase ([`BroadPhase::kept_unchecked`]).
+    /// The broad phase: candidate pairs, whose boxes may touch. A kept list
+    /// is taken as it stands and checked by the narrow phase
+    /// ([`BroadPhase::kept_unchecked`]).
     pub(crate) fn broad_phase(
         &mut self,
         particles: &[Particle],
@@ -94,10 +97,9 @@ impl Pipeline {
         stats: &mut StepStats,
     ) {
         let (boundary, size) = (laws.boundary, laws.size);
-        self.unchecked = !self.parallel
-            && (self.broad_phase)
-                .kept_unchecked(particles.len(), boundary, size)
-                .is_some();
+        self.unchecked = (self.broad_phase)
+            .kept_unchecked(particles.len(), boundary, size)
+            .is_some();
         if self.unchecked {
             self.kept = true;
         } else {
@@ -144,7 +146,18 @@ impl Pipeline {
                 self.broad_phase
                     .kept_unchecked(particles.len(), boundary, size)
             {
-                let holds = find_contacts_checked(particles, pairs, &check, &mut self.contacts);
+                let holds = if self.parallel {
+                    let chunks = &mut self.contact_chunks;
+                    find_contacts_in_chunks_checked(
+                        particles,
+                        pairs,
+                        &check,
+                        chunks,
+                        &mut self.contacts,
+                    )
+                } else {
+                    find_contacts_checked(particles, pairs, &check, &mut self.contacts)
+                };
                 let candidates = pairs.len();
                 stats.timings.narrow_phase += lap.elapsed();
                 if holds {
