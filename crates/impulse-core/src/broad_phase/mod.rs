@@ -77,6 +77,28 @@ pub trait BroadPhase {
         out: &mut Vec<Pair>,
     );
 
+    /// [`BroadPhase::candidate_pairs`] for the discs with `inflate` added to
+    /// every radius (a Verlet list's skin), without a copy of them where
+    /// the phase can do that as it reads them (the grid: a million discs
+    /// would be 72 MB).
+    fn candidate_pairs_inflated(
+        &mut self,
+        particles: &[Particle],
+        inflate: f64,
+        boundary: Boundary,
+        size: DVec2,
+        out: &mut Vec<Pair>,
+    ) {
+        let inflated: Vec<Particle> = particles
+            .iter()
+            .map(|p| Particle {
+                radius: p.radius + inflate,
+                ..*p
+            })
+            .collect();
+        self.candidate_pairs(&inflated, boundary, size, out);
+    }
+
     /// Lets the phase run its order-free work on rayon's pool (see
     /// [`crate::parallel`]). The pairs it returns must not change with this
     /// or with the number of threads. Phases that stay serial ignore it.
@@ -236,6 +258,8 @@ struct Space {
     slack: f64,
     /// Largest |coordinate| of a periodic disc found outside the box.
     outside: f64,
+    /// Added to every radius ([`BroadPhase::candidate_pairs_inflated`]).
+    inflate: f64,
 }
 
 impl Space {
@@ -259,13 +283,14 @@ impl Space {
             period,
             slack: 0.0,
             outside: 0.0,
+            inflate: 0.0,
         })
     }
 
     /// The disc as stored, or `None` if it can never be a candidate.
     #[inline(always)]
     fn disc(&mut self, i: usize, p: &Particle) -> Option<Disc> {
-        let r = p.radius;
+        let r = p.radius + self.inflate;
         if !(p.pos.is_finite() && r > f64::NEG_INFINITY) {
             return None; // non-finite centre, NaN or −∞ radius
         }

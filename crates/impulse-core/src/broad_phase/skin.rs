@@ -2,12 +2,16 @@
 //!
 //! Discs move a few percent of a radius per step, so the pairs that can
 //! touch change slowly. The wrapped broad phase is asked for the pairs of
-//! discs inflated by half a skin each; that list stays a superset of the
-//! overlapping pairs until some disc has moved more than half the skin from
-//! where it was when the list was built, and only then is it rebuilt. Each
-//! step in between costs one pass over the discs (how far has each moved?)
-//! instead of a full broad phase. Adding, removing or resizing a disc, or
-//! changing the box, rebuilds at once.
+//! discs inflated by half a skin each
+//! ([`BroadPhase::candidate_pairs_inflated`]: the grid adds it as it reads
+//! the discs, with no inflated copy of them); that list stays a superset of
+//! the overlapping pairs until some disc has moved more than half the skin
+//! from where it was when the list was built, and only then is it rebuilt.
+//! Each step in between costs a check of every disc (how far has it moved?)
+//! instead of a full broad phase; the pipeline has the narrow phase make it
+//! as it reads the discs anyway ([`BroadPhase::kept_unchecked`]).
+//! Adding, removing or resizing a disc, or changing the box, rebuilds at
+//! once.
 //!
 //! The pipeline reads the list in place ([`BroadPhase::kept_pairs`]);
 //! [`BroadPhase::candidate_pairs`] copies it. In parallel
@@ -34,7 +38,6 @@ pub struct Skinned<B> {
     pairs: Vec<Pair>,
     anchors: Vec<DVec2>,
     radii: Vec<f64>,
-    inflated: Vec<Particle>,
     skin: f64,
     built_for: Option<(Boundary, [u64; 2])>,
     parallel: bool,
@@ -113,25 +116,11 @@ impl<B: BroadPhase> Skinned<B> {
         let mean_radius = self.sums.iter().sum::<f64>() / n;
         self.skin = (SKIN_FRACTION * mean_radius).max(0.0);
         let half_skin = 0.5 * self.skin;
-        let inflate = |p: &Particle| Particle {
-            radius: p.radius + half_skin,
-            ..*p
-        };
-        self.inflated.clear();
         self.anchors.clear();
         self.radii.clear();
-        crate::parallel::pool_or_here!(
-            self.parallel,
-            {
-                self.inflated.par_extend(particles.par_iter().map(inflate));
-            },
-            {
-                self.inflated.extend(particles.iter().map(inflate));
-            }
-        );
         self.inner.set_parallel(self.parallel);
         self.inner
-            .candidate_pairs(&self.inflated, boundary, size, &mut self.pairs);
+            .candidate_pairs_inflated(particles, half_skin, boundary, size, &mut self.pairs);
         crate::parallel::pool_or_here!(
             self.parallel,
             {

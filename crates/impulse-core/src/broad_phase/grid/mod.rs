@@ -155,12 +155,31 @@ impl BroadPhase for Grid {
         size: DVec2,
         out: &mut Vec<Pair>,
     ) {
+        self.candidate_pairs_inflated(particles, 0.0, boundary, size, out);
+    }
+
+    fn candidate_pairs_inflated(
+        &mut self,
+        particles: &[Particle],
+        inflate: f64,
+        boundary: Boundary,
+        size: DVec2,
+        out: &mut Vec<Pair>,
+    ) {
         out.clear();
         self.raw.clear();
         let Some(mut space) = Space::new(boundary, size) else {
-            BruteForce.candidate_pairs(particles, boundary, size, out);
+            let inflated: Vec<Particle> = particles
+                .iter()
+                .map(|p| Particle {
+                    radius: p.radius + inflate,
+                    ..*p
+                })
+                .collect();
+            BruteForce.candidate_pairs(&inflated, boundary, size, out);
             return;
         };
+        space.inflate = inflate;
         // One pass: the candidate discs, their radii, and their extent.
         let stats = self.gather(particles, &mut space);
         space.finish();
