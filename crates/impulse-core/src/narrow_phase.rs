@@ -33,8 +33,10 @@ pub struct Contact {
     pub relative_velocity: DVec2,
 }
 
-/// How many pairs ahead the narrow phase asks for a disc.
-const AHEAD: usize = 16;
+/// How many pairs ahead the narrow phase asks for a disc. A million discs,
+/// one thread, alternating runs: 13.2–13.5 ns per disc-step at 16 pairs,
+/// 11.7–12.3 at 48 (32 to 96 alike), 15.0–15.7 at 8.
+const AHEAD: usize = 48;
 /// From how many discs it does: about where they outgrow the last cache
 /// (72 bytes each; at 10⁵ discs prefetching made the stage 13 % slower).
 const PREFETCH_FROM: usize = 200_000;
