@@ -270,7 +270,11 @@ fn every_quoted_lab_figure_is_what_its_table_holds() {
             }
         }
         if update {
-            std::fs::write(&path, &text).unwrap();
+            // Whole or not at all: the other tests of this file read the
+            // same documents at the same time.
+            let fresh = path.with_extension("md.new");
+            std::fs::write(&fresh, &text).unwrap();
+            std::fs::rename(&fresh, &path).unwrap();
         }
     }
     assert!(count >= 10, "only {count} quoted figures found");
