@@ -3,6 +3,7 @@
 //! file has a folder to go to.
 
 use super::{lang, model};
+#[cfg(not(target_arch = "wasm32"))]
 use impulse::Scene;
 use std::path::PathBuf;
 
