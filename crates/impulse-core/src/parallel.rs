@@ -93,9 +93,34 @@ mod awake {
         epoch().elapsed().as_nanos() as u64
     }
 
-    /// Takes work from the pool (a stage's part) until no step has run
-    /// for [`super::HELPER_PATIENCE`], or none has wanted work for that
-    /// long; spins in between rather than sleeping.
+    /// A step running with the pool kept awake, on this thread; undone
+    /// when dropped, also if the step panics.
+    pub struct Stepping {
+        was_busy: bool,
+    }
+
+    impl Stepping {
+        pub fn start() -> Stepping {
+            STEPS.fetch_add(1, Ordering::AcqRel);
+            Stepping {
+                was_busy: BUSY.with(|busy| busy.replace(true)),
+            }
+        }
+    }
+
+    impl Drop for Stepping {
+        fn drop(&mut self) {
+            BUSY.with(|busy| busy.set(self.was_busy));
+            LAST_END.store(now_ns(), Ordering::Release);
+            STEPS.fetch_sub(1, Ordering::AcqRel);
+        }
+    }
+
+    /// Takes work from the pool (a stage's part), spinning in between
+    /// rather than sleeping, until, with no step running, it has had no
+    /// work or no step for [`super::HELPER_PATIENCE`]; or, while steps run,
+    /// no work for four times that (a step busy on its own, or one this
+    /// thread is itself part of).
     pub fn help() {
         if BUSY.with(|busy| busy.replace(true)) {
             return;
@@ -142,20 +167,14 @@ mod awake {
 pub fn with_pool_awake<R: Send>(parallel: bool, f: impl FnOnce() -> R + Send) -> R {
     #[cfg(feature = "parallel")]
     {
-        use std::sync::atomic::Ordering;
         if parallel && rayon::current_num_threads() > 1 {
             let run = move || {
-                awake::STEPS.fetch_add(1, Ordering::AcqRel);
-                let was_busy = awake::BUSY.with(|busy| busy.replace(true));
+                let _stepping = awake::Stepping::start();
                 // One helper per pool thread (each in its own queue, so
                 // only that thread runs it); one that is already helping,
                 // or runs this step, declines.
                 rayon::spawn_broadcast(|_| awake::help());
-                let result = f();
-                awake::BUSY.with(|busy| busy.set(was_busy));
-                awake::LAST_END.store(awake::now_ns(), Ordering::Release);
-                awake::STEPS.fetch_sub(1, Ordering::AcqRel);
-                result
+                f()
             };
             // On a thread of the pool, which then does its share of each
             // stage itself instead of waiting for the others to.
@@ -381,6 +400,19 @@ mod tests {
                 );
             });
         }
+    }
+
+    #[test]
+    fn a_step_that_panics_leaves_its_thread_free_to_help_again() {
+        pool(2).install(|| {
+            let step = std::panic::AssertUnwindSafe(|| with_pool_awake(true, || panic!("a bug")));
+            assert!(std::panic::catch_unwind(step).is_err());
+            assert!(
+                !awake::BUSY.with(|busy| busy.get()),
+                "the thread is marked free again"
+            );
+            assert_eq!(with_pool_awake(true, || 7), 7, "and steps again");
+        });
     }
 
     #[test]
