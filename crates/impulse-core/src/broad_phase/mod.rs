@@ -89,14 +89,7 @@ pub trait BroadPhase {
         size: DVec2,
         out: &mut Vec<Pair>,
     ) {
-        let inflated: Vec<Particle> = particles
-            .iter()
-            .map(|p| Particle {
-                radius: p.radius + inflate,
-                ..*p
-            })
-            .collect();
-        self.candidate_pairs(&inflated, boundary, size, out);
+        self.candidate_pairs(&inflated(particles, inflate), boundary, size, out);
     }
 
     /// Lets the phase run its order-free work on rayon's pool (see
@@ -133,6 +126,15 @@ pub trait BroadPhase {
     ) -> Option<(&[Pair], KeptCheck<'_>)> {
         None
     }
+}
+
+/// A copy of `particles` with `inflate` added to every radius.
+fn inflated(particles: &[Particle], inflate: f64) -> Vec<Particle> {
+    let inflate = |p: &Particle| Particle {
+        radius: p.radius + inflate,
+        ..*p
+    };
+    particles.iter().map(inflate).collect()
 }
 
 /// What every disc must satisfy for a kept list to hold: it is within

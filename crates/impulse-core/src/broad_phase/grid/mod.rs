@@ -169,13 +169,7 @@ impl BroadPhase for Grid {
         out.clear();
         self.raw.clear();
         let Some(mut space) = Space::new(boundary, size) else {
-            let inflated: Vec<Particle> = particles
-                .iter()
-                .map(|p| Particle {
-                    radius: p.radius + inflate,
-                    ..*p
-                })
-                .collect();
+            let inflated = super::inflated(particles, inflate);
             BruteForce.candidate_pairs(&inflated, boundary, size, out);
             return;
         };
