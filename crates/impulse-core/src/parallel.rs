@@ -42,25 +42,6 @@ macro_rules! pool_or_here {
 }
 pub(crate) use pool_or_here;
 
-/// `a` and `b`, side by side on rayon's pool with the `parallel` feature,
-/// one after the other without it.
-pub fn join<A, B, RA, RB>(a: A, b: B) -> (RA, RB)
-where
-    A: FnOnce() -> RA + Send,
-    B: FnOnce() -> RB + Send,
-    RA: Send,
-    RB: Send,
-{
-    #[cfg(feature = "parallel")]
-    {
-        rayon::join(a, b)
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        (a(), b())
-    }
-}
-
 /// How long the pool's other threads stay awake after a step ends (so that
 /// the next step, if it comes at once, finds them awake), and the longest a
 /// helper waits for work while a step runs before it gives up its thread.
@@ -246,7 +227,7 @@ where
 /// The run of `count` chunk indices that thread `k` of `threads` takes:
 /// contiguous, and the same at every stage and step.
 #[cfg(feature = "parallel")]
-fn run_of(k: usize, threads: usize, count: usize) -> std::ops::Range<usize> {
+pub(crate) fn run_of(k: usize, threads: usize, count: usize) -> std::ops::Range<usize> {
     count * k / threads..count * (k + 1) / threads
 }
 
@@ -277,7 +258,6 @@ where
     R: Send,
     F: Fn(usize, &mut [T]) -> R + Sync,
 {
-    use std::sync::Mutex;
     let threads = rayon::current_num_threads();
     let count = items.len().div_ceil(chunk);
     let mut parts = Vec::with_capacity(threads);
@@ -290,15 +270,35 @@ where
             (run.len() * chunk).min(rest.len())
         };
         let (part, tail) = std::mem::take(&mut rest).split_at_mut(len);
-        parts.push(Mutex::new(Some((run.start, part))));
+        parts.push((run.start, part));
         rest = tail;
     }
+    on_each_thread(parts, |(first, part)| f(first, part))
+}
+
+/// `f(items[k])` on thread `k` of the pool, for every thread (`items` has
+/// one per thread); the results in thread order. For stages whose part k
+/// should be made where thread k will read it next (see [`on_each_run`]).
+#[cfg(feature = "parallel")]
+pub fn on_each_thread<T, R, F>(items: Vec<T>, f: F) -> Vec<R>
+where
+    T: Send,
+    R: Send,
+    F: Fn(T) -> R + Sync,
+{
+    use std::sync::Mutex;
+    assert_eq!(
+        items.len(),
+        rayon::current_num_threads(),
+        "one item per pool thread"
+    );
+    let items: Vec<Mutex<Option<T>>> = items.into_iter().map(|t| Mutex::new(Some(t))).collect();
     rayon::broadcast(|ctx| {
-        // Each thread takes its own part, once.
-        let taken = parts[ctx.index()].lock().map(|mut p| p.take());
+        // Each thread takes its own item, once.
+        let taken = items[ctx.index()].lock().map(|mut item| item.take());
         match taken {
-            Ok(Some((first, part))) => f(first, part),
-            _ => unreachable!("each part is taken by its own thread, once"),
+            Ok(Some(item)) => f(item),
+            _ => unreachable!("each item is taken by its own thread, once"),
         }
     })
 }

@@ -386,27 +386,41 @@ fn sort_pairs(raw: &[Pair], n: usize, ends: &mut Vec<u32>, out: &mut Vec<Pair>) 
         out.sort_unstable();
         return;
     }
-    // ends[i + 1] counts pairs with first index i; after the prefix sum,
-    // ends[i] is where they start; after scattering, where they end.
+    out.resize(raw.len(), Pair::default());
+    sort_pairs_into(&[raw], 0, n, ends, out);
+}
+
+/// Fills `out` (exactly as long as all of them) with the pairs of
+/// `sources`, whose first indices lie in `lo..lo + keys`, sorted by
+/// `(i, j)`: [`sort_pairs`]'s work, for one range of first indices.
+fn sort_pairs_into(
+    sources: &[&[Pair]],
+    lo: usize,
+    keys: usize,
+    ends: &mut Vec<u32>,
+    out: &mut [Pair],
+) {
+    let lo = lo as u32;
+    // ends[k + 1] counts pairs with first index lo + k; after the prefix
+    // sum, ends[k] is where they start; after scattering, where they end.
     ends.clear();
-    ends.resize(n + 1, 0);
-    for p in raw {
-        ends[p.i as usize + 1] += 1;
+    ends.resize(keys + 1, 0);
+    for p in sources.iter().flat_map(|s| s.iter()) {
+        ends[(p.i - lo) as usize + 1] += 1;
     }
     let mut total = 0;
     for e in ends.iter_mut() {
         total += *e;
         *e = total;
     }
-    out.resize(raw.len(), Pair::default());
-    for &p in raw {
-        let slot = &mut ends[p.i as usize];
+    for &p in sources.iter().flat_map(|s| s.iter()) {
+        let slot = &mut ends[(p.i - lo) as usize];
         out[*slot as usize] = p;
         *slot += 1;
     }
-    // Now particle i's pairs are out[ends[i-1]..ends[i]]: sort each by j.
+    // Now index lo + k's pairs are out[ends[k-1]..ends[k]]: sort each by j.
     let mut start = 0;
-    for &end in &ends[..n] {
+    for &end in &ends[..keys] {
         let group = &mut out[start..end as usize];
         match group.len() {
             0 | 1 => {}
@@ -415,6 +429,61 @@ fn sort_pairs(raw: &[Pair], n: usize, ends: &mut Vec<u32>, out: &mut Vec<Pair>) 
         }
         start = end as usize;
     }
+}
+
+/// Which of `parts` equal ranges of first indices `0..n` pair `p` falls in.
+#[cfg(feature = "parallel")]
+#[inline(always)]
+fn key_part(p: &Pair, parts: usize, n: usize) -> usize {
+    (u64::from(p.i) * parts as u64 / n as u64) as usize
+}
+
+/// The first index of key range `part` of `parts` over `0..n` (see
+/// [`key_part`]).
+#[cfg(feature = "parallel")]
+fn key_part_start(part: usize, parts: usize, n: usize) -> usize {
+    (part * n).div_ceil(parts)
+}
+
+/// [`sort_pairs`] on rayon's pool: `by_part` holds, per source, its pairs
+/// already split by [`key_part`] into `parts` ranges, one per pool thread;
+/// each range is sorted on its own thread into its own stretch of `out`. Since the pairs are
+/// distinct and the order `(i, j)` total, the list is the one
+/// [`sort_pairs`] makes of the same pairs.
+#[cfg(feature = "parallel")]
+fn sort_pairs_in_parts(
+    by_part: &[&[Vec<Pair>]],
+    parts: usize,
+    n: usize,
+    scratch: &mut Vec<Vec<u32>>,
+    out: &mut Vec<Pair>,
+) {
+    let lengths: Vec<usize> = (0..parts)
+        .map(|t| by_part.iter().map(|source| source[t].len()).sum())
+        .collect();
+    out.clear();
+    out.resize(lengths.iter().sum(), Pair::default());
+    let mut stretches = Vec::with_capacity(parts);
+    let mut rest = &mut out[..];
+    for &len in &lengths {
+        let (stretch, after) = rest.split_at_mut(len);
+        stretches.push(stretch);
+        rest = after;
+    }
+    scratch.resize_with(parts, Vec::new);
+    let work: Vec<_> = stretches
+        .into_iter()
+        .zip(scratch.iter_mut())
+        .enumerate()
+        .collect();
+    // Range t on thread t: the stretch of the list the narrow phase's
+    // thread t reads first (see `crate::parallel::on_each_run`).
+    crate::parallel::on_each_thread(work, |(t, (stretch, ends))| {
+        let sources: Vec<&[Pair]> = by_part.iter().map(|source| &source[t][..]).collect();
+        let lo = key_part_start(t, parts, n);
+        let keys = key_part_start(t + 1, parts, n) - lo;
+        sort_pairs_into(&sources, lo, keys, ends, stretch);
+    });
 }
 
 /// Sorts a short slice of pairs that share `i` by `j`.
@@ -462,6 +531,63 @@ mod tests {
         let (mut ends, mut out) = (Vec::new(), Vec::new());
         sort_pairs(&raw, 60, &mut ends, &mut out);
         assert_eq!(out, expected);
+    }
+
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn the_sort_in_ranges_of_first_index_gives_the_serial_order() {
+        // Pairs from several sources (like the grid's bands), some with
+        // many partners, in no order; split by range of first index for 1
+        // to 5 threads' ranges (some empty when there are more ranges than
+        // indices) and sorted range by range on a pool.
+        for (n, count) in [(3u32, 3usize), (60, 700), (1000, 5000)] {
+            let mut x: u64 = 0x9e37_79b9_7f4a_7c15 ^ u64::from(n);
+            let mut next = || {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                x
+            };
+            let mut all = std::collections::BTreeSet::new();
+            while all.len() < count {
+                let (a, b) = (
+                    (next() % u64::from(n)) as u32,
+                    (next() % u64::from(n)) as u32,
+                );
+                if a != b {
+                    all.insert(pair(a, b));
+                }
+            }
+            let mut raw: Vec<Pair> = all.iter().copied().collect();
+            for k in (1..raw.len()).rev() {
+                raw.swap(k, (next() % (k as u64 + 1)) as usize);
+            }
+            let (mut ends, mut serial) = (Vec::new(), Vec::new());
+            sort_pairs(&raw, n as usize, &mut ends, &mut serial);
+            assert_eq!(serial, all.iter().copied().collect::<Vec<_>>());
+            for parts in 1..=5 {
+                let sources: Vec<Vec<Vec<Pair>>> = raw
+                    .chunks(raw.len().div_ceil(3))
+                    .map(|chunk| {
+                        let mut split = vec![Vec::new(); parts];
+                        for p in chunk {
+                            split[key_part(p, parts, n as usize)].push(*p);
+                        }
+                        split
+                    })
+                    .collect();
+                let by_part: Vec<&[Vec<Pair>]> = sources.iter().map(|s| &s[..]).collect();
+                let (mut scratch, mut out) = (Vec::new(), vec![Pair { i: 7, j: 9 }]);
+                let pool = rayon::ThreadPoolBuilder::new()
+                    .num_threads(parts)
+                    .build()
+                    .unwrap();
+                pool.install(|| {
+                    sort_pairs_in_parts(&by_part, parts, n as usize, &mut scratch, &mut out)
+                });
+                assert_eq!(out, serial, "{n} discs, {parts} ranges");
+            }
+        }
     }
 
     #[test]

@@ -47,16 +47,21 @@
 //!
 //! **In parallel** ([`BroadPhase::set_parallel`], for large scenes) step 1
 //! runs per chunk of [`CHUNK`] particles, each chunk's discs and extent kept
-//! apart and joined in chunk order; the column sort of step 2 and the sweep
-//! of step 3 run per band of [`BAND_ROWS`] rows, each band's pairs kept apart
-//! and joined in band order. The chunks and bands are fixed by the data, so
+//! apart and joined in chunk order; the row scatter of step 2 runs per run of
+//! discs (each row's discs placed run by run, as serially); the column sort
+//! of step 2 and the sweep of step 3 run per band of [`BAND_ROWS`] rows,
+//! thread k taking the same run of bands for both; the pair sort of step 4
+//! runs per range of first indices, each sorted on its own thread. The
+//! chunks and bands are fixed by the data and the pairs' order is total, so
 //! the pairs are the same on any number of threads, and the same as serially
 //! (which gathers by the same chunks, so even the mean radius is summed
-//! alike). The row scatter of step 2 and the pair sort of step 4 stay serial.
+//! alike).
 
 use super::{pair, sort_pairs, touches, BroadPhase, BruteForce, Disc, Pair, Space};
 use crate::boundary::Boundary;
-use crate::parallel::{BAND_ROWS, CHUNK};
+#[cfg(feature = "parallel")]
+use crate::parallel::BAND_ROWS;
+use crate::parallel::CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
 #[cfg(feature = "parallel")]
@@ -100,6 +105,9 @@ pub struct Grid {
     raw: Vec<Pair>,
     /// Scratch for the pair sort.
     ends: Vec<u32>,
+    /// Scratch for the pair sort on the pool, one per range of first index.
+    #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
+    part_ends: Vec<Vec<u32>>,
 }
 
 /// Scratch for one band of [`BAND_ROWS`] grid rows.
@@ -112,6 +120,10 @@ struct Band {
     /// Pairs the band's sweep found (on the pool).
     #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
     raw: Vec<Pair>,
+    /// The same, split by range of first index for the sort (on the pool;
+    /// see `sort_pairs_in_parts`).
+    #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
+    by_part: Vec<Vec<Pair>>,
 }
 
 /// Where the cells are: cell (cx, cy) covers
@@ -209,11 +221,28 @@ impl BroadPhase for Grid {
                 self.parallel,
                 {
                     // self.bands has one band per BAND_ROWS rows (sort_into_cells).
-                    self.bands.par_iter_mut().enumerate().for_each(|(b, band)| {
-                        band.raw.clear();
-                        let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
-                        sweep(rows, &mut band.raw);
+                    let n = particles.len();
+                    let parts = crate::parallel::threads().max(1);
+                    // Thread k sweeps the bands whose rows it sorted.
+                    crate::parallel::on_each_part(&mut self.bands, 1, |first, bands| {
+                        for (b, band) in (first..).zip(bands) {
+                            band.raw.clear();
+                            let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
+                            sweep(rows, &mut band.raw);
+                            band.by_part.resize_with(parts, Vec::new);
+                            band.by_part.iter_mut().for_each(Vec::clear);
+                            for p in &band.raw {
+                                band.by_part[super::key_part(p, parts, n)].push(*p);
+                            }
+                        }
                     });
+                    if self.big.is_empty() {
+                        // Each range of first indices sorted on its own thread.
+                        let by_part: Vec<&[Vec<Pair>]> =
+                            self.bands.iter().map(|band| &band.by_part[..]).collect();
+                        super::sort_pairs_in_parts(&by_part, parts, n, &mut self.part_ends, out);
+                        return;
+                    }
                     for band in &self.bands {
                         self.raw.extend_from_slice(&band.raw);
                     }
@@ -459,6 +488,77 @@ impl Grid {
     /// cache, by column through `row_buf`.
     fn sort_into_cells(&mut self, layout: &Layout) {
         let (nx, ny) = (layout.nx, layout.ny);
+        let parts = crate::parallel::pool_or_here!(
+            self.parallel && self.big.is_empty(),
+            { crate::parallel::threads() },
+            { 1 }
+        );
+        let longest = if parts > 1 {
+            self.sort_into_rows_in_parts(layout, parts)
+        } else {
+            self.sort_into_rows(layout)
+        };
+        // Row r is sorted[row_starts[r]..row_starts[r + 1]]. Sort each by
+        // column, band by band of rows; a row's cells end at starts[1..]
+        // (each row's counts are zeroed as it is sorted).
+        self.starts.resize(nx * ny + 1, 0);
+        self.starts[0] = 0;
+        let bands =
+            crate::parallel::pool_or_here!(self.parallel, { ny.div_ceil(BAND_ROWS) }, { 1 });
+        self.bands.resize_with(bands, Band::default);
+        for band in &mut self.bands {
+            band.row_buf.resize(longest as usize, Disc::default());
+            band.cursor.resize(nx, 0);
+        }
+        let row_starts = &self.row_starts;
+        crate::parallel::pool_or_here!(
+            bands > 1,
+            {
+                // Thread k sorts the rows of its run of bands, the run it
+                // then sweeps (`on_each_part` over the bands).
+                let threads = crate::parallel::threads();
+                let mut work = Vec::with_capacity(threads);
+                let mut sorted = &mut self.sorted[..];
+                let mut ends = &mut self.starts[1..];
+                let mut scratch = &mut self.bands[..];
+                for k in 0..threads {
+                    let run = crate::parallel::run_of(k, threads, bands);
+                    let rows = (run.start * BAND_ROWS).min(ny)..(run.end * BAND_ROWS).min(ny);
+                    let discs = (row_starts[rows.end] - row_starts[rows.start]) as usize;
+                    let (these, rest) = std::mem::take(&mut sorted).split_at_mut(discs);
+                    sorted = rest;
+                    let (these_ends, rest) =
+                        std::mem::take(&mut ends).split_at_mut(rows.len() * nx);
+                    ends = rest;
+                    let (these_bands, rest) = std::mem::take(&mut scratch).split_at_mut(run.len());
+                    scratch = rest;
+                    work.push((rows, these, these_ends, these_bands.first_mut()));
+                }
+                crate::parallel::on_each_thread(work, |(rows, sorted, ends, band)| {
+                    if let Some(band) = band {
+                        sort_rows(layout, rows, row_starts, sorted, ends, band);
+                    }
+                });
+            },
+            {
+                sort_rows(
+                    layout,
+                    0..ny,
+                    row_starts,
+                    &mut self.sorted,
+                    &mut self.starts[1..],
+                    &mut self.bands[0],
+                );
+            }
+        );
+    }
+
+    /// Sorts the gridded discs into `sorted` row by row, in their order
+    /// within each row (a counting sort on the row, each disc's row kept in
+    /// its `tag`, [`BIG`] for a big one); `row_starts[r]` is then where row
+    /// `r` begins, for `r` up to `ny`. Returns the longest row's length.
+    fn sort_into_rows(&mut self, layout: &Layout) -> u32 {
+        let ny = layout.ny;
         self.row_starts.clear();
         self.row_starts.resize(ny + 2, 0);
         let mut big = self.big.iter().peekable();
@@ -488,25 +588,67 @@ impl Grid {
                 *slot += 1;
             }
         }
-        // Row r is sorted[row_starts[r]..row_starts[r + 1]]. Sort each by
-        // column, band by band of rows; a row's cells end at starts[1..].
-        self.starts.clear();
-        self.starts.resize(nx * ny + 1, 0);
-        let bands =
-            crate::parallel::pool_or_here!(self.parallel, { ny.div_ceil(BAND_ROWS) }, { 1 });
-        self.bands.resize_with(bands, Band::default);
-        for band in &mut self.bands {
-            band.row_buf.resize(longest as usize, Disc::default());
-            band.cursor.resize(nx, 0);
+        longest
+    }
+
+    /// [`Grid::sort_into_rows`] on rayon's pool, without big discs: the
+    /// discs cut into `parts` runs, each run's rows counted and its discs
+    /// placed on its own thread, each row's discs from the first run, then
+    /// the second…, so that every disc lands where the serial sort puts it.
+    #[cfg(feature = "parallel")]
+    fn sort_into_rows_in_parts(&mut self, layout: &Layout, parts: usize) -> u32 {
+        let ny = layout.ny;
+        let run = self.discs.len().div_ceil(parts).max(1);
+        let runs: Vec<&mut [Disc]> = self.discs.chunks_mut(run).collect();
+        let counts: Vec<Vec<u32>> = crate::parallel::on_each_thread(pad(runs, parts), |discs| {
+            let mut count = vec![0u32; ny];
+            for d in discs {
+                let cy = layout.row(d);
+                d.tag = cy as u32;
+                count[cy] += 1;
+            }
+            count
+        });
+        self.row_starts.clear();
+        self.row_starts.resize(ny + 2, 0);
+        let (mut total, mut longest) = (0u32, 0u32);
+        for r in 0..ny {
+            self.row_starts[r] = total;
+            let row: u32 = counts.iter().map(|count| count[r]).sum();
+            longest = longest.max(row);
+            total += row;
         }
-        sort_rows(
-            layout,
-            0..ny,
-            &self.row_starts,
-            &mut self.sorted,
-            &mut self.starts[1..],
-            &mut self.bands,
-        );
+        self.row_starts[ny] = total;
+        self.row_starts[ny + 1] = total;
+        self.sorted.resize(total as usize, Disc::default());
+        // Each run's stretch of each row, row by row, run by run.
+        let mut stretches: Vec<Vec<&mut [Disc]>> =
+            (0..parts).map(|_| Vec::with_capacity(ny)).collect();
+        let mut rest = &mut self.sorted[..];
+        for r in 0..ny {
+            for (part, count) in counts.iter().enumerate() {
+                let (stretch, after) = std::mem::take(&mut rest).split_at_mut(count[r] as usize);
+                stretches[part].push(stretch);
+                rest = after;
+            }
+        }
+        let runs: Vec<&[Disc]> = self.discs.chunks(run).collect();
+        let work: Vec<_> = pad(runs, parts).into_iter().zip(stretches).collect();
+        crate::parallel::on_each_thread(work, |(discs, mut rows)| {
+            for d in discs {
+                let row = &mut rows[d.tag as usize];
+                if let Some((slot, after)) = std::mem::take(row).split_first_mut() {
+                    *slot = *d;
+                    *row = after;
+                }
+            }
+        });
+        longest
+    }
+
+    #[cfg(not(feature = "parallel"))]
+    fn sort_into_rows_in_parts(&mut self, layout: &Layout, _parts: usize) -> u32 {
+        self.sort_into_rows(layout)
     }
 
     /// Tests each big disc against every other disc.
@@ -526,39 +668,26 @@ impl Grid {
 
 /// Sorts rows `rows` by column: `sorted` holds their discs (row `r` at
 /// `row_starts[r]..row_starts[r + 1]`, counted from the first row's start),
-/// `ends` gets the end of each of their cells. `bands` has one scratch per
-/// [`BAND_ROWS`] rows, or a single one for all; several are sorted in
-/// parallel (halves by `rayon::join`). Each row is sorted alike either way.
+/// `ends` gets the end of each of their cells; `band` is the scratch.
 fn sort_rows(
     layout: &Layout,
     rows: Range<usize>,
     row_starts: &[u32],
     sorted: &mut [Disc],
     ends: &mut [u32],
-    bands: &mut [Band],
+    band: &mut Band,
 ) {
     let nx = layout.nx;
-    if bands.len() > 1 {
-        let half = bands.len() / 2;
-        let mid = rows.start + half * BAND_ROWS;
-        let (s1, s2) = sorted.split_at_mut((row_starts[mid] - row_starts[rows.start]) as usize);
-        let (e1, e2) = ends.split_at_mut((mid - rows.start) * nx);
-        let (b1, b2) = bands.split_at_mut(half);
-        crate::parallel::join(
-            || sort_rows(layout, rows.start..mid, row_starts, s1, e1, b1),
-            || sort_rows(layout, mid..rows.end, row_starts, s2, e2, b2),
-        );
-        return;
-    }
     let Band {
         row_buf, cursor, ..
-    } = &mut bands[0];
+    } = band;
     let offset = row_starts[rows.start];
     for (r, ends) in rows.zip(ends.chunks_mut(nx)) {
         let (first, end) = (row_starts[r], row_starts[r + 1]);
         let row = &mut sorted[(first - offset) as usize..(end - offset) as usize];
         let base = r * nx;
         // Count into ends[c], then turn the counts into ends.
+        ends.fill(0);
         for d in row.iter_mut() {
             let cx = layout.column(d);
             d.tag = (base + cx) as u32;
@@ -577,6 +706,14 @@ fn sort_rows(
         }
         row.copy_from_slice(&row_buf[..row.len()]);
     }
+}
+
+/// `runs` made `parts` long with empty runs (a few discs cut into fewer
+/// runs than threads).
+#[cfg(feature = "parallel")]
+fn pad<S: Default>(mut runs: Vec<S>, parts: usize) -> Vec<S> {
+    runs.resize_with(parts, S::default);
+    runs
 }
 
 /// Cells for a periodic box of size `period`, at least `2·radius` wide.
