@@ -116,21 +116,43 @@ impl<B: BroadPhase> Skinned<B> {
         let mean_radius = self.sums.iter().sum::<f64>() / n;
         self.skin = (SKIN_FRACTION * mean_radius).max(0.0);
         let half_skin = 0.5 * self.skin;
-        self.anchors.clear();
-        self.radii.clear();
         self.inner.set_parallel(self.parallel);
         self.inner
             .candidate_pairs_inflated(particles, half_skin, boundary, size, &mut self.pairs);
+        // Last, so that the next step's check finds them in the caches.
+        let n = particles.len();
+        self.anchors.resize(n, DVec2::ZERO);
+        self.radii.resize(n, 0.0);
+        let take = |discs: &[Particle], anchors: &mut [DVec2], radii: &mut [f64]| {
+            for ((p, anchor), radius) in discs.iter().zip(anchors).zip(radii) {
+                *anchor = p.pos;
+                *radius = p.radius;
+            }
+        };
         crate::parallel::pool_or_here!(
             self.parallel,
             {
-                self.anchors.par_extend(particles.par_iter().map(|p| p.pos));
-                self.radii
-                    .par_extend(particles.par_iter().map(|p| p.radius));
+                // Thread k takes the run of chunks it checks every step
+                // (`parallel::on_each_run`), so they stay in its caches.
+                let threads = crate::parallel::threads();
+                let chunks = n.div_ceil(CHUNK);
+                let mut work = Vec::with_capacity(threads);
+                let (mut anchors, mut radii) = (&mut self.anchors[..], &mut self.radii[..]);
+                for k in 0..threads {
+                    let run = crate::parallel::run_of(k, threads, chunks);
+                    let span = (run.start * CHUNK).min(n)..(run.end * CHUNK).min(n);
+                    let (these, rest) = std::mem::take(&mut anchors).split_at_mut(span.len());
+                    anchors = rest;
+                    let (those, rest) = std::mem::take(&mut radii).split_at_mut(span.len());
+                    radii = rest;
+                    work.push((&particles[span], these, those));
+                }
+                crate::parallel::on_each_thread(work, |(discs, anchors, radii)| {
+                    take(discs, anchors, radii)
+                });
             },
             {
-                self.anchors.extend(particles.iter().map(|p| p.pos));
-                self.radii.extend(particles.iter().map(|p| p.radius));
+                take(particles, &mut self.anchors, &mut self.radii);
             }
         );
         self.built_for = Some((boundary, [size.x.to_bits(), size.y.to_bits()]));
