@@ -12,7 +12,9 @@
 //! Every configuration runs on a pool of one thread (so `auto` keeps it
 //! serial); the grid methods run again on `--threads` threads (default 2),
 //! where `auto` runs them in parallel from
-//! [`impulse::auto::PARALLEL_MIN_DISCS`] discs. Bytes per disc are the heap
+//! [`impulse::auto::PARALLEL_MIN_DISCS`] discs, and their speed-up over one
+//! thread is timed against a one-thread twin, batch by batch alternately
+//! (the machine's load drifts between the rows). Bytes per disc are the heap
 //! bytes the world holds after its warm-up steps (discs and every buffer of
 //! the pipeline), counted by the binary's global allocator
 //! ([`impulse::alloc_count`]). Tables after it (`crossovers.rs`) measure the
@@ -73,6 +75,10 @@ pub struct Row {
     pub collisions_per_second: f64,
     /// Steps timed.
     pub steps: u64,
+    /// On more than one thread: the median over paired batches of the same
+    /// configuration's time on one thread over its time on these threads,
+    /// the two timed alternately, batch by batch ([`measure_against_one_thread`]).
+    pub speed_up: Option<f64>,
 }
 
 /// The configurations: every broad phase under `impulse`, and every other
@@ -140,8 +146,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
                 }
             }
             bar.set_message(format!("{method} / {} ×{k} n = {n}", broad.name()));
-            let pool = &pools[usize::from(k > 1)];
-            let row = pool.install(|| measure(method, broad, n, batch_seconds));
+            let row = if k > 1 {
+                let pools = (&pools[0], &pools[1]);
+                measure_against_one_thread(method, broad, n, batch_seconds, pools)
+            } else {
+                pools[0].install(|| measure(method, broad, n, batch_seconds))
+            };
             last = Some((n, row.ns_per_particle_step));
             rows.push(row);
         }
@@ -326,6 +336,84 @@ pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f
         bytes_per_particle: bytes as f64 / n as f64,
         collisions_per_second: collisions as f64 / elapsed.max(1e-12),
         steps,
+        speed_up: None,
+    }
+}
+
+/// [`measure`] on `threads`, and the speed-up over one thread measured
+/// against a twin world on `one` (a pool of one thread), the two stepped
+/// alternately batch by batch (which goes first alternating too): the
+/// machine's load drifts over minutes, and a ratio of runs minutes apart
+/// carries that drift. Timed batches as in [`measure`]; the speed-up is the
+/// median of the batches' ratios.
+pub fn measure_against_one_thread(
+    method: Method,
+    broad: BroadPhaseKind,
+    n: usize,
+    batch_seconds: f64,
+    (one, threads): (&rayon::ThreadPool, &rayon::ThreadPool),
+) -> Row {
+    let gas = || {
+        Gas {
+            count: n,
+            ..Gas::default()
+        }
+        .build_fixed(method, broad)
+    };
+    let before = live_bytes();
+    let mut world = threads.install(gas);
+    let warm = Instant::now();
+    threads.install(|| {
+        for _ in 0..2 {
+            world.step(DT);
+        }
+    });
+    let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
+    let bytes = live_bytes().saturating_sub(before);
+    let mut twin = one.install(gas);
+    one.install(|| {
+        for _ in 0..2 {
+            twin.step(DT);
+        }
+    });
+    let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
+    let time = |pool: &rayon::ThreadPool, world: &mut impulse::World| {
+        pool.install(|| {
+            let t = Instant::now();
+            for _ in 0..batch {
+                world.step(DT);
+            }
+            t.elapsed().as_secs_f64()
+        })
+    };
+    let (mut samples, mut ratios) = (Vec::new(), Vec::new());
+    let (mut steps, mut collisions, mut elapsed) = (0u64, 0u64, 0.0f64);
+    for round in 0..5 {
+        let before = world.total_pair_collisions;
+        let (secs, serial) = if round % 2 == 0 {
+            let secs = time(threads, &mut world);
+            (secs, time(one, &mut twin))
+        } else {
+            let serial = time(one, &mut twin);
+            (time(threads, &mut world), serial)
+        };
+        samples.push(secs * 1e9 / (batch as f64 * n as f64));
+        ratios.push(serial / secs.max(1e-12));
+        steps += batch;
+        collisions += world.total_pair_collisions - before;
+        elapsed += secs;
+    }
+    Row {
+        method,
+        broad_phase: broad.name().into(),
+        threads: threads.current_num_threads(),
+        parallel: world.plan().is_some_and(|p| p.parallel),
+        n,
+        ns_per_particle_step: median(&mut samples),
+        bytes_per_particle: bytes as f64 / n as f64,
+        collisions_per_second: collisions as f64 / elapsed.max(1e-12),
+        steps,
+        speed_up: Some(median(&mut ratios)),
     }
 }
 
@@ -361,13 +449,14 @@ fn table(rows: &[Row], skipped: &[String]) -> String {
         let serial = rows.iter().find(|s| {
             s.threads == 1 && s.method == r.method && s.broad_phase == r.broad_phase && s.n == r.n
         });
-        let speed_up = match serial {
-            Some(s) if r.threads > 1 => format!(
-                "{:.2}{}",
-                s.ns_per_particle_step / r.ns_per_particle_step,
-                if r.parallel { "" } else { " (serial)" }
-            ),
-            _ => String::new(),
+        let ratio = r.speed_up.or_else(|| {
+            serial
+                .filter(|_| r.threads > 1)
+                .map(|s| s.ns_per_particle_step / r.ns_per_particle_step)
+        });
+        let speed_up = match ratio {
+            Some(ratio) => format!("{ratio:.2}{}", if r.parallel { "" } else { " (serial)" }),
+            None => String::new(),
         };
         let _ = writeln!(
             out,
@@ -387,12 +476,12 @@ fn table(rows: &[Row], skipped: &[String]) -> String {
 
 fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
     let mut csv = String::from(
-        "method,broad_phase,threads,parallel,n,ns_per_particle_step,bytes_per_particle,collisions_per_second,steps\n",
+        "method,broad_phase,threads,parallel,n,ns_per_particle_step,bytes_per_particle,collisions_per_second,steps,speed_up\n",
     );
     for r in rows {
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{}",
             r.method,
             r.broad_phase,
             r.threads,
@@ -401,7 +490,8 @@ fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
             r.ns_per_particle_step,
             r.bytes_per_particle,
             r.collisions_per_second,
-            r.steps
+            r.steps,
+            r.speed_up.map(|x| x.to_string()).unwrap_or_default()
         );
     }
     Ok(crate::files::write_atomically(path, csv.as_bytes())?)
@@ -478,6 +568,30 @@ mod tests {
         assert_eq!(median(&mut [3.0, 1.0, 2.0]), 2.0);
         assert_eq!(median(&mut [4.0, 1.0, 2.0, 3.0]), 2.5);
         assert!(median(&mut []).is_nan());
+    }
+
+    #[test]
+    fn the_speed_up_is_measured_against_a_one_thread_twin_and_shown() {
+        let (one, two) = (pool(1).expect("a pool"), pool(2).expect("a pool"));
+        let row = measure_against_one_thread(
+            Method::Impulse,
+            BroadPhaseKind::Grid,
+            200,
+            0.001,
+            (&one, &two),
+        );
+        assert_eq!(row.threads, 2);
+        let ratio = row.speed_up.expect("a speed-up");
+        // 200 discs stay serial, so the ratio is near 1 but it is measured:
+        // a wide bound, only a wrong computation (or none) falls outside.
+        assert!(ratio > 0.2 && ratio < 5.0, "{row:?}");
+        let serial = one.install(|| measure(Method::Impulse, BroadPhaseKind::Grid, 200, 0.001));
+        let shown = table(&[serial, row], &[]);
+        let line = shown
+            .lines()
+            .find(|l| l.contains("2 threads"))
+            .expect("its line");
+        assert!(line.contains(&format!("{ratio:.2} (serial)")), "{line}");
     }
 
     #[test]

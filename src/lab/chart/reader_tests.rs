@@ -39,6 +39,7 @@ fn bench_rows() -> Vec<Row> {
                 bytes_per_particle: 260.0,
                 collisions_per_second: 1e5,
                 steps: 100,
+                speed_up: None,
             });
         }
     }
@@ -362,6 +363,7 @@ fn charts_from_csv() {
             bytes_per_particle: f[6].parse().unwrap(),
             collisions_per_second: f[7].parse().unwrap(),
             steps: f[8].parse().unwrap(),
+            speed_up: f.get(9).and_then(|x| x.parse().ok()),
         })
         .collect();
     bench::write_bench_chart(&rows, &out).unwrap();
