@@ -107,6 +107,28 @@ fn one_and_two_threads_step_bit_for_bit_alike_for_every_grid_method() {
     }
 }
 
+/// The grid's rebuild cuts its work into one part per thread (runs of discs,
+/// of bands of rows, ranges of first index): with 3 threads, and with 16,
+/// more than the gas has chunks of discs or bands of rows (some parts
+/// empty), it still steps bit for bit as serially.
+#[test]
+fn any_number_of_threads_steps_bit_for_bit_alike() {
+    let world = gas(Method::Impulse, Boundary::Periodic, false);
+    let serial = run(world.clone(), 1, Setting::Auto, 40);
+    for threads in [3, 16] {
+        let many = run(world.clone(), threads, Setting::Auto, 40);
+        assert!(many.parallel, "{threads} threads: the parallel path ran");
+        assert_eq!(
+            many,
+            Outcome {
+                parallel: true,
+                ..serial
+            },
+            "{threads} threads"
+        );
+    }
+}
+
 #[test]
 fn auto_runs_small_scenes_on_one_thread_and_says_so() {
     let mut small = gas(Method::Impulse, Boundary::Periodic, false);
