@@ -380,12 +380,13 @@ fn pair(a: u32, b: u32) -> Pair {
 /// Replaces `out` with `raw` (distinct pairs with `i < j < n`) sorted by
 /// `(i, j)`: a counting sort on `i`, then each particle's few partners sorted.
 fn sort_pairs(raw: &[Pair], n: usize, ends: &mut Vec<u32>, out: &mut Vec<Pair>) {
-    out.clear();
     if raw.len() <= 32 {
+        out.clear();
         out.extend_from_slice(raw);
         out.sort_unstable();
         return;
     }
+    // Every slot is written: no need to clear (and zero) `out` first.
     out.resize(raw.len(), Pair::default());
     sort_pairs_into(&[raw], 0, n, ends, out);
 }
@@ -461,7 +462,7 @@ fn sort_pairs_in_parts(
     let lengths: Vec<usize> = (0..parts)
         .map(|t| by_part.iter().map(|source| source[t].len()).sum())
         .collect();
-    out.clear();
+    // Every slot is written: no need to clear (and zero) `out` first.
     out.resize(lengths.iter().sum(), Pair::default());
     let mut stretches = Vec::with_capacity(parts);
     let mut rest = &mut out[..];

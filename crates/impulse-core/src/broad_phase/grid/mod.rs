@@ -178,7 +178,8 @@ impl BroadPhase for Grid {
         size: DVec2,
         out: &mut Vec<Pair>,
     ) {
-        out.clear();
+        // `out` keeps its length until the sort: it is overwritten whole,
+        // and resizing it from empty would zero it all first.
         self.raw.clear();
         let Some(mut space) = Space::new(boundary, size) else {
             let inflated = super::inflated(particles, inflate);
@@ -190,6 +191,7 @@ impl BroadPhase for Grid {
         let stats = self.gather(particles, &mut space);
         space.finish();
         if self.discs.len() < 2 {
+            out.clear();
             return;
         }
 
