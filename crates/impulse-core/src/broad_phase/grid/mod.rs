@@ -64,8 +64,6 @@ use crate::parallel::BAND_ROWS;
 use crate::parallel::CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
-#[cfg(feature = "parallel")]
-use rayon::prelude::*;
 use std::ops::Range;
 
 mod sweep;
@@ -350,13 +348,18 @@ impl Grid {
         crate::parallel::pool_or_here!(
             self.parallel,
             {
-                let chunks = particles
-                    .par_chunks(CHUNK)
-                    .zip(self.discs.par_chunks_mut(CHUNK));
-                chunks
-                    .enumerate()
-                    .map(chunk)
-                    .collect_into_vec(&mut self.gathered);
+                // Thread k gathers the run of chunks it integrates and checks
+                // (`parallel::on_each_part`): those particles are in its caches.
+                let per_thread =
+                    crate::parallel::on_each_part(&mut self.discs, CHUNK, |first, ds| {
+                        let n = particles.len();
+                        let ps =
+                            &particles[(first * CHUNK).min(n)..(first * CHUNK + ds.len()).min(n)];
+                        let chunks = ps.chunks(CHUNK).zip(ds.chunks_mut(CHUNK));
+                        let chunks = (first..).zip(chunks);
+                        chunks.map(chunk).collect::<Vec<_>>()
+                    });
+                self.gathered.extend(per_thread.into_iter().flatten());
             },
             {
                 let chunks = particles.chunks(CHUNK).zip(self.discs.chunks_mut(CHUNK));
@@ -600,9 +603,25 @@ impl Grid {
     #[cfg(feature = "parallel")]
     fn sort_into_rows_in_parts(&mut self, layout: &Layout, parts: usize) -> u32 {
         let ny = layout.ny;
-        let run = self.discs.len().div_ceil(parts).max(1);
-        let runs: Vec<&mut [Disc]> = self.discs.chunks_mut(run).collect();
-        let counts: Vec<Vec<u32>> = crate::parallel::on_each_thread(pad(runs, parts), |discs| {
+        // Thread k takes the discs it gathered (`on_each_part`'s runs of
+        // chunks; they line up unless gathering skipped a disc that was not
+        // finite, which costs only where the discs are cached). Any runs in
+        // order give the same rows.
+        let chunks = self.discs.len().div_ceil(CHUNK);
+        let lengths: Vec<usize> = (0..parts)
+            .map(|k| {
+                let run = crate::parallel::run_of(k, parts, chunks);
+                (run.end * CHUNK).min(self.discs.len()) - (run.start * CHUNK).min(self.discs.len())
+            })
+            .collect();
+        let mut runs: Vec<&mut [Disc]> = Vec::with_capacity(parts);
+        let mut rest = &mut self.discs[..];
+        for &len in &lengths {
+            let (run, after) = std::mem::take(&mut rest).split_at_mut(len);
+            runs.push(run);
+            rest = after;
+        }
+        let counts: Vec<Vec<u32>> = crate::parallel::on_each_thread(runs, |discs| {
             let mut count = vec![0u32; ny];
             for d in discs {
                 let cy = layout.row(d);
@@ -634,8 +653,14 @@ impl Grid {
                 rest = after;
             }
         }
-        let runs: Vec<&[Disc]> = self.discs.chunks(run).collect();
-        let work: Vec<_> = pad(runs, parts).into_iter().zip(stretches).collect();
+        let mut runs: Vec<&[Disc]> = Vec::with_capacity(parts);
+        let mut rest = &self.discs[..];
+        for &len in &lengths {
+            let (run, after) = rest.split_at(len);
+            runs.push(run);
+            rest = after;
+        }
+        let work: Vec<_> = runs.into_iter().zip(stretches).collect();
         crate::parallel::on_each_thread(work, |(discs, mut rows)| {
             for d in discs {
                 let row = &mut rows[d.tag as usize];
@@ -708,14 +733,6 @@ fn sort_rows(
         }
         row.copy_from_slice(&row_buf[..row.len()]);
     }
-}
-
-/// `runs` made `parts` long with empty runs (a few discs cut into fewer
-/// runs than threads).
-#[cfg(feature = "parallel")]
-fn pad<S: Default>(mut runs: Vec<S>, parts: usize) -> Vec<S> {
-    runs.resize_with(parts, S::default);
-    runs
 }
 
 /// Cells for a periodic box of size `period`, at least `2·radius` wide.
