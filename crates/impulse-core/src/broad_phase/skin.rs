@@ -104,10 +104,17 @@ impl<B: BroadPhase> Skinned<B> {
         crate::parallel::pool_or_here!(
             self.parallel,
             {
-                particles
-                    .par_chunks(CHUNK)
-                    .map(radii)
-                    .collect_into_vec(&mut self.sums);
+                // Thread k sums the run of chunks it checks every step.
+                let count = particles.len().div_ceil(CHUNK);
+                let per_thread = crate::parallel::on_each_run(count, |run| {
+                    let span = (run.start * CHUNK).min(particles.len())
+                        ..(run.end * CHUNK).min(particles.len());
+                    particles[span]
+                        .chunks(CHUNK)
+                        .map(radii)
+                        .collect::<Vec<f64>>()
+                });
+                self.sums.extend(per_thread.into_iter().flatten());
             },
             {
                 self.sums.extend(particles.chunks(CHUNK).map(radii));
