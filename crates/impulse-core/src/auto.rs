@@ -217,17 +217,14 @@ fn substeps_unclamped(max_speed: f64, min_r: f64, laws: &Laws, dt: f64, n: usize
 pub fn plan(particles: &[Particle], laws: &Laws, choices: Choices, dt: f64) -> Plan {
     let n = particles.len();
     let mut reasons = Vec::new();
-    let (mut min_r, mut min_m, mut max_m, mut max_speed_sq) =
+    let (mut min_r, mut min_m, mut max_m, mut max_speed) =
         (f64::INFINITY, f64::INFINITY, 0.0f64, 0.0f64);
     for p in particles {
         min_r = min_r.min(p.radius);
         min_m = min_m.min(p.mass);
         max_m = max_m.max(p.mass);
-        max_speed_sq = max_speed_sq.max(p.vel.length_squared());
+        max_speed = max_speed.max(p.vel.length());
     }
-    // One root for the fastest instead of one per disc (the root is monotone,
-    // so it is the same number).
-    let max_speed = max_speed_sq.sqrt();
     let mass_ratio = if n > 0 { max_m / min_m } else { 1.0 };
 
     let method = match choices.method {
