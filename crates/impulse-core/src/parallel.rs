@@ -231,6 +231,35 @@ pub(crate) fn run_of(k: usize, threads: usize, count: usize) -> std::ops::Range<
     count * k / threads..count * (k + 1) / threads
 }
 
+/// For each of `threads` threads, the items of `0..len` in its [run](run_of)
+/// of chunks of `chunk` items: contiguous, in thread order, covering all.
+#[cfg(feature = "parallel")]
+pub(crate) fn spans_of(len: usize, chunk: usize, threads: usize) -> Vec<std::ops::Range<usize>> {
+    let count = len.div_ceil(chunk);
+    (0..threads)
+        .map(|k| {
+            let run = run_of(k, threads, count);
+            (run.start * chunk).min(len)..(run.end * chunk).min(len)
+        })
+        .collect()
+}
+
+/// `items` cut into consecutive parts of the lengths of `spans` (contiguous
+/// spans in order from 0, as [`spans_of`] gives).
+#[cfg(feature = "parallel")]
+pub(crate) fn split_by<'a, T>(
+    mut items: &'a mut [T],
+    spans: &[std::ops::Range<usize>],
+) -> Vec<&'a mut [T]> {
+    let mut parts = Vec::with_capacity(spans.len());
+    for span in spans {
+        let (part, rest) = std::mem::take(&mut items).split_at_mut(span.len());
+        parts.push(part);
+        items = rest;
+    }
+    parts
+}
+
 /// `f(run)` on every thread of the pool, each with its own [run](run_of)
 /// of the chunk indices `0..count`; the results in thread order.
 ///
@@ -259,20 +288,9 @@ where
     F: Fn(usize, &mut [T]) -> R + Sync,
 {
     let threads = rayon::current_num_threads();
-    let count = items.len().div_ceil(chunk);
-    let mut parts = Vec::with_capacity(threads);
-    let mut rest = items;
-    for k in 0..threads {
-        let run = run_of(k, threads, count);
-        let len = if k + 1 == threads {
-            rest.len()
-        } else {
-            (run.len() * chunk).min(rest.len())
-        };
-        let (part, tail) = std::mem::take(&mut rest).split_at_mut(len);
-        parts.push((run.start, part));
-        rest = tail;
-    }
+    let spans = spans_of(items.len(), chunk, threads);
+    let firsts = spans.iter().map(|span| span.start / chunk);
+    let parts: Vec<(usize, &mut [T])> = firsts.zip(split_by(items, &spans)).collect();
     on_each_thread(parts, |(first, part)| f(first, part))
 }
 

@@ -141,19 +141,15 @@ impl<B: BroadPhase> Skinned<B> {
             {
                 // Thread k takes the run of chunks it checks every step
                 // (`parallel::on_each_run`), so they stay in its caches.
-                let threads = crate::parallel::threads();
-                let chunks = n.div_ceil(CHUNK);
-                let mut work = Vec::with_capacity(threads);
-                let (mut anchors, mut radii) = (&mut self.anchors[..], &mut self.radii[..]);
-                for k in 0..threads {
-                    let run = crate::parallel::run_of(k, threads, chunks);
-                    let span = (run.start * CHUNK).min(n)..(run.end * CHUNK).min(n);
-                    let (these, rest) = std::mem::take(&mut anchors).split_at_mut(span.len());
-                    anchors = rest;
-                    let (those, rest) = std::mem::take(&mut radii).split_at_mut(span.len());
-                    radii = rest;
-                    work.push((&particles[span], these, those));
-                }
+                let spans = crate::parallel::spans_of(n, CHUNK, crate::parallel::threads());
+                let anchors = crate::parallel::split_by(&mut self.anchors, &spans);
+                let radii = crate::parallel::split_by(&mut self.radii, &spans);
+                let discs = spans.iter().map(|span| &particles[span.clone()]);
+                let work: Vec<_> = discs
+                    .zip(anchors)
+                    .zip(radii)
+                    .map(|((d, a), r)| (d, a, r))
+                    .collect();
                 crate::parallel::on_each_thread(work, |(discs, anchors, radii)| {
                     take(discs, anchors, radii)
                 });

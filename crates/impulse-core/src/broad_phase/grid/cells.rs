@@ -44,24 +44,24 @@ impl Grid {
             {
                 // Thread k sorts the rows of its run of bands, the run it
                 // then sweeps (`on_each_part` over the bands).
-                let threads = crate::parallel::threads();
-                let mut work = Vec::with_capacity(threads);
-                let mut sorted = &mut self.sorted[..];
-                let mut ends = &mut self.starts[1..];
-                let mut scratch = &mut self.bands[..];
-                for k in 0..threads {
-                    let run = crate::parallel::run_of(k, threads, bands);
-                    let rows = (run.start * BAND_ROWS).min(ny)..(run.end * BAND_ROWS).min(ny);
-                    let discs = (row_starts[rows.end] - row_starts[rows.start]) as usize;
-                    let (these, rest) = std::mem::take(&mut sorted).split_at_mut(discs);
-                    sorted = rest;
-                    let (these_ends, rest) =
-                        std::mem::take(&mut ends).split_at_mut(rows.len() * nx);
-                    ends = rest;
-                    let (these_bands, rest) = std::mem::take(&mut scratch).split_at_mut(run.len());
-                    scratch = rest;
-                    work.push((rows, these, these_ends, these_bands.first_mut()));
-                }
+                use crate::parallel::{spans_of, split_by, threads};
+                let runs = spans_of(bands, 1, threads());
+                let rows: Vec<Range<usize>> = runs
+                    .iter()
+                    .map(|run| (run.start * BAND_ROWS).min(ny)..(run.end * BAND_ROWS).min(ny))
+                    .collect();
+                let at = |r: usize| row_starts[r] as usize;
+                let discs: Vec<_> = rows.iter().map(|r| at(r.start)..at(r.end)).collect();
+                let cells: Vec<_> = rows.iter().map(|r| r.start * nx..r.end * nx).collect();
+                let sorted = split_by(&mut self.sorted, &discs);
+                let ends = split_by(&mut self.starts[1..], &cells);
+                let scratch = split_by(&mut self.bands, &runs);
+                let work: Vec<_> = rows
+                    .into_iter()
+                    .zip(sorted)
+                    .zip(ends.into_iter().zip(scratch))
+                    .map(|((rows, sorted), (ends, bands))| (rows, sorted, ends, bands.first_mut()))
+                    .collect();
                 crate::parallel::on_each_thread(work, |(rows, sorted, ends, band)| {
                     if let Some(band) = band {
                         sort_rows(layout, rows, row_starts, sorted, ends, band);
@@ -130,20 +130,8 @@ impl Grid {
         // chunks; they line up unless gathering skipped a disc that was not
         // finite, which costs only where the discs are cached). Any runs in
         // order give the same rows.
-        let chunks = self.discs.len().div_ceil(CHUNK);
-        let lengths: Vec<usize> = (0..parts)
-            .map(|k| {
-                let run = crate::parallel::run_of(k, parts, chunks);
-                (run.end * CHUNK).min(self.discs.len()) - (run.start * CHUNK).min(self.discs.len())
-            })
-            .collect();
-        let mut runs: Vec<&mut [Disc]> = Vec::with_capacity(parts);
-        let mut rest = &mut self.discs[..];
-        for &len in &lengths {
-            let (run, after) = std::mem::take(&mut rest).split_at_mut(len);
-            runs.push(run);
-            rest = after;
-        }
+        let spans = crate::parallel::spans_of(self.discs.len(), CHUNK, parts);
+        let runs = crate::parallel::split_by(&mut self.discs, &spans);
         let counts: Vec<Vec<u32>> = crate::parallel::on_each_thread(runs, |discs| {
             let mut count = vec![0u32; ny];
             for d in discs {
@@ -176,14 +164,8 @@ impl Grid {
                 rest = after;
             }
         }
-        let mut runs: Vec<&[Disc]> = Vec::with_capacity(parts);
-        let mut rest = &self.discs[..];
-        for &len in &lengths {
-            let (run, after) = rest.split_at(len);
-            runs.push(run);
-            rest = after;
-        }
-        let work: Vec<_> = runs.into_iter().zip(stretches).collect();
+        let runs = spans.iter().map(|span| &self.discs[span.clone()]);
+        let work: Vec<_> = runs.zip(stretches).collect();
         crate::parallel::on_each_thread(work, |(discs, mut rows)| {
             for d in discs {
                 let row = &mut rows[d.tag as usize];
