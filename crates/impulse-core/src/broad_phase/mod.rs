@@ -432,22 +432,32 @@ fn sort_pairs_into(
     }
 }
 
-/// Which of `parts` equal ranges of first indices `0..n` pair `p` falls in.
+/// Appends `pairs` to `by_part` (cleared first, `parts` long after), each
+/// to the list of the range of first indices it falls in (see
+/// [`key_part_start`]). The range is found by comparing with the ranges'
+/// starts, without a division or a branch per pair.
 #[cfg(feature = "parallel")]
-#[inline(always)]
-fn key_part(p: &Pair, parts: usize, n: usize) -> usize {
-    (u64::from(p.i) * parts as u64 / n as u64) as usize
+fn split_by_key_part(pairs: &[Pair], parts: usize, n: usize, by_part: &mut Vec<Vec<Pair>>) {
+    by_part.resize_with(parts, Vec::new);
+    by_part.truncate(parts);
+    by_part.iter_mut().for_each(Vec::clear);
+    let starts: Vec<u32> = (1..parts)
+        .map(|t| key_part_start(t, parts, n) as u32)
+        .collect();
+    for &p in pairs {
+        let part: usize = starts.iter().map(|&s| usize::from(p.i >= s)).sum();
+        by_part[part].push(p);
+    }
 }
 
-/// The first index of key range `part` of `parts` over `0..n` (see
-/// [`key_part`]).
+/// The first index of key range `part` of `parts` equal ranges over `0..n`.
 #[cfg(feature = "parallel")]
 fn key_part_start(part: usize, parts: usize, n: usize) -> usize {
     (part * n).div_ceil(parts)
 }
 
 /// [`sort_pairs`] on rayon's pool: `by_part` holds, per source, its pairs
-/// already split by [`key_part`] into `parts` ranges, one per pool thread;
+/// already split by [`split_by_key_part`] into `parts` ranges, one per pool thread;
 /// each range is sorted on its own thread into its own stretch of `out`. Since the pairs are
 /// distinct and the order `(i, j)` total, the list is the one
 /// [`sort_pairs`] makes of the same pairs.
@@ -570,9 +580,12 @@ mod tests {
                 let sources: Vec<Vec<Vec<Pair>>> = raw
                     .chunks(raw.len().div_ceil(3))
                     .map(|chunk| {
-                        let mut split = vec![Vec::new(); parts];
-                        for p in chunk {
-                            split[key_part(p, parts, n as usize)].push(*p);
+                        let mut split = Vec::new();
+                        split_by_key_part(chunk, parts, n as usize, &mut split);
+                        for (t, list) in split.iter().enumerate() {
+                            let range = key_part_start(t, parts, n as usize)
+                                ..key_part_start(t + 1, parts, n as usize);
+                            assert!(list.iter().all(|p| range.contains(&(p.i as usize))));
                         }
                         split
                     })

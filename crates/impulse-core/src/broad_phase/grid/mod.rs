@@ -231,11 +231,7 @@ impl BroadPhase for Grid {
                             band.raw.clear();
                             let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
                             sweep(rows, &mut band.raw);
-                            band.by_part.resize_with(parts, Vec::new);
-                            band.by_part.iter_mut().for_each(Vec::clear);
-                            for p in &band.raw {
-                                band.by_part[super::key_part(p, parts, n)].push(*p);
-                            }
+                            super::split_by_key_part(&band.raw, parts, n, &mut band.by_part);
                         }
                     });
                     if self.big.is_empty() {
