@@ -242,14 +242,38 @@ pub fn draw_readouts(
     }
     if labels.len() < wanted {
         // Never silently fewer: say how many, in the world's corner.
+        // Wrapped to the world's width: at a projector's text size one line
+        // ran off the right edge.
         let note = tr!("readouts-culled", shown = labels.len(), wanted = wanted);
         let (lo, hi) = camera.screen_rect();
-        let extent = text.measure(&note, size);
-        let at = vec2(lo.x as f32 + 8.0, hi.y as f32 - extent.y - 8.0);
-        draw_rectangle(at.x - 4.0, at.y, extent.x + 8.0, extent.y, background);
-        text.draw(&note, at, size, ink);
+        let room = (hi.x - lo.x) as f32 - 16.0;
+        let lines = wrap_words(&note, room, |line| text.measure(line, size).x);
+        let line_height = text.measure(&note, size).y;
+        let top = hi.y as f32 - 8.0 - line_height * lines.len() as f32;
+        for (k, line) in lines.iter().enumerate() {
+            let at = vec2(lo.x as f32 + 8.0, top + line_height * k as f32);
+            let width = text.measure(line, size).x;
+            draw_rectangle(at.x - 4.0, at.y, width + 8.0, line_height, background);
+            text.draw(line, at, size, ink);
+        }
     }
     (labels.len(), wanted)
+}
+
+/// `text` cut into lines no wider than `width` (as `measure` finds them),
+/// breaking between words; a word wider than that gets a line of its own.
+fn wrap_words(text: &str, width: f32, measure: impl Fn(&str) -> f32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if measure(&format!("{line} {word}")) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
 
 /// The launch preview's label: the speed, or that there is no room.
@@ -265,4 +289,33 @@ pub fn launch_label(text: &WorldText, label: &str, tip: Vec2, look: Look) {
         color(look.colors.label_background),
     );
     text.draw(label, at, size, color(look.colors.text));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap_words;
+
+    /// Ten pixels a character.
+    fn measure(s: &str) -> f32 {
+        10.0 * s.chars().count() as f32
+    }
+
+    #[test]
+    fn a_long_note_is_cut_between_words_and_loses_none() {
+        let note = "values beside 0 of 1 discs: no room for the rest (zoom in with the wheel)";
+        for width in [60.0, 120.0, 200.0, 1e4] {
+            let lines = wrap_words(note, width, measure);
+            assert_eq!(lines.join(" "), note, "{width}");
+            for line in &lines {
+                // Only a single word may be wider (none is, above 60 px).
+                assert!(measure(line) <= width, "{line:?} at {width}");
+            }
+            if width >= 1e4 {
+                assert_eq!(lines.len(), 1);
+            }
+        }
+        assert_eq!(wrap_words("a bb ccc", 50.0, measure), ["a bb", "ccc"]);
+        assert_eq!(wrap_words("enormous x", 30.0, measure), ["enormous", "x"]);
+        assert!(wrap_words("", 30.0, measure).is_empty());
+    }
 }

@@ -180,7 +180,15 @@ impl View for TopBar {
                     "L = {}",
                     with_unit(m.angular_momentum, 3, "kg·m²/s")
                 ))
-                .hover(tr!("angular-momentum-hover")),
+                .hover(if world.laws.boundary == impulse::Boundary::Periodic {
+                    format!(
+                        "{}\n\n{}",
+                        tr!("angular-momentum-hover"),
+                        tr!("totals-hover-wrapping")
+                    )
+                } else {
+                    tr!("angular-momentum-hover")
+                }),
             );
         }
         if world.resting_contacts > 0 {

@@ -34,7 +34,19 @@ impl View for Totals {
         } else {
             (tr!("totals-momentum"), tr!("totals-angular-momentum"))
         };
+        // Across a wrapping edge a disc's position about (0, 0) jumps, and
+        // L with it: its change is no measure of the collisions there.
+        let wrapping = model.world.laws.boundary == impulse::Boundary::Periodic;
         let drift = match (model.record.totals.drift(), samples.first(), samples.last()) {
+            (Some(_), Some(a), Some(b)) if wrapping => tr!(
+                "totals-change-wrapping",
+                since = with_unit(a.time, 2, "s"),
+                p_name = p_name,
+                momentum = vector(b.momentum - a.momentum, 3, "kg·m/s"),
+                l_name = l_name,
+                e_name = energy_name,
+                energy = with_unit(b.energy() - a.energy(), 3, "J")
+            ),
             (Some(_), Some(a), Some(b)) => tr!(
                 "totals-change",
                 since = with_unit(a.time, 2, "s"),
@@ -58,14 +70,26 @@ impl View for Totals {
             energies.push((tr!("totals-ke-sum"), tr!("totals-sum"), total_color));
         }
         ui.horizontal_wrapped(|ui| {
-            ui.label(drift).on_hover_text(tr!("totals-hover"));
+            let hover = if wrapping {
+                format!(
+                    "{}\n\n{}",
+                    tr!("totals-hover"),
+                    tr!("totals-hover-wrapping")
+                )
+            } else {
+                tr!("totals-hover")
+            };
+            ui.label(drift).on_hover_text(hover);
             if compact {
                 let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
                 let short = energies
                     .iter()
                     .map(|(_, name, color)| (name.as_str(), *color));
                 for (name, color) in names.into_iter().chain(short) {
-                    ui.label(RichText::new(format!("— {name}")).color(color).strong());
+                    // Whole, on the next line if need be: never "—" here
+                    // and its name there.
+                    let name = RichText::new(format!("— {name}")).color(color).strong();
+                    ui.add(egui::Label::new(name).wrap_mode(egui::TextWrapMode::Extend));
                 }
             }
         });
