@@ -2,7 +2,7 @@
 //!
 //! On the desktop it is `std::time::Instant`. In a browser
 //! (`wasm32-unknown-unknown`) `Instant::now` panics and there is no clock
-//! without the page's help, so the caller installs one ([`set_clock`],
+//! without the page's help, so the caller installs one (`set_clock`,
 //! seconds from any fixed origin); until then every timing reads zero. The
 //! core imports nothing from the page itself, so it runs under any wasm
 //! host.

@@ -140,7 +140,7 @@ mod awake {
 /// Runs `f` (a step) with the pool's other threads kept awake, when
 /// `parallel`: between the step's parallel stages each waits for the next
 /// by spinning instead of sleeping, and it goes on waiting for
-/// [`HELPER_PATIENCE`] after the step. A pool thread that sleeps takes
+/// `HELPER_PATIENCE` (1 ms) after the step. A pool thread that sleeps takes
 /// 60–400 µs to wake on this machine (a 2-core VM): at 10⁵ discs, where a
 /// step has half a dozen stages of about 100 µs, two threads were slower
 /// than one. Which thread runs which part never changes a result
@@ -260,7 +260,7 @@ pub(crate) fn split_by<'a, T>(
     parts
 }
 
-/// `f(run)` on every thread of the pool, each with its own [run](run_of)
+/// `f(run)` on every thread of the pool, each with its own run (`run_of`)
 /// of the chunk indices `0..count`; the results in thread order.
 ///
 /// Why not work stealing: on this machine (two cores of a VM) a core reads
@@ -278,7 +278,7 @@ where
 }
 
 /// `f(first, part)` on every thread of the pool, each with its part of
-/// `items`: whole chunks of `chunk` items, the same [run](run_of) every
+/// `items`: whole chunks of `chunk` items, the same run (`run_of`) every
 /// time, starting at chunk `first`. The results in thread order.
 #[cfg(feature = "parallel")]
 pub fn on_each_part<T, R, F>(items: &mut [T], chunk: usize, f: F) -> Vec<R>

@@ -18,7 +18,7 @@
 //!   dead (its last kinetic energy, under ½·m·g·r/1000, is lost) and
 //!   neither moves nor feels gravity until woken.
 //! - **Meeting a sleeper.** A moving disc meets a sleeping one as a still
-//!   disc, at the instant the quartic of [`super::kinematics`] gives. If
+//!   disc, at the instant the quartic of the `kinematics` module gives. If
 //!   the two-disc collision would set the sleeper moving faster than its
 //!   sleep speed, it wakes and the collision is the ordinary one; if not,
 //!   the sleeper stays put as the floor would, and the moving disc bounces
@@ -64,7 +64,7 @@ pub const SLEEP_LIFT: f64 = 1e-3;
 pub const SUPPORT_GAP: f64 = 1e-2;
 
 /// How far a disc resting on a sleeper that cannot hold it steps down the
-/// tangent, as a fraction of its radius ([`Sim::slide_off`]).
+/// tangent, as a fraction of its radius (`Sim::slide_off`).
 pub const SLIDE_STEP: f64 = 1e-4;
 
 /// The 2D cross product a × b.
