@@ -303,8 +303,25 @@ impl TopBar {
                 // What the name and the other items may take, "… more" kept
                 // room for.
                 let free = ui.available_width() - more_width - fixed;
-                let name_width = galley(ui, &name.text).size().x.min((0.6 * free).max(40.0));
-                let mut room = free - name_width - spacing;
+                let full_name = galley(ui, &name.text).size().x;
+                let name_width = full_name.min((0.6 * free).max(40.0));
+                // The other items that fit beside the name at that width, in
+                // order (the last may use the room kept for "… more")...
+                let galleys: Vec<_> = optional.iter().map(|item| galley(ui, &item.text)).collect();
+                let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
+                for (k, g) in galleys.iter().enumerate() {
+                    let last = k + 1 == galleys.len();
+                    let need = g.size().x + spacing - if last { more_width } else { 0.0 };
+                    if need > room {
+                        break;
+                    }
+                    room -= g.size().x + spacing;
+                    used += g.size().x + spacing;
+                    shown += 1;
+                }
+                // ... and the room they leave goes back to the name, so that
+                // it is cut only where the line is really full.
+                let name_width = full_name.min((free - used - spacing).max(name_width));
                 ui.spacing_mut().item_spacing.x = spacing;
                 ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
                 // The name gives way first: it truncates, with the whole on hover.
@@ -320,17 +337,11 @@ impl TopBar {
                     }
                 }
                 let mut hidden = Vec::new();
-                let count = optional.len();
-                for (k, item) in optional.into_iter().enumerate() {
-                    let g = galley(ui, &item.text);
-                    // The last item may use the room kept for "… more".
-                    let last = k + 1 == count;
-                    let need = g.size().x + spacing - if last { more_width } else { 0.0 };
-                    if !hidden.is_empty() || need > room {
+                for (k, (item, g)) in optional.into_iter().zip(galleys).enumerate() {
+                    if k >= shown {
                         hidden.push(item.text.text().to_string());
                         continue;
                     }
-                    room -= g.size().x + spacing;
                     let r = ui.label(g);
                     let r = match item.hover {
                         Some(h) => r.on_hover_text(h),
