@@ -31,8 +31,19 @@ impl Grid {
         // (each row's counts are zeroed as it is sorted).
         self.starts.resize(nx * ny + 1, 0);
         self.starts[0] = 0;
-        let bands =
-            crate::parallel::pool_or_here!(self.parallel, { ny.div_ceil(BAND_ROWS) }, { 1 });
+        self.band_rows.clear();
+        crate::parallel::pool_or_here!(
+            self.parallel,
+            {
+                let threads = crate::parallel::threads().max(1);
+                let total = u64::from(self.row_starts[ny]);
+                balanced_bands(&self.row_starts[..ny], total, threads, &mut self.band_rows);
+            },
+            {
+                self.band_rows.extend([0, ny]);
+            }
+        );
+        let bands = self.band_rows.len() - 1;
         self.bands.resize_with(bands, Band::default);
         for band in &mut self.bands {
             band.row_buf.resize(longest as usize, Disc::default());
@@ -46,9 +57,10 @@ impl Grid {
                 // then sweeps (`on_each_part` over the bands).
                 use crate::parallel::{spans_of, split_by, threads};
                 let runs = spans_of(bands, 1, threads());
+                let band_rows = &self.band_rows;
                 let rows: Vec<Range<usize>> = runs
                     .iter()
-                    .map(|run| (run.start * BAND_ROWS).min(ny)..(run.end * BAND_ROWS).min(ny))
+                    .map(|run| band_rows[run.start]..band_rows[run.end])
                     .collect();
                 let at = |r: usize| row_starts[r] as usize;
                 let discs: Vec<_> = rows.iter().map(|r| at(r.start)..at(r.end)).collect();
@@ -223,5 +235,96 @@ fn sort_rows(
             *slot += 1;
         }
         row.copy_from_slice(&row_buf[..row.len()]);
+    }
+}
+
+/// Cuts rows `0..row_starts.len()` into bands for `threads` threads into
+/// `band_rows` (band b is rows `band_rows[b]..band_rows[b + 1]`): the
+/// same number of bands per thread, each of at most [`BAND_ROWS`] rows, and
+/// the rows of each thread's run of bands holding about `total / threads`
+/// discs (`row_starts[r]`: the discs in rows before `r`), so that a pile
+/// at the bottom of the box is shared out like an even gas.
+#[cfg(feature = "parallel")]
+fn balanced_bands(row_starts: &[u32], total: u64, threads: usize, band_rows: &mut Vec<usize>) {
+    let ny = row_starts.len();
+    let threads = threads.max(1) as u64;
+    // Thread k's rows begin at the first row with a k-th of the discs below it.
+    let splits: Vec<usize> = (0..=threads)
+        .map(|k| match k {
+            k if k == threads => ny,
+            k => row_starts.partition_point(|&s| u64::from(s) * threads < total * k),
+        })
+        .collect();
+    let per_thread = splits
+        .windows(2)
+        .map(|w| (w[1] - w[0]).div_ceil(BAND_ROWS))
+        .max()
+        .unwrap_or(1)
+        .max(1);
+    band_rows.clear();
+    for w in splits.windows(2) {
+        band_rows.extend((0..per_thread).map(|j| w[0] + (w[1] - w[0]) * j / per_thread));
+    }
+    band_rows.push(ny);
+}
+
+#[cfg(all(test, feature = "parallel"))]
+mod tests {
+    use super::balanced_bands;
+    use crate::parallel::BAND_ROWS;
+
+    /// `row_starts` of rows holding `counts` discs, and the total.
+    fn starts(counts: &[u32]) -> (Vec<u32>, u64) {
+        let mut total = 0;
+        let starts = counts
+            .iter()
+            .map(|&c| {
+                total += c;
+                total - c
+            })
+            .collect();
+        (starts, u64::from(total))
+    }
+
+    #[test]
+    fn bands_cover_the_rows_and_share_the_discs_out_evenly() {
+        let shapes: Vec<(&str, Vec<u32>)> = vec![
+            ("even gas", vec![30; 341]),
+            (
+                "pile at the bottom",
+                (0..200).map(|r| if r < 40 { 50 } else { 0 }).collect(),
+            ),
+            (
+                "one full row",
+                (0..50).map(|r| if r == 7 { 1000 } else { 0 }).collect(),
+            ),
+            ("empty", vec![0; 20]),
+            ("one row", vec![5]),
+        ];
+        for (what, counts) in shapes {
+            let (row_starts, total) = starts(&counts);
+            for threads in [1, 2, 3, 16] {
+                let mut bands = Vec::new();
+                balanced_bands(&row_starts, total, threads, &mut bands);
+                let ny = counts.len();
+                assert_eq!((bands[0], *bands.last().unwrap()), (0, ny), "{what}");
+                assert!(bands
+                    .windows(2)
+                    .all(|w| w[0] <= w[1] && w[1] - w[0] <= BAND_ROWS));
+                let count = bands.len() - 1;
+                assert_eq!(count % threads, 0, "{what}: the same bands per thread");
+                let per = count / threads;
+                // Each thread's discs: no more than a fair share plus one row's.
+                let widest = u64::from(counts.iter().copied().max().unwrap_or(0));
+                for k in 0..threads {
+                    let rows = bands[k * per]..bands[(k + 1) * per];
+                    let discs: u64 = counts[rows].iter().map(|&c| u64::from(c)).sum();
+                    assert!(
+                        discs <= total.div_ceil(threads as u64) + widest,
+                        "{what}, {threads} threads: thread {k} has {discs} of {total}"
+                    );
+                }
+            }
+        }
     }
 }

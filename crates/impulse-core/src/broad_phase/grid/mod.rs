@@ -50,18 +50,18 @@
 //! runs per chunk of [`CHUNK`] particles, each chunk's discs and extent kept
 //! apart and joined in chunk order; the row scatter of step 2 runs per run of
 //! discs (each row's discs placed run by run, as serially); the column sort
-//! of step 2 and the sweep of step 3 run per band of [`BAND_ROWS`] rows,
-//! thread k taking the same run of bands for both; the pair sort of step 4
-//! runs per range of first indices, each sorted on its own thread. The
-//! chunks and bands are fixed by the data and the pairs' order is total, so
-//! the pairs are the same on any number of threads, and the same as serially
+//! of step 2 and the sweep of step 3 run per band of at most
+//! [`BAND_ROWS`](crate::parallel::BAND_ROWS) rows, thread k taking the same
+//! run of bands for both, the runs cut where each holds about as many discs
+//! (a pile at the bottom is shared out like an even gas); the pair sort of
+//! step 4 runs per range of first indices, each sorted on its own thread.
+//! The pairs' order is total, so the pairs are the same on any number of
+//! threads and whatever the bands, and the same as serially
 //! (which gathers by the same chunks, so even the mean radius is summed
 //! alike).
 
 use super::{pair, sort_pairs, touches, BroadPhase, BruteForce, Disc, Pair, Space};
 use crate::boundary::Boundary;
-#[cfg(feature = "parallel")]
-use crate::parallel::BAND_ROWS;
 use crate::parallel::CHUNK;
 use crate::particle::Particle;
 use glam::DVec2;
@@ -91,6 +91,8 @@ pub struct Grid {
     row_starts: Vec<u32>,
     /// Scratch per band of rows (one band when serial).
     bands: Vec<Band>,
+    /// Band `b` covers rows `band_rows[b]..band_rows[b + 1]`.
+    band_rows: Vec<usize>,
     /// Scratch: per chunk of particles, the discs kept and what they showed.
     gathered: Vec<(usize, Gathered, f64)>,
     /// Run the order-free work on rayon's pool.
@@ -110,7 +112,7 @@ pub struct Grid {
     part_ends: Vec<Vec<u32>>,
 }
 
-/// Scratch for one band of [`BAND_ROWS`] grid rows.
+/// Scratch for one band of at most [`BAND_ROWS`](crate::parallel::BAND_ROWS) grid rows.
 #[derive(Clone, Debug, Default)]
 struct Band {
     /// One row of discs, sorted by column.
@@ -222,14 +224,15 @@ impl BroadPhase for Grid {
             crate::parallel::pool_or_here!(
                 self.parallel,
                 {
-                    // self.bands has one band per BAND_ROWS rows (sort_into_cells).
+                    // Band b is rows band_rows[b]..band_rows[b + 1] (sort_into_cells).
+                    let band_rows = &self.band_rows;
                     let n = particles.len();
                     let parts = crate::parallel::threads().max(1);
                     // Thread k sweeps the bands whose rows it sorted.
                     crate::parallel::on_each_part(&mut self.bands, 1, |first, bands| {
                         for (b, band) in (first..).zip(bands) {
                             band.raw.clear();
-                            let rows = b * BAND_ROWS..((b + 1) * BAND_ROWS).min(layout.ny);
+                            let rows = band_rows[b]..band_rows[b + 1];
                             sweep(rows, &mut band.raw);
                             super::split_by_key_part(&band.raw, parts, n, &mut band.by_part);
                         }
