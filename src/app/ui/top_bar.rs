@@ -180,15 +180,10 @@ impl View for TopBar {
                     "L = {}",
                     with_unit(m.angular_momentum, 3, "kg·m²/s")
                 ))
-                .hover(if world.laws.boundary == impulse::Boundary::Periodic {
-                    format!(
-                        "{}\n\n{}",
-                        tr!("angular-momentum-hover"),
-                        tr!("totals-hover-wrapping")
-                    )
-                } else {
-                    tr!("angular-momentum-hover")
-                }),
+                .hover(super::widgets::angular_momentum_tip(
+                    tr!("angular-momentum-hover"),
+                    world,
+                )),
             );
         }
         if world.resting_contacts > 0 {

@@ -1,7 +1,7 @@
 //! Small widgets the panels share: a slider with its value box, a choice
 //! from a list, a line of feedback, a text field that selects its text when
-//! it gets the keyboard, and a button whose tooltip comes from the key
-//! bindings.
+//! it gets the keyboard, a button whose tooltip comes from the key
+//! bindings, and the tip of every readout of the angular momentum L.
 
 use super::Cx;
 use crate::app::model::bindings;
@@ -177,5 +177,19 @@ pub fn select_all_on_focus(ui: &Ui, response: &egui::Response, text: &str) {
             state.cursor.set_char_range(Some(all));
             state.store(ui.ctx(), response.id);
         }
+    }
+}
+
+/// `tip` for a readout of the total angular momentum L, followed, where the
+/// world's edges wrap round, by why L jumps there (a disc's place about
+/// (0, 0) jumps at an edge, its momentum does not).
+pub fn angular_momentum_tip(tip: String, world: &impulse::World) -> String {
+    if world.laws.boundary == impulse::Boundary::Periodic {
+        format!(
+            "{tip}\n\n{}",
+            crate::app::lang::tr!("totals-hover-wrapping")
+        )
+    } else {
+        tip
     }
 }

@@ -432,18 +432,25 @@ fn sort_pairs_into(
     }
 }
 
-/// Appends `pairs` to `by_part` (cleared first, `parts` long after), each
-/// to the list of the range of first indices it falls in (see
-/// [`key_part_start`]). The range is found by comparing with the ranges'
-/// starts, without a division or a branch per pair.
+/// Where ranges 1.. of `parts` equal ranges of first indices over `0..n`
+/// begin ([`key_part_start`]), for [`split_by_key_part`].
 #[cfg(feature = "parallel")]
-fn split_by_key_part(pairs: &[Pair], parts: usize, n: usize, by_part: &mut Vec<Vec<Pair>>) {
+fn key_part_starts(parts: usize, n: usize) -> Vec<u32> {
+    (1..parts)
+        .map(|t| key_part_start(t, parts, n) as u32)
+        .collect()
+}
+
+/// Appends `pairs` to `by_part` (cleared first, one list per range after),
+/// each to the list of the range of first indices it falls in, the ranges
+/// beginning at `starts` ([`key_part_starts`]). The range is found by
+/// comparing with their starts, without a division or a branch per pair.
+#[cfg(feature = "parallel")]
+fn split_by_key_part(pairs: &[Pair], starts: &[u32], by_part: &mut Vec<Vec<Pair>>) {
+    let parts = starts.len() + 1;
     by_part.resize_with(parts, Vec::new);
     by_part.truncate(parts);
     by_part.iter_mut().for_each(Vec::clear);
-    let starts: Vec<u32> = (1..parts)
-        .map(|t| key_part_start(t, parts, n) as u32)
-        .collect();
     for &p in pairs {
         let part: usize = starts.iter().map(|&s| usize::from(p.i >= s)).sum();
         by_part[part].push(p);
@@ -581,7 +588,8 @@ mod tests {
                     .chunks(raw.len().div_ceil(3))
                     .map(|chunk| {
                         let mut split = Vec::new();
-                        split_by_key_part(chunk, parts, n as usize, &mut split);
+                        let starts = key_part_starts(parts, n as usize);
+                        split_by_key_part(chunk, &starts, &mut split);
                         for (t, list) in split.iter().enumerate() {
                             let range = key_part_start(t, parts, n as usize)
                                 ..key_part_start(t + 1, parts, n as usize);

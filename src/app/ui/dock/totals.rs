@@ -2,6 +2,7 @@
 //! and the energy against time, each in its own plot, with the change since
 //! the record began above them.
 
+use super::super::widgets::angular_momentum_tip;
 use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
@@ -37,18 +38,14 @@ impl View for Totals {
         // Across a wrapping edge a disc's position about (0, 0) jumps, and
         // L with it: its change is no measure of the collisions there.
         let wrapping = model.world.laws.boundary == impulse::Boundary::Periodic;
+        let change = if wrapping {
+            "totals-change-wrapping" // says why instead of L's change
+        } else {
+            "totals-change"
+        };
         let drift = match (model.record.totals.drift(), samples.first(), samples.last()) {
-            (Some(_), Some(a), Some(b)) if wrapping => tr!(
-                "totals-change-wrapping",
-                since = with_unit(a.time, 2, "s"),
-                p_name = p_name,
-                momentum = vector(b.momentum - a.momentum, 3, "kg·m/s"),
-                l_name = l_name,
-                e_name = energy_name,
-                energy = with_unit(b.energy() - a.energy(), 3, "J")
-            ),
             (Some(_), Some(a), Some(b)) => tr!(
-                "totals-change",
+                change,
                 since = with_unit(a.time, 2, "s"),
                 p_name = p_name,
                 momentum = vector(b.momentum - a.momentum, 3, "kg·m/s"),
@@ -70,15 +67,7 @@ impl View for Totals {
             energies.push((tr!("totals-ke-sum"), tr!("totals-sum"), total_color));
         }
         ui.horizontal_wrapped(|ui| {
-            let hover = if wrapping {
-                format!(
-                    "{}\n\n{}",
-                    tr!("totals-hover"),
-                    tr!("totals-hover-wrapping")
-                )
-            } else {
-                tr!("totals-hover")
-            };
+            let hover = angular_momentum_tip(tr!("totals-hover"), &model.world);
             ui.label(drift).on_hover_text(hover);
             if compact {
                 let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];

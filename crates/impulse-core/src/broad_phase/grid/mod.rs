@@ -228,13 +228,14 @@ impl BroadPhase for Grid {
                     let band_rows = &self.band_rows;
                     let n = particles.len();
                     let parts = crate::parallel::threads().max(1);
+                    let starts = super::key_part_starts(parts, n);
                     // Thread k sweeps the bands whose rows it sorted.
                     crate::parallel::on_each_part(&mut self.bands, 1, |first, bands| {
                         for (b, band) in (first..).zip(bands) {
                             band.raw.clear();
                             let rows = band_rows[b]..band_rows[b + 1];
                             sweep(rows, &mut band.raw);
-                            super::split_by_key_part(&band.raw, parts, n, &mut band.by_part);
+                            super::split_by_key_part(&band.raw, &starts, &mut band.by_part);
                         }
                     });
                     if self.big.is_empty() {
