@@ -295,49 +295,29 @@ pub fn exact_throughput(n: usize, collisions: usize) -> Throughput {
 /// Times one configuration on the current rayon pool (`auto` decides
 /// whether to run in parallel).
 pub fn measure(method: Method, broad: BroadPhaseKind, n: usize, batch_seconds: f64) -> Row {
-    let before = live_bytes();
-    let mut world = Gas {
-        count: n,
-        ..Gas::default()
-    }
-    .build_fixed(method, broad);
-    let warm = Instant::now();
-    for _ in 0..2 {
-        world.step(DT);
-    }
-    let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
-    let bytes = live_bytes().saturating_sub(before);
-    let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
-    let mut samples = Vec::new();
-    let (mut steps, mut collisions, mut elapsed) = (0u64, 0u64, 0.0f64);
+    let (mut world, bytes, batch) = warmed(method, broad, n, batch_seconds);
+    let mut batches = Batches::default();
     for _ in 0..5 {
         let before = world.total_pair_collisions;
         let t = Instant::now();
         for _ in 0..batch {
             world.step(DT);
         }
-        let secs = t.elapsed().as_secs_f64();
-        samples.push(secs * 1e9 / (batch as f64 * n as f64));
-        steps += batch;
-        collisions += world.total_pair_collisions - before;
-        elapsed += secs;
+        batches.add(
+            t.elapsed().as_secs_f64(),
+            batch,
+            n,
+            world.total_pair_collisions - before,
+        );
     }
-    Row {
+    batches.row(
         method,
-        broad_phase: if method == Method::Exact {
-            "cells".into()
-        } else {
-            broad.name().into()
-        },
-        threads: rayon::current_num_threads(),
-        parallel: world.plan().is_some_and(|p| p.parallel),
-        n,
-        ns_per_particle_step: median(&mut samples),
-        bytes_per_particle: bytes as f64 / n as f64,
-        collisions_per_second: collisions as f64 / elapsed.max(1e-12),
-        steps,
-        speed_up: None,
-    }
+        broad,
+        &world,
+        bytes,
+        rayon::current_num_threads(),
+        None,
+    )
 }
 
 /// [`measure`] on `threads`, and the speed-up over one thread measured
@@ -353,30 +333,8 @@ pub fn measure_against_one_thread(
     batch_seconds: f64,
     (one, threads): (&rayon::ThreadPool, &rayon::ThreadPool),
 ) -> Row {
-    let gas = || {
-        Gas {
-            count: n,
-            ..Gas::default()
-        }
-        .build_fixed(method, broad)
-    };
-    let before = live_bytes();
-    let mut world = threads.install(gas);
-    let warm = Instant::now();
-    threads.install(|| {
-        for _ in 0..2 {
-            world.step(DT);
-        }
-    });
-    let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
-    let bytes = live_bytes().saturating_sub(before);
-    let mut twin = one.install(gas);
-    one.install(|| {
-        for _ in 0..2 {
-            twin.step(DT);
-        }
-    });
-    let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
+    let (mut world, bytes, batch) = threads.install(|| warmed(method, broad, n, batch_seconds));
+    let (mut twin, _, _) = one.install(|| warmed(method, broad, n, batch_seconds));
     let time = |pool: &rayon::ThreadPool, world: &mut impulse::World| {
         pool.install(|| {
             let t = Instant::now();
@@ -386,8 +344,7 @@ pub fn measure_against_one_thread(
             t.elapsed().as_secs_f64()
         })
     };
-    let (mut samples, mut ratios) = (Vec::new(), Vec::new());
-    let (mut steps, mut collisions, mut elapsed) = (0u64, 0u64, 0.0f64);
+    let (mut batches, mut ratios) = (Batches::default(), Vec::new());
     for round in 0..5 {
         let before = world.total_pair_collisions;
         let (secs, serial) = if round % 2 == 0 {
@@ -397,23 +354,92 @@ pub fn measure_against_one_thread(
             let serial = time(one, &mut twin);
             (time(threads, &mut world), serial)
         };
-        samples.push(secs * 1e9 / (batch as f64 * n as f64));
         ratios.push(serial / secs.max(1e-12));
-        steps += batch;
-        collisions += world.total_pair_collisions - before;
-        elapsed += secs;
+        batches.add(secs, batch, n, world.total_pair_collisions - before);
     }
-    Row {
+    let threads = threads.current_num_threads();
+    batches.row(
         method,
-        broad_phase: broad.name().into(),
-        threads: threads.current_num_threads(),
-        parallel: world.plan().is_some_and(|p| p.parallel),
-        n,
-        ns_per_particle_step: median(&mut samples),
-        bytes_per_particle: bytes as f64 / n as f64,
-        collisions_per_second: collisions as f64 / elapsed.max(1e-12),
-        steps,
-        speed_up: Some(median(&mut ratios)),
+        broad,
+        &world,
+        bytes,
+        threads,
+        Some(median(&mut ratios)),
+    )
+}
+
+/// The bench's gas of `n` discs for `method` and `broad`, warmed up by two
+/// steps; with the bytes it holds and how many steps make a timed batch of
+/// about `batch_seconds`.
+fn warmed(
+    method: Method,
+    broad: BroadPhaseKind,
+    n: usize,
+    batch_seconds: f64,
+) -> (impulse::World, usize, u64) {
+    let before = live_bytes();
+    let mut world = Gas {
+        count: n,
+        ..Gas::default()
+    }
+    .build_fixed(method, broad);
+    let warm = Instant::now();
+    for _ in 0..2 {
+        world.step(DT);
+    }
+    let per_step = (warm.elapsed().as_secs_f64() / 2.0).max(1e-7);
+    let bytes = live_bytes().saturating_sub(before);
+    let batch = ((batch_seconds / per_step).round() as u64).clamp(1, 100_000);
+    (world, bytes, batch)
+}
+
+/// What the timed batches of one configuration added up to.
+#[derive(Default)]
+struct Batches {
+    /// Each batch's ns per disc-step.
+    samples: Vec<f64>,
+    steps: u64,
+    collisions: u64,
+    seconds: f64,
+}
+
+impl Batches {
+    /// A batch of `batch` steps of `n` discs that took `secs` and had
+    /// `collisions` pair collisions.
+    fn add(&mut self, secs: f64, batch: u64, n: usize, collisions: u64) {
+        self.samples.push(secs * 1e9 / (batch as f64 * n as f64));
+        self.steps += batch;
+        self.collisions += collisions;
+        self.seconds += secs;
+    }
+
+    /// The table's row: the median batch, the bytes `world` holds.
+    fn row(
+        mut self,
+        method: Method,
+        broad: BroadPhaseKind,
+        world: &impulse::World,
+        bytes: usize,
+        threads: usize,
+        speed_up: Option<f64>,
+    ) -> Row {
+        let n = world.particles.len();
+        Row {
+            method,
+            broad_phase: if method == Method::Exact {
+                "cells".into()
+            } else {
+                broad.name().into()
+            },
+            threads,
+            parallel: world.plan().is_some_and(|p| p.parallel),
+            n,
+            ns_per_particle_step: median(&mut self.samples),
+            bytes_per_particle: bytes as f64 / n as f64,
+            collisions_per_second: self.collisions as f64 / self.seconds.max(1e-12),
+            steps: self.steps,
+            speed_up,
+        }
     }
 }
 
