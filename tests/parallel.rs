@@ -8,7 +8,7 @@ use impulse::auto::PARALLEL_MIN_DISCS;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
-use impulse::resolution::BANDED_MIN_CONTACTS;
+use impulse::resolution::{BANDED_MIN_CONTACTS, RANGES_MIN_CONTACTS};
 use impulse::{Boundary, DVec2, World};
 
 fn pool(threads: usize) -> rayon::ThreadPool {
@@ -200,5 +200,50 @@ fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
                 "{before} -> {after}"
             );
         }
+    }
+}
+
+/// Fewer contacts than bands need, but enough to share: each thread
+/// resolves the contacts among the discs it integrates, the rest after in
+/// list order (`resolution::ranges`). Bit for bit the serial result, and
+/// most contacts were in fact resolved side by side.
+#[test]
+fn a_gas_resolved_by_spans_of_discs_steps_alike_on_one_and_two_threads() {
+    for method in [Method::Impulse, Method::Verlet, Method::Seed] {
+        let world = || {
+            let mut world = Gas {
+                count: 2 * PARALLEL_MIN_DISCS,
+                area_fraction: 0.45,
+                speed: 3.0,
+                seed: 11,
+                ..Gas::default()
+            }
+            .build_fixed(method, BroadPhaseKind::Grid);
+            world.laws.restitution = 0.9;
+            world
+        };
+        let (mut serial, mut two) = (world(), world());
+        serial.parallel = Setting::Fixed(false);
+        two.parallel = Setting::Fixed(true);
+        let pool = pool(2);
+        let mut shared = 0;
+        for step in 0..6 {
+            let alone = serial.step(0.02);
+            let both = pool.install(|| two.step(0.02));
+            let contacts = alone.contacts;
+            // The gas starts with no overlap.
+            assert!(
+                step == 0 || (RANGES_MIN_CONTACTS..BANDED_MIN_CONTACTS).contains(&contacts),
+                "{method}: {contacts} contacts in step {step}"
+            );
+            assert_eq!(alone.contacts_side_by_side, 0, "{method}: serial");
+            shared += both.contacts_side_by_side;
+            assert_eq!(
+                serial.state_hash(),
+                two.state_hash(),
+                "{method}: step {step}, serial against two threads"
+            );
+        }
+        assert!(shared > 0, "{method}: no contact was resolved side by side");
     }
 }

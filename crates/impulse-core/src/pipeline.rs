@@ -229,6 +229,7 @@ impl Pipeline {
         stats.pair_collisions += report.collisions;
         stats.at_touch += report.at_touch;
         stats.at_touch_changed += report.at_touch_changed;
+        stats.contacts_side_by_side += report.side_by_side;
         stats.resting_contacts += report.resting;
         stats.max_overlap = stats.max_overlap.max(report.max_overlap);
         stats.timings.resolution += lap.elapsed();

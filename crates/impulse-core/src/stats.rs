@@ -68,6 +68,10 @@ pub struct StepStats {
     /// earlier contact of the pass had changed (a disc met twice in one
     /// pass): each moves the angular momentum by at most τ·J·|Δg|.
     pub at_touch_changed: usize,
+    /// Contacts resolved on several threads side by side (by bands of
+    /// height, or by spans of discs); the rest were resolved in order on one
+    /// thread. The result is the same either way.
+    pub contacts_side_by_side: usize,
     /// Discs that hit a wall faster than the threshold.
     pub wall_hits: usize,
     /// Resting contacts met, between discs and at walls: approaching, but

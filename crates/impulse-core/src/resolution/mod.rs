@@ -33,8 +33,10 @@
 //! normal where the discs overlap and push-apart.
 
 mod bands;
+mod ranges;
 
 pub use bands::{band_of, Banded, BANDED_MIN_CONTACTS, BANDS};
+pub use ranges::RANGES_MIN_CONTACTS;
 
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;
@@ -89,6 +91,11 @@ pub struct ResolutionReport {
     pub at_touch_changed: usize,
     /// Deepest overlap found (m).
     pub max_overlap: f64,
+    /// Contacts resolved on threads side by side ([`StepStats`]'s
+    /// `contacts_side_by_side`).
+    ///
+    /// [`StepStats`]: crate::stats::StepStats
+    pub side_by_side: usize,
 }
 
 impl ResolutionReport {
@@ -100,6 +107,7 @@ impl ResolutionReport {
             at_touch: self.at_touch + other.at_touch,
             at_touch_changed: self.at_touch_changed + other.at_touch_changed,
             max_overlap: self.max_overlap.max(other.max_overlap),
+            side_by_side: self.side_by_side + other.side_by_side,
         }
     }
 }
