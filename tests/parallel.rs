@@ -8,7 +8,7 @@ use impulse::auto::PARALLEL_MIN_DISCS;
 use impulse::broad_phase::BroadPhaseKind;
 use impulse::method::{Method, Setting};
 use impulse::presets::Gas;
-use impulse::resolution::{BANDED_MIN_CONTACTS, RANGES_MIN_CONTACTS};
+use impulse::resolution::{BANDED_MIN_CONTACTS, SPANS_MIN_CONTACTS};
 use impulse::{Boundary, DVec2, World};
 
 fn pool(threads: usize) -> rayon::ThreadPool {
@@ -205,7 +205,7 @@ fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
 
 /// Fewer contacts than bands need, but enough to share: each thread
 /// resolves the contacts among the discs it integrates, the rest after in
-/// list order (`resolution::ranges`). Bit for bit the serial result, and
+/// list order (`resolution::spans`). Bit for bit the serial result, and
 /// most contacts were in fact resolved side by side.
 #[test]
 fn a_gas_resolved_by_spans_of_discs_steps_alike_on_one_and_two_threads() {
@@ -233,7 +233,7 @@ fn a_gas_resolved_by_spans_of_discs_steps_alike_on_one_and_two_threads() {
             let contacts = alone.contacts;
             // The gas starts with no overlap.
             assert!(
-                step == 0 || (RANGES_MIN_CONTACTS..BANDED_MIN_CONTACTS).contains(&contacts),
+                step == 0 || (SPANS_MIN_CONTACTS..BANDED_MIN_CONTACTS).contains(&contacts),
                 "{method}: {contacts} contacts in step {step}"
             );
             assert_eq!(alone.contacts_side_by_side, 0, "{method}: serial");

@@ -28,8 +28,8 @@
 //!
 //! Below [`BANDED_MIN_CONTACTS`] contacts the order is plain ascending pair
 //! order ([`super::resolve_contacts`]): on one thread, or from
-//! [`super::RANGES_MIN_CONTACTS`] on, in parallel with the same result by
-//! spans of discs ([`super::ranges`]). Measured on a crowded
+//! [`super::SPANS_MIN_CONTACTS`] on, in parallel with the same result by
+//! spans of discs ([`super::spans`]). Measured on a crowded
 //! gas (70 % area, `impulse` / grid, resolution stage in ns per disc-step,
 //! medians of 5–7 runs, two threads against ascending order on one):
 //!
@@ -111,10 +111,10 @@ impl Banded {
             #[cfg(feature = "parallel")]
             if parallel
                 && !ledger.is_on()
-                && contacts.len() >= super::ranges::RANGES_MIN_CONTACTS
+                && contacts.len() >= super::spans::SPANS_MIN_CONTACTS
                 && rayon::current_num_threads() > 1
             {
-                let by_spans = super::ranges::resolve_by_spans(particles, contacts, law, rule);
+                let by_spans = super::spans::resolve_by_spans(particles, contacts, law, rule);
                 if let Some(report) = by_spans {
                     return report;
                 }

@@ -33,10 +33,10 @@
 //! normal where the discs overlap and push-apart.
 
 mod bands;
-mod ranges;
+mod spans;
 
 pub use bands::{band_of, Banded, BANDED_MIN_CONTACTS, BANDS};
-pub use ranges::RANGES_MIN_CONTACTS;
+pub use spans::SPANS_MIN_CONTACTS;
 
 use crate::ledger::{Collision, Ledger};
 use crate::narrow_phase::Contact;

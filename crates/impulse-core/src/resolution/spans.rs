@@ -38,7 +38,7 @@ use crate::{ledger::Ledger, narrow_phase::Contact, particle::Particle};
 
 /// From this many contacts a list is shared out by spans: below, handing
 /// it to the other thread costs more than the half it would take.
-pub const RANGES_MIN_CONTACTS: usize = 256;
+pub const SPANS_MIN_CONTACTS: usize = 256;
 
 /// How many discs a thread marks itself before it leaves the rest of its
 /// contacts to the serial stage.
@@ -94,8 +94,8 @@ pub fn resolve_by_spans(
         let first = span.start as u32;
         let mut report = ResolutionReport::default();
         let mut left: Vec<&Contact> = Vec::new();
-        // Few, searched one by one; past `MARKED_HERE` everything after is
-        // left for later (which keeps each disc's order just the same).
+        // Few, searched one by one; past `MARKED_HERE` the rest of the
+        // stretch is left for later (which keeps each disc's order too).
         let mut also_marked: Vec<u32> = Vec::new();
         for (k, c) in stretch.iter().enumerate() {
             // As `resolve_contacts` does: a few contacts on, asked for now.
@@ -109,7 +109,9 @@ pub fn resolve_by_spans(
                 (!marked.is_empty() && marked.binary_search(&d).is_ok()) || also_marked.contains(&d)
             };
             if also_marked.len() > MARKED_HERE || is_marked(c.i) || is_marked(c.j) {
-                also_marked.extend([c.i, c.j]);
+                if also_marked.len() <= MARKED_HERE {
+                    also_marked.extend([c.i, c.j]);
+                }
                 left.push(c);
                 continue;
             }
@@ -201,43 +203,75 @@ mod tests {
         particles.iter().map(join).collect()
     }
 
+    /// Resolves `contacts` serially and by spans on `threads` threads,
+    /// checks that both give the same discs bit for bit and the same
+    /// report, and returns how many went side by side.
+    fn side_by_side_as_serial(discs: &[Particle], contacts: &[Contact], threads: usize) -> usize {
+        let law = ContactLaw::smooth(0.9, 0.0);
+        let mut serial = discs.to_vec();
+        let off = &mut Ledger::default();
+        let want =
+            super::super::resolve_contacts(&mut serial, contacts, law, Rule::IMPULSE, off, 0.0);
+        let mut spans = discs.to_vec();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a pool");
+        let got = pool
+            .install(|| resolve_by_spans(&mut spans, contacts, law, Rule::IMPULSE))
+            .expect("few contacts across the spans");
+        let report = ResolutionReport {
+            side_by_side: 0,
+            ..got
+        };
+        assert_eq!(report, want, "{threads} threads");
+        assert!(bits(&spans) == bits(&serial), "{threads} threads");
+        assert!(
+            bits(&spans) != bits(discs),
+            "the contacts changed the discs"
+        );
+        got.side_by_side
+    }
+
     #[test]
     fn spans_side_by_side_give_the_serial_result_bit_for_bit() {
-        let law = ContactLaw::smooth(0.9, 0.0);
         for (threads, across) in [(2, 0), (2, 40), (3, 40), (5, 200)] {
             let (discs, contacts) = scene(5 * CHUNK + 123, across, threads as u64);
-            let mut serial = discs.clone();
-            let want = super::super::resolve_contacts(
-                &mut serial,
-                &contacts,
-                law,
-                Rule::IMPULSE,
-                &mut Ledger::default(),
-                0.0,
-            );
-            let mut spans = discs.clone();
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .expect("a pool");
-            let got = pool
-                .install(|| resolve_by_spans(&mut spans, &contacts, law, Rule::IMPULSE))
-                .expect("few contacts across the spans");
-            assert!(got.side_by_side > contacts.len() / 2, "{threads} threads");
-            let got = ResolutionReport {
-                side_by_side: 0,
-                ..got
-            };
-            assert_eq!(got, want, "{threads} threads, {across} across");
+            let shared = side_by_side_as_serial(&discs, &contacts, threads);
             assert!(
-                bits(&spans) == bits(&serial),
+                shared > contacts.len() / 2,
                 "{threads} threads, {across} across"
             );
-            assert!(
-                bits(&spans) != bits(&discs),
-                "the contacts changed the discs"
-            );
         }
+    }
+
+    /// A contact across the edge of two spans, then a chain of contacts
+    /// each sharing a disc with the one before: the whole chain waits, and
+    /// past `MARKED_HERE` marked discs so does the rest of that span.
+    #[test]
+    fn a_chain_after_a_contact_across_the_spans_waits_whole() {
+        let (discs, mut contacts) = scene(3 * CHUNK, 0, 4);
+        // The first span's contacts keep clear of its last disc.
+        contacts.retain(|c| (c.j as usize) < CHUNK - 1 || c.i as usize > CHUNK + 300);
+        let edge = CHUNK as u32;
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        let mut touching = |i: u32, j: u32| Contact {
+            i,
+            j,
+            normal: DVec2::from_angle(rng.random_range(0.0..std::f64::consts::TAU)),
+            depth: 0.01,
+            relative_velocity: discs[j as usize].vel - discs[i as usize].vel,
+        };
+        contacts.push(touching(edge - 1, edge));
+        for k in 0..200 {
+            contacts.push(touching(edge + k, edge + k + 1));
+        }
+        contacts.sort_by_key(|c| c.i);
+        let first_span = contacts.iter().filter(|c| c.i < edge - 1).count();
+        let later = contacts.iter().filter(|c| c.i > edge + 300).count();
+        assert!(first_span > 500 && later > 500, "{first_span}, {later}");
+        // Only the first span's own contacts went side by side.
+        assert_eq!(side_by_side_as_serial(&discs, &contacts, 2), first_span);
     }
 
     #[test]
