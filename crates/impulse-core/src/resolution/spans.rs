@@ -1,8 +1,8 @@
 //! Resolution of a small contact list on several threads, each thread on
 //! the discs it integrates, in exactly the serial order's result.
 //!
-//! Below [`super::BANDED_MIN_CONTACTS`] contacts are resolved in ascending
-//! pair order. Two contacts that share no disc commute, so the only order
+//! Lists too short to go by bands ([`super::BANDED_MIN_CONTACTS`]) are
+//! resolved in ascending pair order. Two contacts that share no disc commute, so the only order
 //! that matters is each disc's own: the contacts that touch it, in list
 //! order. The discs are cut into the same contiguous spans the threads
 //! integrate ([`crate::parallel::spans_of`] of [`crate::parallel::CHUNK`]),
@@ -12,7 +12,9 @@
 //!    (its discs in two spans) is marked.
 //! 2. Each thread resolves, in list order, the local contacts of its own
 //!    span, except that a contact touching a marked disc is left for later
-//!    and marks its other disc too.
+//!    and marks its other disc too; once a thread has marked
+//!    [`MARKED_HERE`] discs itself, it leaves the rest of its span's
+//!    contacts for later.
 //! 3. What was left, and the contacts that are not local, are resolved on
 //!    one thread in list order.
 //!
@@ -40,15 +42,16 @@ use crate::{ledger::Ledger, narrow_phase::Contact, particle::Particle};
 /// it to the other thread costs more than the half it would take.
 pub const SPANS_MIN_CONTACTS: usize = 256;
 
-/// How many discs a thread marks itself before it leaves the rest of its
-/// contacts to the serial stage.
+/// How many discs a thread marks itself (counting a disc marked twice
+/// twice) before it leaves the rest of its contacts to the serial stage.
 #[cfg(feature = "parallel")]
 const MARKED_HERE: usize = 64;
 
 /// Resolves `contacts` (ledger off, at least two threads) like
 /// [`super::resolve_contacts`], the discs' spans side by side; `None`
-/// (nothing touched) where the list is not in order of first disc, or the
-/// spans too intertwined to gain (module doc).
+/// (nothing touched) where the list is not in order of first disc, names
+/// a disc past the slice's end, has fewer than two spans of discs with
+/// contacts, or the spans too intertwined to gain (module doc).
 #[cfg(feature = "parallel")]
 pub fn resolve_by_spans(
     particles: &mut [Particle],
@@ -73,9 +76,23 @@ pub fn resolve_by_spans(
         .collect();
     // Stage 1: the discs of the contacts across spans (their second disc
     // past the end of their first's span).
+    // A contact whose first disc is past the slice is in no stretch, and
+    // one whose second is would fail only after the threads ran: left to
+    // the serial order, which fails at once.
+    let n = particles.len();
+    if contacts.last().is_some_and(|c| c.i as usize >= n) {
+        return None;
+    }
+    // With fewer than two stretches, one thread would do it all.
+    if stretches.iter().filter(|s| !s.is_empty()).count() < 2 {
+        return None;
+    }
     let mut marked: Vec<u32> = Vec::new();
     for (stretch, span) in stretches.iter().zip(&spans) {
         for c in stretch.iter().filter(|c| c.j as usize >= span.end) {
+            if c.j as usize >= n {
+                return None;
+            }
             marked.extend([c.i, c.j]);
         }
     }
@@ -153,7 +170,7 @@ mod tests {
 
     /// `n` discs in a row and contacts mostly between near neighbours in
     /// number (as in a gas numbered by place), some across the spans'
-    /// edges, many discs in several contacts.
+    /// edges (the deferred chains are `a_chain_after_…`'s).
     fn scene(n: usize, across: usize, seed: u64) -> (Vec<Particle>, Vec<Contact>) {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let discs: Vec<Particle> = (0..n)
@@ -182,7 +199,8 @@ mod tests {
                 contact(i, j, &mut rng)
             })
             .collect();
-        // Across an edge of the spans: CHUNK is a multiple of every edge.
+        // Across a multiple of CHUNK, which every edge of the spans is
+        // (not every multiple is an edge: some of these stay local).
         for _ in 0..across {
             let edge = CHUNK as u32 * rng.random_range(1..(n / CHUNK) as u32);
             let i = edge - rng.random_range(1..20);
@@ -303,7 +321,46 @@ mod tests {
         assert!(try_spans(&contacts).is_none(), "not in order of first disc");
         contacts.sort_by_key(|c| c.i);
         let got = try_spans(&contacts);
-        assert!(got.is_none(), "half the contacts cross the spans' edge");
+        assert!(
+            got.is_none(),
+            "nearly half the contacts cross the spans' edge"
+        );
         assert!(bits(&discs) == before, "nothing touched");
+    }
+
+    #[test]
+    fn lists_one_thread_would_do_alone_or_past_the_discs_are_left_alone() {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .expect("a pool");
+        let law = ContactLaw::smooth(1.0, 0.0);
+        // Whether it went by spans, and whether it left the discs alone.
+        let try_spans = |discs: &mut Vec<Particle>, contacts: &[Contact]| {
+            let before = bits(discs);
+            let got = pool.install(|| resolve_by_spans(discs, contacts, law, Rule::IMPULSE));
+            (got.is_some(), bits(discs) == before)
+        };
+        // Fewer discs than a chunk: one span holds them all.
+        let (mut few, contacts) = scene(CHUNK - 100, 0, 5);
+        assert_eq!(try_spans(&mut few, &contacts), (false, true), "one span");
+        // A second disc, or a first, past the end of the slice.
+        let (mut discs, contacts) = scene(3 * CHUNK, 0, 6);
+        let n = discs.len() as u32;
+        let past = |i: u32, j: u32| Contact {
+            i,
+            j,
+            normal: DVec2::X,
+            depth: 0.01,
+            relative_velocity: DVec2::ZERO,
+        };
+        for bad in [past(n - 2, n + 5), past(n + 1, n + 2)] {
+            let mut with_bad = contacts.clone();
+            with_bad.push(bad);
+            with_bad.sort_by_key(|c| c.i);
+            assert_eq!(try_spans(&mut discs, &with_bad), (false, true), "{bad:?}");
+        }
+        let alone = try_spans(&mut discs, &contacts);
+        assert_eq!(alone, (true, false), "the list itself goes by spans");
     }
 }
