@@ -70,17 +70,29 @@ pub fn find_contacts(
         // The disc a pair some way ahead will read is asked for now:
         // beyond the caches the loop otherwise waits on each (a million
         // discs: the stage 1.4× faster; from the cache it was slower).
-        let ahead = pairs
-            .iter()
-            .skip(AHEAD)
-            .map(Some)
-            .chain(std::iter::repeat(None));
-        out.extend(pairs.iter().zip(ahead).filter_map(|(pair, next)| {
-            if let Some(next) = next {
-                crate::parallel::prefetch(&particles[next.j as usize]);
-            }
-            contact(pair)
-        }));
+        let ahead = &pairs[AHEAD.min(pairs.len())..];
+        contacts_prefetching(particles, (pairs, ahead), contact, out);
+    }
+}
+
+/// The contacts among `run` (as `contact` finds them) onto `out`, asking
+/// as each pair is tested for the second disc of the pair at the same
+/// place in `ahead` (the pairs some way further on).
+#[inline(always)]
+fn contacts_prefetching(
+    particles: &[Particle],
+    (run, ahead): (&[Pair], &[Pair]),
+    contact: impl Fn(&Pair) -> Option<Contact>,
+    out: &mut Vec<Contact>,
+) {
+    let ahead = ahead.iter().map(Some).chain(std::iter::repeat(None));
+    for (pair, next) in run.iter().zip(ahead) {
+        if let Some(next) = next {
+            crate::parallel::prefetch(&particles[next.j as usize]);
+        }
+        if let Some(found) = contact(pair) {
+            out.push(found);
+        }
     }
 }
 
@@ -190,15 +202,7 @@ fn check_and_find(
             // Beyond the caches: the second disc of a pair most of a block
             // ahead is asked for now.
             let ahead = &pairs[(b * CHECK_BLOCK + CHECKED_AHEAD).min(pairs.len())..];
-            let ahead = ahead.iter().map(Some).chain(std::iter::repeat(None));
-            for (pair, next) in block.iter().zip(ahead) {
-                if let Some(next) = next {
-                    crate::parallel::prefetch(&particles[next.j as usize]);
-                }
-                if let Some(found) = contact(pair) {
-                    out.push(found);
-                }
-            }
+            contacts_prefetching(particles, (block, ahead), contact, out);
         } else {
             out.extend(block.iter().filter_map(contact));
         }
