@@ -247,3 +247,49 @@ fn a_gas_resolved_by_spans_of_discs_steps_alike_on_one_and_two_threads() {
         assert!(shared > 0, "{method}: no contact was resolved side by side");
     }
 }
+
+/// The kept pair list on two threads: a disc put onto another between
+/// steps (a drag), in the first thread's discs or the second's, fails the
+/// list's check on that thread, which stops the other too; the list is
+/// rebuilt and the step comes out as the serial one, bit for bit.
+#[test]
+fn an_edit_between_steps_is_seen_on_two_threads() {
+    let world = || {
+        let mut world = Gas {
+            count: 2 * PARALLEL_MIN_DISCS,
+            seed: 7,
+            ..Gas::default()
+        }
+        .build_fixed(Method::Impulse, BroadPhaseKind::Grid);
+        world.substeps = Setting::Fixed(1);
+        world
+    };
+    let last = 2 * PARALLEL_MIN_DISCS - 1;
+    for (moved, onto) in [(0, 1), (last, last - 1), (1, last)] {
+        let (mut serial, mut two) = (world(), world());
+        serial.parallel = Setting::Fixed(false);
+        two.parallel = Setting::Fixed(true);
+        let pool = pool(2);
+        for _ in 0..5 {
+            serial.step(0.02);
+            pool.install(|| two.step(0.02));
+        }
+        for w in [&mut serial, &mut two] {
+            let target = w.particles[onto].pos;
+            w.particles[moved].pos = target + DVec2::new(0.05, 0.0);
+        }
+        let alone = serial.step(0.02);
+        let both = pool.install(|| two.step(0.02));
+        assert!(
+            alone.contacts >= 1,
+            "disc {moved} put onto {onto} touches it"
+        );
+        assert_eq!(alone.contacts, both.contacts, "disc {moved}: contacts");
+        assert_eq!(
+            serial.state_hash(),
+            two.state_hash(),
+            "disc {moved} put onto {onto}: serial against two threads"
+        );
+        assert!(two.plan().is_some_and(|p| p.parallel), "ran on two threads");
+    }
+}
