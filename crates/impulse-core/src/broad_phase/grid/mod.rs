@@ -103,7 +103,8 @@ pub struct Grid {
     sorted: Vec<Disc>,
     /// Scratch for the quantiles of a sample of positions.
     sample: Vec<f64>,
-    /// Pairs as found, before sorting.
+    /// Pairs as found, before sorting: the first `found` of them in
+    /// `candidate_pairs_inflated`, the rest scratch (see `Cells::sweep`).
     raw: Vec<Pair>,
     /// Scratch for the pair sort.
     ends: Vec<u32>,
@@ -119,9 +120,13 @@ struct Band {
     row_buf: Vec<Disc>,
     /// Where the next disc of each column of a row goes.
     cursor: Vec<u32>,
-    /// Pairs the band's sweep found (on the pool).
+    /// Pairs the band's sweep found (on the pool): `raw[..found]`, the
+    /// rest scratch (see `Cells::sweep`).
     #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
     raw: Vec<Pair>,
+    /// How many of `raw` are this rebuild's pairs.
+    #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
+    found: usize,
     /// The same, split by range of first index for the sort (on the pool;
     /// see `sort_pairs_in_parts`).
     #[cfg_attr(not(feature = "parallel"), allow(dead_code))]
@@ -181,8 +186,9 @@ impl BroadPhase for Grid {
         out: &mut Vec<Pair>,
     ) {
         // `out` keeps its length until the sort: it is overwritten whole,
-        // and resizing it from empty would zero it all first.
-        self.raw.clear();
+        // and resizing it from empty would zero it all first. So does
+        // `raw`, whose pairs are `raw[..found]` (see `Cells::sweep`).
+        let mut found = 0;
         let Some(mut space) = Space::new(boundary, size) else {
             let inflated = super::inflated(particles, inflate);
             BruteForce.candidate_pairs(&inflated, boundary, size, out);
@@ -232,10 +238,10 @@ impl BroadPhase for Grid {
                     // Thread k sweeps the bands whose rows it sorted.
                     crate::parallel::on_each_part(&mut self.bands, 1, |first, bands| {
                         for (b, band) in (first..).zip(bands) {
-                            band.raw.clear();
                             let rows = band_rows[b]..band_rows[b + 1];
-                            sweep(rows, &mut band.raw);
-                            super::split_by_key_part(&band.raw, &starts, &mut band.by_part);
+                            band.found = sweep(rows, &mut band.raw);
+                            let pairs = &band.raw[..band.found];
+                            super::split_by_key_part(pairs, &starts, &mut band.by_part);
                         }
                     });
                     if self.big.is_empty() {
@@ -245,23 +251,27 @@ impl BroadPhase for Grid {
                         super::sort_pairs_in_parts(&by_part, parts, n, &mut self.part_ends, out);
                         return;
                     }
+                    self.raw.clear();
                     for band in &self.bands {
-                        self.raw.extend_from_slice(&band.raw);
+                        self.raw.extend_from_slice(&band.raw[..band.found]);
                     }
+                    found = self.raw.len();
                 },
                 {
-                    sweep(0..layout.ny, &mut self.raw);
+                    found = sweep(0..layout.ny, &mut self.raw);
                 }
             );
         }
         if !self.big.is_empty() {
+            self.raw.truncate(found);
             if space.period.is_some() {
                 self.big_discs::<true>(&space);
             } else {
                 self.big_discs::<false>(&space);
             }
+            found = self.raw.len();
         }
-        sort_pairs(&self.raw, particles.len(), &mut self.ends, out);
+        sort_pairs(&self.raw[..found], particles.len(), &mut self.ends, out);
     }
 
     fn set_parallel(&mut self, parallel: bool) {

@@ -45,14 +45,20 @@ fn test<const MODE: u8>(a: &Disc, b: &Disc, shift: DVec2, space: &Space) -> bool
 impl Cells<'_> {
     /// Tests every gridded disc of rows `rows` against the rest of its own
     /// cell and the forward neighbours (right; up-left, up, up-right), row by
-    /// row, appending the pairs to `raw`.
+    /// row, writing the pairs to the start of `raw`; returns how many there
+    /// are. What lies past them is scratch: `raw` keeps its length from
+    /// sweep to sweep, so that it is not filled with zeros again before
+    /// each sweep overwrites it. (Growing it from empty every time zeroed
+    /// up to twice the pairs' bytes; keeping it took the broad phase at 10⁵
+    /// discs from 53.4 to 51.6 ms per 200 steps on one thread, 30.6 to
+    /// 29.4 on two.)
     #[inline(never)]
     pub(super) fn sweep<const MODE: u8>(
         &self,
         rows: Range<usize>,
         space: &Space,
         raw: &mut Vec<Pair>,
-    ) {
+    ) -> usize {
         let (nx, ny, sorted) = (self.nx, self.ny, self.sorted);
         let start = |c: usize| self.starts[c] as usize;
         let periodic = MODE != OPEN;
@@ -60,7 +66,7 @@ impl Cells<'_> {
         let wrap_x = periodic && nx >= 3;
         // Every candidate is written and the end moves on only if it passes:
         // no branch on the test's outcome, which is hard to predict.
-        let mut found = raw.len();
+        let mut found = 0;
         let mut scan = |a: &Disc, from: usize, to: usize, shift: DVec2, raw: &mut Vec<Pair>| {
             let need = found + (to - from);
             if raw.len() < need {
@@ -113,6 +119,6 @@ impl Cells<'_> {
                 }
             }
         }
-        raw.truncate(found);
+        found
     }
 }
