@@ -66,6 +66,26 @@ fn gas(method: Method, boundary: Boundary, gravity: bool) -> World {
     world
 }
 
+/// A gas of `count` discs on the grid, filling `area_fraction` of its box
+/// at `speed`, with restitution 0.9 (so contacts last a while).
+fn bouncing_gas(
+    method: Method,
+    count: usize,
+    (area_fraction, speed): (f64, f64),
+    seed: u64,
+) -> World {
+    let mut world = Gas {
+        count,
+        area_fraction,
+        speed,
+        seed,
+        ..Gas::default()
+    }
+    .build_fixed(method, BroadPhaseKind::Grid);
+    world.laws.restitution = 0.9;
+    world
+}
+
 #[test]
 fn one_and_two_threads_step_bit_for_bit_alike_for_every_grid_method() {
     let cases = [
@@ -157,15 +177,7 @@ fn auto_runs_small_scenes_on_one_thread_and_says_so() {
 #[test]
 fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
     for method in [Method::Impulse, Method::Verlet, Method::Seed] {
-        let mut world = Gas {
-            count: 4 * PARALLEL_MIN_DISCS,
-            area_fraction: 0.75,
-            speed: 40.0,
-            seed: 9,
-            ..Gas::default()
-        }
-        .build_fixed(method, BroadPhaseKind::Grid);
-        world.laws.restitution = 0.9;
+        let world = bouncing_gas(method, 4 * PARALLEL_MIN_DISCS, (0.75, 40.0), 9);
         let mut probe = world.clone();
         let contacts: Vec<usize> = (0..4).map(|_| probe.step(0.02).contacts).collect();
         assert!(
@@ -210,18 +222,7 @@ fn crowded_gas_resolved_by_bands_steps_alike_on_one_and_two_threads() {
 #[test]
 fn a_gas_resolved_by_spans_of_discs_steps_alike_on_one_and_two_threads() {
     for method in [Method::Impulse, Method::Verlet, Method::Seed] {
-        let world = || {
-            let mut world = Gas {
-                count: 2 * PARALLEL_MIN_DISCS,
-                area_fraction: 0.45,
-                speed: 3.0,
-                seed: 11,
-                ..Gas::default()
-            }
-            .build_fixed(method, BroadPhaseKind::Grid);
-            world.laws.restitution = 0.9;
-            world
-        };
+        let world = || bouncing_gas(method, 2 * PARALLEL_MIN_DISCS, (0.45, 3.0), 11);
         let (mut serial, mut two) = (world(), world());
         serial.parallel = Setting::Fixed(false);
         two.parallel = Setting::Fixed(true);
