@@ -74,7 +74,7 @@ impl Sim {
 
     /// Keeps a pair collision of bodies `k` for the ledger (when it is on),
     /// with their spins before it (after it they are the current ones).
-    fn record_pair(
+    pub(super) fn record_pair(
         &mut self,
         k: [u32; 2],
         normal: DVec2,
@@ -124,7 +124,7 @@ impl Sim {
     }
 
     /// The spins of bodies `k`.
-    fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
+    pub(super) fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
         k.map(|b| self.spin(b))
     }
 
@@ -419,7 +419,7 @@ impl Sim {
 
     /// Counts a pair collision of body `i` closing at `closing` m/s: an
     /// impact or a resting contact.
-    fn count(&mut self, i: u32, closing: f64) {
+    pub(super) fn count(&mut self, i: u32, closing: f64) {
         if crate::impact::is_impact(closing, self.impact_speed) {
             self.collisions += 1;
         } else {

@@ -58,6 +58,7 @@ mod collide;
 mod grid;
 mod held;
 mod kinematics;
+mod plain;
 mod predict;
 mod queue;
 mod setup;
@@ -110,9 +111,21 @@ pub struct Exact {
     pub stop_at_collision: bool,
     /// End a step at its first wall hit, at the instant of impact.
     pub stop_at_wall: bool,
+    /// Run even a plain gas through the general loop (tests compare the
+    /// two, see [`plain`]).
+    #[cfg(test)]
+    general_loop: bool,
 }
 
 impl Exact {
+    /// Whether to keep to the general event loop.
+    fn general_loop(&self) -> bool {
+        #[cfg(test)]
+        return self.general_loop;
+        #[cfg(not(test))]
+        false
+    }
+
     /// Advances `particles` by `dt`; returns the time actually simulated
     /// (less than `dt` only if the event cap was hit).
     pub fn advance(
@@ -136,7 +149,11 @@ impl Exact {
         sim.stop_at_wall = self.stop_at_wall;
         sim.stopped = false;
         sim.hold(dt);
-        sim.run();
+        if sim.is_plain_gas() && !self.general_loop() {
+            sim.run_plain();
+        } else {
+            sim.run();
+        }
         sim.count_sleepers();
         // Recorded as they happened; the ledger takes the impacts, sorted
         // out with the threshold the counters use.
@@ -179,7 +196,7 @@ impl Exact {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 enum Kind {
     /// Collision with `partner`, predicted when it had generation `gen`.
     Pair { partner: u32, gen: u32 },
@@ -188,6 +205,7 @@ enum Kind {
     /// Crossing into the next cell along `axis`.
     Cell { axis: u8, upper: bool },
     /// Open boundary: leaving the grid's region; the grid is rebuilt.
+    #[default]
     Leave,
 }
 

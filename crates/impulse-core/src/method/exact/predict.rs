@@ -291,7 +291,7 @@ impl Sim {
     /// without branches. An axis the disc does not move along never comes
     /// (infinite time), and neither does anything if it is still.
     #[inline]
-    fn next_crossing(&self, me: &Body) -> (f64, Kind) {
+    pub(super) fn next_crossing(&self, me: &Body) -> (f64, Kind) {
         let along = |axis: usize| {
             let v = me.vel[axis];
             let upper = v > 0.0;

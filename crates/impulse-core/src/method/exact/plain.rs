@@ -1,0 +1,396 @@
+//! The event loop of a plain gas: no gravity, a periodic world, smooth discs
+//! that do not turn, nothing asleep or held, no stop at the first impact.
+//! The lab's gas and the bench are such scenes, and most of `exact`'s time
+//! goes to them.
+//!
+//! It carries out the same events in the same order as [`Sim::run`], with
+//! the same arithmetic, so it leaves the same state bit for bit (the tests
+//! below step gases both ways and compare). What it leaves out is only what
+//! such a scene cannot need: the checks for sleeping and held discs, walls,
+//! gravity's parabolas and spins, at every event and every prediction. The
+//! nine cells of a prediction are listed straight from the grid where they
+//! do not wrap. Measured on the bench's gas against the general loop (5
+//! alternating rounds, medians, the same state hash): 160 against 186 ns per
+//! event at 10⁴ discs, 228 against 263 at 10⁵ (docs/lab/NOTES.md, issue 30).
+//!
+//! An event the loop has no case for (a wall, leaving the grid: neither
+//! happens in a periodic world) hands the rest of the step to the general
+//! loop, which takes it from the same state.
+
+use super::grid::NIL;
+use super::kinematics::{PairTerms, CREEP};
+use super::predict::PairGuess;
+use super::queue::Event;
+use super::{Kind, Sim, CONTACT_DURATION};
+use crate::resolution::collision_velocities;
+use glam::DVec2;
+
+/// Slots of the scan's ring (as in [`Sim::scan`]'s).
+const RING: usize = 16;
+
+impl Sim {
+    /// Whether this step can run [`Sim::run_plain`].
+    pub(super) fn is_plain_gas(&self) -> bool {
+        self.laws.gravity == DVec2::ZERO
+            && self.grid.periodic
+            && self.grid.images_by_cell()
+            && !self.rough
+            && self.spins.is_empty()
+            && !self.sleeping
+            && self.sleepers == 0
+            && !self.stop_at_collision
+            && !self.stop_at_wall
+    }
+
+    /// [`Sim::run`] for a plain gas ([`Sim::is_plain_gas`]).
+    pub(super) fn run_plain(&mut self) {
+        while let Some(ev) = self.queue.peek() {
+            if ev.time > self.end {
+                break;
+            }
+            if matches!(ev.kind, Kind::Wall { .. } | Kind::Leave) {
+                return self.run();
+            }
+            if self.events >= self.cap {
+                self.truncated = true;
+                break;
+            }
+            self.events += 1;
+            if self.prefetching {
+                self.prefetch_soon();
+            }
+            let i = ev.owner;
+            self.now = ev.time;
+            match ev.kind {
+                Kind::Pair { partner, gen } if self.bodies[partner as usize].gen != gen => {
+                    // Only the partner changed: re-predict the owner.
+                    self.advance_plain(i);
+                    self.predict_plain(i);
+                }
+                Kind::Pair { partner, .. } => self.collide_plain(i, partner),
+                Kind::Cell { axis, upper } => self.cross_plain(i, usize::from(axis), upper),
+                Kind::Wall { .. } | Kind::Leave => {} // handed over above
+            }
+        }
+    }
+
+    /// Moves disc `i` to now along its straight line.
+    #[inline]
+    fn advance_plain(&mut self, i: u32) {
+        let now = self.now;
+        let b = &mut self.bodies[i as usize];
+        let tau = now - b.time;
+        if tau != 0.0 {
+            b.pos += b.vel * tau;
+            b.time = now;
+        }
+    }
+
+    /// [`Sim::collide_pair`] for a plain gas.
+    fn collide_plain(&mut self, i: u32, j: u32) {
+        self.advance_plain(i);
+        self.advance_plain(j);
+        if self.queue.another_by(i, self.now) {
+            // Maybe a disc meeting two others at once: the general case.
+            return self.collide_pair(i, j);
+        }
+        let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
+        let dist = d.length();
+        let normal = if dist > 0.0 && (d / dist).is_finite() {
+            d / dist
+        } else {
+            crate::narrow_phase::COINCIDENT_NORMAL
+        };
+        if (b.vel - a.vel).dot(normal) < -CREEP {
+            let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
+            let rapid = self.now - ia.last_hit < CONTACT_DURATION
+                || self.now - ib.last_hit < CONTACT_DURATION;
+            let closing = (a.vel - b.vel).dot(normal);
+            let e = if rapid { 1.0 } else { self.laws.restitution };
+            let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
+            for (k, v) in [(i, va), (j, vb)] {
+                let body = &mut self.bodies[k as usize];
+                body.vel = v;
+                body.gen += 1;
+                self.aux[k as usize].last_hit = self.now;
+            }
+            if self.record {
+                let spins = self.spins_of([i, j]);
+                self.record_pair([i, j], normal, [a.vel, b.vel], [va, vb], spins);
+            }
+            self.count(i, closing);
+            self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
+        }
+        self.predict_plain(i);
+        self.predict_plain(j);
+    }
+
+    /// [`Sim::cross_cell`] for a plain gas: the grid wraps.
+    fn cross_plain(&mut self, i: u32, axis: usize, upper: bool) {
+        self.advance_plain(i);
+        let from = self.bodies[i as usize].cell;
+        let mut to = from;
+        to[axis] += if upper { 1 } else { -1 };
+        let n = self.grid.dims[axis];
+        let size = self.laws.size[axis];
+        let b = &mut self.bodies[i as usize];
+        if to[axis] >= n {
+            to[axis] = 0;
+            b.pos[axis] -= size;
+        } else if to[axis] < 0 {
+            to[axis] = n - 1;
+            b.pos[axis] += size;
+        }
+        self.grid.remove(&mut self.bodies, i, from);
+        self.grid.insert(&mut self.bodies, i, to);
+        self.bodies[i as usize].cell = to;
+        self.predict_after_crossing_plain(i, axis, upper);
+    }
+
+    /// [`Sim::predict`] for a plain gas.
+    fn predict_plain(&mut self, i: u32) {
+        let c = self.bodies[i as usize].cell;
+        let mut cells = [(0usize, DVec2::ZERO); 9];
+        let mut count = 0;
+        if self.grid.is_inner(c) {
+            let row = self.grid.dims[0] as usize;
+            let centre = self.grid.index(c);
+            for middle in [centre - row, centre, centre + row] {
+                cells[count] = (middle - 1, DVec2::ZERO);
+                cells[count + 1] = (middle, DVec2::ZERO);
+                cells[count + 2] = (middle + 1, DVec2::ZERO);
+                count += 3;
+            }
+        } else {
+            self.grid.for_each_neighbour(c, |cell, shift| {
+                cells[count] = (cell, shift);
+                count += 1;
+            });
+        }
+        let g = self.scan_plain(i, &cells[..count], PairGuess::NONE);
+        self.aux[i as usize].guess = g;
+        self.schedule_plain(i);
+    }
+
+    /// [`Sim::predict_after_crossing`] for a plain gas.
+    fn predict_after_crossing_plain(&mut self, i: u32, axis: usize, upper: bool) {
+        let guess = self.aux[i as usize].guess;
+        let holds = guess.partner == NIL || self.bodies[guess.partner as usize].gen == guess.gen;
+        if !holds {
+            return self.predict_plain(i);
+        }
+        let c = self.bodies[i as usize].cell;
+        let mut cells = [(0usize, DVec2::ZERO); 3];
+        let mut count = 0;
+        self.grid
+            .for_each_new_in_reach(c, axis, upper, |cell, shift| {
+                cells[count] = (cell, shift);
+                count += 1;
+            });
+        let g = self.scan_plain(i, &cells[..count], guess);
+        self.aux[i as usize].guess = g;
+        self.schedule_plain(i);
+    }
+
+    /// [`Sim::scan`] without gravity over `cells` (index and the shift to
+    /// its discs' nearest images): the same ring, the same ranks for ties.
+    #[inline(always)]
+    fn scan_plain(&self, i: u32, cells: &[(usize, DVec2)], mut guess: PairGuess) -> PairGuess {
+        let bodies = &self.bodies;
+        let me = &bodies[i as usize];
+        let now = self.now;
+        let mut ring = [(NIL, 0u32); RING];
+        let (mut head, mut tail) = (0usize, 0usize);
+        for (slot, &(cell, _)) in cells.iter().enumerate() {
+            let first = self.grid.first(cell);
+            ring[tail % RING] = (first, ((slot as u32) << 24) + 1);
+            tail += usize::from(first != NIL);
+        }
+        let mut best_rank = 0u32;
+        while head != tail {
+            let (j, rank) = ring[head % RING];
+            head += 1;
+            let other = &bodies[j as usize];
+            let next = other.next_in_cell;
+            ring[tail % RING] = (next, rank + 1);
+            tail += usize::from(next != NIL);
+            let pj = other.pos + other.vel * (now - other.time);
+            let d = pj + cells[(rank >> 24) as usize].1 - me.pos;
+            let terms = PairTerms::of(d, other.vel - me.vel, me.radius + other.radius);
+            if !terms.meets() || j == i {
+                continue;
+            }
+            let t = now + terms.time();
+            if t < guess.time || (t == guess.time && rank < best_rank) {
+                guess = PairGuess {
+                    time: t,
+                    partner: j,
+                    gen: other.gen,
+                };
+                best_rank = rank;
+            }
+        }
+        guess
+    }
+
+    /// [`Sim::schedule`] for a plain gas: the pair guess or the next cell
+    /// crossing, whichever comes first (the guess on a tie).
+    #[inline]
+    fn schedule_plain(&mut self, i: u32) {
+        let me = &self.bodies[i as usize];
+        let guess = self.aux[i as usize].guess;
+        let (tau, kind) = self.next_crossing(me);
+        let tc = self.now + tau;
+        let event = if tc < guess.time {
+            Event {
+                time: tc,
+                owner: i,
+                kind,
+            }
+        } else {
+            Event {
+                time: guess.time,
+                owner: i,
+                kind: Kind::Pair {
+                    partner: guess.partner,
+                    gen: guess.gen,
+                },
+            }
+        };
+        self.queue.set(i, event.time.is_finite().then_some(event));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::Exact;
+    use crate::ledger::Ledger;
+    use crate::presets::Gas;
+    use crate::stats::StepStats;
+
+    /// Steps `gas` with `exact` for `steps` steps of `dt`, through the plain
+    /// loop or the general one; returns the discs, each step's counts and
+    /// the ledger (on, so that impacts are recorded too).
+    fn stepped(
+        gas: &Gas,
+        restitution: f64,
+        steps: usize,
+        dt: f64,
+        general_loop: bool,
+    ) -> (Vec<crate::Particle>, Vec<StepStats>, Ledger) {
+        let world = gas.build();
+        let mut laws = world.laws;
+        laws.restitution = restitution;
+        let mut particles = world.particles.clone();
+        let mut exact = Exact {
+            general_loop,
+            ..Exact::default()
+        };
+        let mut ledger = Ledger::default();
+        ledger.keep(1_000_000);
+        let mut all = Vec::new();
+        for k in 0..steps {
+            let mut stats = StepStats::default();
+            exact.advance(
+                &mut particles,
+                &laws,
+                dt,
+                &mut stats,
+                (&mut ledger, k as f64 * dt),
+            );
+            stats.timings = Default::default();
+            all.push(stats);
+        }
+        (particles, all, ledger)
+    }
+
+    #[test]
+    fn a_plain_gas_steps_as_the_general_loop_does_bit_for_bit() {
+        let gases = [
+            (
+                Gas {
+                    count: 1500,
+                    ..Gas::default()
+                },
+                1.0,
+            ),
+            (
+                Gas {
+                    count: 1200,
+                    radius_ratio: 3.0,
+                    seed: 7,
+                    ..Gas::default()
+                },
+                1.0,
+            ),
+            (
+                Gas {
+                    count: 1000,
+                    area_fraction: 0.5,
+                    seed: 3,
+                    ..Gas::default()
+                },
+                1.0,
+            ),
+            // Inelastic: the contact-duration rule decides some collisions.
+            (
+                Gas {
+                    count: 800,
+                    seed: 11,
+                    ..Gas::default()
+                },
+                0.6,
+            ),
+        ];
+        for (gas, e) in gases {
+            let sim = Exact::default();
+            assert!(!sim.general_loop);
+            let (plain, plain_stats, plain_ledger) = stepped(&gas, e, 4, 0.5, false);
+            let (general, general_stats, general_ledger) = stepped(&gas, e, 4, 0.5, true);
+            assert!(plain_stats.iter().all(|s| s.pair_collisions > 0), "{gas:?}");
+            assert_eq!(plain_stats, general_stats, "{gas:?}, e = {e}");
+            assert_eq!(plain_ledger, general_ledger, "{gas:?}, e = {e}");
+            for (a, b) in plain.iter().zip(&general) {
+                assert_eq!(
+                    (
+                        a.pos.to_array().map(f64::to_bits),
+                        a.vel.to_array().map(f64::to_bits)
+                    ),
+                    (
+                        b.pos.to_array().map(f64::to_bits),
+                        b.vel.to_array().map(f64::to_bits)
+                    ),
+                    "{gas:?}, e = {e}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn only_a_plain_gas_takes_the_plain_loop() {
+        use crate::boundary::Boundary;
+        let check = |gas: Gas, change: &dyn Fn(&mut crate::laws::Laws), plain: bool| {
+            let world = gas.build();
+            let mut laws = world.laws;
+            change(&mut laws);
+            let sim = super::Sim::new(&world.particles, &laws, 0.1);
+            assert_eq!(sim.is_plain_gas(), plain, "{gas:?}");
+        };
+        let gas = Gas {
+            count: 300,
+            ..Gas::default()
+        };
+        check(gas, &|_| {}, true);
+        check(gas, &|l| l.gravity = glam::DVec2::new(0.0, -9.81), false);
+        check(gas, &|l| l.tangential_restitution = 0.5, false);
+        check(
+            Gas {
+                boundary: Boundary::Box,
+                ..gas
+            },
+            &|_| {},
+            false,
+        );
+    }
+}
