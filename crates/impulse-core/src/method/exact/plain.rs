@@ -7,11 +7,12 @@
 //! the same arithmetic, so it leaves the same state bit for bit (the tests
 //! below step gases both ways and compare). What it leaves out is only what
 //! such a scene cannot need: the checks for sleeping and held discs, walls,
-//! gravity's parabolas and spins, at every event and every prediction. The
-//! nine cells of a prediction are listed straight from the grid where they
-//! do not wrap. Measured on the bench's gas against the general loop (5
-//! alternating rounds, medians, the same state hash): 160 against 186 ns per
-//! event at 10⁴ discs, 228 against 263 at 10⁵ (docs/lab/NOTES.md, issue 30).
+//! gravity's parabolas and spins, at every event and every prediction. Where
+//! no cell around a disc wraps, the cells to scan are listed straight from
+//! the grid and no periodic shift is added. Measured on the bench's gas
+//! against the general loop (5 alternating rounds, medians, the same state
+//! hash): 154 against 186 ns per event at 10⁴ discs, 204 against 235 at 10⁵
+//! (docs/lab/NOTES.md, issue 30).
 //!
 //! An event the loop has no case for (a wall, leaving the grid: neither
 //! happens in a periodic world) hands the rest of the step to the general
@@ -151,25 +152,31 @@ impl Sim {
     /// [`Sim::predict`] for a plain gas.
     fn predict_plain(&mut self, i: u32) {
         let c = self.bodies[i as usize].cell;
-        let mut cells = [(0usize, DVec2::ZERO); 9];
-        let mut count = 0;
-        if self.grid.is_inner(c) {
+        let guess = if self.grid.is_inner(c) {
+            // Nine cells in three runs of three, none wrapped.
             let row = self.grid.dims[0] as usize;
-            let centre = self.grid.index(c);
-            for middle in [centre - row, centre, centre + row] {
-                cells[count] = (middle - 1, DVec2::ZERO);
-                cells[count + 1] = (middle, DVec2::ZERO);
-                cells[count + 2] = (middle + 1, DVec2::ZERO);
-                count += 3;
-            }
+            let k = self.grid.index(c);
+            let cells = [
+                k - row - 1,
+                k - row,
+                k - row + 1,
+                k - 1,
+                k,
+                k + 1,
+                k + row - 1,
+                k + row,
+                k + row + 1,
+            ];
+            self.scan_plain::<false>(i, &cells, &[], PairGuess::NONE)
         } else {
+            let (mut cells, mut shifts, mut count) = ([0; 9], [DVec2::ZERO; 9], 0);
             self.grid.for_each_neighbour(c, |cell, shift| {
-                cells[count] = (cell, shift);
+                (cells[count], shifts[count]) = (cell, shift);
                 count += 1;
             });
-        }
-        let g = self.scan_plain(i, &cells[..count], PairGuess::NONE);
-        self.aux[i as usize].guess = g;
+            self.scan_plain::<true>(i, &cells[..count], &shifts, PairGuess::NONE)
+        };
+        self.aux[i as usize].guess = guess;
         self.schedule_plain(i);
     }
 
@@ -181,28 +188,47 @@ impl Sim {
             return self.predict_plain(i);
         }
         let c = self.bodies[i as usize].cell;
-        let mut cells = [(0usize, DVec2::ZERO); 3];
-        let mut count = 0;
-        self.grid
-            .for_each_new_in_reach(c, axis, upper, |cell, shift| {
-                cells[count] = (cell, shift);
-                count += 1;
-            });
-        let g = self.scan_plain(i, &cells[..count], guess);
-        self.aux[i as usize].guess = g;
+        let guess = if self.grid.is_inner(c) {
+            // The three cells beyond, none wrapped.
+            let mut ahead = c;
+            ahead[axis] += if upper { 1 } else { -1 };
+            let k = self.grid.index(ahead);
+            let step = if axis == 0 {
+                self.grid.dims[0] as usize
+            } else {
+                1
+            };
+            self.scan_plain::<false>(i, &[k - step, k, k + step], &[], guess)
+        } else {
+            let (mut cells, mut shifts, mut count) = ([0; 3], [DVec2::ZERO; 3], 0);
+            self.grid
+                .for_each_new_in_reach(c, axis, upper, |cell, shift| {
+                    (cells[count], shifts[count]) = (cell, shift);
+                    count += 1;
+                });
+            self.scan_plain::<true>(i, &cells[..count], &shifts, guess)
+        };
+        self.aux[i as usize].guess = guess;
         self.schedule_plain(i);
     }
 
-    /// [`Sim::scan`] without gravity over `cells` (index and the shift to
-    /// its discs' nearest images): the same ring, the same ranks for ties.
+    /// [`Sim::scan`] without gravity over `cells`, each with the shift to
+    /// its discs' nearest images in `shifts` when `SHIFTED` (otherwise
+    /// none is wrapped): the same ring, the same ranks for ties.
     #[inline(always)]
-    fn scan_plain(&self, i: u32, cells: &[(usize, DVec2)], mut guess: PairGuess) -> PairGuess {
+    fn scan_plain<const SHIFTED: bool>(
+        &self,
+        i: u32,
+        cells: &[usize],
+        shifts: &[DVec2],
+        mut guess: PairGuess,
+    ) -> PairGuess {
         let bodies = &self.bodies;
         let me = &bodies[i as usize];
         let now = self.now;
         let mut ring = [(NIL, 0u32); RING];
         let (mut head, mut tail) = (0usize, 0usize);
-        for (slot, &(cell, _)) in cells.iter().enumerate() {
+        for (slot, &cell) in cells.iter().enumerate() {
             let first = self.grid.first(cell);
             ring[tail % RING] = (first, ((slot as u32) << 24) + 1);
             tail += usize::from(first != NIL);
@@ -216,7 +242,12 @@ impl Sim {
             ring[tail % RING] = (next, rank + 1);
             tail += usize::from(next != NIL);
             let pj = other.pos + other.vel * (now - other.time);
-            let d = pj + cells[(rank >> 24) as usize].1 - me.pos;
+            // Adding a zero shift changes no bit, so the two agree.
+            let d = if SHIFTED {
+                pj + shifts[(rank >> 24) as usize] - me.pos
+            } else {
+                pj - me.pos
+            };
             let terms = PairTerms::of(d, other.vel - me.vel, me.radius + other.radius);
             if !terms.meets() || j == i {
                 continue;
