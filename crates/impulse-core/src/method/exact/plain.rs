@@ -29,14 +29,6 @@ use glam::DVec2;
 /// Slots of the scan's ring (as in [`Sim::scan`]'s).
 const RING: usize = 16;
 
-/// From this many discs the plain loop prefetches what the next events will
-/// read ([`super::PREFETCH_MIN_DISCS`] for the general loop). Below, the
-/// discs fit the shared last-level cache (32 MB here) and the prefetches
-/// cost more than they save; measured on the bench's gas, ns per event with
-/// and without (alternating runs): 3·10⁴ discs 176–180 against 167–171,
-/// 10⁵ 184–191 against 179–185, 3·10⁵ 374–408 against 422–452.
-const PREFETCH_MIN_DISCS: usize = 150_000;
-
 impl Sim {
     /// Whether this step can run [`Sim::run_plain`].
     pub(super) fn is_plain_gas(&self) -> bool {
@@ -53,7 +45,6 @@ impl Sim {
 
     /// [`Sim::run`] for a plain gas ([`Sim::is_plain_gas`]).
     pub(super) fn run_plain(&mut self) {
-        let prefetching = self.bodies.len() >= PREFETCH_MIN_DISCS;
         while let Some(ev) = self.queue.peek() {
             if ev.time > self.end {
                 break;
@@ -66,7 +57,7 @@ impl Sim {
                 break;
             }
             self.events += 1;
-            if prefetching {
+            if self.prefetching {
                 self.prefetch_soon();
             }
             let i = ev.owner;
