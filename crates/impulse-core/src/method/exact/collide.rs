@@ -4,7 +4,7 @@
 //! when discs touch, only what an impact does to them.
 
 use super::kinematics::CREEP;
-use super::{simultaneous, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
+use super::{simultaneous, Body, Sim, CONTACT_DURATION, SIMULTANEOUS_TOLERANCE};
 use crate::ledger::{Collision, Impact, Wall, WallHit};
 use crate::resolution::collision_velocities;
 use crate::rough::{Side, Tangential};
@@ -31,6 +31,19 @@ impl Sim {
             }
         }
         let (a, b) = (self.bodies[i as usize], self.bodies[j as usize]);
+        let (normal, dist) = self.contact_normal(&a, &b);
+        if self.rests_on_held([i, j], normal) && self.join_held([i, j]) {
+            return; // a flying disc resting on a held one: held too
+        }
+        self.bounce([i, j], [a, b], normal, dist);
+        self.predict(i);
+        self.predict(j);
+    }
+
+    /// The unit normal from body `a` to body `b` (both at the current
+    /// time), and their distance.
+    #[inline]
+    pub(super) fn contact_normal(&self, a: &Body, b: &Body) -> (DVec2, f64) {
         let d = self.laws.boundary.separation(a.pos, b.pos, self.laws.size);
         let dist = d.length();
         let normal = if dist > 0.0 && (d / dist).is_finite() {
@@ -38,9 +51,16 @@ impl Sim {
         } else {
             crate::narrow_phase::COINCIDENT_NORMAL
         };
-        if self.rests_on_held([i, j], normal) && self.join_held([i, j]) {
-            return; // a flying disc resting on a held one: held too
-        }
+        (normal, dist)
+    }
+
+    /// Discs `k` (their bodies `before`, at the current time and `dist`
+    /// apart) bounce off each other along `normal` if they approach: new
+    /// velocities and generations, the contact-duration rule, a rough
+    /// contact's spin, the ledger and the counts.
+    #[inline]
+    pub(super) fn bounce(&mut self, k: [u32; 2], before: [Body; 2], normal: DVec2, dist: f64) {
+        let ([i, j], [a, b]) = (k, before);
         if (b.vel - a.vel).dot(normal) < -CREEP {
             let (ia, ib) = (self.aux[i as usize], self.aux[j as usize]);
             let rapid = self.now - ia.last_hit < CONTACT_DURATION
@@ -49,7 +69,7 @@ impl Sim {
             let e = if rapid { 1.0 } else { self.laws.restitution };
             let (va, vb) = collision_velocities(ia.mass, ib.mass, a.vel, b.vel, normal, e);
             let spins = if self.record {
-                self.spins_of([i, j])
+                self.spins_of(k)
             } else {
                 [0.0; 2]
             };
@@ -64,17 +84,15 @@ impl Sim {
                 self.rub_pair(i, j, normal, impulse, self.laws.rough());
             }
             let after = [self.bodies[i as usize].vel, self.bodies[j as usize].vel];
-            self.record_pair([i, j], normal, [a.vel, b.vel], after, spins);
+            self.record_pair(k, normal, [a.vel, b.vel], after, spins);
             self.count(i, closing);
             self.max_overlap = self.max_overlap.max(a.radius + b.radius - dist);
         }
-        self.predict(i);
-        self.predict(j);
     }
 
     /// Keeps a pair collision of bodies `k` for the ledger (when it is on),
     /// with their spins before it (after it they are the current ones).
-    pub(super) fn record_pair(
+    fn record_pair(
         &mut self,
         k: [u32; 2],
         normal: DVec2,
@@ -124,7 +142,7 @@ impl Sim {
     }
 
     /// The spins of bodies `k`.
-    pub(super) fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
+    fn spins_of(&self, k: [u32; 2]) -> [f64; 2] {
         k.map(|b| self.spin(b))
     }
 
@@ -419,7 +437,7 @@ impl Sim {
 
     /// Counts a pair collision of body `i` closing at `closing` m/s: an
     /// impact or a resting contact.
-    pub(super) fn count(&mut self, i: u32, closing: f64) {
+    fn count(&mut self, i: u32, closing: f64) {
         if crate::impact::is_impact(closing, self.impact_speed) {
             self.collisions += 1;
         } else {
@@ -440,6 +458,17 @@ impl Sim {
 
     pub(super) fn cross_cell(&mut self, i: u32, axis: usize, upper: bool) {
         self.advance_to(i, self.now);
+        self.move_to_next_cell(i, axis, upper);
+        if !self.let_go_unless_clear(i) {
+            self.predict_after_crossing(i, axis, upper);
+        }
+    }
+
+    /// Moves disc `i` (at the current time, on its cell's border) into the
+    /// next cell along `axis`; across a periodic edge it comes in at the
+    /// other side, by one world's length.
+    #[inline]
+    pub(super) fn move_to_next_cell(&mut self, i: u32, axis: usize, upper: bool) {
         let from = self.bodies[i as usize].cell;
         let mut to = from;
         to[axis] += if upper { 1 } else { -1 };
@@ -459,8 +488,5 @@ impl Sim {
         self.grid.remove(&mut self.bodies, i, from);
         self.grid.insert(&mut self.bodies, i, to);
         self.bodies[i as usize].cell = to;
-        if !self.let_go_unless_clear(i) {
-            self.predict_after_crossing(i, axis, upper);
-        }
     }
 }

@@ -42,6 +42,18 @@ impl PairGuess {
     };
 }
 
+/// How a scan finds a neighbour's nearest periodic image
+/// ([`Sim::scan_cells`]).
+pub(super) mod images {
+    /// No cell scanned wraps: the neighbour where it is.
+    pub const NONE: u8 = 0;
+    /// Shifted by its cell's shift.
+    pub const BY_CELL: u8 = 1;
+    /// Pair by pair, from the boundary (a periodic grid less than three
+    /// cells wide, where one cell can be a neighbour on both sides).
+    pub const PER_PAIR: u8 = 2;
+}
+
 /// Which cells a pair scan visits.
 #[derive(Clone, Copy)]
 enum Reach {
@@ -125,7 +137,7 @@ impl Sim {
         &self,
         i: u32,
         me: &Body,
-        mut guess: PairGuess,
+        guess: PairGuess,
         reach: Reach,
     ) -> PairGuess {
         // Sleepers lie still: a moving disc meets one on a parabola.
@@ -135,10 +147,9 @@ impl Sim {
         // The cells first, then one loop over their discs: the loop is
         // where the method spends its time, and a closure per cell kept
         // it from being compiled as one.
-        let mut cells = [(0usize, DVec2::ZERO); 9];
-        let mut count = 0;
+        let (mut cells, mut shifts, mut count) = ([0; 9], [DVec2::ZERO; 9], 0);
         let gather = |cell: usize, shift: DVec2| {
-            cells[count] = (cell, shift);
+            (cells[count], shifts[count]) = (cell, shift);
             count += 1;
         };
         match reach {
@@ -147,17 +158,37 @@ impl Sim {
                 .grid
                 .for_each_new_in_reach(me.cell, axis, upper, gather),
         }
+        if IMAGES_BY_CELL {
+            self.scan_cells::<GRAVITY, { images::BY_CELL }>(i, &cells[..count], &shifts, guess)
+        } else {
+            self.scan_cells::<GRAVITY, { images::PER_PAIR }>(i, &cells[..count], &shifts, guess)
+        }
+    }
+
+    /// `guess` improved by the discs in `cells` (grid indices); `IMAGES`
+    /// says how a neighbour's nearest periodic image is found ([`images`]),
+    /// from `shifts` (one per cell) for [`images::BY_CELL`].
+    ///
+    /// The discs are visited from a small ring: each cell's first disc, then
+    /// each visited disc's follower. One loop, whose only hard-to-guess
+    /// branch is its end, and the next lists' loads start while this one's
+    /// arrive. Each disc carries its place in the order of a walk cell by
+    /// cell, list by list (`rank`), so that a tie goes to the disc that walk
+    /// would have met first, as it always did.
+    #[inline(always)]
+    pub(super) fn scan_cells<const GRAVITY: bool, const IMAGES: u8>(
+        &self,
+        i: u32,
+        cells: &[usize],
+        shifts: &[DVec2],
+        mut guess: PairGuess,
+    ) -> PairGuess {
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
+        let me = &bodies[i as usize];
         let g = laws.gravity;
-        // The discs are visited from a small ring: each cell's first disc,
-        // then each visited disc's follower. One loop, whose only hard-to-
-        // guess branch is its end, and the next lists' loads start while
-        // this one's arrive. Each disc carries its place in the order of a
-        // walk cell by cell, list by list (`rank`), so that a tie goes to
-        // the disc that walk would have met first, as it always did.
         let mut ring = [(NIL, 0u32); RING];
         let (mut head, mut tail) = (0usize, 0usize);
-        for (slot, &(cell, _)) in cells[..count].iter().enumerate() {
+        for (slot, &cell) in cells.iter().enumerate() {
             let first = self.grid.first(cell);
             ring[tail % RING] = (first, ((slot as u32) << 24) + 1);
             tail += usize::from(first != NIL);
@@ -180,10 +211,10 @@ impl Sim {
             } else {
                 (other.pos + other.vel * tau, other.vel)
             };
-            let d = if IMAGES_BY_CELL {
-                pj + cells[(rank >> 24) as usize].1 - me.pos
-            } else {
-                laws.boundary.separation(me.pos, pj, laws.size)
+            let d = match IMAGES {
+                images::NONE => pj - me.pos,
+                images::BY_CELL => pj + shifts[(rank >> 24) as usize] - me.pos,
+                _ => laws.boundary.separation(me.pos, pj, laws.size),
             };
             let terms = PairTerms::of(d, vj - me.vel, me.radius + other.radius);
             // Most neighbours never meet it: no root to take. (The disc
