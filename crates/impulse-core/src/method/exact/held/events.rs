@@ -34,7 +34,7 @@ impl Sim {
 
     /// After an event of `bodies` (their generations before it in `gens`):
     /// a held one whose new course is not clear to the end of the step
-    /// flies again ([`Sim::let_go`]).
+    /// flies again, or settles ([`Sim::unless_clear`]).
     pub(in crate::method::exact) fn let_go_if_moved(&mut self, bodies: [u32; 2], gens: [u32; 2]) {
         if self.sleepers == 0 {
             return;
