@@ -20,7 +20,6 @@
 //! happens in a periodic world) hands the rest of the step to the general
 //! loop, which takes it from the same state.
 
-use super::grid::NIL;
 use super::predict::{images, PairGuess};
 use super::queue::Event;
 use super::{Kind, Sim};
@@ -147,11 +146,9 @@ impl Sim {
 
     /// [`Sim::predict_after_crossing`] for a plain gas.
     fn predict_after_crossing_plain(&mut self, i: u32, axis: usize, upper: bool) {
-        let guess = self.aux[i as usize].guess;
-        let holds = guess.partner == NIL || self.bodies[guess.partner as usize].gen == guess.gen;
-        if !holds {
+        let Some(guess) = self.guess_that_holds(i) else {
             return self.predict_plain(i);
-        }
+        };
         let c = self.bodies[i as usize].cell;
         let guess = if self.grid.is_inner(c) {
             // The three cells beyond, none wrapped.
@@ -208,24 +205,58 @@ impl Sim {
 #[cfg(test)]
 mod tests {
     use super::super::Exact;
+    use crate::boundary::Boundary;
+    use crate::laws::Laws;
     use crate::ledger::Ledger;
-    use crate::presets::Gas;
+    use crate::particle::{Color, Particle};
     use crate::stats::StepStats;
+    use glam::DVec2;
 
-    /// Steps `gas` with `exact` for `steps` steps of `dt`, through the plain
-    /// loop or the general one; returns the discs, each step's counts and
-    /// the ledger (on, so that impacts are recorded too).
+    /// A gas of `n` discs covering about `fraction` of a periodic square, on
+    /// a jittered lattice (no two overlap), radii from 0.5 m down to
+    /// 0.5 / `ratio` m, speeds up to 1 m/s in every direction; numbers from
+    /// a xorshift seeded with `seed`.
+    fn gas(n: usize, fraction: f64, ratio: f64, seed: u64) -> (Vec<Particle>, Laws) {
+        let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut random = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let spacing = 0.5 * (std::f64::consts::PI / fraction).sqrt();
+        let per_row = (n as f64).sqrt().ceil() as usize;
+        let mut laws = Laws::new(DVec2::splat(per_row as f64 * spacing));
+        laws.boundary = Boundary::Periodic;
+        let discs = (0..n)
+            .map(|k| {
+                let radius = 0.5 / ratio.powf(random());
+                let room = 0.5 * spacing - radius;
+                let jitter = DVec2::new(random() - 0.5, random() - 0.5) * room;
+                let cell = DVec2::new((k % per_row) as f64 + 0.5, (k / per_row) as f64 + 0.5);
+                let vel = DVec2::new(random() - 0.5, random() - 0.5) * 2.0;
+                let mass = 4.0 * radius * radius;
+                Particle::new(
+                    cell * spacing + jitter,
+                    vel,
+                    mass,
+                    radius,
+                    Color::rgb(0, 0, 0),
+                )
+            })
+            .collect();
+        (discs, laws)
+    }
+
+    /// Steps `discs` under `laws` with `exact` for `steps` steps of `dt`,
+    /// through the plain loop or the general one; returns the discs, each
+    /// step's counts and the ledger (on, so that impacts are recorded too).
     fn stepped(
-        gas: &Gas,
-        restitution: f64,
+        (mut discs, laws): (Vec<Particle>, Laws),
         steps: usize,
         dt: f64,
         general_loop: bool,
-    ) -> (Vec<crate::Particle>, Vec<StepStats>, Ledger) {
-        let world = gas.build();
-        let mut laws = world.laws;
-        laws.restitution = restitution;
-        let mut particles = world.particles.clone();
+    ) -> (Vec<Particle>, Vec<StepStats>, Ledger) {
         let mut exact = Exact {
             general_loop,
             ..Exact::default()
@@ -236,7 +267,7 @@ mod tests {
         for k in 0..steps {
             let mut stats = StepStats::default();
             exact.advance(
-                &mut particles,
+                &mut discs,
                 &laws,
                 dt,
                 &mut stats,
@@ -245,55 +276,32 @@ mod tests {
             stats.timings = Default::default();
             all.push(stats);
         }
-        (particles, all, ledger)
+        (discs, all, ledger)
     }
 
     #[test]
     fn a_plain_gas_steps_as_the_general_loop_does_bit_for_bit() {
+        // (discs, fraction of the area, largest over smallest radius, seed, e)
         let gases = [
-            (
-                Gas {
-                    count: 1500,
-                    ..Gas::default()
-                },
-                1.0,
-            ),
-            (
-                Gas {
-                    count: 1200,
-                    radius_ratio: 3.0,
-                    seed: 7,
-                    ..Gas::default()
-                },
-                1.0,
-            ),
-            (
-                Gas {
-                    count: 1000,
-                    area_fraction: 0.5,
-                    seed: 3,
-                    ..Gas::default()
-                },
-                1.0,
-            ),
+            (1500, 0.3, 1.0, 1, 1.0),
+            (1200, 0.3, 3.0, 7, 1.0),
+            (1000, 0.5, 1.0, 3, 1.0),
             // Inelastic: the contact-duration rule decides some collisions.
-            (
-                Gas {
-                    count: 800,
-                    seed: 11,
-                    ..Gas::default()
-                },
-                0.6,
-            ),
+            (800, 0.3, 1.0, 11, 0.6),
         ];
-        for (gas, e) in gases {
-            let sim = Exact::default();
-            assert!(!sim.general_loop);
-            let (plain, plain_stats, plain_ledger) = stepped(&gas, e, 4, 0.5, false);
-            let (general, general_stats, general_ledger) = stepped(&gas, e, 4, 0.5, true);
-            assert!(plain_stats.iter().all(|s| s.pair_collisions > 0), "{gas:?}");
-            assert_eq!(plain_stats, general_stats, "{gas:?}, e = {e}");
-            assert_eq!(plain_ledger, general_ledger, "{gas:?}, e = {e}");
+        for (n, fraction, ratio, seed, e) in gases {
+            let case = format!("{n} discs, {fraction} of the area, radii ×{ratio}, e = {e}");
+            let start = || {
+                let (discs, mut laws) = gas(n, fraction, ratio, seed);
+                laws.restitution = e;
+                (discs, laws)
+            };
+            assert!(!Exact::default().general_loop);
+            let (plain, plain_stats, plain_ledger) = stepped(start(), 4, 0.5, false);
+            let (general, general_stats, general_ledger) = stepped(start(), 4, 0.5, true);
+            assert!(plain_stats.iter().all(|s| s.pair_collisions > 0), "{case}");
+            assert_eq!(plain_stats, general_stats, "{case}");
+            assert_eq!(plain_ledger, general_ledger, "{case}");
             for (a, b) in plain.iter().zip(&general) {
                 assert_eq!(
                     (
@@ -304,7 +312,7 @@ mod tests {
                         b.pos.to_array().map(f64::to_bits),
                         b.vel.to_array().map(f64::to_bits)
                     ),
-                    "{gas:?}, e = {e}"
+                    "{case}"
                 );
             }
         }
@@ -312,28 +320,15 @@ mod tests {
 
     #[test]
     fn only_a_plain_gas_takes_the_plain_loop() {
-        use crate::boundary::Boundary;
-        let check = |gas: Gas, change: &dyn Fn(&mut crate::laws::Laws), plain: bool| {
-            let world = gas.build();
-            let mut laws = world.laws;
+        let check = |change: &dyn Fn(&mut Laws), plain: bool| {
+            let (discs, mut laws) = gas(300, 0.3, 1.0, 5);
             change(&mut laws);
-            let sim = super::Sim::new(&world.particles, &laws, 0.1);
-            assert_eq!(sim.is_plain_gas(), plain, "{gas:?}");
+            let sim = super::Sim::new(&discs, &laws, 0.1);
+            assert_eq!(sim.is_plain_gas(), plain, "{laws:?}");
         };
-        let gas = Gas {
-            count: 300,
-            ..Gas::default()
-        };
-        check(gas, &|_| {}, true);
-        check(gas, &|l| l.gravity = glam::DVec2::new(0.0, -9.81), false);
-        check(gas, &|l| l.tangential_restitution = 0.5, false);
-        check(
-            Gas {
-                boundary: Boundary::Box,
-                ..gas
-            },
-            &|_| {},
-            false,
-        );
+        check(&|_| {}, true);
+        check(&|l| l.gravity = DVec2::new(0.0, -9.81), false);
+        check(&|l| l.tangential_restitution = 0.5, false);
+        check(&|l| l.boundary = Boundary::Box, false);
     }
 }

@@ -76,13 +76,21 @@ impl Sim {
     /// cell along `axis`: its pair guess holds if its partner kept its
     /// course, and then only the cells new in reach are scanned.
     pub(super) fn predict_after_crossing(&mut self, i: u32, axis: usize, upper: bool) {
-        let guess = self.aux[i as usize].guess;
-        let holds = guess.partner == NOBODY || self.bodies[guess.partner as usize].gen == guess.gen;
-        if !holds || !self.grid.images_by_cell() {
-            return self.predict(i);
-        }
+        let guess = match self.guess_that_holds(i) {
+            Some(guess) if self.grid.images_by_cell() => guess,
+            _ => return self.predict(i),
+        };
         self.aux[i as usize].guess = self.scan(i, guess, Reach::New { axis, upper });
         self.schedule(i);
+    }
+
+    /// Disc `i`'s pair guess, if it still holds: it has no partner, or its
+    /// partner has kept its course since.
+    #[inline]
+    pub(super) fn guess_that_holds(&self, i: u32) -> Option<PairGuess> {
+        let guess = self.aux[i as usize].guess;
+        let holds = guess.partner == NOBODY || self.bodies[guess.partner as usize].gen == guess.gen;
+        holds.then_some(guess)
     }
 
     /// Queues the earliest of disc `i`'s pair guess, wall hits and cell
