@@ -258,6 +258,18 @@ fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
     let ms = |k: &str| timing[k].as_f64().unwrap();
     assert!(ms("frame_ms") > 0.0 && ms("draw_ms") > 0.0 && ms("present_ms") > 0.0);
     assert!(ms("frame_ms") >= ms("draw_ms"), "{timing}");
+
+    // A disc picked out of the crowd gets its values beside it, over its
+    // neighbours, rather than a notice that there is no room.
+    let view = View::of(&s);
+    app.click(view.to_screen(vec2(&s["particles"][0]["pos"])));
+    let s = app.wait_frames(3);
+    assert_eq!(s["selected"], 0, "a click on a disc picks it");
+    assert_eq!(
+        s["readouts_shown"],
+        serde_json::json!([1, 1]),
+        "the picked disc's values are drawn"
+    );
     let last = app.quit();
 
     let text = std::fs::read_to_string(&csv).expect("the frame times were written");

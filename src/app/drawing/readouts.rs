@@ -3,11 +3,13 @@
 //! launch preview's speed, in the bundled DejaVu Sans (it has π, °, ² and
 //! the middle dot of kg·m/s). A readout goes where it covers no disc, no
 //! arrow and no other readout ([`super::cull::place_label`]): the selected
-//! disc's always (moved out on a leader line when crowded), every other
-//! disc's only where there is room. Backgrounds first, then all text.
+//! disc's always (moved out on a leader line when crowded, over its
+//! neighbours when there is no room at all), every other disc's only where
+//! there is room. Backgrounds first, then all text.
 
 use super::cull::{
-    circle_on_screen, place_label, LabelPlacer, Obstacles, MIN_ARROW_PIXELS, MIN_LABEL_DISC_PIXELS,
+    circle_on_screen, place_label, LabelPlacer, Obstacles, Placement, ScreenRect, MIN_ARROW_PIXELS,
+    MIN_LABEL_DISC_PIXELS,
 };
 use crate::app::lang::tr;
 use crate::app::look::{color, Look, MIN_TEXT_POINTS};
@@ -174,8 +176,11 @@ pub fn draw_readouts(
     let rows = if spin { 5.0 } else { 3.0 };
     let height = f64::from(rows * line_height + 2.0 * pad);
     let typical = DVec2::new(f64::from(22.0 * size), height);
-    let Some(obstacles) = obstacles(world, camera, overlays, typical.y) else {
-        return (0, 0);
+    // Past MAX_OBSTACLE_DISCS on screen only the selected disc gets values.
+    let (obstacles, all) = match obstacles(world, camera, overlays, typical.y) {
+        Some(o) => (o, all),
+        None if selected.is_some() => (Obstacles::new(typical.y), false),
+        None => return (0, 0),
     };
     let mut placer = LabelPlacer::new(typical);
     let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.text_scale));
@@ -204,15 +209,20 @@ pub fn draw_readouts(
             .fold(0.0, f32::max);
         let label_size = DVec2::new(f64::from(width + 2.0 * pad), height);
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
-        if let Some(at) = place_label(
-            c,
-            r,
-            label_size,
-            gaps,
-            camera.screen_rect(),
-            &obstacles,
-            &placer,
-        ) {
+        let screen = camera.screen_rect();
+        let placed =
+            place_label(c, r, label_size, gaps, screen, &obstacles, &placer).or_else(|| {
+                // Crowded all round: the selected disc's values go beside
+                // it all the same, over its neighbours (a teacher chose
+                // this disc; a notice instead would cover more of them).
+                let over = || place_over_others(c, r, label_size, gaps, screen, &placer);
+                if chosen {
+                    over()
+                } else {
+                    None
+                }
+            });
+        if let Some(at) = placed {
             placer.try_place(at.rect);
             labels.push(Label {
                 rect: at.rect,
@@ -258,6 +268,22 @@ pub fn draw_readouts(
         }
     }
     (labels.len(), wanted)
+}
+
+/// Where the selected disc's label goes when every place beside it covers
+/// something: the nearest one that covers only other discs and arrows, never
+/// the disc itself or another label.
+fn place_over_others(
+    center: DVec2,
+    radius: f64,
+    size: DVec2,
+    gaps: &[f64],
+    screen: ScreenRect,
+    placed: &LabelPlacer,
+) -> Option<Placement> {
+    let mut itself = Obstacles::new(size.y);
+    itself.add_circle(center, radius + 2.0);
+    place_label(center, radius, size, gaps, screen, &itself, placed)
 }
 
 /// `text` cut into lines no wider than `width` (as `measure` finds them),
