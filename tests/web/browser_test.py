@@ -484,6 +484,12 @@ try:
     # No keyboard trap: from the world, Shift+Tab reaches the mirror.
     mirror_choose(d, "mirror-languages", 0)
     wait_state(d, lambda s: s["ui"]["language"] == "en", what="English again")
+    # The switch is said in the new language, so the last thing said is not
+    # left in Spanish under an English page.
+    now_en = (ftl_value("en", "window.ftl", "language-now") + " "
+              + ftl_value("en", "window.ftl", "this-language"))
+    text = wait_said(d, lambda t: now_en in t, f"the switch back ({now_en!r})")
+    check(True, f"back in English, the live region says so: {text[:60]!r}…")
     canvas = d.find_element(By.ID, "glcanvas")
     d.execute_script("arguments[0].focus()", canvas)
     wait_frames(d, 3)

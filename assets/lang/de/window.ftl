@@ -2,6 +2,7 @@
 # Jede andere Sprache hat dieselben Nachrichten mit denselben $-Werten.
 
 this-language = Deutsch
+language-now = Sprache: { this-language }
 
 ## Die obere Leiste
 scene-untitled = Sandkasten

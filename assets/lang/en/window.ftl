@@ -2,6 +2,7 @@
 # Every other language has the same messages with the same $values.
 
 this-language = English
+language-now = Language: { this-language }
 
 ## The top bar
 scene-untitled = Sandbox

@@ -2,6 +2,7 @@
 # Todos los demás idiomas tienen los mismos mensajes con los mismos $valores.
 
 this-language = Español
+language-now = Idioma: { this-language }
 
 ## La barra superior
 scene-untitled = Experimento libre

@@ -2,6 +2,7 @@
 # Chaque autre langue a les mêmes messages avec les mêmes $valeurs.
 
 this-language = Français
+language-now = Langue : { this-language }
 
 ## La barre du haut
 scene-untitled = Bac à sable

@@ -2,6 +2,7 @@
 # Todo idioma tem as mesmas mensagens com os mesmos $values.
 
 this-language = Português (Brasil)
+language-now = Idioma: { this-language }
 
 ## A barra de cima
 scene-untitled = Caixa livre

@@ -358,6 +358,10 @@ impl Sandbox {
             SetTheme(t) => self.panels.theme = t,
             SetLanguage(lang) => {
                 crate::app::lang::set_language(lang);
+                // Shown and said in the new language, so that the last
+                // message (the strip, the page's live region) is not left
+                // in the old one.
+                self.toast(tr!("language-now"));
                 self.session.settings.settings.language = Some(lang.code().to_string());
                 if let Some(problem) = self.session.settings.save() {
                     self.report(problem);

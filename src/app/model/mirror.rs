@@ -151,6 +151,12 @@ mod tests {
         let m = s.mirror();
         assert_eq!(m.lang, "es");
         assert_eq!(m.languages.chosen, Some(1));
+        assert_eq!(
+            s.take_announcements().last().map(String::as_str),
+            Some("Idioma: Español"),
+            "the switch is said in the new language"
+        );
+        assert_eq!(s.message(), Some("Idioma: Español"), "and shown in it");
         assert_ne!(m.buttons[3].label, "Next collision", "in Spanish");
         crate::app::lang::set_language(Lang::En);
     }
