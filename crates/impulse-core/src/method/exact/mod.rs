@@ -434,12 +434,12 @@ impl Sim {
         }
     }
 
-    /// Prefetches disc `k`'s body, the rest of it and its queue node.
+    /// Prefetches disc `k`'s body, the rest of it and its place in the queue.
     #[inline]
     fn prefetch_disc(&self, k: u32) {
         prefetch(&self.bodies[k as usize]);
         prefetch(&self.aux[k as usize]);
-        prefetch(self.queue.node_of(k));
+        self.queue.prefetch(k);
     }
 
     /// Prefetches the partner of disc `k`'s event and the cell lists

@@ -27,7 +27,8 @@ pub(super) struct Event<K> {
     pub kind: K,
 }
 
-/// End of a list, or no list.
+/// No disc: what [`EventQueue::soon`] and [`EventQueue::next_of`] give at
+/// the end of a list.
 pub(super) const NIL: u32 = u32::MAX;
 /// The disc's event waits in the overflow list.
 const OVERFLOW: u32 = u32::MAX - 1;
@@ -36,13 +37,10 @@ const PER_BUCKET: f64 = 2.0;
 /// Ring buckets per disc (rounded up to a power of two).
 const BUCKETS_PER_DISC: usize = 2;
 
-/// A disc's event and its place in the queue, together so that one memory
-/// access finds both.
+/// A disc's event.
 #[derive(Clone, Copy, Debug)]
 struct Node<K> {
     time: f64,
-    next: u32,
-    prev: u32,
     /// Ring slot, [`OVERFLOW`], or [`NIL`] when it has no event.
     bucket: u32,
     kind: Option<K>,
@@ -51,20 +49,25 @@ struct Node<K> {
 impl<K> Node<K> {
     const FREE: Node<K> = Node {
         time: f64::INFINITY,
-        next: NIL,
-        prev: NIL,
         bucket: NIL,
         kind: None,
     };
 }
 
 /// Calendar queue of at most one event per disc.
+///
+/// The lists are linked through `next` and `prev`, which number every place
+/// a list can pass through: the discs `0..n`, then the place past every
+/// list's end (`n`, whose `prev` is scratch), then one head per ring slot
+/// and one for the overflow (`n + 1 + slot`, `n + 1 + slots`; only `next`
+/// has them). So a disc's predecessor is a disc or a head alike, and its
+/// successor a disc or the end: linking and unlinking write without asking
+/// which (these were a coin toss the processor guessed wrong about once per
+/// event).
 pub(super) struct EventQueue<K> {
     nodes: Vec<Node<K>>,
-    /// First disc of each ring slot's list.
-    heads: Vec<u32>,
-    /// First disc of the overflow list.
-    overflow: u32,
+    next: Vec<u32>,
+    prev: Vec<u32>,
     /// Discs in the ring, and in all.
     in_ring: usize,
     len: usize,
@@ -77,22 +80,45 @@ pub(super) struct EventQueue<K> {
     cursor: u64,
     /// The ring covers buckets `base .. base + ring size`.
     base: u64,
+    /// Ring slots (a power of two).
+    slots: u64,
 }
 
 impl<K: Copy> EventQueue<K> {
     /// An empty queue for `n` discs.
     pub fn new(n: usize) -> Self {
         let slots = (BUCKETS_PER_DISC * n).next_power_of_two().max(16);
+        let places = n + 1 + slots + 1;
+        assert!(places < OVERFLOW as usize, "too many discs for the queue");
+        let end = n as u32;
         EventQueue {
             nodes: vec![Node::FREE; n],
-            heads: vec![NIL; slots],
-            overflow: NIL,
+            next: vec![end; places],
+            prev: vec![end; n + 1],
             in_ring: 0,
             len: 0,
             per_second: 1.0,
             offset: 0.0,
             cursor: 0,
             base: 0,
+            slots: slots as u64,
+        }
+    }
+
+    /// The place past every list's end.
+    #[inline]
+    fn end(&self) -> u32 {
+        self.nodes.len() as u32
+    }
+
+    /// The head of ring slot `slot`, or of the overflow ([`OVERFLOW`]).
+    #[inline]
+    fn head(&self, bucket: u32) -> usize {
+        let first_head = self.nodes.len() + 1;
+        if bucket == OVERFLOW {
+            first_head + self.slots as usize
+        } else {
+            first_head + bucket as usize
         }
     }
 
@@ -112,11 +138,6 @@ impl<K: Copy> EventQueue<K> {
         }
     }
 
-    #[inline]
-    fn ring_size(&self) -> u64 {
-        self.heads.len() as u64
-    }
-
     /// Sets disc `owner`'s event (replacing any), or clears it with `None`.
     pub fn set(&mut self, owner: u32, event: Option<Event<K>>) {
         self.unlink(owner);
@@ -127,26 +148,20 @@ impl<K: Copy> EventQueue<K> {
 
     fn link(&mut self, owner: u32, time: f64, kind: K) {
         let number = self.bucket_number(time);
-        let bucket = if number - self.base < self.ring_size() {
+        let bucket = if number - self.base < self.slots {
             self.in_ring += 1;
-            (number & (self.ring_size() - 1)) as u32
+            (number & (self.slots - 1)) as u32
         } else {
             OVERFLOW
         };
-        let head = if bucket == OVERFLOW {
-            &mut self.overflow
-        } else {
-            &mut self.heads[bucket as usize]
-        };
-        let next = *head;
-        *head = owner;
-        if next != NIL {
-            self.nodes[next as usize].prev = owner;
-        }
+        let head = self.head(bucket);
+        let first = self.next[head];
+        self.next[owner as usize] = first;
+        self.prev[owner as usize] = head as u32;
+        self.prev[first as usize] = owner; // scratch when `first` is the end
+        self.next[head] = owner;
         self.nodes[owner as usize] = Node {
             time,
-            next,
-            prev: NIL,
             bucket,
             kind: Some(kind),
         };
@@ -154,39 +169,36 @@ impl<K: Copy> EventQueue<K> {
     }
 
     fn unlink(&mut self, owner: u32) {
-        let node = self.nodes[owner as usize];
-        if node.bucket == NIL {
+        let o = owner as usize;
+        let bucket = self.nodes[o].bucket;
+        if bucket == NIL {
             return;
         }
-        if node.prev != NIL {
-            self.nodes[node.prev as usize].next = node.next;
-        } else if node.bucket == OVERFLOW {
-            self.overflow = node.next;
-        } else {
-            self.heads[node.bucket as usize] = node.next;
-        }
-        if node.next != NIL {
-            self.nodes[node.next as usize].prev = node.prev;
-        }
-        if node.bucket != OVERFLOW {
+        let (next, prev) = (self.next[o], self.prev[o]);
+        self.next[prev as usize] = next;
+        self.prev[next as usize] = prev;
+        if bucket != OVERFLOW {
             self.in_ring -= 1;
         }
         self.len -= 1;
-        self.nodes[owner as usize] = Node::FREE;
+        self.nodes[o] = Node::FREE;
     }
 
-    /// The earliest of the list starting at `first` (by time, then owner).
-    fn earliest_in(&self, first: u32) -> Option<u32> {
-        let mut best: Option<(f64, u32)> = None;
-        let mut k = first;
-        while k != NIL {
-            let node = &self.nodes[k as usize];
-            if best.is_none_or(|b| (node.time, k) < b) {
-                best = Some((node.time, k));
-            }
-            k = node.next;
+    /// The earliest of the list after `head` (by time, then owner).
+    fn earliest_in(&self, head: usize) -> Option<u32> {
+        let end = self.end();
+        // Every disc is numbered below the end, so the first one beats it.
+        let (mut best, mut best_time) = (end, f64::INFINITY);
+        let mut k = self.next[head];
+        while k != end {
+            let time = self.nodes[k as usize].time;
+            // Chosen without a branch: which one is earlier is a coin toss.
+            let earlier = time < best_time || (time == best_time && k < best) || best == end;
+            best = if earlier { k } else { best };
+            best_time = if earlier { time } else { best_time };
+            k = self.next[k as usize];
         }
-        best.map(|(_, k)| k)
+        (best != end).then_some(best)
     }
 
     /// The owner of the earliest event; moves the cursor to its bucket.
@@ -197,7 +209,7 @@ impl<K: Copy> EventQueue<K> {
         loop {
             if self.in_ring == 0 {
                 // Only far events: jump to the earliest and refill the ring.
-                let first = self.earliest_in(self.overflow)?;
+                let first = self.earliest_in(self.head(OVERFLOW))?;
                 let t = self.nodes[first as usize].time;
                 let b = ((t + self.offset) * self.per_second).floor();
                 self.cursor = if b.is_finite() && b > self.cursor as f64 {
@@ -208,11 +220,11 @@ impl<K: Copy> EventQueue<K> {
                 self.refill();
                 continue;
             }
-            if self.cursor - self.base >= self.ring_size() / 2 {
+            if self.cursor - self.base >= self.slots / 2 {
                 self.refill();
             }
-            let slot = (self.cursor & (self.ring_size() - 1)) as usize;
-            if let Some(k) = self.earliest_in(self.heads[slot]) {
+            let slot = (self.cursor & (self.slots - 1)) as u32;
+            if let Some(k) = self.earliest_in(self.head(slot)) {
                 return Some(k);
             }
             self.cursor += 1;
@@ -224,15 +236,17 @@ impl<K: Copy> EventQueue<K> {
     /// events have drifted away from it.
     fn refill(&mut self) {
         self.base = self.cursor;
-        let mut k = self.overflow;
-        self.overflow = NIL;
+        let (head, end) = (self.head(OVERFLOW), self.end());
+        let mut k = self.next[head];
+        self.next[head] = end;
         let mut moved = Vec::new();
-        while k != NIL {
+        while k != end {
             let node = self.nodes[k as usize];
             moved.push((k, node.time, node.kind));
-            k = node.next;
+            k = self.next[k as usize];
         }
         if moved.len() > self.len / 4 {
+            // Their nodes still say so: the retune finds them.
             return self.retune();
         }
         for (owner, time, kind) in moved {
@@ -254,11 +268,7 @@ impl<K: Copy> EventQueue<K> {
             .filter(|(_, node)| node.bucket != NIL)
             .filter_map(|(k, node)| Some((k as u32, node.time, node.kind?)))
             .collect();
-        self.heads.fill(NIL);
-        self.nodes.fill(Node::FREE);
-        self.overflow = NIL;
-        self.in_ring = 0;
-        self.len = 0;
+        self.empty_lists();
         let mut times: Vec<f64> = queued.iter().map(|&(_, t, _)| t).collect();
         if let Some(&lo) = times.iter().min_by(|a, b| a.total_cmp(b)) {
             // The earliest event opens the ring (bucket 0), whatever the
@@ -281,23 +291,47 @@ impl<K: Copy> EventQueue<K> {
         }
     }
 
+    /// Every list empty, no disc queued.
+    fn empty_lists(&mut self) {
+        let end = self.end();
+        self.nodes.fill(Node::FREE);
+        self.next.fill(end);
+        self.prev.fill(end);
+        self.in_ring = 0;
+        self.len = 0;
+    }
+
+    /// A place in the lists as a disc, [`NIL`] for a head or the end.
+    #[inline]
+    fn disc(&self, k: u32) -> u32 {
+        if (k as usize) < self.nodes.len() {
+            k
+        } else {
+            NIL
+        }
+    }
+
     /// The first disc in the bucket `ahead` buckets past the current one
     /// ([`NIL`] if it is empty), whose event is likely to come soon.
     #[inline]
     pub fn soon(&self, ahead: u64) -> u32 {
-        self.heads[((self.cursor + ahead) & (self.ring_size() - 1)) as usize]
+        let slot = ((self.cursor + ahead) & (self.slots - 1)) as u32;
+        self.disc(self.next[self.head(slot)])
     }
 
     /// The disc after `k` in its bucket's list ([`NIL`] at the end).
     #[inline]
     pub fn next_of(&self, k: u32) -> u32 {
-        self.nodes[k as usize].next
+        self.disc(self.next[k as usize])
     }
 
-    /// Disc `k`'s queue node, for prefetching it.
+    /// Prefetches disc `k`'s event and links.
     #[inline]
-    pub fn node_of(&self, k: u32) -> &impl Sized {
-        &self.nodes[k as usize]
+    pub fn prefetch(&self, k: u32) {
+        let k = k as usize;
+        crate::parallel::prefetch(&self.nodes[k]);
+        crate::parallel::prefetch(&self.next[k]);
+        crate::parallel::prefetch(&self.prev[k]);
     }
 
     /// What disc `k`'s event is, if it has one.
@@ -320,14 +354,14 @@ impl<K: Copy> EventQueue<K> {
     /// Whether an event other than the earliest (`top`'s) comes at or
     /// before `t`, a time in the current bucket.
     pub fn another_by(&self, top: u32, t: f64) -> bool {
-        let slot = (self.cursor & (self.ring_size() - 1)) as usize;
-        let mut k = self.heads[slot];
-        while k != NIL {
-            let node = &self.nodes[k as usize];
-            if k != top && node.time <= t {
+        let slot = (self.cursor & (self.slots - 1)) as u32;
+        let end = self.end();
+        let mut k = self.next[self.head(slot)];
+        while k != end {
+            if k != top && self.nodes[k as usize].time <= t {
                 return true;
             }
-            k = node.next;
+            k = self.next[k as usize];
         }
         false
     }
@@ -356,11 +390,7 @@ impl<K: Copy> EventQueue<K> {
 
     /// Empties the queue.
     pub fn clear(&mut self) {
-        self.nodes.fill(Node::FREE);
-        self.heads.fill(NIL);
-        self.overflow = NIL;
-        self.in_ring = 0;
-        self.len = 0;
+        self.empty_lists();
         self.cursor = 0;
         self.base = 0;
     }
@@ -475,6 +505,49 @@ mod tests {
         }
         let order: Vec<u32> = std::iter::from_fn(|| q.pop()).map(|e| e.owner).collect();
         assert_eq!(order, vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn another_event_by_the_front_s_time_is_found_as_a_search_of_all_would() {
+        // Times on a coarse grid, so that ties are common.
+        let n = 300u32;
+        let mut q = EventQueue::new(n as usize);
+        let mut times = vec![f64::INFINITY; n as usize];
+        let mut x: u64 = 99;
+        let mut rand = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for k in 0..n {
+            times[k as usize] = (rand() % 50) as f64 * 0.25;
+            q.set(k, ev(times[k as usize], k));
+        }
+        q.retune();
+        for step in 0..5_000 {
+            let Some(e) = q.peek() else { break };
+            let others = (0..n).any(|k| k != e.owner && times[k as usize] <= e.time);
+            assert_eq!(q.another_by(e.owner, e.time), others, "step {step}");
+            // Sometimes another disc's event changes before the question.
+            if step % 3 == 0 {
+                let k = (rand() % u64::from(n)) as u32;
+                times[k as usize] = e.time + (rand() % 3) as f64 * 0.25;
+                q.set(k, ev(times[k as usize], k));
+                let others = (0..n).any(|k| k != e.owner && times[k as usize] <= e.time);
+                let top = q.peek().map(|t| t.owner);
+                if top == Some(e.owner) {
+                    assert_eq!(
+                        q.another_by(e.owner, e.time),
+                        others,
+                        "step {step}, after a set"
+                    );
+                }
+            }
+            let owner = q.peek().unwrap().owner;
+            times[owner as usize] += 0.25 * (1 + rand() % 8) as f64;
+            q.set(owner, ev(times[owner as usize], owner));
+        }
     }
 
     #[test]
