@@ -41,7 +41,7 @@ reopen-kept-hover = Der Sandkasten, den dieser Browser aufbewahrt hat, bevor der
 presets-press = Taste drücken oder anklicken:
 
 ## Die Leiste unter der Welt
-caption-edited = Seit dem Öffnen verändert, daher gilt das vielleicht nicht mehr: { $caption }
+caption-edited = Vor den Änderungen: { $caption }
 caption-none = Auf freier Fläche ziehen, um eine Scheibe abzuschießen; H zeigt alle Tasten.
 
 ## Größen, wie Felder und Spalten sie nennen

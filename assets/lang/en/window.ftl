@@ -41,7 +41,7 @@ reopen-kept-hover = The sandbox this browser kept before the link opened.
 presets-press = Press the key, or click:
 
 ## The strip under the world
-caption-edited = Edited since it opened, so this may no longer hold: { $caption }
+caption-edited = Before the edits: { $caption }
 caption-none = Drag on empty space to launch a disc; H lists every key.
 
 ## Quantities, as fields and columns name them

@@ -41,7 +41,7 @@ reopen-kept-hover = El experimento que este navegador guardó antes de que se ab
 presets-press = Presiona la tecla o haz clic:
 
 ## La franja bajo el mundo
-caption-edited = Modificada desde que se abrió, así que puede que esto ya no se cumpla: { $caption }
+caption-edited = Antes de los cambios: { $caption }
 caption-none = Arrastra sobre un espacio vacío para lanzar un disco; H muestra todas las teclas.
 
 ## Magnitudes, tal como las nombran los campos y las columnas

@@ -41,7 +41,7 @@ reopen-kept-hover = Le bac à sable que ce navigateur avait gardé avant l'ouver
 presets-press = Appuyez sur la touche, ou cliquez :
 
 ## Le bandeau sous la simulation
-caption-edited = Scène modifiée depuis son ouverture, ceci n'est peut-être plus vrai : { $caption }
+caption-edited = Avant les modifications : { $caption }
 caption-none = Glissez dans le vide pour lancer un disque ; H liste toutes les touches.
 
 ## Les grandeurs, comme les nomment les champs et les colonnes

@@ -41,7 +41,7 @@ reopen-kept-hover = A caixa livre que este navegador guardou antes de o link abr
 presets-press = Aperte a tecla ou clique:
 
 ## A faixa embaixo do mundo
-caption-edited = Alterada desde que foi aberta, então isto pode não valer mais: { $caption }
+caption-edited = Antes das alterações: { $caption }
 caption-none = Arraste num espaço vazio para lançar um disco; H lista todas as teclas.
 
 ## Grandezas, como os campos e as colunas as chamam

@@ -111,7 +111,7 @@ impl<K: Copy> EventQueue<K> {
         self.nodes.len() as u32
     }
 
-    /// The head of ring slot `slot`, or of the overflow ([`OVERFLOW`]).
+    /// The head of ring slot `bucket`, or of the overflow ([`OVERFLOW`]).
     #[inline]
     fn head(&self, bucket: u32) -> usize {
         let first_head = self.nodes.len() + 1;
