@@ -176,7 +176,7 @@ pub fn draw_readouts(
     let rows = if spin { 5.0 } else { 3.0 };
     let height = f64::from(rows * line_height + 2.0 * pad);
     let typical = DVec2::new(f64::from(22.0 * size), height);
-    // Past MAX_OBSTACLE_DISCS on screen only the selected disc gets values.
+    // Past MAX_OBSTACLE_DISCS discs on screen, only the selected disc's values.
     let (obstacles, all) = match obstacles(world, camera, overlays, typical.y) {
         Some(o) => (o, all),
         None if selected.is_some() => (Obstacles::new(typical.y), false),
@@ -215,12 +215,9 @@ pub fn draw_readouts(
                 // Crowded all round: the selected disc's values go beside
                 // it all the same, over its neighbours (a teacher chose
                 // this disc; a notice instead would cover more of them).
-                let over = || place_over_others(c, r, label_size, gaps, screen, &placer);
-                if chosen {
-                    over()
-                } else {
-                    None
-                }
+                chosen
+                    .then(|| place_over_others(c, r, label_size, gaps, screen, &placer))
+                    .flatten()
             });
         if let Some(at) = placed {
             placer.try_place(at.rect);
