@@ -22,6 +22,9 @@ const NOBODY: u32 = NIL;
 /// Slots of the scan's ring of discs to visit: never more than the nine
 /// cells' lists are waiting, one disc each.
 const RING: usize = 16;
+/// Where [`Sim::scan_two`] keeps, in a rank, which of its two discs the
+/// neighbour is measured against (above a slot's bits and a list's place).
+const WHOSE_SHIFT: u32 = 28;
 
 /// A disc's earliest pair collision, as last predicted.
 #[derive(Clone, Copy, Debug)]
@@ -241,6 +244,58 @@ impl Sim {
             }
         }
         guess
+    }
+
+    /// [`Sim::scan_cells`] for the two discs of a collision at once, each
+    /// with its nine cells, none wrapped, no gravity: one ring over all
+    /// eighteen lists, so that the loads of both scans are on their way
+    /// together. Each neighbour is measured against the disc whose cell it
+    /// was found in, with the same arithmetic and the same ranks for ties,
+    /// so the two guesses are the ones two scans would give.
+    #[inline(always)]
+    pub(super) fn scan_two(&self, discs: [u32; 2], cells: [[usize; 9]; 2]) -> [PairGuess; 2] {
+        const TWO_RINGS: usize = 2 * RING;
+        let (bodies, now) = (&self.bodies, self.now);
+        let mine = discs.map(|i| bodies[i as usize]);
+        let mut ring = [(NIL, 0u32); TWO_RINGS];
+        let (mut head, mut tail) = (0usize, 0usize);
+        for (whose, cells) in cells.iter().enumerate() {
+            for (slot, &cell) in cells.iter().enumerate() {
+                let first = self.grid.first(cell);
+                let rank = ((whose as u32) << WHOSE_SHIFT) + ((slot as u32) << 24) + 1;
+                ring[tail % TWO_RINGS] = (first, rank);
+                tail += usize::from(first != NIL);
+            }
+        }
+        let mut guesses = [PairGuess::NONE; 2];
+        let mut best_ranks = [0u32; 2];
+        while head != tail {
+            let (j, rank) = ring[head % TWO_RINGS];
+            head += 1;
+            let other = &bodies[j as usize];
+            let next = other.next_in_cell;
+            ring[tail % TWO_RINGS] = (next, rank + 1);
+            tail += usize::from(next != NIL);
+            let whose = (rank >> WHOSE_SHIFT) as usize;
+            let me = &mine[whose];
+            let tau = now - other.time;
+            let d = other.pos + other.vel * tau - me.pos;
+            let terms = PairTerms::of(d, other.vel - me.vel, me.radius + other.radius);
+            if !terms.meets() || j == discs[whose] {
+                continue;
+            }
+            let t = now + terms.time();
+            let (guess, best_rank) = (&mut guesses[whose], &mut best_ranks[whose]);
+            if t < guess.time || (t == guess.time && rank < *best_rank) {
+                *guess = PairGuess {
+                    time: t,
+                    partner: j,
+                    gen: other.gen,
+                };
+                *best_rank = rank;
+            }
+        }
+        guesses
     }
 
     /// [`Sim::scan_with`] under gravity while some discs sleep or are
