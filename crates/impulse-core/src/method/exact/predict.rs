@@ -179,40 +179,76 @@ impl Sim {
     /// `guess` improved by the discs in `cells` (grid indices); `IMAGES`
     /// says how a neighbour's nearest periodic image is found ([`images`]),
     /// from `shifts` (one per cell) for [`images::BY_CELL`].
-    ///
-    /// The discs are visited from a small ring: each cell's first disc, then
-    /// each visited disc's follower. One loop, whose only hard-to-guess
-    /// branch is its end, and the next lists' loads start while this one's
-    /// arrive. Each disc carries its place in the order of a walk cell by
-    /// cell, list by list (`rank`), so that a tie goes to the disc that walk
-    /// would have met first, as it always did.
     #[inline(always)]
     pub(super) fn scan_cells<const GRAVITY: bool, const IMAGES: u8>(
         &self,
         i: u32,
         cells: &[usize],
         shifts: &[DVec2],
-        mut guess: PairGuess,
+        guess: PairGuess,
     ) -> PairGuess {
+        let [guess] = self.scan_for::<GRAVITY, IMAGES, 1, RING>([i], [cells], shifts, [guess]);
+        guess
+    }
+
+    /// [`Sim::scan_cells`] for the two discs of a collision at once, each
+    /// with its nine cells, none wrapped, no gravity: one ring over all
+    /// eighteen lists, so that the loads of both scans are on their way
+    /// together.
+    #[inline(always)]
+    pub(super) fn scan_two(&self, discs: [u32; 2], cells: [[usize; 9]; 2]) -> [PairGuess; 2] {
+        let cells = [&cells[0][..], &cells[1][..]];
+        let none = [PairGuess::NONE; 2];
+        self.scan_for::<false, { images::NONE }, 2, { 2 * RING }>(discs, cells, &[], none)
+    }
+
+    /// The `N` discs' `guesses` improved by the discs in their `cells`.
+    ///
+    /// The discs are visited from a ring of `R` lists (at least as many as
+    /// there are cells): each cell's first disc, then each visited disc's
+    /// follower. One loop, whose only hard-to-guess branch is its end, and
+    /// the next lists' loads start while this one's arrive. Each neighbour
+    /// carries whose cell it was found in and its place in the order of a
+    /// walk cell by cell, list by list (`rank`), so that it is measured
+    /// against that disc with the same arithmetic as a scan of its own, and
+    /// a tie goes to the neighbour that walk would have met first, as it
+    /// always did.
+    #[inline(always)]
+    fn scan_for<const GRAVITY: bool, const IMAGES: u8, const N: usize, const R: usize>(
+        &self,
+        discs: [u32; N],
+        cells: [&[usize]; N],
+        shifts: &[DVec2],
+        mut guesses: [PairGuess; N],
+    ) -> [PairGuess; N] {
         let (bodies, laws, now) = (&self.bodies, &self.laws, self.now);
-        let me = &bodies[i as usize];
+        let mine = discs.map(|i| &bodies[i as usize]);
         let g = laws.gravity;
-        let mut ring = [(NIL, 0u32); RING];
+        let mut ring = [(NIL, 0u32); R];
         let (mut head, mut tail) = (0usize, 0usize);
-        for (slot, &cell) in cells.iter().enumerate() {
-            let first = self.grid.first(cell);
-            ring[tail % RING] = (first, ((slot as u32) << 24) + 1);
-            tail += usize::from(first != NIL);
+        for (whose, cells) in cells.iter().enumerate() {
+            for (slot, &cell) in cells.iter().enumerate() {
+                let first = self.grid.first(cell);
+                let rank = ((whose as u32) << WHOSE_SHIFT) + ((slot as u32) << 24) + 1;
+                ring[tail % R] = (first, rank);
+                tail += usize::from(first != NIL);
+            }
         }
-        // The guess brought in wins ties (rank 0).
-        let mut best_rank = 0u32;
+        // The guesses brought in win ties (rank 0).
+        let mut best_ranks = [0u32; N];
         while head != tail {
-            let (j, rank) = ring[head % RING];
+            let (j, rank) = ring[head % R];
             head += 1;
             let other = &bodies[j as usize];
             let next = other.next_in_cell;
-            ring[tail % RING] = (next, rank + 1);
+            ring[tail % R] = (next, rank + 1);
             tail += usize::from(next != NIL);
+            let whose = if N == 1 {
+                0
+            } else {
+                (rank >> WHOSE_SHIFT) as usize
+            };
+            let me = mine[whose];
             let tau = now - other.time;
             let (pj, vj) = if GRAVITY {
                 (
@@ -224,63 +260,12 @@ impl Sim {
             };
             let d = match IMAGES {
                 images::NONE => pj - me.pos,
-                images::BY_CELL => pj + shifts[(rank >> 24) as usize] - me.pos,
+                images::BY_CELL => pj + shifts[((rank >> 24) & 0xf) as usize] - me.pos,
                 _ => laws.boundary.separation(me.pos, pj, laws.size),
             };
             let terms = PairTerms::of(d, vj - me.vel, me.radius + other.radius);
             // Most neighbours never meet it: no root to take. (The disc
             // itself, met in its own cell, is one of them.)
-            if !terms.meets() || j == i {
-                continue;
-            }
-            let t = now + terms.time();
-            if t < guess.time || (t == guess.time && rank < best_rank) {
-                guess = PairGuess {
-                    time: t,
-                    partner: j,
-                    gen: other.gen,
-                };
-                best_rank = rank;
-            }
-        }
-        guess
-    }
-
-    /// [`Sim::scan_cells`] for the two discs of a collision at once, each
-    /// with its nine cells, none wrapped, no gravity: one ring over all
-    /// eighteen lists, so that the loads of both scans are on their way
-    /// together. Each neighbour is measured against the disc whose cell it
-    /// was found in, with the same arithmetic and the same ranks for ties,
-    /// so the two guesses are the ones two scans would give.
-    #[inline(always)]
-    pub(super) fn scan_two(&self, discs: [u32; 2], cells: [[usize; 9]; 2]) -> [PairGuess; 2] {
-        const TWO_RINGS: usize = 2 * RING;
-        let (bodies, now) = (&self.bodies, self.now);
-        let mine = discs.map(|i| bodies[i as usize]);
-        let mut ring = [(NIL, 0u32); TWO_RINGS];
-        let (mut head, mut tail) = (0usize, 0usize);
-        for (whose, cells) in cells.iter().enumerate() {
-            for (slot, &cell) in cells.iter().enumerate() {
-                let first = self.grid.first(cell);
-                let rank = ((whose as u32) << WHOSE_SHIFT) + ((slot as u32) << 24) + 1;
-                ring[tail % TWO_RINGS] = (first, rank);
-                tail += usize::from(first != NIL);
-            }
-        }
-        let mut guesses = [PairGuess::NONE; 2];
-        let mut best_ranks = [0u32; 2];
-        while head != tail {
-            let (j, rank) = ring[head % TWO_RINGS];
-            head += 1;
-            let other = &bodies[j as usize];
-            let next = other.next_in_cell;
-            ring[tail % TWO_RINGS] = (next, rank + 1);
-            tail += usize::from(next != NIL);
-            let whose = (rank >> WHOSE_SHIFT) as usize;
-            let me = &mine[whose];
-            let tau = now - other.time;
-            let d = other.pos + other.vel * tau - me.pos;
-            let terms = PairTerms::of(d, other.vel - me.vel, me.radius + other.radius);
             if !terms.meets() || j == discs[whose] {
                 continue;
             }
