@@ -130,6 +130,37 @@ impl Grid {
         c[0] > 0 && c[0] < self.dims[0] - 1 && c[1] > 0 && c[1] < self.dims[1] - 1
     }
 
+    /// The nine cells around inner cell `c` ([`Grid::is_inner`]), as grid
+    /// indices, row by row: what [`Grid::for_each_neighbour`] visits there,
+    /// in the same order, with no shift.
+    #[inline]
+    pub(super) fn around_inner(&self, c: [i32; 2]) -> [usize; 9] {
+        let (row, k) = (self.dims[0] as usize, self.index(c));
+        [
+            k - row - 1,
+            k - row,
+            k - row + 1,
+            k - 1,
+            k,
+            k + 1,
+            k + row - 1,
+            k + row,
+            k + row + 1,
+        ]
+    }
+
+    /// The three cells a disc in inner cell `c` has newly in reach after
+    /// crossing into it along `axis`: what [`Grid::for_each_new_in_reach`]
+    /// visits there, in the same order, with no shift.
+    #[inline]
+    pub(super) fn beyond_inner(&self, c: [i32; 2], axis: usize, upper: bool) -> [usize; 3] {
+        let mut ahead = c;
+        ahead[axis] += if upper { 1 } else { -1 };
+        let k = self.index(ahead);
+        let step = if axis == 0 { self.dims[0] as usize } else { 1 };
+        [k - step, k, k + step]
+    }
+
     #[inline]
     pub(super) fn index(&self, c: [i32; 2]) -> usize {
         (c[1] as usize) * (self.dims[0] as usize) + c[0] as usize
@@ -403,5 +434,29 @@ mod tests {
             .flat_map(|y| (1..=3).map(move |x| y * 5 + x))
             .collect();
         assert_eq!(seen, expected);
+    }
+
+    #[test]
+    fn the_inner_lists_are_what_the_walks_visit_there() {
+        for boundary in [Boundary::Box, Boundary::Periodic] {
+            let g = grid([7, 5], boundary);
+            for c in cells(&g).filter(|&c| g.is_inner(c)) {
+                let mut walked = Vec::new();
+                g.for_each_neighbour(c, |k, s| walked.push((k, s)));
+                let listed: Vec<_> = g.around_inner(c).map(|k| (k, DVec2::ZERO)).into();
+                assert_eq!(walked, listed, "{boundary:?} {c:?}");
+                for axis in 0..2 {
+                    for upper in [false, true] {
+                        let mut walked = Vec::new();
+                        g.for_each_new_in_reach(c, axis, upper, |k, s| walked.push((k, s)));
+                        let listed: Vec<_> = g
+                            .beyond_inner(c, axis, upper)
+                            .map(|k| (k, DVec2::ZERO))
+                            .into();
+                        assert_eq!(walked, listed, "{boundary:?} {c:?} {axis} {upper}");
+                    }
+                }
+            }
+        }
     }
 }

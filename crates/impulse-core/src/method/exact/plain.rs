@@ -13,10 +13,10 @@
 //! discs' scans are one walk over both their cells ([`Sim::scan_two`]), so
 //! that both scans' loads are on their way together. The pair scan
 //! ([`Sim::scan_cells`]), the move into the next cell and the bounce are the
-//! general loop's own. Measured on the bench's gas
-//! against the general loop (5 alternating rounds, medians, the same state
-//! hash): 154 against 186 ns per event at 10⁴ discs, 204 against 235 at 10⁵
-//! (docs/lab/NOTES.md, issue 30).
+//! general loop's own. Measured on the bench's gas against the general loop
+//! when it was written (c2152a4; 5 alternating rounds, medians, the same
+//! state hash): 154 against 186 ns per event at 10⁴ discs, 204 against 235
+//! at 10⁵ (docs/lab/NOTES.md, issue 30, the eighth look).
 //!
 //! An event the loop has no case for (a wall, leaving the grid: neither
 //! happens in a periodic world) hands the rest of the step to the general
@@ -102,7 +102,7 @@ impl Sim {
         let (ci, cj) = (self.bodies[i as usize].cell, self.bodies[j as usize].cell);
         if self.grid.is_inner(ci) && self.grid.is_inner(cj) {
             // Both scans in one walk (the same guesses as two).
-            let cells = [ci, cj].map(|c| self.nine_inner_cells(c));
+            let cells = [ci, cj].map(|c| self.grid.around_inner(c));
             let [gi, gj] = self.scan_two([i, j], cells);
             self.aux[i as usize].guess = gi;
             self.schedule_plain(i);
@@ -112,24 +112,6 @@ impl Sim {
             self.predict_plain(i);
             self.predict_plain(j);
         }
-    }
-
-    /// The nine cells around inner cell `c` (grid indices), row by row.
-    #[inline]
-    fn nine_inner_cells(&self, c: [i32; 2]) -> [usize; 9] {
-        let row = self.grid.dims[0] as usize;
-        let k = self.grid.index(c);
-        [
-            k - row - 1,
-            k - row,
-            k - row + 1,
-            k - 1,
-            k,
-            k + 1,
-            k + row - 1,
-            k + row,
-            k + row + 1,
-        ]
     }
 
     /// [`Sim::cross_cell`] for a plain gas.
@@ -144,7 +126,7 @@ impl Sim {
         let c = self.bodies[i as usize].cell;
         let guess = if self.grid.is_inner(c) {
             // Nine cells in three runs of three, none wrapped.
-            let cells = self.nine_inner_cells(c);
+            let cells = self.grid.around_inner(c);
             self.scan_cells::<false, { images::NONE }>(i, &cells, &[], PairGuess::NONE)
         } else {
             let (mut cells, mut shifts, mut count) = ([0; 9], [DVec2::ZERO; 9], 0);
@@ -171,15 +153,8 @@ impl Sim {
         let c = self.bodies[i as usize].cell;
         let guess = if self.grid.is_inner(c) {
             // The three cells beyond, none wrapped.
-            let mut ahead = c;
-            ahead[axis] += if upper { 1 } else { -1 };
-            let k = self.grid.index(ahead);
-            let step = if axis == 0 {
-                self.grid.dims[0] as usize
-            } else {
-                1
-            };
-            self.scan_cells::<false, { images::NONE }>(i, &[k - step, k, k + step], &[], guess)
+            let cells = self.grid.beyond_inner(c, axis, upper);
+            self.scan_cells::<false, { images::NONE }>(i, &cells, &[], guess)
         } else {
             let (mut cells, mut shifts, mut count) = ([0; 3], [DVec2::ZERO; 3], 0);
             self.grid

@@ -22,7 +22,7 @@ const NOBODY: u32 = NIL;
 /// Slots of the scan's ring of discs to visit: never more than the nine
 /// cells' lists are waiting, one disc each.
 const RING: usize = 16;
-/// Where [`Sim::scan_two`] keeps, in a rank, which of its two discs the
+/// Where [`Sim::scan_for`] keeps, in a rank, which of its discs the
 /// neighbour is measured against (above a slot's bits and a list's place).
 const WHOSE_SHIFT: u32 = 28;
 
