@@ -16,6 +16,11 @@ use impulse::presets::Gas;
 use impulse::World;
 use std::time::Duration;
 
+/// The binary's allocator (large blocks on huge pages), so that these
+/// timings are the sandbox's.
+#[global_allocator]
+static ALLOC: impulse::alloc_count::Counting = impulse::alloc_count::Counting;
+
 const DT: f64 = 0.01;
 
 /// The gas with a fixed method, broad phase and threading, warmed up.

@@ -22,7 +22,8 @@ use clap::{Parser, Subcommand};
 #[cfg(not(target_arch = "wasm32"))]
 use std::process::ExitCode;
 
-/// Counts live heap bytes, for `bench`'s bytes per disc.
+/// Counts live heap bytes, for `bench`'s bytes per disc, and puts large
+/// blocks on huge pages.
 #[global_allocator]
 static ALLOC: impulse::alloc_count::Counting = impulse::alloc_count::Counting;
 
