@@ -12,9 +12,9 @@
 //! discs and queue at 10⁵ discs, the grid's discs and pairs at 10⁶), and
 //! with 4-KiB pages the processor's cache of address translations covers a
 //! few MiB of them at most. A block of 2 MiB or more therefore starts on a
-//! 2-MiB boundary and is advised for transparent huge pages (`madvise`,
-//! which is what most distributions' default, `madvise` mode, waits for)
-//! before anything touches it. The bytes counted are the bytes asked for,
+//! 2-MiB boundary and is advised for transparent huge pages (`madvise`)
+//! before anything touches it: in the `madvise` mode most distributions
+//! default to, a program gets huge pages only where it asks. The bytes counted are the bytes asked for,
 //! as before; what the process holds can grow by the part of a block's huge
 //! page it has not used yet (a vector's spare capacity, say): at 10⁶ discs
 //! on the grid, 191 against 184 MB. Measured in docs/lab/NOTES.md (the tenth
@@ -26,7 +26,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 static LIVE: AtomicUsize = AtomicUsize::new(0);
 
 /// The system allocator, counting the bytes it has handed out and not yet
-/// been given back.
+/// been given back, with large blocks placed on huge pages (see the module).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Counting;
 
