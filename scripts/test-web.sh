@@ -4,7 +4,8 @@
 # WebDriver (tests/web/browser_test.py). Needs Debian's chromium and
 # chromium-driver (installed with apt when run as root) and selenium from
 # PyPI (installed into target/web-venv). Compares the physics with the
-# desktop build's (`impulse fingerprint`). Writes target/web-screenshot.png.
+# desktop build's (`impulse fingerprint`; IMPULSE_BIN names the binary to ask).
+# Writes target/web-screenshot.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if ! command -v chromium >/dev/null || [ ! -x /usr/bin/chromedriver ]; then
@@ -21,7 +22,15 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 "$venv/bin/python" -c "import selenium" 2>/dev/null || "$venv/bin/pip" install -q selenium
 scripts/build-web.sh
-cargo run --release --quiet -- fingerprint > target/fingerprints.json
+# The desktop's state hashes, from IMPULSE_BIN if given (CI passes the binary
+# `cargo test` has just built: debug or release, the arithmetic is the same),
+# else from a release build.
+bin=${IMPULSE_BIN:-}
+if [ -z "$bin" ]; then
+  cargo build --release --quiet --bin impulse
+  bin=target/release/impulse
+fi
+"$bin" fingerprint > target/fingerprints.json
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server --bind 127.0.0.1 -d dist "$port" >/dev/null 2>&1 &
 server=$!
