@@ -38,7 +38,8 @@
 //!   neighbours sit close in memory; a cell's list runs through its discs,
 //!   and what the pair scan reads of a disc fills one cache line; the
 //!   results are written back in the caller's order. In large scenes each
-//!   event prefetches what the events just after it will read. [`Exact`]
+//!   event prefetches what the events just after it will read, and each
+//!   scan the first disc of every list it is about to walk. [`Exact`]
 //!   keeps that array, the cells and the queue (with the events that lie past
 //!   the step) from one step to the next; a step first checks that every
 //!   disc is exactly where the last one left it, and only an edit (or a
