@@ -4,7 +4,8 @@ student at a Chromebook uses the page. Run by scripts/test-web.sh, which
 builds dist/ and serves it; the address comes as the first argument.
 
 Checks: the page loads without console errors and reports its first state
-(its first frame) within 1.5 s; it opens on the start screen's tiles, with nothing running
+(its first frame) within 3 s, the limit part 10 set (about 0.9 s here when
+the machine is quiet); it opens on the start screen's tiles, with nothing running
 behind them, and *Free play* opens the sandbox; it fills the browser window
 and follows a resize, the world keeping its room at 1280×800 and 800×600;
 the default scene moves; a reload reopens the kept sandbox without asking;
@@ -274,7 +275,7 @@ try:
     first = wait_state(d, what="the first state report")
     loaded_ms = d.execute_script("return window.impulseFirstReport")
     print(f"first state report {loaded_ms:.0f} ms after navigation", flush=True)
-    check(loaded_ms < 1500, f"the first frame within 1.5 s of navigation ({loaded_ms:.0f} ms)")
+    check(loaded_ms < 3000, f"the first frame within 3 s of navigation ({loaded_ms:.0f} ms)")
     check(
         d.execute_script("return document.getElementById('loading') === null"),
         "the loading note is gone once the app runs",
