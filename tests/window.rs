@@ -270,6 +270,47 @@ fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
         serde_json::json!([1, 1]),
         "the picked disc's values are drawn"
     );
+
+    // A quick fling: the press on a disc and the move away reach the window
+    // within one of its slow frames. The press takes the disc where the
+    // button went down, not where the pointer had got to by the frame
+    // (that would launch a new disc, or take another one).
+    let view = View::of(&s);
+    let middle = view.to_world(view.world_center());
+    let nearest = |s: &serde_json::Value| {
+        let parts = s["particles"].as_array().unwrap();
+        (0..parts.len())
+            .min_by(|&a, &b| {
+                let d = |i: usize| {
+                    let p = vec2(&parts[i]["pos"]);
+                    (p[0] - middle[0]).hypot(p[1] - middle[1])
+                };
+                d(a).total_cmp(&d(b))
+            })
+            .unwrap()
+    };
+    let flung = nearest(&s);
+    let from = view.to_screen(vec2(&s["particles"][flung]["pos"]));
+    app.move_to(from);
+    app.wait_frames(1);
+    let to = [from[0] + 80.0, from[1] + 40.0];
+    app.xdo(&[
+        "mousedown",
+        "1",
+        "mousemove",
+        &format!("{}", to[0].round()),
+        &format!("{}", to[1].round()),
+    ]);
+    app.wait_frames(2);
+    app.xdo(&["mouseup", "1"]);
+    let s = app.wait_frames(2);
+    assert_eq!(s["metrics"]["count"], 10000, "a fling launches nothing");
+    assert_eq!(s["selected"], flung, "the disc pressed is the one flung");
+    let at = view.to_screen(vec2(&s["particles"][flung]["pos"]));
+    assert!(
+        (at[0] - to[0]).hypot(at[1] - to[1]) < 3.0,
+        "the flung disc is let go where the pointer was: {at:?}, not {to:?}"
+    );
     let last = app.quit();
 
     let text = std::fs::read_to_string(&csv).expect("the frame times were written");

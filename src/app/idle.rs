@@ -13,8 +13,9 @@
 //! The waker cannot ask miniquad for a frame itself (its event loop takes
 //! the display lock without waiting, and would panic if another thread held
 //! it). It sends the window an X event instead, a pointer motion to where
-//! the pointer already is, which macroquad answers with a frame on the main
-//! thread. It finds this process's window through the X-Resource
+//! the pointer already is (asked of the server just before, so a press or
+//! move since the last frame is not undone), which macroquad answers with a
+//! frame on the main thread. It finds this process's window through the X-Resource
 //! extension. Where that is missing (no X server, no such extension, the
 //! browser), the window draws every frame as before.
 //!
@@ -68,8 +69,10 @@ impl Idle {
 
     /// Called at the end of each frame: `busy` if something moved or
     /// changed on screen this frame; `mouse` is where the pointer is (a
-    /// move keeps the window awake; the waker's event puts it back there); `due` is the window-clock time
-    /// something must happen by (`--exit-after`), if any.
+    /// move keeps the window awake; the waker's event moves it to where the
+    /// X server says it is, or here if the server does not say); `due` is
+    /// the window-clock time something must happen by (`--exit-after`), if
+    /// any.
     pub fn frame_done(&mut self, busy: bool, mouse: (f32, f32), due: Option<f64>) {
         let now = get_time();
         let moved = mouse != self.mouse;
@@ -87,7 +90,8 @@ impl Idle {
                 if let Some(due) = due {
                     wait = wait.min((due - now).max(0.0));
                 }
-                waker.wake_in(wait, mouse);
+                let scale = miniquad::window::dpi_scale();
+                waker.wake_in(wait, (mouse.0 * scale, mouse.1 * scale));
             }
             Some(_) => macroquad::miniquad::window::schedule_update(),
             None => {}
@@ -183,7 +187,8 @@ mod waker {
             self.drawn.fetch_add(1, Ordering::Release);
         }
 
-        /// Draws a frame in `seconds`, the pointer at `mouse`.
+        /// Draws a frame in `seconds`; `mouse` (window pixels) is where the
+        /// pointer was last seen.
         pub fn wake_in(&self, seconds: f64, mouse: (f32, f32)) {
             let at = std::time::Instant::now() + std::time::Duration::from_secs_f64(seconds);
             let (lock, signal) = &*self.alarm;
@@ -308,9 +313,16 @@ mod waker {
         }
     }
 
-    /// Sends `window` a pointer motion to `mouse` (where it already is).
+    /// Sends `window` a pointer motion to where the pointer is now. The
+    /// server is asked just before: a press or a move that reached the
+    /// window since `mouse` was noted must not be followed by a motion back
+    /// to `mouse` (the frame would read the press there). `mouse` (window
+    /// pixels) is used only if the server does not answer.
     fn nudge(conn: &impl Connection, window: Window, mouse: (f32, f32)) -> Result<(), ()> {
-        let (x, y) = (mouse.0.round() as i16, mouse.1.round() as i16);
+        let (x, y) = match conn.query_pointer(window).ok().and_then(|c| c.reply().ok()) {
+            Some(p) if p.same_screen => (p.win_x, p.win_y),
+            _ => (mouse.0.round() as i16, mouse.1.round() as i16),
+        };
         let event = MotionNotifyEvent {
             response_type: MOTION_NOTIFY_EVENT,
             detail: 0.into(),

@@ -18,6 +18,41 @@ pub struct Input {
     /// The left button went down in the world (not on a panel).
     pressed_in_world: bool,
     pub fullscreen: bool,
+    /// macroquad's queue of this frame's input events, read for where the
+    /// left button went down and came up.
+    events: Option<usize>,
+}
+
+/// Where the left button went down (the first time) and came up (the last
+/// time) this frame, in window pixels. A slow frame reads the pointer only
+/// once, after everything queued: a press on a disc followed at once by a
+/// move would otherwise count where the pointer had got to, off the disc.
+#[derive(Default)]
+struct LeftButton {
+    down: Option<DVec2>,
+    up: Option<DVec2>,
+}
+
+impl LeftButton {
+    fn at(x: f32, y: f32) -> DVec2 {
+        let scale = f64::from(miniquad::window::dpi_scale());
+        DVec2::new(f64::from(x), f64::from(y)) / scale
+    }
+}
+
+impl miniquad::EventHandler for LeftButton {
+    fn update(&mut self) {}
+    fn draw(&mut self) {}
+    fn mouse_button_down_event(&mut self, button: miniquad::MouseButton, x: f32, y: f32) {
+        if button == miniquad::MouseButton::Left && self.down.is_none() {
+            self.down = Some(Self::at(x, y));
+        }
+    }
+    fn mouse_button_up_event(&mut self, button: miniquad::MouseButton, x: f32, y: f32) {
+        if button == miniquad::MouseButton::Left {
+            self.up = Some(Self::at(x, y));
+        }
+    }
 }
 
 /// Whether a modifier was down at any moment of this frame: held, pressed
@@ -147,14 +182,27 @@ impl Input {
     /// the keyboard back to the world after Enter in a field.
     pub fn commands(&mut self, panels: &mut Panels, model: &Sandbox, mouse: DVec2) -> Vec<Command> {
         let mut out = Vec::new();
+        let left = self.left_button();
         self.keys(panels, model.arrows_aim(), &mut out);
         self.touches(&mut out);
         if self.pinch.is_none() {
-            self.mouse(panels, model, mouse, &mut out);
+            self.mouse(panels, model, (mouse, left), &mut out);
         }
         dropped_files(&mut out);
         self.last_mouse = mouse;
         out
+    }
+
+    /// This frame's left-button events (read every frame: macroquad keeps
+    /// them until they are read).
+    fn left_button(&mut self) -> LeftButton {
+        use macroquad::input::utils;
+        let events = *self
+            .events
+            .get_or_insert_with(utils::register_input_subscriber);
+        let mut left = LeftButton::default();
+        utils::repeat_all_miniquad_input(&mut left, events);
+        left
     }
 
     /// The keys' commands; `aims`: the arrow keys aim the selected disc
@@ -229,7 +277,7 @@ impl Input {
         &mut self,
         panels: &mut Panels,
         model: &Sandbox,
-        mouse: DVec2,
+        (mouse, left): (DVec2, LeftButton),
         out: &mut Vec<Command>,
     ) {
         // Over a panel or popup the mouse belongs to its widgets: no zoom,
@@ -254,7 +302,7 @@ impl Input {
             // A click in the world takes the keyboard back from a panel.
             panels.panel_keyboard = false;
             self.pressed_in_world = true;
-            out.push(Command::PointerDown(mouse));
+            out.push(Command::PointerDown(left.down.unwrap_or(mouse)));
         } else if is_mouse_button_down(MouseButton::Left)
             && self.pressed_in_world
             && !matches!(model.pointer.gesture, super::model::gesture::Gesture::Idle)
@@ -263,7 +311,7 @@ impl Input {
         }
         if is_mouse_button_released(MouseButton::Left) && std::mem::take(&mut self.pressed_in_world)
         {
-            out.push(Command::PointerUp(mouse));
+            out.push(Command::PointerUp(left.up.unwrap_or(mouse)));
         }
     }
 }
