@@ -369,3 +369,93 @@ fn next_collision_with_verlet_stops_at_a_collision_it_cannot_record_and_says_so(
         "{message}"
     );
 }
+
+/// Seeded random commands, as keys, buttons and the mouse send them, with
+/// frames of random length between: every disc stays finite and inside the
+/// walls its box has (a side without a wall lets discs out, as the π blocks
+/// leave).
+#[test]
+fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
+    use ::rand::{Rng, SeedableRng};
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 0..40u64 {
+        let mut rng = ::rand::rngs::StdRng::seed_from_u64(seed);
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        let mut now = 0.0;
+        let mut log: Vec<Command> = Vec::new();
+        for step in 0..600 {
+            let p = glam::DVec2::new(
+                rng.random_range(-50.0..1050.0),
+                rng.random_range(-50.0..750.0),
+            );
+            let d = if rng.random_bool(0.5) {
+                Dir::Up
+            } else {
+                Dir::Down
+            };
+            let c = match rng.random_range(0..34) {
+                0 => Command::TogglePause,
+                1 => Command::Step,
+                2 => Command::Slower,
+                3 => Command::Faster,
+                4 => Command::NextCollision,
+                5 => Command::Scrub([-10, -1, 1, 10][rng.random_range(0..4)]),
+                6 => Command::OpenPreset(rng.random_range(0..10)),
+                7 => Command::OpenEmpty,
+                8 => Command::Reset,
+                9 => Command::Clear,
+                10 => Command::Undo,
+                11 => Command::Redo,
+                12 => Command::NudgeLaw(Law::Restitution, d),
+                13 => Command::NudgeLaw(Law::WallRestitution, d),
+                14 => Command::ToggleGravity,
+                15 => Command::CycleMethod,
+                16 => Command::CycleBroadPhase,
+                17 => Command::CycleSubsteps,
+                18 => Command::StepNewRadius(d),
+                19 => Command::StepNewMass(d),
+                20 => Command::SelectNext(1),
+                21 => Command::AimSelected(glam::DVec2::new(
+                    rng.random_range(-3.0..3.0),
+                    rng.random_range(-3.0..3.0),
+                )),
+                22 => Command::LaunchAtCentre,
+                23 => Command::DeleteSelected,
+                24 | 25 => Command::PointerDown(p),
+                26 | 27 => Command::PointerMove(p),
+                28 | 29 => Command::PointerUp(p),
+                30 => Command::ZoomAt {
+                    at: p,
+                    factor: if rng.random_bool(0.5) { 2.0 } else { 0.5 },
+                },
+                31 => Command::Fit,
+                32 => Command::ToggleCenterOfMassView,
+                _ => Command::Escape,
+            };
+            log.push(c.clone());
+            s.apply(c);
+            let dt = [0.0, 0.001, 0.016, 0.05][rng.random_range(0..4)];
+            now += dt;
+            s.begin_frame(now);
+            s.tick(dt, 0.05);
+            let (size, walls) = (s.world.laws.size, s.world.laws.walls);
+            let closed = s.world.laws.boundary == impulse::Boundary::Box;
+            for (i, q) in s.world.particles.iter().enumerate() {
+                let (x, y) = (q.pos.x, q.pos.y);
+                let inside = !closed
+                    || ((x >= -1e-6 || !walls.left)
+                        && (x <= size.x + 1e-6 || !walls.right)
+                        && (y >= -1e-6 || !walls.bottom)
+                        && (y <= size.y + 1e-6 || !walls.top));
+                assert!(
+                    q.pos.is_finite() && q.vel.is_finite() && inside,
+                    "seed {seed}, command {step}: disc {i} at {:?} moving {:?}, box {size:?} \
+                     with {walls:?}; the last commands {:?}",
+                    q.pos,
+                    q.vel,
+                    &log[log.len().saturating_sub(8)..]
+                );
+            }
+        }
+    }
+}
