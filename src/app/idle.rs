@@ -15,9 +15,9 @@
 //! it). It sends the window an X event instead, a pointer motion to where
 //! the pointer already is (asked of the server just before, so a press or
 //! move since the last frame is not undone), which macroquad answers with a
-//! frame on the main thread. It finds this process's window through the X-Resource
-//! extension. Where that is missing (no X server, no such extension, the
-//! browser), the window draws every frame as before.
+//! frame on the main thread. It finds this process's window through the
+//! X-Resource extension. Where that is missing (no X server, no such
+//! extension, the browser), the window draws every frame as before.
 //!
 //! A second thread watches keys and button releases on its own connection
 //! and nudges the window until a frame has seen them. miniquad's blocking
