@@ -373,7 +373,7 @@ fn next_collision_with_verlet_stops_at_a_collision_it_cannot_record_and_says_so(
 /// Seeded random commands, as keys, buttons and the mouse send them, with
 /// frames of random length between: every disc stays finite and inside the
 /// walls its box has (a side without a wall lets discs out, as the π blocks
-/// leave).
+/// leave), and an undo followed by a redo gives back the very state.
 #[test]
 fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
     use ::rand::{Rng, SeedableRng};
@@ -434,6 +434,21 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
             };
             log.push(c.clone());
             s.apply(c);
+            // Undo then redo, between gestures, gives back the very state.
+            let idle = matches!(s.pointer.gesture, super::gesture::Gesture::Idle);
+            if rng.random_bool(0.1) && idle && levels(&s) > 0 {
+                let before = s.fingerprint();
+                s.apply(Command::Undo);
+                s.apply(Command::Redo);
+                log.extend([Command::Undo, Command::Redo]);
+                assert_eq!(
+                    s.fingerprint(),
+                    before,
+                    "seed {seed}, command {step}: undo and redo changed the scene; the last \
+                     commands {:?}",
+                    &log[log.len().saturating_sub(10)..]
+                );
+            }
             let dt = [0.0, 0.001, 0.016, 0.05][rng.random_range(0..4)];
             now += dt;
             s.begin_frame(now);
