@@ -453,15 +453,12 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
             now += dt;
             s.begin_frame(now);
             s.tick(dt, 0.05);
-            let (size, walls) = (s.world.laws.size, s.world.laws.walls);
-            let closed = s.world.laws.boundary == impulse::Boundary::Box;
+            let laws = s.world.laws;
+            let (size, walls) = (laws.size, laws.walls);
             for (i, q) in s.world.particles.iter().enumerate() {
-                let (x, y) = (q.pos.x, q.pos.y);
-                let inside = !closed
-                    || ((x >= -1e-6 || !walls.left)
-                        && (x <= size.x + 1e-6 || !walls.right)
-                        && (y >= -1e-6 || !walls.bottom)
-                        && (y <= size.y + 1e-6 || !walls.top));
+                // A radius of −10⁻⁶ m: the centre, with room for rounding.
+                let inside = laws.boundary != impulse::Boundary::Box
+                    || laws.boundary.admits(walls, size, q.pos, -1e-6);
                 assert!(
                     q.pos.is_finite() && q.vel.is_finite() && inside,
                     "seed {seed}, command {step}: disc {i} at {:?} moving {:?}, box {size:?} \
