@@ -2,6 +2,7 @@
 //! Shift+Tab walk the controls in reading order with a ring round the one
 //! that has the keys (in both themes); while a control has them, the
 //! world's keys rest and Space presses the control; Esc gives them back;
+//! every stop is a control, not a window's frame or a scroll area's part;
 //! and the world itself answers keys: Q selects a disc, the arrow keys aim
 //! it while paused, Enter puts a new disc at the centre.
 
@@ -28,6 +29,10 @@ fn main() -> std::process::ExitCode {
         (
             "on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one",
             on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one,
+        ),
+        (
+            "every_tab_stop_is_a_control_never_a_frame_round_others",
+            every_tab_stop_is_a_control_never_a_frame_round_others,
         ),
         (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
@@ -174,6 +179,66 @@ fn while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back() {
     app.quit();
 }
 
+/// Walks Tab once round and checks every stop: something has the keys, its
+/// ring is not a sliver (a scroll bar), and it holds no named control (a
+/// window's frame, a scroll area's content, a plot round its legend).
+fn every_tab_stop_is_a_control_never_a_frame_round_others() {
+    let x = Xvfb::start("stops");
+    for args in [
+        &["--paused"][..],
+        &["--paused", "--size", "1024x768", "--ui-scale", "2"][..],
+    ] {
+        let app = Sandbox::start(&x, args);
+        app.move_to([5.0, 400.0]);
+        app.wait_frames(3);
+        let mut seen: Vec<(Option<String>, Vec<i64>)> = Vec::new();
+        for _ in 0..120 {
+            app.xdo(&["key", "Tab"]);
+            let s = app.wait_frames(3);
+            let name = focus(&s);
+            let Some(rect) = s["ui"]["focus_rect"].as_array() else {
+                panic!("nothing has the keys after {seen:?}");
+            };
+            let r: Vec<f64> = rect.iter().map(|v| v.as_f64().unwrap()).collect();
+            assert!(
+                r[2].min(r[3]) >= 6.0,
+                "a sliver has the keys: {name:?} {r:?}"
+            );
+            let widgets = s["panel_widgets"].as_object().unwrap();
+            let inside: Vec<&String> = widgets
+                .iter()
+                .filter(|(n, _)| Some(n.as_str()) != name.as_deref())
+                .filter(|(_, w)| {
+                    let w: Vec<f64> = w
+                        .as_array()
+                        .unwrap()
+                        .iter()
+                        .map(|v| v.as_f64().unwrap())
+                        .collect();
+                    w[2] * w[3] > 0.0
+                        && w[0] >= r[0] - 1.0
+                        && w[1] >= r[1] - 1.0
+                        && w[0] + w[2] <= r[0] + r[2] + 1.0
+                        && w[1] + w[3] <= r[1] + r[3] + 1.0
+                })
+                .map(|(n, _)| n)
+                .collect();
+            assert!(
+                inside.is_empty(),
+                "{name:?} at {r:?} holds {inside:?} ({args:?})"
+            );
+            let key = (name, r.iter().map(|v| v.round() as i64).collect());
+            if seen.first() == Some(&key) {
+                break;
+            }
+            seen.push(key);
+        }
+        let names = seen.iter().filter(|(n, _)| n.is_some()).count();
+        assert!(names >= 10 && seen.len() < 120, "{args:?}: {seen:?}");
+        app.quit();
+    }
+}
+
 fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {
     let x = Xvfb::start("world keys");
     let app = Sandbox::start(&x, &["--paused"]);
@@ -219,15 +284,36 @@ fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {
 
 fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
     let x = Xvfb::start("start keys");
-    let app = Sandbox::start_plain(&x, &[]);
+    // A projector's scale in a small window: the tiles scroll.
+    let app = Sandbox::start_plain(&x, &["--size", "1024x768", "--ui-scale", "2"]);
     app.wait_for("the start screen", 60, |s| s["ui"]["start_open"] == true);
-    let seen = tabs(&app, 3);
-    let first = seen.iter().flatten().next().cloned();
-    assert_eq!(first.as_deref(), Some("tile_head_on"), "{seen:?}");
+    // The first press is on the first tile, and the walk goes round the
+    // start screen alone: its tiles and its language list, then the first
+    // tile again (nothing behind it).
+    let seen = tabs(&app, 9);
+    assert_eq!(seen[0].as_deref(), Some("tile_head_on"), "{seen:?}");
     assert!(
-        seen.iter().flatten().all(|f| f.starts_with("tile_")),
+        seen.iter().all(|f| f
+            .as_deref()
+            .is_some_and(|f| f.starts_with("tile_") || f == "language")),
         "{seen:?}"
     );
+    assert_eq!(
+        seen[7].as_deref(),
+        Some("tile_head_on"),
+        "round again: {seen:?}"
+    );
+    // Shift+Tab from the first tile goes round backwards, to the last.
+    app.xdo(&["key", "shift+Tab"]);
+    app.xdo(&["key", "shift+Tab"]);
+    assert_eq!(focus(&app.wait_frames(3)).as_deref(), Some("language"));
+    // A tile out of sight is scrolled to when Tab reaches it.
+    app.xdo(&["key", "shift+Tab"]);
+    let s = app.wait_frames(5);
+    assert_eq!(focus(&s).as_deref(), Some("tile_free_play"));
+    let r = s["ui"]["focus_rect"].as_array().unwrap();
+    let bottom = r[1].as_f64().unwrap() + r[3].as_f64().unwrap();
+    assert!(bottom <= 768.0, "the ring is below the window: {r:?}");
     // Back to the first tile, then Enter opens its lesson.
     for _ in 0..10 {
         if focus(&app.wait_frames(2)).as_deref() == Some("tile_head_on") {

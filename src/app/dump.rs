@@ -176,6 +176,9 @@ pub struct UiDump {
     pub panel_keyboard: bool,
     /// The named control that has the keyboard (Tab moves it), if any.
     pub focus: Option<String>,
+    /// Where whatever has the keyboard is, named or not: [x, y, w, h] in
+    /// pixels (the ring Tab moves).
+    pub focus_rect: Option<[f32; 4]>,
     /// The window's language ("en", "pt-BR", "qps").
     pub language: String,
     #[serde(flatten)]
@@ -326,6 +329,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 typing: panels.typing,
                 panel_keyboard: panels.panel_keyboard,
                 focus: panels.marks.focused.clone(),
+                focus_rect: panels.marks.focus_rect,
                 language: crate::app::lang::language().code().to_string(),
                 edits: EditsDump {
                     undo_levels: m.undo.levels().into(),

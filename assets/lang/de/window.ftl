@@ -72,8 +72,9 @@ tile-gas-blurb = Viele Scheiben auf einmal: Wie verteilen sich ihre Geschwindigk
 tile-free-play-blurb = Schieße eigene Scheiben ab und verändere alles.
 
 ## Der Startbildschirm
+close = Schließen
 start-title = Was möchtest du erkunden?
-start-footer = Esc behält die geöffnete Szene. Die Schaltfläche „Start“ in der oberen Leiste holt diese Seite zurück.
+start-footer = Tab und Enter wählen eine Lektion mit der Tastatur. Esc behält die geöffnete Szene. Die Schaltfläche „Start“ in der oberen Leiste holt diese Seite zurück.
 
 ## Die Seitenleiste
 controls-for = Die Regler für „{ $lesson }“.

@@ -72,8 +72,9 @@ tile-gas-blurb = Many discs at once: how are their speeds shared out?
 tile-free-play-blurb = Launch your own discs and change everything.
 
 ## The start screen
+close = Close
 start-title = What would you like to explore?
-start-footer = Esc keeps the scene that is open. The Start button in the top bar brings this back.
+start-footer = Tab and Enter choose a lesson from the keyboard. Esc keeps the scene that is open. The Start button in the top bar brings this back.
 
 ## The side dock
 controls-for = The controls for { $lesson }.

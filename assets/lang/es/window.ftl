@@ -72,8 +72,9 @@ tile-gas-blurb = Muchos discos a la vez: ¿cómo se reparte la rapidez entre ell
 tile-free-play-blurb = Lanza tus propios discos y cámbialo todo.
 
 ## La pantalla de inicio
+close = Cerrar
 start-title = ¿Qué te gustaría explorar?
-start-footer = Esc conserva la escena que está abierta. El botón Inicio de la barra superior vuelve a mostrar esta pantalla.
+start-footer = Tab y Enter eligen una lección con el teclado. Esc conserva la escena que está abierta. El botón Inicio de la barra superior vuelve a mostrar esta pantalla.
 
 ## El panel lateral
 controls-for = Los controles para { $lesson }.

@@ -72,8 +72,9 @@ tile-gas-blurb = Beaucoup de disques à la fois : comment leurs vitesses se ré
 tile-free-play-blurb = Lancez vos propres disques et modifiez tout.
 
 ## L'écran d'accueil
+close = Fermer
 start-title = Que voulez-vous explorer ?
-start-footer = Échap garde la scène ouverte. Le bouton Accueil de la barre du haut fait revenir cet écran.
+start-footer = Tab et Entrée choisissent une leçon au clavier. Échap garde la scène ouverte. Le bouton Accueil de la barre du haut fait revenir cet écran.
 
 ## Le panneau latéral
 controls-for = Les réglages de « { $lesson } ».

@@ -72,8 +72,9 @@ tile-gas-blurb = Muitos discos ao mesmo tempo: como as velocidades se distribuem
 tile-free-play-blurb = Lance seus próprios discos e mude tudo.
 
 ## A tela inicial
+close = Fechar
 start-title = O que você quer explorar?
-start-footer = Esc mantém a cena que está aberta. O botão Início na barra de cima traz esta tela de volta.
+start-footer = Tab e Enter escolhem uma lição pelo teclado. Esc mantém a cena que está aberta. O botão Início na barra de cima traz esta tela de volta.
 
 ## O painel lateral
 controls-for = Os controles para: { $lesson }.

@@ -19,7 +19,10 @@
 //! - [`strip`]: the line under the world: scale bar, caption, messages.
 //! - [`popups`]: help (from the bindings table), presets, recovery.
 //! - [`start`]: the start screen's tiles.
+//! - [`dialog`]: the boxes over the world and scroll areas, whose own parts
+//!   Tab passes over.
 
+mod dialog;
 mod dock;
 mod popups;
 mod side;
@@ -64,6 +67,18 @@ impl Cx<'_> {
         if response.has_focus() {
             self.marks.focused = Some(name.clone());
         }
+        // egui 0.31 does not scroll to a control Tab brought the keyboard
+        // to; asked here, inside its scroll area, it does.
+        if response.gained_focus() {
+            response.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
+        }
+        if response.sense.is_focusable() {
+            self.marks.stops.push(Stop {
+                id: response.id,
+                layer: response.layer_id,
+                pass: false,
+            });
+        }
         self.marks.note(name, response.rect);
     }
 }
@@ -81,12 +96,46 @@ pub struct Marks {
     pub focused: Option<String>,
     /// Pixels per egui point.
     pub ppp: f32,
+    /// The frame's Tab stops in the order egui made them: the controls
+    /// noted, and the containers' parts to pass over ([`dialog`]).
+    pub stops: Vec<Stop>,
+    /// The rectangle of whatever has the keyboard (pixels), named or not.
+    pub focus_rect: Option<[f32; 4]>,
+}
+
+/// A place Tab can stop at.
+#[derive(Clone, Copy, Debug)]
+pub struct Stop {
+    pub id: egui::Id,
+    /// Its layer: one under an open start screen cannot take the keyboard.
+    pub layer: egui::LayerId,
+    /// A container's part, which shows nothing and does nothing with the
+    /// keyboard: Tab goes on past it.
+    pub pass: bool,
 }
 
 impl Marks {
     /// Records a widget's rectangle (egui points) under `name`, in pixels.
     pub fn note(&mut self, name: impl Into<String>, rect: egui::Rect) {
         self.widgets.insert(name.into(), to_px(rect, self.ppp));
+    }
+
+    /// Moves the stop of `id` to `place` in the list, for a control noted
+    /// after what it contains (a section's header after its body).
+    pub fn move_stop_to(&mut self, id: egui::Id, place: usize) {
+        if let Some(at) = self.stops.iter().rposition(|s| s.id == id) {
+            let stop = self.stops.remove(at);
+            self.stops.insert(place.min(self.stops.len()), stop);
+        }
+    }
+
+    /// Notes a container's part that egui lets Tab stop at, to pass over.
+    pub fn pass_over(&mut self, id: egui::Id, layer: egui::LayerId) {
+        self.stops.push(Stop {
+            id,
+            layer,
+            pass: true,
+        });
     }
 
     /// Notes a text field's response: while it has the keyboard, the
@@ -142,6 +191,8 @@ pub struct Panels {
     pub panel_keyboard: bool,
     /// A control had the keyboard last frame.
     had_focus: bool,
+    /// The last Tab was Shift+Tab.
+    tab_back: bool,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// This frame's layout.
@@ -164,6 +215,7 @@ impl Panels {
             marks: Marks::default(),
             typing: false,
             had_focus: false,
+            tab_back: false,
             panel_keyboard: false,
             pointer_on_ui: false,
             layout: Layout::default(),
@@ -260,13 +312,10 @@ impl Panels {
         panels.push(rects.caption.as_array());
         if let Some(drawer) = rects.drawer {
             let r = points(drawer);
-            egui::Window::new(crate::app::lang::tr!("section-controls"))
-                .id(egui::Id::new("drawer"))
-                .fixed_pos(r.min)
+            dialog::Dialog::new("drawer", None)
+                .place(dialog::Place::At(r.min))
                 .fixed_size(egui::vec2(r.width() - 16.0, r.height() - 48.0))
-                .collapsible(false)
-                .title_bar(false)
-                .show(ctx, |ui| self.side.ui(ui, &mut cx));
+                .show(ctx, &mut cx, |ui, cx| self.side.ui(ui, cx));
         }
         self.popups.show(ctx, &mut cx);
         // A slider's value box typed into keeps the keyboard too.
@@ -289,7 +338,20 @@ impl Panels {
         // Tab (and Shift+Tab) move the keyboard through the controls; while
         // one has it, the world's keys are off, until Esc (egui lets go) or
         // a click in the world.
-        let mut focused = ctx.memory(|m| m.focused());
+        if let Some(back) = ctx.input(|i| {
+            i.events.iter().rev().find_map(|e| match e {
+                egui::Event::Key {
+                    key: egui::Key::Tab,
+                    pressed: true,
+                    modifiers,
+                    ..
+                } => Some(modifiers.shift),
+                _ => None,
+            })
+        }) {
+            self.tab_back = back;
+        }
+        let mut focused = dialog::pass_over_containers(ctx, &self.marks, self.tab_back);
         if let Some(id) = focused {
             if !self.pointer_on_ui && ctx.input(|i| i.pointer.any_pressed()) {
                 ctx.memory_mut(|m| m.surrender_focus(id));
@@ -299,6 +361,9 @@ impl Panels {
         if let Some(id) = focused {
             focus_ring(ctx, id, p.theme);
         }
+        self.marks.focus_rect = focused
+            .and_then(|id| ctx.read_response(id))
+            .map(|r| to_px(r.rect, ppp));
         // egui lets go of a control at the start of the frame whose key
         // (Esc, Tab, Enter) left it: that key belongs to the control.
         let has_focus = focused.is_some() || self.marks.text_focus;

@@ -4,11 +4,12 @@
 //! Each fits the window at every scale: a fixed size within the window,
 //! two columns where it is wide, scrolling where it is tall.
 
+use super::dialog::{scroll, Dialog};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::bindings::{browser_keeps, control_of, BINDINGS};
 use crate::app::model::{scenes, Command};
-use egui::{Align2, RichText};
+use egui::RichText;
 
 /// The popups (no state of their own: which are open is the model's).
 pub struct Popups;
@@ -46,23 +47,27 @@ impl Popups {
             self.presets(ctx, cx, screen);
         }
         if let Some(question) = cx.model.recovery_prompt() {
-            egui::Window::new(tr!("recovery-title"))
-                .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
-                .collapsible(false)
-                .resizable(false)
+            // The question comes first: nothing behind it takes the keyboard
+            // or the pointer until it is answered.
+            let dialog = Dialog::new("recovery", Some(tr!("recovery-title")))
                 .max_width(fitted(screen, egui::vec2(560.0, 400.0)).x)
-                .show(ctx, |ui| {
-                    ui.add(egui::Label::new(question).wrap());
-                    ui.label(tr!("recovery-waits"));
-                    ui.horizontal_wrapped(|ui| {
-                        if ui.button(tr!("recovery-restore")).clicked() {
-                            cx.send(Command::RestoreRecovery);
-                        }
-                        if ui.button(tr!("recovery-set-aside")).clicked() {
-                            cx.send(Command::SetRecoveryAside);
-                        }
-                    });
+                .modal(ctx);
+            dialog.show(ctx, cx, |ui, cx| {
+                ui.add(egui::Label::new(question).wrap());
+                ui.label(tr!("recovery-waits"));
+                ui.horizontal_wrapped(|ui| {
+                    let r = ui.button(tr!("recovery-restore"));
+                    cx.note("recovery_restore", &r);
+                    if r.clicked() {
+                        cx.send(Command::RestoreRecovery);
+                    }
+                    let r = ui.button(tr!("recovery-set-aside"));
+                    cx.note("recovery_set_aside", &r);
+                    if r.clicked() {
+                        cx.send(Command::SetRecoveryAside);
+                    }
                 });
+            });
         }
     }
 
@@ -74,15 +79,12 @@ impl Popups {
             // The browser keeps these keys for itself.
             .filter(|b| !(cfg!(target_arch = "wasm32") && browser_keeps(b)))
             .collect();
-        let mut open = true;
-        let response = egui::Window::new(tr!("help-title"))
-            .id(egui::Id::new("help_window"))
-            .open(&mut open)
-            .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
+        let shown = Dialog::new("help_window", Some(tr!("help-title")))
             .fixed_size(size)
-            .collapsible(false)
-            .show(ctx, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
+            .closable()
+            .modal_if(ctx, cx.model.panels.start_open)
+            .show(ctx, cx, |ui, cx| {
+                scroll(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, _| {
                     let grid =
                         |ui: &mut egui::Ui,
                          id: &str,
@@ -114,28 +116,23 @@ impl Popups {
                     }
                 });
             });
-        if let Some(r) = response {
-            cx.marks.note("help_window", r.response.rect);
-        }
-        if !open {
+        cx.marks.note("help_window", shown.rect);
+        if shown.close {
             cx.send(Command::ToggleHelp);
         }
     }
 
     fn presets(&mut self, ctx: &egui::Context, cx: &mut Cx, screen: egui::Rect) {
         let size = fitted(screen, egui::vec2(640.0, 900.0));
-        let mut open = true;
-        let response = egui::Window::new(tr!("presets-title"))
-            .id(egui::Id::new("presets_window"))
-            .open(&mut open)
-            .anchor(Align2::CENTER_CENTER, egui::Vec2::ZERO)
+        let shown = Dialog::new("presets_window", Some(tr!("presets-title")))
             .fixed_size(size)
-            .collapsible(false)
-            .show(ctx, |ui| {
+            .closable()
+            .modal_if(ctx, cx.model.panels.start_open)
+            .show(ctx, cx, |ui, cx| {
                 if cx.model.recovery.aside.is_some() {
                     let label = crate::app::model::bindings::label(&Command::ReopenKept);
                     let r = ui.button(RichText::new(label.unwrap_or_default()).strong());
-                    cx.marks.note("reopen_kept_menu", r.rect);
+                    cx.note("reopen_kept_menu", &r);
                     if r.clicked() {
                         cx.send(Command::ReopenKept);
                     }
@@ -143,10 +140,10 @@ impl Popups {
                     ui.separator();
                 }
                 ui.label(tr!("presets-press"));
-                egui::ScrollArea::vertical().show(ui, |ui| {
+                scroll(ui, cx, egui::ScrollArea::vertical(), "presets", |ui, cx| {
                     for (k, label) in scenes::preset_labels().iter().enumerate() {
                         let r = ui.button(RichText::new(label.as_str()).strong());
-                        cx.marks.note(format!("preset_{k}"), r.rect);
+                        cx.note(format!("preset_{k}"), &r);
                         if r.clicked() {
                             cx.send(Command::OpenPreset(k));
                         }
@@ -157,10 +154,8 @@ impl Popups {
                     }
                 });
             });
-        if let Some(r) = response {
-            cx.marks.note("preset_menu", r.response.rect);
-        }
-        if !open {
+        cx.marks.note("preset_menu", shown.rect);
+        if shown.close {
             cx.send(Command::TogglePresets);
         }
     }

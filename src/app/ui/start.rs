@@ -3,11 +3,12 @@
 //! scale (three tiles a row where wide, two or one where narrow, scrolling
 //! where short); Esc keeps the scene that is open.
 
+use super::dialog::{scroll, Dialog};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::start::Tile;
 use crate::app::model::Command;
-use egui::{Align2, Color32, Pos2, RichText, Stroke, Vec2};
+use egui::{Align2, Color32, Pos2, RichText, Stroke};
 
 /// The start screen (no state of its own).
 pub struct StartScreen;
@@ -27,33 +28,27 @@ impl StartScreen {
             (screen.width() - 32.0).clamp(100.0, 1100.0),
             (screen.height() - 64.0).max(80.0),
         );
-        let response = egui::Window::new(tr!("start-title"))
-            .id(egui::Id::new("start_screen"))
-            .anchor(Align2::CENTER_CENTER, Vec2::ZERO)
+        let dialog = Dialog::new("start_screen", Some(tr!("start-title")))
             .fixed_size(size)
-            .collapsible(false)
-            .resizable(false)
-            .show(ctx, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    let per_row =
-                        ((ui.available_width() / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
-                    let width = ui.available_width() / per_row as f32 - 12.0;
-                    for row in Tile::ALL.chunks(per_row) {
-                        ui.horizontal(|ui| {
-                            for &tile in row {
-                                self.tile(ui, cx, tile, width);
-                            }
-                        });
-                        ui.add_space(8.0);
-                    }
-                    ui.label(tr!("start-footer"));
+            .modal(ctx);
+        let shown = dialog.show(ctx, cx, |ui, cx| {
+            scroll(ui, cx, egui::ScrollArea::vertical(), "tiles", |ui, cx| {
+                let per_row = ((ui.available_width() / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
+                let width = ui.available_width() / per_row as f32 - 12.0;
+                for row in Tile::ALL.chunks(per_row) {
+                    ui.horizontal(|ui| {
+                        for &tile in row {
+                            self.tile(ui, cx, tile, width);
+                        }
+                    });
                     ui.add_space(8.0);
-                    super::side::files::language(ui, cx);
-                });
+                }
+                ui.label(tr!("start-footer"));
+                ui.add_space(8.0);
+                super::side::files::language(ui, cx);
             });
-        if let Some(r) = response {
-            cx.marks.note("start_screen", r.response.rect);
-        }
+        });
+        cx.marks.note("start_screen", shown.rect);
     }
 
     fn tile(&mut self, ui: &mut egui::Ui, cx: &mut Cx, tile: Tile, width: f32) {

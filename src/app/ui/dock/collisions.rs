@@ -3,6 +3,7 @@
 //! newest before and after, disc by disc. Side by side where the dock is
 //! wide, one under the other where it is narrow; nothing overlaps.
 
+use super::super::dialog::scroll;
 use super::super::widgets::command_button;
 use super::super::{Cx, View};
 use crate::app::lang::tr;
@@ -48,59 +49,61 @@ impl View for Collisions {
         };
         if ui.available_width() >= SIDE_BY_SIDE {
             ui.columns(2, |columns| {
-                list(&mut columns[0], &recent);
-                detail(&mut columns[1], newest);
+                list(&mut columns[0], cx, &recent);
+                detail(&mut columns[1], cx, newest);
             });
         } else {
-            egui::ScrollArea::vertical()
-                .id_salt("ledger_stacked")
-                .show(ui, |ui| {
-                    detail(ui, newest);
+            scroll(
+                ui,
+                cx,
+                egui::ScrollArea::vertical(),
+                "ledger_stacked",
+                |ui, cx| {
+                    detail(ui, cx, newest);
                     ui.separator();
-                    list(ui, &recent);
-                });
+                    list(ui, cx, &recent);
+                },
+            );
         }
     }
 }
 
 /// The kept impacts, newest first.
-fn list(ui: &mut egui::Ui, recent: &[Impact]) {
+fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
     ui.strong(tr!("ledger-last", count = recent.len()));
-    egui::ScrollArea::both()
-        .id_salt("ledger_list")
-        .auto_shrink([false, true])
-        .show(ui, |ui| {
-            egui::Grid::new("ledger")
-                .striped(true)
-                .num_columns(4)
-                .spacing([18.0, 4.0])
-                .show(ui, |ui| {
-                    for (h, hover) in [
-                        ("t (s)".to_string(), tr!("ledger-time-hover")),
-                        (tr!("ledger-what"), tr!("ledger-what-hover")),
-                        ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
-                        (
-                            format!("Δ{} (J)", tr!("symbol-ke")),
-                            tr!("ledger-dke-hover"),
-                        ),
-                    ] {
-                        ui.strong(h).on_hover_text(hover);
-                    }
+    let area = egui::ScrollArea::both().auto_shrink([false, true]);
+    scroll(ui, cx, area, "ledger_list", |ui, _| {
+        egui::Grid::new("ledger")
+            .striped(true)
+            .num_columns(4)
+            .spacing([18.0, 4.0])
+            .show(ui, |ui| {
+                for (h, hover) in [
+                    ("t (s)".to_string(), tr!("ledger-time-hover")),
+                    (tr!("ledger-what"), tr!("ledger-what-hover")),
+                    ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
+                    (
+                        format!("Δ{} (J)", tr!("symbol-ke")),
+                        tr!("ledger-dke-hover"),
+                    ),
+                ] {
+                    ui.strong(h).on_hover_text(hover);
+                }
+                ui.end_row();
+                for impact in recent {
+                    let (dp, dke) = impact.total_change();
+                    ui.label(plain(impact.time(), 3));
+                    ui.label(who(impact));
+                    ui.label(vector(dp, 3, ""));
+                    ui.label(plain(dke, 3));
                     ui.end_row();
-                    for impact in recent {
-                        let (dp, dke) = impact.total_change();
-                        ui.label(plain(impact.time(), 3));
-                        ui.label(who(impact));
-                        ui.label(vector(dp, 3, ""));
-                        ui.label(plain(dke, 3));
-                        ui.end_row();
-                    }
-                });
-        });
+                }
+            });
+    });
 }
 
 /// The newest impact, disc by disc, before and after.
-fn detail(ui: &mut egui::Ui, impact: &Impact) {
+fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     ui.strong(tr!(
         "ledger-newest",
         who = who(impact),
@@ -170,27 +173,25 @@ fn detail(ui: &mut egui::Ui, impact: &Impact) {
             ));
         }
     }
-    egui::ScrollArea::both()
-        .id_salt("ledger_detail")
-        .auto_shrink([false, true])
-        .show(ui, |ui| {
-            egui::Grid::new("ledger_newest")
-                .striped(true)
-                .num_columns(3)
-                .spacing([18.0, 4.0])
-                .show(ui, |ui| {
-                    for h in [String::new(), tr!("ledger-before"), tr!("ledger-after")] {
-                        ui.strong(h);
-                    }
+    let area = egui::ScrollArea::both().auto_shrink([false, true]);
+    scroll(ui, cx, area, "ledger_detail", |ui, _| {
+        egui::Grid::new("ledger_newest")
+            .striped(true)
+            .num_columns(3)
+            .spacing([18.0, 4.0])
+            .show(ui, |ui| {
+                for h in [String::new(), tr!("ledger-before"), tr!("ledger-after")] {
+                    ui.strong(h);
+                }
+                ui.end_row();
+                for (what, before, after) in rows {
+                    ui.label(what);
+                    ui.label(before);
+                    ui.label(after);
                     ui.end_row();
-                    for (what, before, after) in rows {
-                        ui.label(what);
-                        ui.label(before);
-                        ui.label(after);
-                        ui.end_row();
-                    }
-                })
-                .response
-                .on_hover_text(tr!("ledger-detail-hover"));
-        });
+                }
+            })
+            .response
+            .on_hover_text(tr!("ledger-detail-hover"));
+    });
 }

@@ -110,7 +110,8 @@ pub fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
 }
 
 /// A plot that holds still: no scrolling, dragging or zooming, which in a
-/// live plot would only lose the view (hover still reads values).
+/// live plot would only lose the view (hover still reads values); nor a
+/// Tab stop, as it does nothing with the keyboard.
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
     let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
@@ -127,6 +128,7 @@ pub fn still_plot(id: &str) -> Plot<'static> {
         .allow_drag(false)
         .allow_zoom(false)
         .allow_boxed_zoom(false)
+        .sense(egui::Sense::hover())
 }
 
 /// A y range that shows a conserved total as a flat line, not its rounding

@@ -2,6 +2,7 @@
 //! happened, newest first: the text a screen reader reads in the browser
 //! (the page's live region), here for anyone who wants it in words.
 
+use super::super::dialog::scroll;
 use super::super::widgets::command_button;
 use super::{Cx, View};
 use crate::app::lang::tr;
@@ -17,20 +18,18 @@ impl View for Words {
             command_button(ui, cx, Command::Describe, Some("describe"));
             ui.label(tr!("words-line"));
         });
-        egui::ScrollArea::vertical()
-            .id_salt("words")
-            .auto_shrink([false, true])
-            .show(ui, |ui| {
-                let said = &model.messages.narration.said;
-                if said.is_empty() {
-                    ui.label(tr!("words-none"));
-                }
-                for (at, line) in said.iter().rev() {
-                    ui.horizontal_wrapped(|ui| {
-                        ui.weak(format!("{} s", crate::app::numbers::plain(*at, 1)));
-                        ui.add(egui::Label::new(line).wrap());
-                    });
-                }
-            });
+        let area = egui::ScrollArea::vertical().auto_shrink([false, true]);
+        scroll(ui, cx, area, "words", |ui, _| {
+            let said = &model.messages.narration.said;
+            if said.is_empty() {
+                ui.label(tr!("words-none"));
+            }
+            for (at, line) in said.iter().rev() {
+                ui.horizontal_wrapped(|ui| {
+                    ui.weak(format!("{} s", crate::app::numbers::plain(*at, 1)));
+                    ui.add(egui::Label::new(line).wrap());
+                });
+            }
+        });
     }
 }

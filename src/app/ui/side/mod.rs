@@ -13,6 +13,7 @@ mod discs;
 pub mod files;
 mod laws;
 
+use super::dialog::scroll;
 use super::widgets::{command_button, labelled_button};
 use super::{Cx, View};
 use crate::app::lang::tr;
@@ -44,11 +45,15 @@ fn section(
     (title, name, open): (&str, &str, bool),
     body: impl FnOnce(&mut Ui, &mut Cx),
 ) {
+    // Tab reaches the header before its body: its place among the frame's
+    // stops is the one before the body's.
+    let place = cx.marks.stops.len();
     let r = CollapsingHeader::new(title)
         .id_salt(name)
         .default_open(open)
         .show(ui, |ui| body(ui, cx));
     cx.note(name, &r.header_response);
+    cx.marks.move_stop_to(r.header_response.id, place);
 }
 
 impl View for SideDock {
@@ -58,68 +63,74 @@ impl View for SideDock {
         let focus = cx.model.panels.focus;
         let fields = &mut self.fields;
         let path = &mut self.path;
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            ui.set_width(ui.available_width());
-            if focus != Tile::FreePlay {
-                let line = tr!("controls-for", lesson = focus.title());
-                ui.add(egui::Label::new(line).wrap());
-                command_button(ui, cx, Command::ShowAllControls, Some("all_controls"));
-            }
-            let title = match cx.model.selected_disc() {
-                Some(i) => tr!("selected-disc-numbered", disc = i),
-                None => tr!("section-selected-disc"),
-            };
-            for s in SECTIONS {
-                if !focus.shows(s) {
-                    continue;
+        scroll(
+            ui,
+            cx,
+            egui::ScrollArea::vertical(),
+            "controls",
+            |ui, cx| {
+                ui.set_width(ui.available_width());
+                if focus != Tile::FreePlay {
+                    let line = tr!("controls-for", lesson = focus.title());
+                    ui.add(egui::Label::new(line).wrap());
+                    command_button(ui, cx, Command::ShowAllControls, Some("all_controls"));
                 }
-                match s {
-                    Section::Collisions => {
-                        let title = tr!("section-collisions");
-                        section(ui, cx, (&title, "section_collisions", true), laws::laws)
+                let title = match cx.model.selected_disc() {
+                    Some(i) => tr!("selected-disc-numbered", disc = i),
+                    None => tr!("section-selected-disc"),
+                };
+                for s in SECTIONS {
+                    if !focus.shows(s) {
+                        continue;
                     }
-                    Section::Show => {
-                        let title = tr!("section-show");
-                        section(ui, cx, (&title, "section_show", true), show)
-                    }
-                    Section::NewDiscs => {
-                        let title = tr!("section-new-discs");
-                        section(
-                            ui,
-                            cx,
-                            (&title, "section_new_discs", false),
-                            discs::new_discs,
-                        )
-                    }
-                    Section::Selected => {
-                        section(ui, cx, (&title, "section_selected", false), |ui, cx| {
-                            fields.ui(ui, cx);
-                        })
-                    }
-                    Section::Scene => {
-                        let title = tr!("section-scene");
-                        section(ui, cx, (&title, "section_scene", false), |ui, cx| {
-                            files::scene(ui, cx, path);
-                        })
-                    }
-                    Section::View => {
-                        let title = tr!("section-view");
-                        section(ui, cx, (&title, "section_view", false), files::view)
-                    }
-                    Section::More => {
-                        let title = tr!("section-more");
-                        section(ui, cx, (&title, "section_more", false), |ui, cx| {
-                            ui.add(egui::Label::new(tr!("section-more-line")).wrap());
-                            if !spin_shown(&cx.model.world) {
-                                laws::advanced(ui, cx);
-                                ui.separator();
-                            }
-                            files::details(ui, cx);
-                        })
+                    match s {
+                        Section::Collisions => {
+                            let title = tr!("section-collisions");
+                            section(ui, cx, (&title, "section_collisions", true), laws::laws)
+                        }
+                        Section::Show => {
+                            let title = tr!("section-show");
+                            section(ui, cx, (&title, "section_show", true), show)
+                        }
+                        Section::NewDiscs => {
+                            let title = tr!("section-new-discs");
+                            section(
+                                ui,
+                                cx,
+                                (&title, "section_new_discs", false),
+                                discs::new_discs,
+                            )
+                        }
+                        Section::Selected => {
+                            section(ui, cx, (&title, "section_selected", false), |ui, cx| {
+                                fields.ui(ui, cx);
+                            })
+                        }
+                        Section::Scene => {
+                            let title = tr!("section-scene");
+                            section(ui, cx, (&title, "section_scene", false), |ui, cx| {
+                                files::scene(ui, cx, path);
+                            })
+                        }
+                        Section::View => {
+                            let title = tr!("section-view");
+                            section(ui, cx, (&title, "section_view", false), files::view)
+                        }
+                        Section::More => {
+                            let title = tr!("section-more");
+                            section(ui, cx, (&title, "section_more", false), |ui, cx| {
+                                ui.add(egui::Label::new(tr!("section-more-line")).wrap());
+                                if !spin_shown(&cx.model.world) {
+                                    laws::advanced(ui, cx);
+                                    ui.separator();
+                                }
+                                files::details(ui, cx);
+                            })
+                        }
                     }
                 }
-            }
-        });
+            },
+        );
     }
 }
 

@@ -1,0 +1,215 @@
+//! Boxes over the world (the start screen, the key list, the presets, the
+//! recovery question, the drawer) and scroll areas, made so that Tab stops
+//! only on controls.
+//!
+//! egui 0.31 lets Tab land on parts of its containers that show nothing and
+//! do nothing when they have the keyboard: a window's frame and title bar,
+//! a scroll area's content (dragged to scroll on a touch screen) and its
+//! bar. A keyboard user then sees a ring round a whole window and presses
+//! Enter to no effect. (egui fixed this in a later version, PR 7827, which
+//! `egui-macroquad` does not take yet.) So a box here is an egui `Area` that
+//! only senses hover, in a window's frame with its title drawn as a heading,
+//! and a scroll area notes its own parts in the frame's list of Tab stops,
+//! for [`pass_over_containers`] to move the keyboard on from them.
+
+use super::{Cx, Marks};
+
+/// Where a box goes.
+pub enum Place {
+    /// In the middle of the window.
+    Centre,
+    /// With its top left corner here (points).
+    At(egui::Pos2),
+}
+
+/// A box over the world.
+pub struct Dialog {
+    name: String,
+    id: egui::Id,
+    title: Option<String>,
+    place: Place,
+    size: Option<egui::Vec2>,
+    max_width: Option<f32>,
+    closable: bool,
+}
+
+/// What [`Dialog::show`] gives back.
+pub struct Shown {
+    /// The box's rectangle (points).
+    pub rect: egui::Rect,
+    /// Its close button was clicked.
+    pub close: bool,
+}
+
+impl Dialog {
+    /// A box named `id` (its egui id and layer), with `title` as a heading.
+    pub fn new(id: &str, title: Option<String>) -> Self {
+        Dialog {
+            name: id.to_string(),
+            id: egui::Id::new(id),
+            title,
+            place: Place::Centre,
+            size: None,
+            max_width: None,
+            closable: false,
+        }
+    }
+
+    pub fn place(mut self, place: Place) -> Self {
+        self.place = place;
+        self
+    }
+
+    /// Its size inside the frame, title included (points), whatever the
+    /// content asks.
+    pub fn fixed_size(mut self, size: egui::Vec2) -> Self {
+        self.size = Some(size);
+        self
+    }
+
+    pub fn max_width(mut self, width: f32) -> Self {
+        self.max_width = Some(width);
+        self
+    }
+
+    /// A close button (×) at the right of the title.
+    pub fn closable(mut self) -> Self {
+        self.closable = true;
+        self
+    }
+
+    /// Nothing behind it takes the keyboard or the pointer while it is
+    /// shown (egui's modal layer); Tab goes round its controls.
+    pub fn modal(self, ctx: &egui::Context) -> Self {
+        ctx.memory_mut(|m| m.set_modal_layer(self.layer()));
+        self
+    }
+
+    /// [`Dialog::modal`] where `modal` (a popup over the start screen takes
+    /// the keyboard from it; over the sandbox the panels stay usable).
+    pub fn modal_if(self, ctx: &egui::Context, modal: bool) -> Self {
+        if modal {
+            self.modal(ctx)
+        } else {
+            self
+        }
+    }
+
+    /// The layer it is drawn on.
+    pub fn layer(&self) -> egui::LayerId {
+        egui::LayerId::new(egui::Order::Foreground, self.id)
+    }
+
+    pub fn show(
+        self,
+        ctx: &egui::Context,
+        cx: &mut Cx,
+        add: impl FnOnce(&mut egui::Ui, &mut Cx),
+    ) -> Shown {
+        let area = egui::Area::new(self.id)
+            .order(egui::Order::Foreground)
+            .sense(egui::Sense::hover())
+            .constrain(true);
+        let area = match self.place {
+            Place::Centre => area.anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO),
+            Place::At(pos) => area.fixed_pos(pos),
+        };
+        let mut close = false;
+        let response = area.show(ctx, |ui| {
+            egui::Frame::window(ui.style())
+                .show(ui, |ui| {
+                    let top = ui.cursor().top();
+                    if let Some(size) = self.size {
+                        ui.set_width(size.x);
+                    } else if let Some(width) = self.max_width {
+                        ui.set_max_width(width);
+                    }
+                    if let Some(title) = &self.title {
+                        ui.horizontal(|ui| {
+                            let side = ui.spacing().interact_size.y;
+                            let (close_width, height) = if self.closable {
+                                (side + ui.spacing().item_spacing.x, side)
+                            } else {
+                                (0.0, 0.0)
+                            };
+                            ui.add_sized(
+                                [ui.available_width() - close_width, height],
+                                egui::Label::new(egui::RichText::new(title).heading()).wrap(),
+                            );
+                            if self.closable {
+                                let r = ui
+                                    .add(egui::Button::new("×").min_size(egui::vec2(side, side)))
+                                    .on_hover_text(crate::app::lang::tr!("close"));
+                                cx.note(format!("{}_close", self.name), &r);
+                                close = r.clicked();
+                            }
+                        });
+                        ui.separator();
+                    }
+                    match self.size {
+                        Some(size) => {
+                            // What the title left of the size.
+                            let height = (size.y - (ui.cursor().top() - top)).max(40.0);
+                            ui.allocate_ui(egui::vec2(size.x, height), |ui| {
+                                ui.set_min_height(height);
+                                ui.set_max_height(height);
+                                add(ui, cx)
+                            })
+                            .inner
+                        }
+                        None => add(ui, cx),
+                    }
+                })
+                .inner
+        });
+        Shown {
+            rect: response.response.rect,
+            close,
+        }
+    }
+}
+
+/// A scroll area whose own parts (its content, dragged to scroll, and its
+/// bars) are noted as Tab stops to pass over. `salt` names it among the
+/// scroll areas of `ui`.
+pub fn scroll<R>(
+    ui: &mut egui::Ui,
+    cx: &mut Cx,
+    area: egui::ScrollArea,
+    salt: &str,
+    add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
+) -> R {
+    // egui's id for it, as `ScrollArea::show` makes it from the salt.
+    let id = ui.make_persistent_id(egui::Id::new(salt));
+    cx.marks.pass_over(id.with("area"), ui.layer_id());
+    let out = area.id_salt(salt).show(ui, |ui| add(ui, cx));
+    debug_assert_eq!(out.id, id, "egui names a scroll area otherwise");
+    for bar in 0..2_usize {
+        cx.marks.pass_over(id.with(bar), ui.layer_id());
+    }
+    out.inner
+}
+
+/// Where Tab brought the keyboard to a container's part (noted with
+/// [`Marks::pass_over`]), moves it on to the next control the frame noted,
+/// or back to the one before where the last Tab was Shift+Tab (`back`;
+/// egui may hand the keyboard over a frame after the key). Returns what
+/// has the keyboard now. (Past the last control egui itself goes round to
+/// the first, a frame later.)
+pub fn pass_over_containers(ctx: &egui::Context, marks: &Marks, back: bool) -> Option<egui::Id> {
+    let focused = ctx.memory(|m| m.focused())?;
+    let stops = &marks.stops;
+    let Some(at) = stops.iter().position(|s| s.id == focused && s.pass) else {
+        return Some(focused);
+    };
+    let n = stops.len();
+    let next = (1..n)
+        .map(|k| if back { (at + n - k) % n } else { (at + k) % n })
+        .map(|k| stops[k])
+        .find(|s| !s.pass && ctx.memory(|m| m.allows_interaction(s.layer)));
+    ctx.memory_mut(|m| match next {
+        Some(stop) => m.request_focus(stop.id),
+        None => m.surrender_focus(focused),
+    });
+    next.map(|s| s.id)
+}
