@@ -31,6 +31,8 @@ pub struct Dialog {
     size: Option<egui::Vec2>,
     max_width: Option<f32>,
     closable: bool,
+    /// Modal: what is behind is dimmed, as it does not answer.
+    modal: bool,
 }
 
 /// What [`Dialog::show`] gives back.
@@ -52,6 +54,7 @@ impl Dialog {
             size: None,
             max_width: None,
             closable: false,
+            modal: false,
         }
     }
 
@@ -80,8 +83,9 @@ impl Dialog {
 
     /// Nothing behind it takes the keyboard or the pointer while it is
     /// shown (egui's modal layer); Tab goes round its controls.
-    pub fn modal(self, ctx: &egui::Context) -> Self {
+    pub fn modal(mut self, ctx: &egui::Context) -> Self {
         ctx.memory_mut(|m| m.set_modal_layer(self.layer()));
+        self.modal = true;
         self
     }
 
@@ -115,7 +119,14 @@ impl Dialog {
             Place::At(pos) => area.fixed_pos(pos),
         };
         let mut close = false;
+        let screen = ctx.screen_rect();
         let response = area.show(ctx, |ui| {
+            if self.modal {
+                // What is behind does not answer: it is dimmed.
+                ui.painter()
+                    .with_clip_rect(screen)
+                    .rect_filled(screen, 0.0, egui::Color32::from_black_alpha(140));
+            }
             egui::Frame::window(ui.style())
                 .show(ui, |ui| {
                     let top = ui.cursor().top();

@@ -26,7 +26,7 @@ impl StartScreen {
         let screen = ctx.screen_rect();
         let size = egui::vec2(
             (screen.width() - 32.0).clamp(100.0, 1100.0),
-            (screen.height() - 64.0).max(80.0),
+            (screen.height() - 40.0).max(80.0),
         );
         let dialog = Dialog::new("start_screen", Some(tr!("start-title")))
             .fixed_size(size)
