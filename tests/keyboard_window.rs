@@ -235,6 +235,11 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
         }
         let names = seen.iter().filter(|(n, _)| n.is_some()).count();
         assert!(names >= 10 && seen.len() < 120, "{args:?}: {seen:?}");
+        // What the top bar has no room for (at text size 2) is reached too.
+        let more = seen
+            .iter()
+            .any(|(n, _)| n.as_deref() == Some("top_bar_more"));
+        assert_eq!(more, args.contains(&"--ui-scale"), "{args:?}: {seen:?}");
         app.quit();
     }
 }

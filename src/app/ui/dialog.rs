@@ -29,6 +29,8 @@ pub struct Dialog {
     title: Option<String>,
     place: Place,
     size: Option<egui::Vec2>,
+    /// The height of `size` is the most it takes, not what it takes.
+    shrinks: bool,
     max_width: Option<f32>,
     closable: bool,
     /// Modal: what is behind is dimmed, as it does not answer.
@@ -52,6 +54,7 @@ impl Dialog {
             title,
             place: Place::Centre,
             size: None,
+            shrinks: false,
             max_width: None,
             closable: false,
             modal: false,
@@ -67,6 +70,14 @@ impl Dialog {
     /// content asks.
     pub fn fixed_size(mut self, size: egui::Vec2) -> Self {
         self.size = Some(size);
+        self
+    }
+
+    /// Its width, and the most height it takes (it is as tall as its
+    /// content up to that).
+    pub fn width_and_max_height(mut self, size: egui::Vec2) -> Self {
+        self.size = Some(size);
+        self.shrinks = true;
         self
     }
 
@@ -123,9 +134,11 @@ impl Dialog {
         let response = area.show(ctx, |ui| {
             if self.modal {
                 // What is behind does not answer: it is dimmed.
-                ui.painter()
-                    .with_clip_rect(screen)
-                    .rect_filled(screen, 0.0, egui::Color32::from_black_alpha(140));
+                ui.painter().with_clip_rect(screen).rect_filled(
+                    screen,
+                    0.0,
+                    egui::Color32::from_black_alpha(140),
+                );
             }
             egui::Frame::window(ui.style())
                 .show(ui, |ui| {
@@ -162,7 +175,9 @@ impl Dialog {
                             // What the title left of the size.
                             let height = (size.y - (ui.cursor().top() - top)).max(40.0);
                             ui.allocate_ui(egui::vec2(size.x, height), |ui| {
-                                ui.set_min_height(height);
+                                if !self.shrinks {
+                                    ui.set_min_height(height);
+                                }
                                 ui.set_max_height(height);
                                 add(ui, cx)
                             })

@@ -29,7 +29,7 @@ impl StartScreen {
             (screen.height() - 40.0).max(80.0),
         );
         let dialog = Dialog::new("start_screen", Some(tr!("start-title")))
-            .fixed_size(size)
+            .width_and_max_height(size)
             .modal(ctx);
         let shown = dialog.show(ctx, cx, |ui, cx| {
             scroll(ui, cx, egui::ScrollArea::vertical(), "tiles", |ui, cx| {

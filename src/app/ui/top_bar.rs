@@ -3,7 +3,8 @@
 //! (not even Tab hides them); then, as far as the line reaches, the total
 //! momentum (with a note while the walls have changed it) and energy, the
 //! impacts between discs and on walls counted apart, and what the method
-//! cannot promise. What does not fit is under "… more", on hover.
+//! cannot promise. What does not fit is under "… more", on hover or when
+//! Tab gives it the keys.
 
 use super::{Cx, View};
 use crate::app::lang::tr;
@@ -347,7 +348,15 @@ impl TopBar {
                     }
                 }
                 if !hidden.is_empty() {
-                    let r = ui.label(more).on_hover_text(hidden.join("\n"));
+                    // On hover, or while it has the keys (Tab reaches it).
+                    let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
+                    let hidden = hidden.join("\n");
+                    let r = if r.has_focus() {
+                        r.show_tooltip_text(hidden);
+                        r
+                    } else {
+                        r.on_hover_text(hidden)
+                    };
                     cx.note("top_bar_more", &r);
                 }
             });
