@@ -180,16 +180,31 @@ fn while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back() {
 }
 
 /// Walks Tab once round and checks every stop: something has the keys, its
-/// ring is not a sliver (a scroll bar), and it holds no named control (a
-/// window's frame, a scroll area's content, a plot round its legend).
+/// ring is not a sliver (a scroll bar) and is in sight, and it holds no
+/// named control (a window's frame, a scroll area's content, a plot round
+/// its legend).
 fn every_tab_stop_is_a_control_never_a_frame_round_others() {
     let x = Xvfb::start("stops");
-    for args in [
-        &["--paused"][..],
-        &["--paused", "--size", "1024x768", "--ui-scale", "2"][..],
+    let projector = &["--paused", "--size", "1024x768", "--ui-scale", "2"][..];
+    for (args, click) in [
+        (&["--paused"][..], None),
+        (projector, None),
+        // The controls in their drawer, scrolled as Tab goes.
+        (projector, Some("drawer_toggle")),
+        // The glancing hit with the Discs tab's table of fields open.
+        (&["--paused"][..], Some("tab_discs")),
     ] {
         let app = Sandbox::start(&x, args);
         app.move_to([5.0, 400.0]);
+        let discs_tab = click == Some("tab_discs");
+        if discs_tab {
+            app.xdo(&["key", "4"]);
+        }
+        if let Some(name) = click {
+            let s = app.wait_frames(5);
+            app.click(widget(&s, name, 0.5));
+            app.move_to([5.0, 400.0]);
+        }
         app.wait_frames(3);
         let mut seen: Vec<(Option<String>, Vec<i64>)> = Vec::new();
         for _ in 0..120 {
@@ -203,6 +218,13 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
             assert!(
                 r[2].min(r[3]) >= 6.0,
                 "a sliver has the keys: {name:?} {r:?}"
+            );
+            // In sight: a control Tab reaches in a scroll area is scrolled to.
+            let window = &s["layout"]["window"];
+            let (w, h) = (window[0].as_f64().unwrap(), window[1].as_f64().unwrap());
+            assert!(
+                r[0] >= -1.0 && r[1] >= -1.0 && r[0] + r[2] <= w + 1.0 && r[1] + r[3] <= h + 1.0,
+                "out of sight: {name:?} at {r:?} ({args:?} {click:?})"
             );
             let widgets = s["panel_widgets"].as_object().unwrap();
             let inside: Vec<&String> = widgets
@@ -235,6 +257,15 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
         }
         let names = seen.iter().filter(|(n, _)| n.is_some()).count();
         assert!(names >= 10 && seen.len() < 120, "{args:?}: {seen:?}");
+        // Tab going on from the side dock's scroll bar reaches the table.
+        if discs_tab {
+            for cell in ["discs_mass_0", "discs_vy_1"] {
+                assert!(
+                    seen.iter().any(|(n, _)| n.as_deref() == Some(cell)),
+                    "{cell}: {seen:?}"
+                );
+            }
+        }
         // What the top bar has no room for (at text size 2) is reached too.
         let more = seen
             .iter()

@@ -208,12 +208,31 @@ pub fn scroll<R>(
     // egui's id for it, as `ScrollArea::show` makes it from the salt.
     let id = ui.make_persistent_id(egui::Id::new(salt));
     cx.marks.pass_over(id.with("area"), ui.layer_id());
-    let out = area.id_salt(salt).show(ui, |ui| add(ui, cx));
+    let out = area.id_salt(salt).show(ui, |ui| {
+        let inner = add(ui, cx);
+        reveal_focus(ui);
+        inner
+    });
     debug_assert_eq!(out.id, id, "egui names a scroll area otherwise");
     for bar in 0..2_usize {
         cx.marks.pass_over(id.with(bar), ui.layer_id());
     }
     out.inner
+}
+
+/// egui 0.31 does not scroll to a control Tab brought the keyboard to:
+/// where it is in the content just laid out in `ui` (a scroll area's),
+/// scrolls it into sight. (Asked outside the scroll area, egui drops it.)
+pub fn reveal_focus(ui: &egui::Ui) {
+    let Some(id) = ui.ctx().memory(|m| m.focused()) else {
+        return;
+    };
+    let Some(r) = ui.ctx().read_response(id) else {
+        return;
+    };
+    if r.gained_focus() && r.layer_id == ui.layer_id() && ui.min_rect().contains_rect(r.rect) {
+        ui.scroll_to_rect_animation(r.rect, None, egui::style::ScrollAnimation::none());
+    }
 }
 
 /// Where Tab brought the keyboard to a container's part (noted with

@@ -67,17 +67,8 @@ impl Cx<'_> {
         if response.has_focus() {
             self.marks.focused = Some(name.clone());
         }
-        // egui 0.31 does not scroll to a control Tab brought the keyboard
-        // to; asked here, inside its scroll area, it does.
-        if response.gained_focus() {
-            response.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
-        }
         if response.sense.is_focusable() {
-            self.marks.stops.push(Stop {
-                id: response.id,
-                layer: response.layer_id,
-                pass: false,
-            });
+            self.marks.stops.push(Stop::control(response));
         }
         self.marks.note(name, response.rect);
     }
@@ -103,7 +94,20 @@ pub struct Marks {
     pub focus_rect: Option<[f32; 4]>,
 }
 
-/// A place Tab can stop at.
+impl Stop {
+    /// A control's stop.
+    pub fn control(response: &egui::Response) -> Stop {
+        Stop {
+            id: response.id,
+            layer: response.layer_id,
+            pass: false,
+        }
+    }
+}
+
+/// A place Tab can stop at. Every control after a container's part should
+/// be among the stops (noted with [`Cx::note`] or pushed as they are made),
+/// or Tab going on from the part passes it over.
 #[derive(Clone, Copy, Debug)]
 pub struct Stop {
     pub id: egui::Id,

@@ -35,8 +35,9 @@ pub fn labelled_button(
     if !tip.is_empty() {
         r = r.on_hover_text(tip);
     }
-    if let Some(name) = name {
-        cx.note(name, &r);
+    match name {
+        Some(name) => cx.note(name, &r),
+        None => cx.marks.stops.push(super::Stop::control(&r)),
     }
     if r.clicked() {
         cx.send(command);

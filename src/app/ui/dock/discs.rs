@@ -7,7 +7,7 @@
 //! scrolling.
 
 use super::super::widgets::{select_all_on_focus, show_note};
-use super::super::{Cx, View};
+use super::super::{Cx, Stop, View};
 use crate::app::lang::tr;
 use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
@@ -87,6 +87,8 @@ impl View for DiscsTable {
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
         let mut cells = Vec::new();
+        // The table's controls in the order made, for Tab (see `dialog`).
+        let mut stops = Vec::new();
         let particles = &model.world.particles;
         let editing = self.editing.clone();
         let mut edit_text = editing.as_ref().map(|e| e.text.clone()).unwrap_or_default();
@@ -155,10 +157,9 @@ impl View for DiscsTable {
                                     7.0,
                                     Color32::from_rgb(c.r, c.g, c.b),
                                 );
-                                if ui
-                                    .selectable_label(selected == Some(i), format!("{i}"))
-                                    .clicked()
-                                {
+                                let r = ui.selectable_label(selected == Some(i), format!("{i}"));
+                                stops.push(Stop::control(&r));
+                                if r.clicked() {
                                     select = Some(i);
                                 }
                             });
@@ -200,7 +201,14 @@ impl View for DiscsTable {
                                         select_all_on_focus(ui, &r, text);
                                         focused |= r.has_focus();
                                         let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
-                                        cells.push((format!("{name}_{i}"), r.rect));
+                                        cells.push((format!("{name}_{i}"), r.rect, r.has_focus()));
+                                        stops.push(Stop::control(&r));
+                                        if r.gained_focus() {
+                                            r.scroll_to_me_animation(
+                                                None,
+                                                egui::style::ScrollAnimation::none(),
+                                            );
+                                        }
                                         if r.changed() && !mine {
                                             start = Some(CellEdit {
                                                 disc: i,
@@ -233,7 +241,11 @@ impl View for DiscsTable {
                     });
             });
         cx.marks.text_focus |= focused;
-        for (name, rect) in cells {
+        cx.marks.stops.extend(stops);
+        for (name, rect, has_focus) in cells {
+            if has_focus {
+                cx.marks.focused = Some(name.clone());
+            }
             cx.marks.note(name, rect);
         }
         if let Some(i) = select {
