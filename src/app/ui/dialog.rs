@@ -223,7 +223,7 @@ pub fn scroll<R>(
 /// egui 0.31 does not scroll to a control Tab brought the keyboard to:
 /// where it is in the content just laid out in `ui` (a scroll area's),
 /// scrolls it into sight. (Asked outside the scroll area, egui drops it.)
-pub fn reveal_focus(ui: &egui::Ui) {
+fn reveal_focus(ui: &egui::Ui) {
     let Some(id) = ui.ctx().memory(|m| m.focused()) else {
         return;
     };
