@@ -94,17 +94,6 @@ pub struct Marks {
     pub focus_rect: Option<[f32; 4]>,
 }
 
-impl Stop {
-    /// A control's stop.
-    pub fn control(response: &egui::Response) -> Stop {
-        Stop {
-            id: response.id,
-            layer: response.layer_id,
-            pass: false,
-        }
-    }
-}
-
 /// A place Tab can stop at. Every control after a container's part should
 /// be among the stops (noted with [`Cx::note`] or pushed as they are made),
 /// or Tab going on from the part passes it over.
@@ -116,6 +105,17 @@ pub struct Stop {
     /// A container's part, which shows nothing and does nothing with the
     /// keyboard: Tab goes on past it.
     pub pass: bool,
+}
+
+impl Stop {
+    /// A control's stop.
+    pub fn control(response: &egui::Response) -> Stop {
+        Stop {
+            id: response.id,
+            layer: response.layer_id,
+            pass: false,
+        }
+    }
 }
 
 impl Marks {
