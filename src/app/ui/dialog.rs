@@ -230,8 +230,16 @@ fn reveal_focus(ui: &egui::Ui) {
     let Some(r) = ui.ctx().read_response(id) else {
         return;
     };
-    if r.gained_focus() && r.layer_id == ui.layer_id() && ui.min_rect().contains_rect(r.rect) {
-        ui.scroll_to_rect_animation(r.rect, None, egui::style::ScrollAnimation::none());
+    if r.layer_id == ui.layer_id() && ui.min_rect().contains_rect(r.rect) {
+        into_sight(&r);
+    }
+}
+
+/// Scrolls the control that has just got the keyboard into sight; called
+/// inside its scroll area (a table's own, where [`scroll`] is not used).
+pub fn into_sight(r: &egui::Response) {
+    if r.gained_focus() {
+        r.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
     }
 }
 

@@ -6,6 +6,7 @@
 //! and the answer shows above the table, where it is seen without
 //! scrolling.
 
+use super::super::dialog::into_sight;
 use super::super::widgets::{select_all_on_focus, show_note};
 use super::super::{Cx, Stop, View};
 use crate::app::lang::tr;
@@ -203,12 +204,7 @@ impl View for DiscsTable {
                                         let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
                                         cells.push((format!("{name}_{i}"), r.rect, r.has_focus()));
                                         stops.push(Stop::control(&r));
-                                        if r.gained_focus() {
-                                            r.scroll_to_me_animation(
-                                                None,
-                                                egui::style::ScrollAnimation::none(),
-                                            );
-                                        }
+                                        into_sight(&r);
                                         if r.changed() && !mine {
                                             start = Some(CellEdit {
                                                 disc: i,
