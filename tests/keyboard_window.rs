@@ -3,6 +3,7 @@
 //! that has the keys (in both themes); while a control has them, the
 //! world's keys rest and Space presses the control; Esc gives them back;
 //! every stop is a control, not a window's frame or a scroll area's part;
+//! a list without controls takes Tab and its keys scroll it;
 //! and the world itself answers keys: Q selects a disc, the arrow keys aim
 //! it while paused, Enter puts a new disc at the centre.
 
@@ -33,6 +34,10 @@ fn main() -> std::process::ExitCode {
         (
             "every_tab_stop_is_a_control_never_a_frame_round_others",
             every_tab_stop_is_a_control_never_a_frame_round_others,
+        ),
+        (
+            "a_list_without_controls_takes_tab_and_the_keys_scroll_it",
+            a_list_without_controls_takes_tab_and_the_keys_scroll_it,
         ),
         (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
@@ -273,6 +278,117 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
         assert_eq!(more, args.contains(&"--ui-scale"), "{args:?}: {seen:?}");
         app.quit();
     }
+}
+
+/// How far the list `name` is scrolled down, and how far it can be (px).
+fn list_scroll(s: &Value, name: &str) -> (f64, f64) {
+    let l = &s["ui"]["lists"][name];
+    let y = |v: &Value| {
+        v[1].as_f64()
+            .unwrap_or_else(|| panic!("{name} in {}", s["ui"]))
+    };
+    (y(&l["offset"]), y(&l["max"]))
+}
+
+/// Presses Tab until `name` has the keys (at most `most` times).
+fn tab_to(app: &Sandbox, name: &str, most: usize) -> Value {
+    let mut seen = Vec::new();
+    for _ in 0..most {
+        app.xdo(&["key", "Tab"]);
+        let s = app.wait_frames(3);
+        if focus(&s).as_deref() == Some(name) {
+            return s;
+        }
+        seen.push(focus(&s));
+    }
+    panic!("Tab never reached {name}: {seen:?}");
+}
+
+fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
+    let x = Xvfb::start("lists");
+    let projector = ["--paused", "--size", "1024x768", "--ui-scale", "2"];
+    // The key list at a projector's scale: far longer than its box.
+    let app = Sandbox::start(&x, &projector);
+    app.move_to([5.0, 400.0]);
+    app.xdo(&["key", "F1"]);
+    let s = app.wait_frames(3);
+    let (offset, max) = list_scroll(&s, "scroll_keys");
+    assert!(offset == 0.0 && max > 1000.0, "{offset} of {max}");
+    // It is modal: Tab goes round the box alone, the list its second stop.
+    let s = tab_to(&app, "scroll_keys", 2);
+    let view = s["ui"]["focus_rect"][3].as_f64().unwrap();
+    let press = |key: &str| {
+        app.xdo(&["key", key]);
+        let s = app.wait_frames(3);
+        assert_eq!(
+            focus(&s).as_deref(),
+            Some("scroll_keys"),
+            "{key} took the keys away"
+        );
+        list_scroll(&s, "scroll_keys")
+    };
+    let line = press("Down").0;
+    assert!(
+        line > 0.0 && line < view / 2.0,
+        "Down: {line} (view {view})"
+    );
+    let page = press("Next").0 - line;
+    assert!(
+        page > view / 2.0 && page < view,
+        "Page Down: {page} (view {view})"
+    );
+    let (end, max) = press("End");
+    assert_eq!(end, max, "End");
+    assert!(
+        (press("Up").0 - (max - line)).abs() < 0.5,
+        "Up from the end"
+    );
+    assert_eq!(press("Home").0, 0.0, "Home");
+    app.xdo(&["key", "Escape"]);
+    let s = app.wait_frames(3);
+    assert_eq!(focus(&s), None, "Esc gives the keys back");
+    app.quit();
+
+    // The ledger at the same scale: the newest collision's table over the
+    // list of the last ones, in a scroll area round both. Tab reaches
+    // each, shows it, and the keys scroll it alone.
+    let app = Sandbox::start(&x, &projector);
+    app.move_to([5.0, 400.0]);
+    app.xdo(&["key", "u"]);
+    app.xdo(&["key", "space"]);
+    std::thread::sleep(std::time::Duration::from_secs(3));
+    app.xdo(&["key", "space"]);
+    // The newest a collision between discs: its table is the taller.
+    app.xdo(&["key", "j"]);
+    let s = app.wait_frames(5);
+    let lists = |s: &Value| s["ui"]["lists"].clone();
+    let before = lists(&s);
+    let (_, max) = list_scroll(&s, "scroll_ledger_list");
+    assert!(max > 0.0, "{}", s["ui"]);
+    tab_to(&app, "scroll_ledger_list", 60);
+    // Shown within a few frames (egui's scrolling lands a frame later).
+    let s = app.wait_frames(3);
+    let r: Vec<f64> = s["ui"]["focus_rect"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let window = &s["layout"]["window"];
+    assert!(
+        r[1] >= 0.0 && r[1] + r[3] <= window[1].as_f64().unwrap() + 1.0,
+        "the list is out of sight: {r:?}"
+    );
+    assert_eq!(lists(&s), before, "reaching the list scrolled another");
+    app.xdo(&["key", "Down"]);
+    let s = app.wait_frames(3);
+    assert!(list_scroll(&s, "scroll_ledger_list").0 > 0.0, "{}", s["ui"]);
+    assert_eq!(
+        lists(&s)["scroll_ledger_detail"],
+        before["scroll_ledger_detail"],
+        "Down scrolled the table too"
+    );
+    app.quit();
 }
 
 fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {

@@ -179,6 +179,9 @@ pub struct UiDump {
     /// Where whatever has the keyboard is, named or not: [x, y, w, h] in
     /// pixels (the ring Tab moves).
     pub focus_rect: Option<[f32; 4]>,
+    /// Lists to read that scroll (no controls in them; Tab stops on them
+    /// and the keys scroll them), by name, with how far each is scrolled.
+    pub lists: std::collections::BTreeMap<String, crate::app::ui::ListScroll>,
     /// The window's language ("en", "pt-BR", "qps").
     pub language: String,
     #[serde(flatten)]
@@ -330,6 +333,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 panel_keyboard: panels.panel_keyboard,
                 focus: panels.marks.focused.clone(),
                 focus_rect: panels.marks.focus_rect,
+                lists: panels.marks.lists.clone(),
                 language: crate::app::lang::language().code().to_string(),
                 edits: EditsDump {
                     undo_levels: m.undo.levels().into(),

@@ -198,6 +198,14 @@ impl Dialog {
 /// A scroll area whose own parts (its content, dragged to scroll, and its
 /// bars) are noted as Tab stops to pass over. `salt` names it among the
 /// scroll areas of `ui`.
+///
+/// A list to read, with no control in it, is itself a Tab stop once it is
+/// taller or wider than its place (egui makes it one only then), named
+/// `scroll_<salt>`: the ring goes round it, and while it has the keyboard
+/// the arrows, Page Up, Page Down, Space, Home and End scroll it, as a
+/// browser scrolls a page. Without that a keyboard alone could not read
+/// the end of the key list or of the ledger (egui 0.31 scrolls only to a
+/// control).
 pub fn scroll<R>(
     ui: &mut egui::Ui,
     cx: &mut Cx,
@@ -207,30 +215,101 @@ pub fn scroll<R>(
 ) -> R {
     // egui's id for it, as `ScrollArea::show` makes it from the salt.
     let id = ui.make_persistent_id(egui::Id::new(salt));
-    cx.marks.pass_over(id.with("area"), ui.layer_id());
+    let content = id.with("area");
+    let at = cx.marks.stops.len();
+    cx.marks.pass_over(content, ui.layer_id());
+    let reading = ui.memory(|m| m.has_focus(content));
     let out = area.id_salt(salt).show(ui, |ui| {
+        if reading {
+            scroll_by_keys(ui, content);
+        }
         let inner = add(ui, cx);
-        reveal_focus(ui);
+        reveal_focus(ui, cx.marks, at + 1);
         inner
     });
     debug_assert_eq!(out.id, id, "egui names a scroll area otherwise");
+    let has_controls = cx.marks.stops[at + 1..].iter().any(|s| !s.pass);
+    let view = out.inner_rect.size();
+    let max = (out.content_size - view).max(egui::Vec2::ZERO);
+    if !has_controls && (max.x > 0.5 || max.y > 0.5) {
+        cx.marks.stops[at].pass = false;
+        let name = format!("scroll_{salt}");
+        if reading {
+            cx.marks.focused = Some(name.clone());
+        }
+        let ppp = cx.marks.ppp;
+        let offset = out.state.offset;
+        cx.marks.lists.insert(
+            name.clone(),
+            super::ListScroll {
+                offset: [offset.x * ppp, offset.y * ppp],
+                max: [max.x * ppp, max.y * ppp],
+            },
+        );
+        cx.marks.note(name, out.inner_rect);
+    }
     for bar in 0..2_usize {
         cx.marks.pass_over(id.with(bar), ui.layer_id());
     }
     out.inner
 }
 
+/// Scrolls the list to read whose content `ui` lays out by this frame's
+/// keys, which it keeps (the arrows do not move the keyboard on).
+fn scroll_by_keys(ui: &egui::Ui, content: egui::Id) {
+    ui.memory_mut(|m| {
+        m.set_focus_lock_filter(
+            content,
+            egui::EventFilter {
+                horizontal_arrows: true,
+                vertical_arrows: true,
+                ..Default::default()
+            },
+        )
+    });
+    use egui::Key;
+    // A line: two lines of text, as a browser's arrow scrolls about 40 px;
+    // a page: most of what shows, so a line stays in sight across it.
+    let line = 2.0 * ui.text_style_height(&egui::TextStyle::Body);
+    let page = 0.85 * ui.clip_rect().size();
+    let ends = 1.0e6;
+    let down = ui.input(|i| {
+        let n = |key| i.num_presses(key) as f32;
+        let space = if i.modifiers.shift { -1.0 } else { 1.0 } * n(Key::Space);
+        egui::vec2(
+            (n(Key::ArrowRight) - n(Key::ArrowLeft)) * line,
+            (n(Key::ArrowDown) - n(Key::ArrowUp)) * line
+                + (n(Key::PageDown) - n(Key::PageUp) + space) * page.y
+                + (n(Key::End) - n(Key::Home)) * ends,
+        )
+    });
+    if down != egui::Vec2::ZERO {
+        // egui's delta moves the content: down the list is up the screen.
+        ui.scroll_with_delta_animation(-down, egui::style::ScrollAnimation::none());
+    }
+}
+
 /// egui 0.31 does not scroll to a control Tab brought the keyboard to:
-/// where it is in the content just laid out in `ui` (a scroll area's),
-/// scrolls it into sight. (Asked outside the scroll area, egui drops it.)
-fn reveal_focus(ui: &egui::Ui) {
+/// where it is in the content just laid out in `ui` (a scroll area's, whose
+/// stops begin at `first` in `marks`), scrolls it into sight. (Asked
+/// outside the scroll area, egui drops it.) A control noted elsewhere is
+/// left alone, even where its rectangle falls in this content: a list after
+/// a taller one, in a scroll area round both, is the outer area's to show.
+fn reveal_focus(ui: &egui::Ui, marks: &Marks, first: usize) {
     let Some(id) = ui.ctx().memory(|m| m.focused()) else {
         return;
     };
     let Some(r) = ui.ctx().read_response(id) else {
         return;
     };
-    if r.layer_id == ui.layer_id() && ui.min_rect().contains_rect(r.rect) {
+    let inside = if marks.stops[first..].iter().any(|s| s.id == id) {
+        true
+    } else {
+        // One not noted at all (egui's own): where it lies.
+        let noted = marks.stops.iter().any(|s| s.id == id) || marks.last_stops.contains(&id);
+        !noted && r.layer_id == ui.layer_id() && ui.min_rect().contains_rect(r.rect)
+    };
+    if inside {
         into_sight(&r);
     }
 }
@@ -238,9 +317,28 @@ fn reveal_focus(ui: &egui::Ui) {
 /// Scrolls the control that has just got the keyboard into sight; called
 /// inside its scroll area (a table's own, where [`scroll`] is not used).
 pub fn into_sight(r: &egui::Response) {
-    if r.gained_focus() {
+    if r.gained_focus() || focus_is_new(&r.ctx) {
         r.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
     }
+}
+
+/// The id under which [`note_focus`] keeps whether the keyboard moved.
+fn focus_moved_id() -> egui::Id {
+    egui::Id::new("dialog_focus_moved")
+}
+
+/// Notes, before the views of a frame, whether what has the keyboard is
+/// not what had it when the last frame's views were laid out (`last`,
+/// updated). egui's `gained_focus` misses a control the keyboard was
+/// passed on to between frames ([`pass_over_containers`]).
+pub fn note_focus(ctx: &egui::Context, last: &mut Option<egui::Id>) {
+    let now = ctx.memory(|m| m.focused());
+    ctx.data_mut(|d| d.insert_temp(focus_moved_id(), now != *last));
+    *last = now;
+}
+
+fn focus_is_new(ctx: &egui::Context) -> bool {
+    ctx.data(|d| d.get_temp(focus_moved_id())).unwrap_or(false)
 }
 
 /// Where Tab brought the keyboard to a container's part (noted with

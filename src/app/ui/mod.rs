@@ -90,8 +90,23 @@ pub struct Marks {
     /// The frame's Tab stops in the order egui made them: the controls
     /// noted, and the containers' parts to pass over ([`dialog`]).
     pub stops: Vec<Stop>,
+    /// The last frame's stops.
+    pub last_stops: Vec<egui::Id>,
     /// The rectangle of whatever has the keyboard (pixels), named or not.
     pub focus_rect: Option<[f32; 4]>,
+    /// Lists to read (scroll areas without controls, taller or wider than
+    /// their place): how far each is scrolled and how far it can be, in
+    /// pixels ([`dialog::scroll`]).
+    pub lists: BTreeMap<String, ListScroll>,
+}
+
+/// How far a list to read is scrolled (pixels).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ListScroll {
+    /// Scrolled down (and across) from the top left.
+    pub offset: [f32; 2],
+    /// The most it can be scrolled.
+    pub max: [f32; 2],
 }
 
 /// A place Tab can stop at. Every control after a container's part should
@@ -197,6 +212,8 @@ pub struct Panels {
     had_focus: bool,
     /// The last Tab was Shift+Tab.
     tab_back: bool,
+    /// What had the keyboard when the last frame's views were laid out.
+    seen_focus: Option<egui::Id>,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// This frame's layout.
@@ -220,6 +237,7 @@ impl Panels {
             typing: false,
             had_focus: false,
             tab_back: false,
+            seen_focus: None,
             panel_keyboard: false,
             pointer_on_ui: false,
             layout: Layout::default(),
@@ -255,8 +273,11 @@ impl Panels {
             self.applied = Some((p.scale, p.theme));
         }
         let ppp = px_per_point(ctx);
+        dialog::note_focus(ctx, &mut self.seen_focus);
+        let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {
             ppp,
+            last_stops,
             ..Marks::default()
         };
         let screen = ctx.screen_rect();

@@ -79,10 +79,12 @@ impl Popups {
             // The browser keeps these keys for itself.
             .filter(|b| !(cfg!(target_arch = "wasm32") && browser_keeps(b)))
             .collect();
+        // Modal: it covers most of the window (all of it at a projector's
+        // scale), and Tab must not walk the controls hidden behind it.
         let shown = Dialog::new("help_window", Some(tr!("help-title")))
             .fixed_size(size)
             .closable()
-            .modal_if(ctx, cx.model.panels.start_open)
+            .modal(ctx)
             .show(ctx, cx, |ui, cx| {
                 scroll(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, _| {
                     let grid =
