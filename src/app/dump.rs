@@ -170,6 +170,17 @@ pub struct UiDump {
     /// The start screen's tiles.
     pub start_open: bool,
     pub theme: String,
+    #[serde(flatten)]
+    pub keys: KeysDump,
+    /// The window's language ("en", "pt-BR", "qps").
+    pub language: String,
+    #[serde(flatten)]
+    pub edits: EditsDump,
+}
+
+/// Who has the keyboard.
+#[derive(Default, Serialize)]
+pub struct KeysDump {
     /// A text field has the keyboard.
     pub typing: bool,
     /// A field was left with Enter: the panel keeps the keyboard.
@@ -182,10 +193,6 @@ pub struct UiDump {
     /// Lists to read that scroll (no controls in them; Tab stops on them
     /// and the keys scroll them), by name, with how far each is scrolled.
     pub lists: std::collections::BTreeMap<String, crate::app::ui::ListScroll>,
-    /// The window's language ("en", "pt-BR", "qps").
-    pub language: String,
-    #[serde(flatten)]
-    pub edits: EditsDump,
 }
 
 /// Undo, the scene's edits and the messages.
@@ -329,11 +336,13 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 presets_open: m.panels.presets_open,
                 start_open: m.panels.start_open,
                 theme: m.panels.theme.name().to_string(),
-                typing: panels.typing,
-                panel_keyboard: panels.panel_keyboard,
-                focus: panels.marks.focused.clone(),
-                focus_rect: panels.marks.focus_rect,
-                lists: panels.marks.lists.clone(),
+                keys: KeysDump {
+                    typing: panels.typing,
+                    panel_keyboard: panels.panel_keyboard,
+                    focus: panels.marks.focused.clone(),
+                    focus_rect: panels.marks.focus_rect,
+                    lists: panels.marks.lists.clone(),
+                },
                 language: crate::app::lang::language().code().to_string(),
                 edits: EditsDump {
                     undo_levels: m.undo.levels().into(),

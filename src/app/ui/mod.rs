@@ -208,18 +208,25 @@ pub struct Panels {
     /// A text field was left with Enter: the keyboard stays with the panel
     /// (no shortcuts) until a click in the world or Esc.
     pub panel_keyboard: bool,
-    /// A control had the keyboard last frame.
-    had_focus: bool,
-    /// The last Tab was Shift+Tab.
-    tab_back: bool,
-    /// What had the keyboard when the last frame's views were laid out.
-    seen_focus: Option<egui::Id>,
+    /// Where the keyboard was, frame to frame.
+    trail: FocusTrail,
     /// The pointer is on a panel or popup: the world ignores it.
     pub pointer_on_ui: bool,
     /// This frame's layout.
     pub layout: Layout,
     /// This frame's rectangles.
     pub rects: Option<Rects>,
+}
+
+/// Where the keyboard was, frame to frame.
+#[derive(Default)]
+struct FocusTrail {
+    /// A control had the keyboard last frame.
+    had_focus: bool,
+    /// The last Tab was Shift+Tab.
+    tab_back: bool,
+    /// What had the keyboard when the last frame's views were laid out.
+    seen: Option<egui::Id>,
 }
 
 impl Panels {
@@ -235,9 +242,7 @@ impl Panels {
             start: start::StartScreen,
             marks: Marks::default(),
             typing: false,
-            had_focus: false,
-            tab_back: false,
-            seen_focus: None,
+            trail: FocusTrail::default(),
             panel_keyboard: false,
             pointer_on_ui: false,
             layout: Layout::default(),
@@ -273,7 +278,7 @@ impl Panels {
             self.applied = Some((p.scale, p.theme));
         }
         let ppp = px_per_point(ctx);
-        dialog::note_focus(ctx, &mut self.seen_focus);
+        dialog::note_focus(ctx, &mut self.trail.seen);
         let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {
             ppp,
@@ -374,9 +379,9 @@ impl Panels {
                 _ => None,
             })
         }) {
-            self.tab_back = back;
+            self.trail.tab_back = back;
         }
-        let mut focused = dialog::pass_over_containers(ctx, &self.marks, self.tab_back);
+        let mut focused = dialog::pass_over_containers(ctx, &self.marks, self.trail.tab_back);
         if let Some(id) = focused {
             if !self.pointer_on_ui && ctx.input(|i| i.pointer.any_pressed()) {
                 ctx.memory_mut(|m| m.surrender_focus(id));
@@ -392,8 +397,8 @@ impl Panels {
         // egui lets go of a control at the start of the frame whose key
         // (Esc, Tab, Enter) left it: that key belongs to the control.
         let has_focus = focused.is_some() || self.marks.text_focus;
-        self.typing = has_focus || self.had_focus;
-        self.had_focus = has_focus;
+        self.typing = has_focus || self.trail.had_focus;
+        self.trail.had_focus = has_focus;
         self.layout = Layout {
             window: [window.0, window.1],
             world: rects.world.as_array(),
