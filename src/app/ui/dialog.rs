@@ -100,16 +100,6 @@ impl Dialog {
         self
     }
 
-    /// [`Dialog::modal`] where `modal` (a popup over the start screen takes
-    /// the keyboard from it; over the sandbox the panels stay usable).
-    pub fn modal_if(self, ctx: &egui::Context, modal: bool) -> Self {
-        if modal {
-            self.modal(ctx)
-        } else {
-            self
-        }
-    }
-
     /// The layer it is drawn on.
     pub fn layer(&self) -> egui::LayerId {
         egui::LayerId::new(egui::Order::Foreground, self.id)

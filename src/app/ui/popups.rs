@@ -126,10 +126,12 @@ impl Popups {
 
     fn presets(&mut self, ctx: &egui::Context, cx: &mut Cx, screen: egui::Rect) {
         let size = fitted(screen, egui::vec2(640.0, 900.0));
+        // Modal, as the key list: a choice to make (choosing closes it),
+        // over most of the window at a projector's scale.
         let shown = Dialog::new("presets_window", Some(tr!("presets-title")))
             .fixed_size(size)
             .closable()
-            .modal_if(ctx, cx.model.panels.start_open)
+            .modal(ctx)
             .show(ctx, cx, |ui, cx| {
                 if cx.model.recovery.aside.is_some() {
                     let label = crate::app::model::bindings::label(&Command::ReopenKept);
