@@ -3,7 +3,8 @@
 //! that has the keys (in both themes); while a control has them, the
 //! world's keys rest and Space presses the control; Esc gives them back;
 //! every stop is a control, not a window's frame or a scroll area's part;
-//! a list without controls takes Tab and its keys scroll it;
+//! a list without controls takes Tab and its keys scroll it; a drop-down
+//! steps through its choices with the arrows;
 //! and the world itself answers keys: Q selects a disc, the arrow keys aim
 //! it while paused, Enter puts a new disc at the centre.
 
@@ -38,6 +39,10 @@ fn main() -> std::process::ExitCode {
         (
             "a_list_without_controls_takes_tab_and_the_keys_scroll_it",
             a_list_without_controls_takes_tab_and_the_keys_scroll_it,
+        ),
+        (
+            "a_drop_down_steps_through_its_choices_with_the_arrows",
+            a_drop_down_steps_through_its_choices_with_the_arrows,
         ),
         (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
@@ -387,6 +392,46 @@ fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
         lists(&s)["scroll_ledger_detail"],
         before["scroll_ledger_detail"],
         "Down scrolled the table too"
+    );
+    app.quit();
+}
+
+fn a_drop_down_steps_through_its_choices_with_the_arrows() {
+    let x = Xvfb::start("drop-downs");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([5.0, 400.0]);
+    tab_to(&app, "edges", 40);
+    let press = |key: &str| {
+        app.xdo(&["key", key]);
+        let s = app.wait_frames(3);
+        assert_eq!(focus(&s).as_deref(), Some("edges"), "{key} took the keys");
+        s["boundary"].as_str().unwrap().to_string()
+    };
+    assert_eq!(press("Down"), "open");
+    assert_eq!(press("Down"), "periodic");
+    assert_eq!(press("Down"), "periodic", "the last stays the last");
+    assert_eq!(press("Up"), "open");
+    assert_eq!(press("Home"), "box");
+    assert_eq!(press("End"), "periodic");
+    // Open, its list over the controls below: the arrows still choose.
+    assert_eq!(press("space"), "periodic");
+    assert_eq!(press("Up"), "open");
+    app.xdo(&["key", "Escape"]);
+    app.quit();
+
+    // Under More, the friction's value box is off while friction is off:
+    // Tab goes from its tick box straight on to the method's drop-down
+    // (egui's value box took the keyboard there and dropped it).
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([5.0, 400.0]);
+    tab_to(&app, "section_more", 60);
+    app.xdo(&["key", "space"]);
+    app.wait_frames(3);
+    tab_to(&app, "friction_on", 20);
+    let after: Vec<_> = tabs(&app, 3);
+    assert_eq!(
+        after,
+        [Some("method"), Some("broad_phase"), Some("substeps")].map(|n| n.map(str::to_string)),
     );
     app.quit();
 }

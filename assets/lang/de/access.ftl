@@ -6,7 +6,7 @@ launched-at-centre = Scheibe { $disc } ruht in der Mitte: Bei angehaltener Simul
 
 ## Der Weg über die Tastatur (Zeilen der Hilfe)
 keys-focus = Tab / Umschalt+Tab
-help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler oder rollen eine Liste (auch Bild auf, Bild ab, Pos1 und Ende); Esc oder ein Klick in die Welt gibt die Tasten an die Welt zurück
+help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler, wählen in einer Auswahlliste oder rollen eine Liste (auch Bild auf, Bild ab, Pos1 und Ende); Esc oder ein Klick in die Welt gibt die Tasten an die Welt zurück
 keys-aim-keys = Pfeiltasten, angehalten, mit gewählter Scheibe
 help-aim-keys = sie ausrichten: ihre Geschwindigkeit ±0,1 m/s pro Tastendruck (Umschalt: ±1 m/s)
 keys-select-next = Q / Umschalt+Q

@@ -6,7 +6,7 @@ launched-at-centre = Disc { $disc } at rest at the centre: with the simulation p
 
 ## The keyboard path (lines of the help)
 keys-focus = Tab / Shift+Tab
-help-focus = move through the controls, in reading order; Space or Enter presses one, the arrow keys move a slider or scroll a list (Page Up, Page Down, Home and End too); Esc or a click in the world gives the keys back to the world
+help-focus = move through the controls, in reading order; Space or Enter presses one, the arrow keys move a slider, step through a drop-down's choices or scroll a list (Page Up, Page Down, Home and End too); Esc or a click in the world gives the keys back to the world
 keys-aim-keys = Arrow keys, paused, with a disc selected
 help-aim-keys = aim it: its velocity ±0.1 m/s a press (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q

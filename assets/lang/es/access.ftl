@@ -6,7 +6,7 @@ launched-at-centre = Disco { $disc } en reposo en el centro: con la simulación 
 
 ## El recorrido con el teclado (líneas de la ayuda)
 keys-focus = Tab / Mayús+Tab
-help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador o desplazan una lista (también Re Pág, Av Pág, Inicio y Fin); Esc o un clic en el mundo devuelven las teclas al mundo
+help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador, eligen en una lista desplegable o desplazan una lista (también Re Pág, Av Pág, Inicio y Fin); Esc o un clic en el mundo devuelven las teclas al mundo
 keys-aim-keys = Flechas, en pausa, con un disco seleccionado
 help-aim-keys = fijar su velocidad: ±0,1 m/s por pulsación (Mayús: ±1 m/s)
 keys-select-next = Q / Mayús+Q

@@ -6,7 +6,7 @@ launched-at-centre = Disque { $disc } au repos au centre : simulation en pause, 
 
 ## Le parcours au clavier (lignes de l'aide)
 keys-focus = Tab / Maj+Tab
-help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage ou font défiler une liste (Page préc., Page suiv., Début et Fin aussi) ; Échap ou un clic dans la simulation rend les touches à la simulation
+help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage, choisissent dans une liste déroulante ou font défiler une liste (Page préc., Page suiv., Début et Fin aussi) ; Échap ou un clic dans la simulation rend les touches à la simulation
 keys-aim-keys = Touches fléchées, en pause, avec un disque sélectionné
 help-aim-keys = régler sa vitesse : ±0,1 m/s par appui (Maj : ±1 m/s)
 keys-select-next = Q / Maj+Q

@@ -6,7 +6,7 @@ launched-at-centre = Disco { $disc } em repouso no centro: com a simulação pau
 
 ## O caminho pelo teclado (linhas da ajuda)
 keys-focus = Tab / Shift+Tab
-help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante ou rolam uma lista (também Page Up, Page Down, Home e End); Esc ou um clique no mundo devolve as teclas ao mundo
+help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante, escolhem numa lista suspensa ou rolam uma lista (também Page Up, Page Down, Home e End); Esc ou um clique no mundo devolve as teclas ao mundo
 keys-aim-keys = Teclas de seta, em pausa, com um disco selecionado
 help-aim-keys = mira o disco: a velocidade dele ±0,1 m/s a cada toque (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q

@@ -75,15 +75,17 @@ pub fn combo(ui: &mut Ui, label: &str, selected: &str) -> ComboBox {
 }
 
 /// A combo box over `list`, showing `current` even when it is not in the
-/// list (a scene may ask for 3 substeps); returns the new choice.
+/// list (a scene may ask for 3 substeps), noted under `name`; returns the
+/// new choice (clicked, or stepped to with the arrows: [`arrow_choice`]).
 pub fn setting_combo<T: Copy + PartialEq + Display>(
     ui: &mut Ui,
-    (label, hover): (&str, &str),
+    cx: &mut Cx,
+    (label, hover, name): (&str, &str, &str),
     list: &[T],
     current: T,
 ) -> Option<T> {
     let mut chosen = None;
-    combo(ui, label, &current.to_string())
+    let r = combo(ui, label, &current.to_string())
         .show_ui(ui, |ui| {
             for &item in list {
                 if ui
@@ -96,7 +98,56 @@ pub fn setting_combo<T: Copy + PartialEq + Display>(
         })
         .response
         .on_hover_text(hover);
+    cx.note(name, &r);
+    let at = list.iter().position(|&item| item == current);
+    if let Some(k) = arrow_choice(&r, at, list.len()) {
+        chosen = Some(list[k]);
+    }
     chosen.filter(|&c| c != current)
+}
+
+/// The keyboard on a combo box (its button `r`), as on a browser's list
+/// box: Up and Down choose the choice before or after `current` (of
+/// `count`), Home and End the first and the last, with the list open or
+/// shut. egui 0.31 has no keys for a combo box: its arrows moved the
+/// keyboard to whatever lay above or below, often a control hidden under
+/// the open list. Returns the choice the keys made, if they changed it.
+pub fn arrow_choice(r: &egui::Response, current: Option<usize>, count: usize) -> Option<usize> {
+    if !r.has_focus() || count == 0 {
+        return None;
+    }
+    r.ctx.memory_mut(|m| {
+        m.set_focus_lock_filter(
+            r.id,
+            egui::EventFilter {
+                vertical_arrows: true,
+                ..Default::default()
+            },
+        )
+    });
+    use egui::Key;
+    let (down, up, home, end) = r.ctx.input(|i| {
+        (
+            i.num_presses(Key::ArrowDown),
+            i.num_presses(Key::ArrowUp),
+            i.key_pressed(Key::Home),
+            i.key_pressed(Key::End),
+        )
+    });
+    let last = count - 1;
+    let next = if home {
+        0
+    } else if end {
+        last
+    } else if down + up > 0 {
+        match current {
+            Some(at) => (at + down).saturating_sub(up).min(last),
+            None => 0,
+        }
+    } else {
+        return None;
+    };
+    (Some(next) != current).then_some(next)
 }
 
 /// A slider under its label, as wide as the dock allows, with its value
@@ -127,6 +178,13 @@ pub fn slider(
         } else {
             0.005 * (range.end() - range.start())
         };
+        if !ui.is_enabled() {
+            // egui's value box takes Tab even where it is disabled, and
+            // then lets the keyboard drop: a plain box shows the value.
+            let text = format!("{}{suffix}", crate::app::numbers::plain(*value, decimals));
+            ui.add(egui::Button::new(text));
+            return (track, false);
+        }
         let boxed = ui.add(
             egui::DragValue::new(value)
                 .range(range)

@@ -106,6 +106,11 @@ impl BottomDock {
                 })
                 .response;
             cx.note("tab_menu", &r);
+            let tabs: Vec<_> = self.tabs.iter().map(|(t, _)| *t).collect();
+            let at = tabs.iter().position(|t| *t == chosen);
+            if let Some(k) = super::widgets::arrow_choice(&r, at, tabs.len()) {
+                cx.send(Command::ShowTab(tabs[k]));
+            }
         }
         for (tab, _) in self.tabs.iter().filter(|_| wanted <= row_rect.width()) {
             let chosen = model.panels.tab == *tab && expanded;

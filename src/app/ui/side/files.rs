@@ -3,7 +3,9 @@
 //! screen, hide the panels) and, under *More*, *Details* (method, broad
 //! phase, substeps and what a step costs).
 
-use super::super::widgets::{combo, command_button, setting_combo, show_note, slider};
+use super::super::widgets::{
+    arrow_choice, combo, command_button, setting_combo, show_note, slider,
+};
 use super::Cx;
 use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
@@ -13,13 +15,15 @@ use egui::Ui;
 
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
 pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
-    combo(ui, &tr!("preset-label"), &tr!("preset-choose")).show_ui(ui, |ui| {
+    // A list of things to do, not a setting: the arrows open nothing.
+    let r = combo(ui, &tr!("preset-label"), &tr!("preset-choose")).show_ui(ui, |ui| {
         for (k, label) in scenes::preset_labels().iter().enumerate() {
             if ui.selectable_label(false, label).clicked() {
                 cx.send(Command::OpenPreset(k));
             }
         }
     });
+    cx.note("preset_combo", &r.response);
     if cx.model.recovery.aside.is_some() {
         command_button(ui, cx, Command::ReopenKept, Some("reopen_kept"));
     }
@@ -124,6 +128,10 @@ pub fn language(ui: &mut Ui, cx: &mut Cx) {
         .response
         .on_hover_text(tr!("language-hover"));
     cx.note("language", &r);
+    let at = Lang::SHIPPED.iter().position(|&l| l == current);
+    if let Some(k) = arrow_choice(&r, at, Lang::SHIPPED.len()) {
+        cx.send(Command::SetLanguage(Lang::SHIPPED[k]));
+    }
 }
 
 /// Method, broad phase, substeps, and what the steps cost.
@@ -131,15 +139,16 @@ pub fn details(ui: &mut Ui, cx: &mut Cx) {
     let model = cx.model;
     let w = &model.world;
     let (label, hover) = (tr!("method-label"), tr!("method-hover"));
-    if let Some(m) = setting_combo(ui, (&label, &hover), &METHODS, w.method) {
+    if let Some(m) = setting_combo(ui, cx, (&label, &hover, "method"), &METHODS, w.method) {
         cx.send(Command::SetMethod(m));
     }
     let (label, hover) = (tr!("broad-phase-label"), tr!("broad-phase-hover"));
-    if let Some(b) = setting_combo(ui, (&label, &hover), &BROAD_PHASES, w.broad_phase) {
+    let names = (&*label, &*hover, "broad_phase");
+    if let Some(b) = setting_combo(ui, cx, names, &BROAD_PHASES, w.broad_phase) {
         cx.send(Command::SetBroadPhase(b));
     }
     let (label, hover) = (tr!("substeps-label"), tr!("substeps-hover"));
-    if let Some(k) = setting_combo(ui, (&label, &hover), &SUBSTEPS, w.substeps) {
+    if let Some(k) = setting_combo(ui, cx, (&label, &hover, "substeps"), &SUBSTEPS, w.substeps) {
         cx.send(Command::SetSubsteps(k));
     }
     ui.add(egui::Label::new(model.method_line()).wrap());
