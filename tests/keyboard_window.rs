@@ -434,6 +434,34 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
         [Some("method"), Some("broad_phase"), Some("substeps")].map(|n| n.map(str::to_string)),
     );
     app.quit();
+
+    // The language's box keeps the keyboard through a change of language
+    // (its label, in the language, changes), and stays in sight as the
+    // text above it reflows.
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([5.0, 400.0]);
+    tab_to(&app, "section_view", 60);
+    app.xdo(&["key", "space"]);
+    app.wait_frames(3);
+    let s = tab_to(&app, "language", 30);
+    let mut seen = vec![s["ui"]["language"].as_str().unwrap().to_string()];
+    for _ in 0..3 {
+        app.xdo(&["key", "Down"]);
+        app.wait_frames(3);
+        let s = app.wait_frames(3);
+        assert_eq!(focus(&s).as_deref(), Some("language"), "after {seen:?}");
+        let r = &s["ui"]["focus_rect"];
+        let bottom = r[1].as_f64().unwrap() + r[3].as_f64().unwrap();
+        assert!(
+            bottom <= s["layout"]["window"][1].as_f64().unwrap() + 1.0,
+            "out of sight in {}: {r}",
+            s["ui"]["language"]
+        );
+        seen.push(s["ui"]["language"].as_str().unwrap().to_string());
+    }
+    seen.dedup();
+    assert_eq!(seen.len(), 4, "each Down a language: {seen:?}");
+    app.quit();
 }
 
 fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {

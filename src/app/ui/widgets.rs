@@ -45,10 +45,10 @@ pub fn labelled_button(
     r
 }
 
-/// A combo box named `label`, showing `selected`: the name beside it where
+/// A combo box named `label` (its egui id from `salt`), showing `selected`: the name beside it where
 /// both fit the dock's width, else on a line of its own above it (long
 /// words: German, a projector's scale), so nothing is cut at the edge.
-pub fn combo(ui: &mut Ui, label: &str, selected: &str) -> ComboBox {
+pub fn combo(ui: &mut Ui, salt: &str, label: &str, selected: &str) -> ComboBox {
     let width = |text: &str| {
         egui::WidgetText::from(text)
             .into_galley(
@@ -65,12 +65,13 @@ pub fn combo(ui: &mut Ui, label: &str, selected: &str) -> ComboBox {
         .combo_width
         .max(width(selected) + 2.0 * ui.spacing().icon_width + ui.spacing().button_padding.x * 2.0);
     let beside = button + ui.spacing().item_spacing.x + width(label);
-    let combo = ComboBox::from_id_salt(label).selected_text(selected.to_string());
+    // Its id from `salt`, not from the label: in another language the
+    // label changes, and the keyboard must stay on the language's box.
     if beside > ui.available_width() {
         ui.add(egui::Label::new(label).wrap());
-        combo
+        ComboBox::from_id_salt(salt).selected_text(selected.to_string())
     } else {
-        ComboBox::from_label(label).selected_text(selected.to_string())
+        ComboBox::new(salt, label).selected_text(selected.to_string())
     }
 }
 
@@ -85,7 +86,7 @@ pub fn setting_combo<T: Copy + PartialEq + Display>(
     current: T,
 ) -> Option<T> {
     let mut chosen = None;
-    let r = combo(ui, label, &current.to_string())
+    let r = combo(ui, name, label, &current.to_string())
         .show_ui(ui, |ui| {
             for &item in list {
                 if ui
@@ -115,6 +116,11 @@ pub fn setting_combo<T: Copy + PartialEq + Display>(
 pub fn arrow_choice(r: &egui::Response, current: Option<usize>, count: usize) -> Option<usize> {
     if !r.has_focus() || count == 0 {
         return None;
+    }
+    if r.interact_rect != r.rect {
+        // Partly hidden in its scroll area (the text above it reflowed: a
+        // choice of language) while it has the keyboard: back into sight.
+        r.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
     }
     r.ctx.memory_mut(|m| {
         m.set_focus_lock_filter(

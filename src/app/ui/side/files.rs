@@ -16,7 +16,13 @@ use egui::Ui;
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
 pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
     // A list of things to do, not a setting: the arrows open nothing.
-    let r = combo(ui, &tr!("preset-label"), &tr!("preset-choose")).show_ui(ui, |ui| {
+    let r = combo(
+        ui,
+        "preset_combo",
+        &tr!("preset-label"),
+        &tr!("preset-choose"),
+    )
+    .show_ui(ui, |ui| {
         for (k, label) in scenes::preset_labels().iter().enumerate() {
             if ui.selectable_label(false, label).clicked() {
                 cx.send(Command::OpenPreset(k));
@@ -117,7 +123,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
 pub fn language(ui: &mut Ui, cx: &mut Cx) {
     let current = crate::app::lang::language();
     let name = crate::app::lang::native_name;
-    let r = combo(ui, &tr!("language-label"), &name(current))
+    let r = combo(ui, "language", &tr!("language-label"), &name(current))
         .show_ui(ui, |ui| {
             for lang in Lang::SHIPPED {
                 if ui.selectable_label(lang == current, name(lang)).clicked() && lang != current {

@@ -100,7 +100,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         Boundary::Open => tr!("edges-open"),
         Boundary::Periodic => tr!("edges-periodic"),
     };
-    let r = combo(ui, &tr!("edges-label"), &edge_name(boundary))
+    let r = combo(ui, "edges", &tr!("edges-label"), &edge_name(boundary))
         .show_ui(ui, |ui| {
             for b in Boundary::ALL {
                 if ui.selectable_label(b == boundary, edge_name(b)).clicked() && b != boundary {
@@ -117,7 +117,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     }
     let scales = TIME_SCALES.map(|s| format!("×{}", crate::app::numbers::field(s)));
     let index = cx.model.clock.time_scale_index();
-    let r = combo(ui, &tr!("time-scale-label"), &scales[index])
+    let r = combo(ui, "time_scale", &tr!("time-scale-label"), &scales[index])
         .show_ui(ui, |ui| {
             for (k, label) in scales.iter().enumerate() {
                 if ui.selectable_label(k == index, label).clicked() {

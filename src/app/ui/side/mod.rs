@@ -232,7 +232,7 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         .find(|(s, _)| *s == o.readouts)
         .map_or_else(String::new, |(_, l)| l.clone());
     let tip = crate::app::model::bindings::tooltip(&Command::CycleReadouts);
-    let r = super::widgets::combo(ui, &tr!("readouts-label"), &current)
+    let r = super::widgets::combo(ui, "readouts", &tr!("readouts-label"), &current)
         .show_ui(ui, |ui| {
             for (scope, label) in scopes.iter() {
                 if ui.selectable_label(o.readouts == *scope, label).clicked() {
