@@ -45,9 +45,10 @@ pub fn labelled_button(
     r
 }
 
-/// A combo box named `label` (its egui id from `salt`), showing `selected`: the name beside it where
-/// both fit the dock's width, else on a line of its own above it (long
-/// words: German, a projector's scale), so nothing is cut at the edge.
+/// A combo box named `label` (its egui id from `salt`), showing
+/// `selected`: the name beside it where both fit the dock's width, else on
+/// a line of its own above it (long words: German, a projector's scale),
+/// so nothing is cut at the edge.
 pub fn combo(ui: &mut Ui, salt: &str, label: &str, selected: &str) -> ComboBox {
     let width = |text: &str| {
         egui::WidgetText::from(text)
