@@ -396,6 +396,17 @@ fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
     app.quit();
 }
 
+/// The window, paused, with the side dock's section `header` opened from
+/// the keyboard (Tab to its header, Space).
+fn with_section_open(x: &Xvfb, header: &str) -> Sandbox {
+    let app = Sandbox::start(x, &["--paused"]);
+    app.move_to([5.0, 400.0]);
+    tab_to(&app, header, 60);
+    app.xdo(&["key", "space"]);
+    app.wait_frames(3);
+    app
+}
+
 fn a_drop_down_steps_through_its_choices_with_the_arrows() {
     let x = Xvfb::start("drop-downs");
     let app = Sandbox::start(&x, &["--paused"]);
@@ -422,11 +433,7 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
     // Under More, the friction's value box is off while friction is off:
     // Tab goes from its tick box straight on to the method's drop-down
     // (egui's value box took the keyboard there and dropped it).
-    let app = Sandbox::start(&x, &["--paused"]);
-    app.move_to([5.0, 400.0]);
-    tab_to(&app, "section_more", 60);
-    app.xdo(&["key", "space"]);
-    app.wait_frames(3);
+    let app = with_section_open(&x, "section_more");
     tab_to(&app, "friction_on", 20);
     let after: Vec<_> = tabs(&app, 3);
     assert_eq!(
@@ -438,11 +445,7 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
     // The language's box keeps the keyboard through a change of language
     // (its label, in the language, changes), and stays in sight as the
     // text above it reflows.
-    let app = Sandbox::start(&x, &["--paused"]);
-    app.move_to([5.0, 400.0]);
-    tab_to(&app, "section_view", 60);
-    app.xdo(&["key", "space"]);
-    app.wait_frames(3);
+    let app = with_section_open(&x, "section_view");
     let s = tab_to(&app, "language", 30);
     let mut seen = vec![s["ui"]["language"].as_str().unwrap().to_string()];
     for _ in 0..3 {

@@ -82,30 +82,42 @@ pub fn combo(ui: &mut Ui, salt: &str, label: &str, selected: &str) -> ComboBox {
 pub fn setting_combo<T: Copy + PartialEq + Display>(
     ui: &mut Ui,
     cx: &mut Cx,
-    (label, hover, name): (&str, &str, &str),
+    words: (&str, &str, &str),
     list: &[T],
     current: T,
 ) -> Option<T> {
-    let mut chosen = None;
-    let r = combo(ui, name, label, &current.to_string())
+    let names: Vec<String> = list.iter().map(ToString::to_string).collect();
+    let at = list.iter().position(|&item| item == current);
+    pick(ui, cx, words, &names, at, &current.to_string())
+        .map(|k| list[k])
+        .filter(|&c| c != current)
+}
+
+/// A combo box of `choices` (by their names) under `label`, with `hover`,
+/// noted under `name`, showing `shown` and marking choice `current`:
+/// returns the choice clicked (the current one too) or the one the arrows
+/// stepped to ([`arrow_choice`]).
+pub fn pick(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    (label, hover, name): (&str, &str, &str),
+    choices: &[String],
+    current: Option<usize>,
+    shown: &str,
+) -> Option<usize> {
+    let mut clicked = None;
+    let r = combo(ui, name, label, shown)
         .show_ui(ui, |ui| {
-            for &item in list {
-                if ui
-                    .selectable_label(item == current, item.to_string())
-                    .clicked()
-                {
-                    chosen = Some(item);
+            for (k, choice) in choices.iter().enumerate() {
+                if ui.selectable_label(current == Some(k), choice).clicked() {
+                    clicked = Some(k);
                 }
             }
         })
         .response
         .on_hover_text(hover);
     cx.note(name, &r);
-    let at = list.iter().position(|&item| item == current);
-    if let Some(k) = arrow_choice(&r, at, list.len()) {
-        chosen = Some(list[k]);
-    }
-    chosen.filter(|&c| c != current)
+    arrow_choice(&r, current, choices.len()).or(clicked)
 }
 
 /// The keyboard on a combo box (its button `r`), as on a browser's list

@@ -3,9 +3,7 @@
 //! screen, hide the panels) and, under *More*, *Details* (method, broad
 //! phase, substeps and what a step costs).
 
-use super::super::widgets::{
-    arrow_choice, combo, command_button, setting_combo, show_note, slider,
-};
+use super::super::widgets::{combo, command_button, pick, setting_combo, show_note, slider};
 use super::Cx;
 use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
@@ -123,20 +121,13 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
 pub fn language(ui: &mut Ui, cx: &mut Cx) {
     let current = crate::app::lang::language();
     let name = crate::app::lang::native_name;
-    let r = combo(ui, "language", &tr!("language-label"), &name(current))
-        .show_ui(ui, |ui| {
-            for lang in Lang::SHIPPED {
-                if ui.selectable_label(lang == current, name(lang)).clicked() && lang != current {
-                    cx.send(Command::SetLanguage(lang));
-                }
-            }
-        })
-        .response
-        .on_hover_text(tr!("language-hover"));
-    cx.note("language", &r);
+    let names = Lang::SHIPPED.map(name);
     let at = Lang::SHIPPED.iter().position(|&l| l == current);
-    if let Some(k) = arrow_choice(&r, at, Lang::SHIPPED.len()) {
-        cx.send(Command::SetLanguage(Lang::SHIPPED[k]));
+    let words = (&*tr!("language-label"), &*tr!("language-hover"), "language");
+    if let Some(k) = pick(ui, cx, words, &names, at, &name(current)) {
+        if Lang::SHIPPED[k] != current {
+            cx.send(Command::SetLanguage(Lang::SHIPPED[k]));
+        }
     }
 }
 

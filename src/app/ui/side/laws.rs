@@ -3,7 +3,7 @@
 //! laws (roughness and friction). A slider sends its value as a command;
 //! the model keeps it in range and remembers it for undo.
 
-use super::super::widgets::{arrow_choice, combo, slider};
+use super::super::widgets::{pick, slider};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::clock::TIME_SCALES;
@@ -100,35 +100,22 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         Boundary::Open => tr!("edges-open"),
         Boundary::Periodic => tr!("edges-periodic"),
     };
-    let r = combo(ui, "edges", &tr!("edges-label"), &edge_name(boundary))
-        .show_ui(ui, |ui| {
-            for b in Boundary::ALL {
-                if ui.selectable_label(b == boundary, edge_name(b)).clicked() && b != boundary {
-                    cx.send(Command::SetBoundary(b));
-                }
-            }
-        })
-        .response
-        .on_hover_text(tr!("edges-hover"));
-    cx.note("edges", &r);
+    let names = Boundary::ALL.map(edge_name);
     let at = Boundary::ALL.iter().position(|&b| b == boundary);
-    if let Some(k) = arrow_choice(&r, at, Boundary::ALL.len()) {
-        cx.send(Command::SetBoundary(Boundary::ALL[k]));
+    let words = (&*tr!("edges-label"), &*tr!("edges-hover"), "edges");
+    if let Some(k) = pick(ui, cx, words, &names, at, &edge_name(boundary)) {
+        if Boundary::ALL[k] != boundary {
+            cx.send(Command::SetBoundary(Boundary::ALL[k]));
+        }
     }
     let scales = TIME_SCALES.map(|s| format!("×{}", crate::app::numbers::field(s)));
     let index = cx.model.clock.time_scale_index();
-    let r = combo(ui, "time_scale", &tr!("time-scale-label"), &scales[index])
-        .show_ui(ui, |ui| {
-            for (k, label) in scales.iter().enumerate() {
-                if ui.selectable_label(k == index, label).clicked() {
-                    cx.send(Command::SetTimeScale(k));
-                }
-            }
-        })
-        .response
-        .on_hover_text(tr!("time-scale-hover"));
-    cx.note("time_scale", &r);
-    if let Some(k) = arrow_choice(&r, Some(index), scales.len()) {
+    let words = (
+        &*tr!("time-scale-label"),
+        &*tr!("time-scale-hover"),
+        "time_scale",
+    );
+    if let Some(k) = pick(ui, cx, words, &scales, Some(index), &scales[index]) {
         cx.send(Command::SetTimeScale(k));
     }
     if spin_shown(&cx.model.world) {

@@ -232,19 +232,11 @@ fn show(ui: &mut Ui, cx: &mut Cx) {
         .find(|(s, _)| *s == o.readouts)
         .map_or_else(String::new, |(_, l)| l.clone());
     let tip = crate::app::model::bindings::tooltip(&Command::CycleReadouts);
-    let r = super::widgets::combo(ui, "readouts", &tr!("readouts-label"), &current)
-        .show_ui(ui, |ui| {
-            for (scope, label) in scopes.iter() {
-                if ui.selectable_label(o.readouts == *scope, label).clicked() {
-                    cx.send(Command::SetReadouts(*scope));
-                }
-            }
-        })
-        .response
-        .on_hover_text(format!("{tip}\n{}", tr!("readouts-hover")));
-    cx.note("readouts", &r);
+    let hover = format!("{tip}\n{}", tr!("readouts-hover"));
+    let names = scopes.clone().map(|(_, label)| label);
     let at = scopes.iter().position(|(s, _)| *s == o.readouts);
-    if let Some(k) = super::widgets::arrow_choice(&r, at, scopes.len()) {
+    let words = (&*tr!("readouts-label"), &*hover, "readouts");
+    if let Some(k) = super::widgets::pick(ui, cx, words, &names, at, &current) {
         cx.send(Command::SetReadouts(scopes[k].0));
     }
     toggle(
