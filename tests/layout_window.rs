@@ -51,6 +51,10 @@ fn main() -> std::process::ExitCode {
             in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping,
         ),
         (
+            "at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip",
+            at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip,
+        ),
+        (
             "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
             tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world,
         ),
@@ -492,6 +496,85 @@ fn in_german_at_the_projector_scale_nothing_is_cut_off_or_overlapping() {
 
 fn in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping() {
     projector_ledger("qps");
+}
+
+/// At 1024×768 and text size 2 the dock's tab is 100 points high. The
+/// momentum diagram and the speed histogram take most of it (their numbers
+/// and axis names had left the diagram a quarter, 23 points), inside the
+/// tab; and a line cut to its room shows one tooltip when hovered (egui's
+/// own one for the cut text had stacked under the app's).
+fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip() {
+    let x = Xvfb::start("plots");
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
+    let app = Sandbox::start(&x, &args);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "j"]);
+    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    // The tab's content: under the world and its caption strip (one row,
+    // as high as the top bar).
+    let content = |s: &Value| {
+        let (world, row) = (
+            rect(&s["layout"]["world"]),
+            rect(&s["layout"]["panels"][0])[3],
+        );
+        let top = world[1] + world[3] + row;
+        s["layout"]["panels"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(rect)
+            .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
+            .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
+    };
+    for (key, tab, plot, share) in [
+        ("d", "Momenta", "momenta_plot", 0.55),
+        ("F4", "Speeds", "speeds_plot", 0.4),
+    ] {
+        app.xdo(&["key", key]);
+        app.wait_for(tab, 60, |s| s["ui"]["tab"] == tab);
+        let s = app.wait_frames(3);
+        let (area, frame) = (content(&s), rect(&s["panel_widgets"][plot]));
+        assert!(
+            frame[3] >= share * area[3],
+            "{plot}: a frame {} px high in a tab {} px high",
+            frame[3],
+            area[3]
+        );
+        assert!(
+            frame[1] >= area[1] - 0.5 && frame[1] + frame[3] <= area[1] + area[3] + 0.5,
+            "{plot} {frame:?} inside the tab {area:?}"
+        );
+    }
+    // The line over the histogram, the caption and the scene's name are
+    // cut at this size (Portuguese): one tooltip each.
+    let s = app.state();
+    let line = content(&s);
+    for (what, at) in [
+        (
+            "the line over the plot",
+            [line[0] + 0.5 * line[2], line[1] + 12.0],
+        ),
+        (
+            "the caption",
+            [
+                line[0] + 0.5 * line[2],
+                line[1] - 0.5 * rect(&s["layout"]["panels"][0])[3],
+            ],
+        ),
+        ("the scene's name", widget(&s, "scene_name", 0.5)),
+    ] {
+        app.move_to([at[0], at[1]]);
+        app.wait_for(what, 120, |s| s["ui"]["tooltips"].as_u64() > Some(0));
+        for _ in 0..5 {
+            let s = app.wait_frames(1);
+            assert_eq!(s["ui"]["tooltips"], 1, "{what}: tooltips");
+        }
+        app.move_to([500.0, 200.0]);
+        app.wait_for("no tooltip", 120, |s| s["ui"]["tooltips"] == 0);
+    }
+    app.quit();
 }
 
 /// Switching the dock's tabs, a long caption, a rewind and the end of the

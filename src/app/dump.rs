@@ -176,6 +176,8 @@ pub struct UiDump {
     pub language: String,
     #[serde(flatten)]
     pub edits: EditsDump,
+    /// Tooltips showing (one at most: two stacked was a fault).
+    pub tooltips: usize,
 }
 
 /// Who has the keyboard.
@@ -352,6 +354,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                     table_note: m.messages.table.as_ref().map(|n| n.text.clone()),
                     message: m.message().map(str::to_string),
                 },
+                tooltips: panels.marks.tooltips,
             },
         },
         realtime: RealtimeDump {

@@ -98,6 +98,8 @@ pub struct Marks {
     /// their place): how far each is scrolled and how far it can be, in
     /// pixels ([`dialog::scroll`]).
     pub lists: BTreeMap<String, ListScroll>,
+    /// Tooltips showing: hovering shows one at most.
+    pub tooltips: usize,
 }
 
 /// How far a list to read is scrolled (pixels).
@@ -391,6 +393,13 @@ impl Panels {
         if let Some(id) = focused {
             focus_ring(ctx, id, p.theme);
         }
+        self.marks.tooltips = ctx.memory(|m| {
+            let layers = m.areas().visible_layer_ids();
+            layers
+                .iter()
+                .filter(|l| l.order == egui::Order::Tooltip)
+                .count()
+        });
         self.marks.focus_rect = focused
             .and_then(|id| ctx.read_response(id))
             .map(|r| to_px(r.rect, ppp));

@@ -65,9 +65,7 @@ impl View for Strip {
                 (None, None, Some(caption)) => (RichText::new(caption), "caption"),
                 (None, None, None) => (RichText::new(tr!("caption-none")), "caption"),
             };
-            let whole = text.text().to_string();
-            let r = ui.add(egui::Label::new(text).truncate());
-            let r = r.on_hover_text(whole);
+            let r = super::widgets::one_line(ui, text, None);
             cx.note(name, &r);
         });
     }

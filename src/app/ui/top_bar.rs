@@ -82,7 +82,7 @@ impl View for TopBar {
         };
         // Always shown, in this order.
         let essential = [
-            Item::new(RichText::new(name.clone()).strong()).hover(name),
+            Item::new(RichText::new(name).strong()),
             Item::new(format!("t = {}", with_unit(world.time, 2, "s"))),
             Item::new(state.strong()).named("run_state"),
         ];
@@ -322,10 +322,10 @@ impl TopBar {
                 ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
                 // The name gives way first: it truncates, with the whole on hover.
                 let height = ui.available_height();
-                let r = ui.add_sized([name_width, height], egui::Label::new(name.text).truncate());
-                if let Some(h) = name.hover {
-                    r.on_hover_text(h);
-                }
+                let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
+                    super::widgets::one_line(ui, name.text, None)
+                });
+                cx.note("scene_name", &r);
                 for item in [time, state] {
                     let r = ui.label(item.text);
                     if let Some(name) = item.name {

@@ -1,13 +1,39 @@
 //! Small widgets the panels share: a slider with its value box, a choice
 //! from a list, a line of feedback, a text field that selects its text when
 //! it gets the keyboard, a button whose tooltip comes from the key
-//! bindings, and the tip of every readout of the angular momentum L.
+//! bindings, one line cut to its room with one tooltip, and the tip of
+//! every readout of the angular momentum L.
 
 use super::Cx;
 use crate::app::model::bindings;
 use crate::app::model::{Command, Note};
 use egui::{ComboBox, Slider, Ui};
 use std::fmt::Display;
+
+/// One line of text, cut with "…" where it has no room. Hovered, it shows
+/// `more` when given, else the whole line if it was cut: one tooltip. (egui's
+/// own label adds the whole line's tooltip whenever it cuts, and a second
+/// `on_hover_text` stacked another under it: the name twice, or the line
+/// under its explanation.)
+pub fn one_line(
+    ui: &mut Ui,
+    text: impl Into<egui::WidgetText>,
+    more: Option<String>,
+) -> egui::Response {
+    let (pos, galley, response) = egui::Label::new(text).truncate().layout_in_ui(ui);
+    response.widget_info(|| {
+        egui::WidgetInfo::labeled(egui::WidgetType::Label, ui.is_enabled(), galley.text())
+    });
+    if ui.is_rect_visible(response.rect) {
+        let color = ui.visuals().text_color();
+        ui.painter().galley(pos, galley.clone(), color);
+    }
+    match more {
+        Some(more) => response.on_hover_text(more),
+        None if galley.elided => response.on_hover_text(galley.text()),
+        None => response,
+    }
+}
 
 /// A button that sends `command` when clicked, labelled and with its key in
 /// the tooltip as the bindings table says; noted under `name` in the dump.

@@ -6,8 +6,16 @@ use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::totals::DIAGRAM_MAX_DISCS;
 use crate::app::numbers::vector;
+use crate::app::ui::widgets::one_line;
 use egui::Color32;
 use egui_plot::{Arrows, Line, PlotPoints, Points};
+
+/// Roughly what the numbers under the plot and its axis name take, in
+/// points (body text); and the numbers and the name beside it.
+const X_AXIS_POINTS: f32 = 45.0;
+const Y_AXIS_POINTS: f32 = 60.0;
+/// The length of an arrow's head, in points.
+const ARROW_HEAD_POINTS: f32 = 12.0;
 
 /// The tab (no state of its own).
 pub struct Momenta;
@@ -32,23 +40,49 @@ impl View for Momenta {
         }
         // One line, so the plot keeps the height: the whole on hover.
         let line = tr!("momenta-line", total = vector(at, 3, "kg·m/s"));
-        let r = ui.add(egui::Label::new(line.clone()).truncate());
-        r.on_hover_text(tr!("momenta-hover", line = line));
+        let more = tr!("momenta-hover", line = line.clone());
+        one_line(ui, line, Some(more));
         let sum_color = ui.visuals().strong_text_color();
         let height = ui.available_height();
         // Axis names only where there is room for them beside the plot.
         let roomy = height >= ROOMY_PLOT;
-        // As wide as a chain needs: a wide, flat plot at one scale would
-        // leave the arrows small in its middle.
-        let width = ui.available_width().min(2.2 * height.max(60.0));
-        still_plot("momenta_plot")
+        // Below that, no numbers under it either: they and the line egui
+        // keeps for the axis name took two thirds of a projector's dock
+        // (a diagram 23 points high in 67). One scale both ways, so the
+        // numbers beside it read p_x as well.
+        let frame_height = if roomy {
+            height - X_AXIS_POINTS
+        } else {
+            height
+        };
+        // As wide as the chain at that height (plus the numbers beside it):
+        // wider would leave the arrows small in the middle of a flat plot.
+        let (lo, hi) = chain.iter().fold(
+            (at.min(glam::DVec2::ZERO), at.max(glam::DVec2::ZERO)),
+            |(lo, hi), (a, b, _)| (lo.min(*a).min(*b), hi.max(*a).max(*b)),
+        );
+        let extent = hi - lo;
+        // A margin all round, so no arrow runs along the frame.
+        let pad = 0.08 * extent.max_element();
+        let (lo, hi) = (lo - pad, hi + pad);
+        let aspect = if extent.y > 1e-9 * extent.x {
+            extent.x / extent.y
+        } else {
+            f64::INFINITY
+        };
+        let wanted = frame_height * (aspect as f32).clamp(1.2, 1e4) * 1.1 + Y_AXIS_POINTS;
+        let width = ui.available_width().min(wanted);
+        let plot = still_plot("momenta_plot")
             .height(height)
             .width(width)
             .data_aspect(1.0)
+            .show_axes([roomy, true])
             .x_axis_label(if roomy { "p_x (kg·m/s)" } else { "" })
             .y_axis_label(if roomy { "p_y (kg·m/s)" } else { "" })
-            .include_x(0.0)
-            .include_y(0.0)
+            .include_x(lo.x)
+            .include_x(hi.x)
+            .include_y(lo.y)
+            .include_y(hi.y)
             .label_formatter(|_, v| vector(glam::DVec2::new(v.x, v.y), 3, "kg·m/s"))
             .show(ui, |plot| {
                 plot.line(
@@ -73,10 +107,14 @@ impl View for Momenta {
                     );
                     plot.arrows(
                         Arrows::new(vec![[a.x, a.y]], vec![[b.x, b.y]])
+                            // egui_plot's head is a quarter of the arrow:
+                            // across the whole plot for a long one.
+                            .tip_length(ARROW_HEAD_POINTS)
                             .color(color)
                             .name(tr!("disc-numbered", disc = k)),
                     );
                 }
             });
+        cx.note("momenta_plot", &plot.response);
     }
 }

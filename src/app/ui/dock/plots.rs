@@ -1,6 +1,7 @@
 //! What the dock's plots share: the series' colours (Okabe–Ito), a plot
 //! that holds still, a y range that shows a conserved total as a flat line,
-//! the speed histogram, and a series named in its colour.
+//! the speed histogram, an x axis that gives way in a short dock, and a
+//! series named in its colour.
 
 use crate::app::lang::tr;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
@@ -30,7 +31,7 @@ pub fn speed_plot(
     rims: Option<&RimHistogram>,
     height: f32,
     legend: bool,
-) {
+) -> egui::Response {
     // Side by side within a bin when both are drawn.
     let (offset, width) = if rims.is_some() {
         (0.28, 0.42)
@@ -74,7 +75,7 @@ pub fn speed_plot(
     } else {
         plot
     };
-    plot.x_axis_label(x_label)
+    x_axis(plot, height, x_label, "m/s")
         // Rotated beside a short plot, the name would run past it.
         .y_axis_label(if height >= ROOMY_PLOT {
             per.clone()
@@ -101,7 +102,27 @@ pub fn speed_plot(
                         .width(3.0),
                 );
             }
-        });
+        })
+        .response
+}
+
+/// The x axis's name under a plot with room for it; under a shorter one
+/// the unit goes on each number instead ("2 m/s"). egui_plot keeps a line
+/// for the name even when it is empty, and in a projector's dock that line
+/// and the numbers took two thirds of the plot's height.
+pub fn x_axis(plot: Plot<'static>, height: f32, name: String, unit: &'static str) -> Plot<'static> {
+    if height >= ROOMY_PLOT {
+        return plot.x_axis_label(name);
+    }
+    plot.x_axis_label(RichText::new("").size(1.0))
+        .x_axis_formatter(move |mark, _| format!("{} {unit}", tick(mark)))
+}
+
+/// An axis's number, with as many decimals as its step needs and the
+/// language's decimal separator.
+fn tick(mark: egui_plot::GridMark) -> String {
+    let decimals = (-mark.step_size.log10()).ceil().clamp(0.0, 6.0) as usize;
+    plain(mark.value, decimals)
 }
 
 /// A plot's series named in its colour, in the line above the plot.
@@ -114,10 +135,7 @@ pub fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
 /// Tab stop, as it does nothing with the keyboard.
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
-    let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
-        let decimals = (-mark.step_size.log10()).ceil().clamp(0.0, 6.0) as usize;
-        plain(mark.value, decimals)
-    };
+    let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| tick(mark);
     Plot::new(id)
         .x_axis_formatter(axis)
         .y_axis_formatter(axis)

@@ -8,6 +8,7 @@ use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::{plain, with_unit};
+use crate::app::ui::widgets::one_line;
 use egui_plot::{HLine, Line, LineStyle, PlotPoints};
 
 /// The tab (no state of its own).
@@ -23,15 +24,16 @@ impl View for Speeds {
         if !spin_shown(&model.world) {
             // One line, so the plot keeps its height; the whole on hover.
             let line = tr!("speeds-line");
-            ui.add(egui::Label::new(line.clone()).truncate())
-                .on_hover_text(tr!(
-                    "speeds-hover",
-                    line = line,
-                    kt = with_unit(h.kt, 3, "J")
-                ));
+            let more = tr!(
+                "speeds-hover",
+                line = line.clone(),
+                kt = with_unit(h.kt, 3, "J")
+            );
+            one_line(ui, line, Some(more));
             let height = ui.available_height();
             // The line above names bars and curve; a short plot has no room for a legend box.
-            speed_plot(ui, &h, None, height, height >= ROOMY_PLOT);
+            let r = speed_plot(ui, &h, None, height, height >= ROOMY_PLOT);
+            cx.note("speeds_plot", &r);
             return;
         }
         // Rough discs: the rim speeds beside the speeds, and how the energy
@@ -52,7 +54,8 @@ impl View for Speeds {
                     .on_hover_text(tr!("rim-speeds-hover", meaning = meaning.as_str()));
             });
             let height = ui.available_height();
-            speed_plot(ui, &h, Some(&rims), height, false);
+            let r = speed_plot(ui, &h, Some(&rims), height, false);
+            cx.note("speeds_plot", &r);
             let ui = &mut columns[1];
             ui.horizontal_wrapped(|ui| {
                 ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
@@ -72,9 +75,8 @@ impl View for Speeds {
                 .iter()
                 .map(|s| [s.time, 100.0 * s.rotation_share()])
                 .collect();
-            still_plot("shares_plot")
+            x_axis(still_plot("shares_plot"), height, tr!("axis-time"), "s")
                 .height(height)
-                .x_axis_label(tr!("axis-time"))
                 .y_axis_label(if height >= ROOMY_PLOT { "%" } else { "" })
                 .include_y(0.0)
                 .include_y(100.0)
