@@ -24,7 +24,9 @@ pub const DESCRIBED_DISCS: usize = 8;
 /// What was said and what is still to be handed on.
 #[derive(Clone, Debug, Default)]
 pub struct Narration {
-    /// Lines said, newest last, with the window's time.
+    /// Lines said, newest last, with the simulation's time t when said
+    /// (the time the lines themselves speak of; the window's own clock
+    /// beside them read as a second, different t).
     pub said: VecDeque<(f64, String)>,
     /// Lines not yet handed to the page's live region.
     unread: Vec<String>,
@@ -37,12 +39,12 @@ pub struct Narration {
 }
 
 impl Narration {
-    fn say(&mut self, now: f64, text: String) {
+    fn say(&mut self, t: f64, text: String) {
         if self.said.back().is_some_and(|(_, last)| *last == text) {
             return;
         }
         self.unread.push(text.clone());
-        self.said.push_back((now, text));
+        self.said.push_back((t, text));
         while self.said.len() > KEEP {
             self.said.pop_front();
         }
@@ -125,8 +127,8 @@ fn motion_words(v: DVec2) -> String {
 impl Sandbox {
     /// Says `text` to a person who cannot see the screen.
     pub fn announce(&mut self, text: String) {
-        let now = self.session.now;
-        self.messages.narration.say(now, text);
+        let t = self.world.time;
+        self.messages.narration.say(t, text);
     }
 
     /// The lines not yet handed to the page's live region.
@@ -322,6 +324,10 @@ mod tests {
                 c.discs[0], c.discs[1]
             )
         );
+        // Stamped with the simulation's t (the window's clock stands still here).
+        let (t, _) = s.messages.narration.said.back().unwrap();
+        assert!(s.world.time > 0.5, "{}", s.world.time);
+        assert_eq!(*t, s.world.time);
         // The toast of J is said too.
         assert!(s
             .take_announcements()

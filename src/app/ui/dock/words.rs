@@ -24,9 +24,13 @@ impl View for Words {
             if said.is_empty() {
                 ui.label(tr!("words-none"));
             }
-            for (at, line) in said.iter().rev() {
+            for (t, line) in said.iter().rev() {
                 ui.horizontal_wrapped(|ui| {
-                    ui.weak(format!("{} s", crate::app::numbers::plain(*at, 1)));
+                    // The simulation's t, as everywhere in the window.
+                    ui.weak(format!(
+                        "t = {}",
+                        crate::app::numbers::with_unit(*t, 2, "s")
+                    ));
                     ui.add(egui::Label::new(line).wrap());
                 });
             }
