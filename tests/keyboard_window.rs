@@ -4,7 +4,8 @@
 //! world's keys rest and Space presses the control; Esc gives them back;
 //! every stop is a control, not a window's frame or a scroll area's part;
 //! a list without controls takes Tab and its keys scroll it; a drop-down
-//! steps through its choices with the arrows;
+//! steps through its choices with the arrows; the dock's tab is made
+//! taller by its top edge, dragged or moved by the keys;
 //! and the world itself answers keys: Q selects a disc, the arrow keys aim
 //! it while paused, Enter puts a new disc at the centre.
 
@@ -43,6 +44,10 @@ fn main() -> std::process::ExitCode {
         (
             "a_drop_down_steps_through_its_choices_with_the_arrows",
             a_drop_down_steps_through_its_choices_with_the_arrows,
+        ),
+        (
+            "the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys",
+            the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys,
         ),
         (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
@@ -568,5 +573,80 @@ fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
         "{}",
         s["scene_name"]
     );
+    app.quit();
+}
+
+/// The open tab's content rectangle: under the world and its caption strip
+/// (one row, as high as the top bar).
+fn tab_content(s: &Value) -> [f64; 4] {
+    let num = |v: &Value| -> [f64; 4] { std::array::from_fn(|k| v[k].as_f64().unwrap()) };
+    let (world, row) = (
+        num(&s["layout"]["world"]),
+        num(&s["layout"]["panels"][0])[3],
+    );
+    let top = world[1] + world[3] + row;
+    s["layout"]["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(num)
+        .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
+        .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
+}
+
+/// At a projector's size (1024×768, text size 2) the ledger's tab opens
+/// 200 px high, with its table's numbers in sight (the names wrap). Its top
+/// edge dragged up gives it what the world can spare (the world keeps 40 %
+/// of the window and 240 px each way); from the keyboard, Tab reaches the
+/// edge, End and Home take it to the shortest and the tallest, Up adds a
+/// row, Enter gives the tab its own height back.
+fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
+    let x = Xvfb::start("edge");
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
+    let app = Sandbox::start(&x, &args);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "j"]);
+    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    let s = app.wait_frames(3);
+    let own = tab_content(&s)[3];
+    let table = &s["panel_widgets"]["ledger_newest"];
+    let right = table[0].as_f64().unwrap() + table[2].as_f64().unwrap();
+    assert!(
+        right <= 1024.5,
+        "the newest impact's table runs to x = {right}"
+    );
+    // Dragged up by 150 px.
+    let edge = widget(&s, "tab_edge", 0.7);
+    app.drag(edge, [edge[0], edge[1] - 150.0]);
+    let s = app.wait_frames(5);
+    let dragged = tab_content(&s)[3];
+    let world = &s["layout"]["world"];
+    let (ww, wh) = (world[2].as_f64().unwrap(), world[3].as_f64().unwrap());
+    assert!(dragged > own + 60.0, "{own} px, then {dragged} px");
+    assert!(
+        ww * wh >= 0.4 * 1024.0 * 768.0 - 1.0 && wh >= 240.0,
+        "{world}"
+    );
+    // From the keyboard.
+    app.move_to([500.0, 200.0]);
+    let s = tab_to(&app, "tab_edge", 80);
+    assert_eq!(tab_content(&s)[3], dragged);
+    let row = s["layout"]["panels"][0][3].as_f64().unwrap();
+    for (key, height) in [
+        ("End", 3.0 * row),
+        ("Up", 4.0 * row),
+        ("Home", dragged),
+        ("Return", own),
+    ] {
+        app.xdo(&["key", key]);
+        let s = app.wait_for(key, 30, |s| (tab_content(s)[3] - height).abs() < 0.5);
+        assert_eq!(
+            focus(&s).as_deref(),
+            Some("tab_edge"),
+            "{key} kept the keys"
+        );
+    }
     app.quit();
 }

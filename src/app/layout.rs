@@ -17,6 +17,9 @@
 //!
 //! The tab content sits *above* the tab row, which stays at the window's
 //! bottom: clicking a tab opens it without moving the tab under the pointer.
+//! It wants [`tab_wanted`], or the height the user dragged its top edge to
+//! ([`Docks::tab_height`]); either way it gets only what the world's
+//! guarantees leave ([`tab_range`]).
 //!
 //! **The world is the lesson, so it never gives way.** Constraints go down
 //! (the world's guarantees bound what the docks may take), sizes come up
@@ -116,7 +119,7 @@ impl Rect {
 }
 
 /// What the user has open.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Docks {
     /// Docks shown at all (Tab hides them all).
     pub shown: bool,
@@ -126,6 +129,9 @@ pub struct Docks {
     pub tab_open: bool,
     /// The side dock's drawer is open (only matters when it is a drawer).
     pub drawer_open: bool,
+    /// The tab content's height the user chose (px, by dragging its top
+    /// edge), instead of [`tab_wanted`]; kept within [`tab_range`].
+    pub tab_height: Option<f32>,
 }
 
 /// What became of the side dock.
@@ -205,6 +211,19 @@ pub fn tab_wanted(window_h: f32, scale: f32) -> f32 {
     (0.22 * sane_px(window_h)).clamp(130.0 * s, 280.0 * s) - row_px(s)
 }
 
+/// The heights (px) the open tab's content can take at this size and
+/// scale, least and most: what [`Docks::tab_height`] is kept within. None
+/// where the tab has to fold.
+pub fn tab_range(window: (f32, f32), scale: f32, docks: Docks) -> Option<(f32, f32)> {
+    let tallest = Docks {
+        tab_open: true,
+        tab_height: Some(MAX_WINDOW_PX),
+        ..docks
+    };
+    let most = layout(window, scale, tallest).tab_content?.h;
+    Some((MIN_TAB_ROWS * row_px(scale), most))
+}
+
 /// Lays the screen out; see the module's documentation. Never panics.
 pub fn layout(window: (f32, f32), scale: f32, docks: Docks) -> Rects {
     let s = clamp_scale(scale);
@@ -215,7 +234,12 @@ pub fn layout(window: (f32, f32), scale: f32, docks: Docks) -> Rects {
     let tabs_h = if docks.shown { row } else { 0.0 }.min(h - top_h - caption_h);
     // What the world and the tab content share.
     let room = h - top_h - caption_h - tabs_h;
-    let (wanted, min_tab) = (tab_wanted(h, s), MIN_TAB_ROWS * row);
+    let min_tab = MIN_TAB_ROWS * row;
+    // Never below the least a tab has, so whether the side dock fits does
+    // not depend on it.
+    let wanted = docks
+        .tab_height
+        .map_or(tab_wanted(h, s), |v| sane_px(v).max(min_tab));
     // The tab content a world `world_w` wide leaves room for, if not too little.
     let grant = |world_w: f32| {
         let share = MIN_WORLD_SHARE * w * h / world_w.max(f32::MIN_POSITIVE);
@@ -261,239 +285,4 @@ pub fn layout(window: (f32, f32), scale: f32, docks: Docks) -> Rects {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    const SCALES: [f32; 4] = [1.0, 1.5, 2.0, 2.5];
-    const SHOWN: u8 = 1;
-    const SIDE: u8 = 2;
-    const TAB: u8 = 4;
-    const DRAWER: u8 = 8;
-    const OPEN_TAB: u8 = SHOWN | SIDE | TAB;
-
-    fn docks(bits: u8) -> Docks {
-        let [shown, side, tab_open, drawer_open] =
-            [SHOWN, SIDE, TAB, DRAWER].map(|b| bits & b != 0);
-        Docks {
-            shown,
-            side,
-            tab_open,
-            drawer_open,
-        }
-    }
-
-    /// Every size (800×600, 1024×768, 1280×800, 1920×1080 among them), scale
-    /// and state of the docks (as bits).
-    fn grid() -> impl Iterator<Item = (f32, f32, f32, u8)> {
-        let widths = [800.0, 1024.0, 1280.0, 1366.0, 1600.0, 1920.0];
-        let sizes = widths
-            .into_iter()
-            .flat_map(|w| [600.0, 768.0, 800.0, 900.0, 1080.0].map(|h| (w, h)));
-        let scaled = sizes.flat_map(|(w, h)| SCALES.map(|s| (w, h, s)));
-        scaled.flat_map(|(w, h, s)| (0..16).map(move |b| (w, h, s, b)))
-    }
-
-    /// Inside the window, no overlaps, no gaps, nothing negative.
-    fn assert_tiles(r: &Rects, what: &str) {
-        let all = [
-            Some(r.top_bar),
-            r.side,
-            Some(r.world),
-            Some(r.caption),
-            r.tab_content,
-            r.tab_row,
-        ];
-        let tiles: Vec<Rect> = all.into_iter().flatten().collect();
-        for t in tiles.iter().chain(&r.drawer) {
-            let sane = t.as_array().iter().all(|v| v.is_finite()) && t.w >= 0.0 && t.h >= 0.0;
-            assert!(
-                sane && r.window.contains(t),
-                "{what}: {t:?} in {:?}",
-                r.window
-            );
-        }
-        for (i, a) in tiles.iter().enumerate() {
-            for b in &tiles[i + 1..] {
-                assert!(!a.overlaps(b), "{what}: {a:?} overlaps {b:?}");
-            }
-        }
-        let gap = tiles.iter().map(Rect::area).sum::<f32>() - r.window.area();
-        assert!(
-            gap.abs() <= 1e-6 * r.window.area().max(1.0),
-            "{what}: {gap}"
-        );
-    }
-
-    fn assert_guarantees(w: f32, h: f32, s: f32, r: &Rects, what: &str) {
-        let (world, big, bigger) = (r.world, w >= 800.0 && h >= 600.0, w >= 1024.0 && h >= 768.0);
-        // From 1024×768 up at scales 1 to 2, from 800×600 up at 1 to 1.5.
-        if (bigger && s <= 2.0) || (big && s <= 1.5) {
-            // To f32 rounding (SLACK_PX of height).
-            assert!(
-                world.area() >= MIN_WORLD_SHARE * w * h * (1.0 - 1e-5),
-                "{what}: {world:?}"
-            );
-            assert!(world.w.min(world.h) >= MIN_WORLD_PX, "{what}: {world:?}");
-        }
-        // At scale 2 below 1024×768, and at 2.5, from 800×600 up.
-        if big && (s > 2.0 || (s >= 2.0 && !bigger)) {
-            assert!(world.w == w && world.h >= MIN_WORLD_PX, "{what}: {world:?}");
-            assert!(r.side.is_none(), "{what}");
-        }
-    }
-
-    #[test]
-    fn grid_tiles_keeps_guarantees_and_gives_way_in_order() {
-        for (w, h, s, b) in grid() {
-            let (d, row) = (docks(b), row_px(s));
-            let r = layout((w, h), s, d);
-            let what = format!("{w}x{h} at {s} {d:?}");
-            assert_tiles(&r, &what);
-            assert_guarantees(w, h, s, &r, &what);
-            let min_tab = MIN_TAB_ROWS * row;
-            let folded = d.shown && d.tab_open && r.tab_content.is_none();
-            assert_eq!(r.tab_folded, folded, "{what}");
-            if let Some(c) = r.tab_content {
-                assert!(c.h >= min_tab && c.h <= tab_wanted(h, s), "{what}");
-            }
-            // The side dock gives way (to a drawer) before the tab folds.
-            assert!(!(r.tab_folded && r.side_dock == SideDock::Docked), "{what}");
-            let hidden = !d.shown || !d.side;
-            assert_eq!(r.side_dock == SideDock::Hidden, hidden, "{what}");
-            assert_eq!(r.side.is_some(), r.side_dock == SideDock::Docked, "{what}");
-            // Nothing gives way without need: a px more of tab (or the side
-            // docked, with the smallest tab) would break the world's guarantee.
-            let need = |world_w: f32| MIN_WORLD_PX.max(MIN_WORLD_SHARE * w * h / world_w);
-            let content = r.tab_content.map_or(0.0, |c| c.h);
-            if d.shown && d.tab_open && content < tab_wanted(h, s).floor() {
-                let more = if r.tab_folded { min_tab } else { 1.0 };
-                assert!(r.world.h - more < need(r.world.w), "{what}");
-            }
-            if matches!(r.side_dock, SideDock::Drawer { .. }) && s <= MAX_DOCKED_SCALE {
-                let (docked, room) = (w - side_width(w, s), h - 3.0 * row);
-                let fits = docked >= MIN_WORLD_PX && room - min_tab >= need(docked);
-                assert!(!fits, "{what}");
-            }
-            // The bars are one row, whatever their content.
-            assert_eq!((r.top_bar.h, r.caption.h), (row, row), "{what}");
-            assert_eq!(
-                r.tab_row.map(|t| (t.h, t.bottom())),
-                d.shown.then_some((row, h))
-            );
-            assert_eq!((r.world.x, r.world.y), (0.0, r.top_bar.bottom()), "{what}");
-            assert_eq!(r.caption.y, r.world.bottom(), "{what}");
-        }
-    }
-
-    #[test]
-    fn a_row_holds_a_line_of_text() {
-        for s in [1.0, 1.25, 1.5, 1.75, 2.0, 2.25, 2.5] {
-            // 17-point text (16 the smallest) in the 24-point interact
-            // height, plus the panel frame's 2 + 2 points of margin.
-            assert!(
-                row_px(s) >= (24.0 + 4.0) * s && row_px(s) >= (17.0 + 4.0) * s,
-                "{s}"
-            );
-        }
-    }
-
-    #[test]
-    fn opening_a_tab_moves_only_the_worlds_bottom_edge() {
-        for (w, h, s, b) in grid().filter(|g| g.3 & TAB == 0) {
-            let (closed, open) = (
-                layout((w, h), s, docks(b)),
-                layout((w, h), s, docks(b | TAB)),
-            );
-            let content = open.tab_content.map_or(0.0, |c| c.h);
-            let mut moved = closed;
-            moved.world.h -= content;
-            moved.caption.y -= content;
-            (moved.tab_content, moved.tab_folded) = (open.tab_content, open.tab_folded);
-            assert_eq!(moved, open, "{w}x{h} at {s} {:?}", docks(b));
-        }
-    }
-
-    #[test]
-    fn the_drawer_floats_and_changes_nothing_else() {
-        for (w, h, s, b) in grid().filter(|g| g.3 & DRAWER == 0) {
-            let (shut, open) = (
-                layout((w, h), s, docks(b)),
-                layout((w, h), s, docks(b | DRAWER)),
-            );
-            let mut same = open;
-            (same.drawer, same.side_dock) = (None, shut.side_dock);
-            assert_eq!(same, shut);
-            assert_eq!(
-                open.drawer.is_some(),
-                shut.side_dock == SideDock::Drawer { open: false }
-            );
-            if let Some(drawer) = open.drawer {
-                assert_eq!(open.side_dock, SideDock::Drawer { open: true });
-                assert_eq!((drawer.right(), drawer.y), (w, open.top_bar.bottom()));
-                assert_eq!(drawer.w, drawer_width(w, s));
-                assert!(drawer.w <= side_width(w, s) && drawer.w <= w - row_px(s));
-            }
-        }
-    }
-
-    #[test]
-    fn at_1024x768_scale_2_the_world_keeps_its_share() {
-        let r = layout((1024.0, 768.0), 2.0, docks(OPEN_TAB));
-        assert!(r.world.area() >= MIN_WORLD_SHARE * 1024.0 * 768.0);
-        assert!(r.world.w.min(r.world.h) >= MIN_WORLD_PX, "{:?}", r.world);
-        // The side dock gave way, and the tab grew back past its minimum.
-        assert_eq!(r.side_dock, SideDock::Drawer { open: false });
-        assert!(r.tab_content.unwrap().h > MIN_TAB_ROWS * row_px(2.0));
-    }
-
-    #[test]
-    fn at_800x600_scale_2_the_world_has_the_full_width() {
-        let r = layout((800.0, 600.0), 2.0, docks(OPEN_TAB));
-        assert_eq!((r.world.w, r.side), (800.0, None));
-        assert!(r.world.h >= MIN_WORLD_PX && !r.tab_folded, "{r:?}");
-    }
-
-    #[test]
-    fn with_room_nothing_gives_way() {
-        let r = layout((1920.0, 1080.0), 1.0, docks(OPEN_TAB));
-        assert_eq!(r.side.unwrap().w, side_width(1920.0, 1.0));
-        assert_eq!(r.tab_content.unwrap().h, tab_wanted(1080.0, 1.0).floor());
-    }
-
-    #[test]
-    fn guarantees_hold_between_the_grid_points() {
-        // Landscape windows from 800×600 to 1920 wide, every 8 px.
-        let heights = (600..=1200).step_by(8).map(|h| h as f32);
-        for s in [1.0, 1.25, 1.5, 1.75, 2.0, 2.25, 2.5] {
-            for w in (800..=1920).step_by(8).map(|w| w as f32) {
-                for h in heights.clone().filter(|&h| h <= w) {
-                    let r = layout((w, h), s, docks(OPEN_TAB));
-                    assert_guarantees(w, h, s, &r, &format!("{w}x{h} at {s}"));
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn degenerate_inputs_do_not_panic() {
-        let (nan, inf) = (f32::NAN, f32::INFINITY);
-        let sizes = [
-            (0.0, 0.0),
-            (100.0, 100.0),
-            (1.0, 5e3),
-            (5e3, 1.0),
-            (239.5, 241.3),
-        ];
-        let odd = [(-5.0, 300.0), (1e9, 1e9), (nan, inf), (-inf, f32::MAX)];
-        let scales = [nan, inf, -inf, 0.0, -1.0, 0.5, 1.3, 100.0];
-        for (w, h) in sizes.into_iter().chain(odd) {
-            for s in scales.into_iter().chain(SCALES) {
-                for b in 0..16 {
-                    let r = layout((w, h), s, docks(b));
-                    assert_tiles(&r, &format!("{w}x{h} at {s} {:?}", docks(b)));
-                }
-            }
-        }
-        assert_eq!((clamp_scale(nan), clamp_scale(inf)), (1.0, 2.5));
-    }
-}
+mod tests;

@@ -268,3 +268,5 @@ readouts-culled = values beside { $shown } of { $wanted } discs: no room for the
 launch-no-room = no room here
 gas-name = Gas of { $count } discs
 gas-description = { $count } equal discs covering 30 % of a periodic box (--gas { $count })
+tab-edge = Height of the tab
+tab-edge-hover = Drag to make the tab taller or shorter. From the keyboard (Tab to here): the arrows a row, Home the tallest, End the shortest, Enter its own height; or double-click.

@@ -271,3 +271,5 @@ readouts-culled = valores junto a { $shown } de { $wanted } discos: no hay espac
 launch-no-room = aquí no hay espacio
 gas-name = Gas de { $count } discos
 gas-description = { $count } discos iguales que ocupan el 30 % de una caja periódica (--gas { $count })
+tab-edge = Altura de la pestaña
+tab-edge-hover = Arrastre para hacer la pestaña más alta o más baja. Con el teclado (Tab hasta aquí): las flechas una fila, Inicio la más alta, Fin la más baja, Intro su altura propia; o doble clic.

@@ -268,3 +268,5 @@ readouts-culled = valeurs à côté de { $shown } disques sur { $wanted } : pas
 launch-no-room = pas de place ici
 gas-name = Gaz de { $count } disques
 gas-description = { $count } disques identiques couvrant 30 % d'une boîte périodique (--gas { $count })
+tab-edge = Hauteur de l'onglet
+tab-edge-hover = Faites glisser pour agrandir ou réduire l'onglet. Au clavier (Tab jusqu'ici) : les flèches une ligne, Début le plus haut, Fin le plus bas, Entrée sa hauteur d'origine ; ou double-clic.

@@ -268,3 +268,5 @@ readouts-culled = valores ao lado de { $shown } de { $wanted } discos: sem espa�
 launch-no-room = sem espaço aqui
 gas-name = Gás de { $count } discos
 gas-description = { $count } discos iguais ocupando 30 % de uma caixa periódica (--gas { $count })
+tab-edge = Altura da aba
+tab-edge-hover = Arraste para deixar a aba mais alta ou mais baixa. Pelo teclado (Tab até aqui): as setas uma linha, Home a mais alta, End a mais baixa, Enter a altura dela; ou clique duplo.

@@ -114,6 +114,7 @@ impl Sandbox {
             Quit
             | Fullscreen
             | SetScale(_)
+            | SetTabHeight(_)
             | NextScale
             | SetTheme(_)
             | SetLanguage(_)
@@ -330,6 +331,7 @@ impl Sandbox {
                 }
             }
             ToggleDockExpanded => self.panels.dock_expanded = !self.panels.dock_expanded,
+            SetTabHeight(h) => self.panels.tab_height = h.filter(|h| h.is_finite()),
             ToggleDocks => self.panels.docks_open = !self.panels.docks_open,
             ToggleSide => self.panels.side_open = !self.panels.side_open,
             ToggleDrawer => self.panels.drawer_open = !self.panels.drawer_open,

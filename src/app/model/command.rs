@@ -158,6 +158,8 @@ pub enum Command {
     /// A tab clicked in the tab row: chosen, or folded when it was open.
     ClickTab(DockTab),
     ToggleDockExpanded,
+    /// The open tab's height in px (its top edge dragged); None: its own.
+    SetTabHeight(Option<f32>),
     ToggleDocks,
     ToggleSide,
     ToggleDrawer,

@@ -97,6 +97,9 @@ pub struct Panels {
     pub tab: DockTab,
     /// Whether the bottom dock shows its tab or only the tab row.
     pub dock_expanded: bool,
+    /// The tab's height (px) chosen by dragging its top edge; its own
+    /// height while None. The layout keeps it within what the world leaves.
+    pub tab_height: Option<f32>,
     /// The key list.
     pub help_open: bool,
     /// The preset menu.
@@ -120,6 +123,7 @@ impl Panels {
             drawer_open: false,
             tab: DockTab::Totals,
             dock_expanded: true,
+            tab_height: None,
             help_open: false,
             presets_open: false,
             start_open: false,

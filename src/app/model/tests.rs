@@ -121,6 +121,7 @@ fn commands_that_change_the_scene_can_be_undone_and_the_others_leave_no_level() 
         Command::ToggleHelp,
         Command::Escape,
         Command::SetScale(1.5),
+        Command::SetTabHeight(Some(250.0)),
         Command::SetTheme(Theme::Light),
         Command::Select(Some(3)),
         Command::SetNewMass(2.0),

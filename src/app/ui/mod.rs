@@ -294,6 +294,7 @@ impl Panels {
             side: p.side_open,
             tab_open: p.dock_expanded,
             drawer_open: p.drawer_open,
+            tab_height: p.tab_height,
         };
         let rects = layout::layout(window, p.scale, docks);
         let points = |r: layout::Rect| {
@@ -331,7 +332,15 @@ impl Panels {
                 .resizable(false)
                 .exact_height(height / ppp)
                 .show(ctx, |ui| {
-                    self.dock.show(ui, &mut cx, row.h / ppp, content.is_some())
+                    let edge = content.zip(layout::tab_range(window, p.scale, docks)).map(
+                        |(c, (least, most))| dock::edge::TabEdge {
+                            height: c.h,
+                            least,
+                            most,
+                            row: row.h,
+                        },
+                    );
+                    self.dock.show(ui, &mut cx, row.h / ppp, edge)
                 });
             panels.push(row.as_array());
             if let Some(content) = content {

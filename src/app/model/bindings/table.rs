@@ -302,6 +302,7 @@ pub static BINDINGS: &[Binding] = &[
             (key(K::F(4)), C::ShowTab(DockTab::Speeds)),
         ],
     ),
+    mouse("tab-height"),
     line(
         "docks",
         Some("section-view"),

@@ -18,6 +18,11 @@ pub struct Collisions;
 
 /// Below this width (points) the list and the newest impact stack.
 const SIDE_BY_SIDE: f32 = 760.0;
+/// Room kept for a scroll bar beside the table, in points.
+const SCROLL_BAR: f32 = 16.0;
+/// The names of the newest impact's rows keep at least this share of the
+/// width, wrapping, however wide the numbers.
+const NAMES_AT_LEAST: f32 = 0.3;
 
 /// "discs 1 and 0" or "disc 0 and the left wall".
 fn who(impact: &Impact) -> String {
@@ -173,19 +178,43 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             ));
         }
     }
+    // The names wrap before the numbers are pushed out of sight: at a
+    // projector's size "disc 1: v along the line of impact (m/s)" took the
+    // width, and the after column was cut off.
+    let (before, after) = (tr!("ledger-before"), tr!("ledger-after"));
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let widest = |texts: &mut dyn Iterator<Item = &String>| {
+        texts
+            .map(|t| {
+                ui.fonts(|f| f.layout_no_wrap(t.clone(), font.clone(), egui::Color32::WHITE))
+                    .size()
+                    .x
+            })
+            .fold(0.0, f32::max)
+    };
+    let numbers = widest(
+        &mut rows
+            .iter()
+            .flat_map(|(_, b, a)| [b, a])
+            .chain([&before, &after]),
+    );
+    let spacing = 18.0;
+    let names = (ui.available_width() - 2.0 * (numbers + spacing) - SCROLL_BAR)
+        .max(NAMES_AT_LEAST * ui.available_width());
     let area = egui::ScrollArea::both().auto_shrink([false, true]);
-    scroll(ui, cx, area, "ledger_detail", |ui, _| {
-        egui::Grid::new("ledger_newest")
+    scroll(ui, cx, area, "ledger_detail", |ui, cx| {
+        let r = egui::Grid::new("ledger_newest")
             .striped(true)
             .num_columns(3)
-            .spacing([18.0, 4.0])
+            .spacing([spacing, 4.0])
+            .max_col_width(names.max(numbers))
             .show(ui, |ui| {
-                for h in [String::new(), tr!("ledger-before"), tr!("ledger-after")] {
+                for h in [String::new(), before, after] {
                     ui.strong(h);
                 }
                 ui.end_row();
                 for (what, before, after) in rows {
-                    ui.label(what);
+                    ui.add(egui::Label::new(what).wrap());
                     ui.label(before);
                     ui.label(after);
                     ui.end_row();
@@ -193,5 +222,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             })
             .response
             .on_hover_text(tr!("ledger-detail-hover"));
+        // Its whole width (the dump shows whether any is cut off).
+        cx.note("ledger_newest", &r);
     });
 }

@@ -10,6 +10,7 @@
 
 mod collisions;
 pub mod discs;
+pub mod edge;
 mod momenta;
 mod plots;
 mod speeds;
@@ -42,10 +43,12 @@ impl BottomDock {
         BottomDock { tabs: tabs() }
     }
 
-    /// The chosen tab (if `content`) and, under it at the window's bottom
-    /// edge, the tab row, `row` points high: a tab clicked never moves.
-    pub fn show(&mut self, ui: &mut egui::Ui, cx: &mut Cx, row: f32, content: bool) {
+    /// The chosen tab (if it has room: `edge`, with its top edge to drag)
+    /// and, under it at the window's bottom edge, the tab row, `row` points
+    /// high: a tab clicked never moves.
+    pub fn show(&mut self, ui: &mut egui::Ui, cx: &mut Cx, row: f32, edge: Option<edge::TabEdge>) {
         let model = cx.model;
+        let content = edge.is_some();
         let expanded = model.panels.dock_expanded && content;
         let full = ui.max_rect();
         let split = full.bottom() - row;
@@ -58,6 +61,10 @@ impl BottomDock {
             if let Some((_, view)) = self.tabs.iter_mut().find(|(t, _)| *t == chosen) {
                 view.ui(&mut tab, cx);
             }
+        }
+        if let (true, Some(edge)) = (expanded, edge) {
+            let ppp = crate::app::ui::px_per_point(ui.ctx());
+            edge::show(ui, cx, full, edge, ppp);
         }
         let mut strip = ui.new_child(
             egui::UiBuilder::new()

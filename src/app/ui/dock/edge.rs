@@ -1,0 +1,109 @@
+//! The top edge of the dock's open tab, a control of its own: dragged, it
+//! makes the tab taller or shorter (a table or a plot gets more room at a
+//! projector's size, the world less); with the keyboard (Tab reaches it),
+//! the arrows move it a row, Page Up and Page Down three, Home and End to
+//! the tallest and the shortest, Enter back to the tab's own height; so
+//! does a double-click. The layout keeps it within what the world leaves
+//! ([`crate::app::layout::tab_range`]).
+
+use super::super::Cx;
+use crate::app::lang::tr;
+use crate::app::model::Command;
+
+/// The open tab's height and what it may be, in px.
+#[derive(Clone, Copy, Debug)]
+pub struct TabEdge {
+    pub height: f32,
+    pub least: f32,
+    pub most: f32,
+    /// One row (a step of the arrows).
+    pub row: f32,
+}
+
+/// How far below the edge the pointer takes it, in points (above it is the
+/// caption strip, another panel).
+const GRIP_POINTS: f32 = 4.0;
+
+/// The edge along the top of `area` (the tab's content, in points), noted
+/// as `tab_edge`; `ppp` is px per point.
+pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge, ppp: f32) {
+    let top = ui.clip_rect().top().min(area.top());
+    let grip = egui::Rect::from_min_max(
+        egui::pos2(area.left(), top),
+        egui::pos2(area.right(), area.top() + GRIP_POINTS),
+    );
+    let id = ui.id().with("tab_edge");
+    let r = ui.interact(grip, id, egui::Sense::click_and_drag());
+    let r = r.on_hover_text(tr!("tab-edge-hover"));
+    r.widget_info(|| {
+        egui::WidgetInfo::slider(
+            ui.is_enabled(),
+            (edge.height / ppp).round() as f64,
+            tr!("tab-edge"),
+        )
+    });
+    cx.note("tab_edge", &r);
+    let live = r.hovered() || r.dragged() || r.has_focus();
+    if live {
+        ui.ctx().set_cursor_icon(egui::CursorIcon::ResizeVertical);
+    }
+    // A grip in the middle, stronger while it can be moved.
+    let visuals = ui.visuals();
+    let color = if live {
+        visuals.strong_text_color()
+    } else {
+        visuals.weak_text_color()
+    };
+    let middle = grip.center_top().x;
+    for k in 0..2 {
+        let y = top + 1.0 + 2.0 * k as f32;
+        ui.painter().line_segment(
+            [egui::pos2(middle - 16.0, y), egui::pos2(middle + 16.0, y)],
+            egui::Stroke::new(1.0, color),
+        );
+    }
+    let set = |h: f32| Command::SetTabHeight(Some(h.clamp(edge.least, edge.most)));
+    if r.double_clicked() {
+        cx.send(Command::SetTabHeight(None));
+    } else if r.dragged() {
+        // Where the pointer is, less where on the grip it was taken: no
+        // rounding adds up over a slow drag.
+        let taken = egui::Id::new("tab_edge_taken");
+        if let Some(at) = ui.input(|i| i.pointer.interact_pos()) {
+            if r.drag_started() {
+                ui.data_mut(|d| d.insert_temp(taken, at.y - area.top()));
+            }
+            let offset = ui.data(|d| d.get_temp::<f32>(taken)).unwrap_or(0.0);
+            let bottom = area.top() + edge.height / ppp;
+            cx.send(set((bottom - (at.y - offset)) * ppp));
+        }
+    }
+    if r.has_focus() {
+        // The arrows stay here instead of moving the keyboard on.
+        ui.memory_mut(|m| {
+            m.set_focus_lock_filter(
+                id,
+                egui::EventFilter {
+                    vertical_arrows: true,
+                    ..Default::default()
+                },
+            )
+        });
+        let keys = [
+            (egui::Key::ArrowUp, edge.row),
+            (egui::Key::ArrowDown, -edge.row),
+            (egui::Key::PageUp, 3.0 * edge.row),
+            (egui::Key::PageDown, -3.0 * edge.row),
+            (egui::Key::Home, f32::INFINITY),
+            (egui::Key::End, f32::NEG_INFINITY),
+        ];
+        for (key, by) in keys {
+            if ui.input(|i| i.key_pressed(key)) {
+                cx.send(set(edge.height + by));
+            }
+        }
+        if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+            cx.send(Command::SetTabHeight(None));
+        }
+    }
+}
