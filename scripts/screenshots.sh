@@ -92,9 +92,14 @@ xdotool mousemove 640 300; sleep 0.5
 finish
 
 # 13. A laptop at the projector's scale: 1024×768, scale 2, the glancing hit
-# at its instant (J), the ledger open, the controls in their drawer.
+# at its instant (J), the ledger open and made taller by its top edge, the
+# controls in their drawer.
 start --size 1024x768 --ui-scale 2 --screenshot docs/projector-ledger.png
 xdotool mousemove 300 200 key 4; sleep 0.5; xdotool key j; sleep 1
+read -r ex ey <<< "$(widget tab_edge)"
+xdotool mousemove "$ex" "$ey" mousedown 1; sleep 0.2
+for dy in 30 60 90 120; do xdotool mousemove "$ex" $((ey - dy)); sleep 0.05; done
+sleep 0.3; xdotool mouseup 1; xdotool mousemove 300 200; sleep 0.5
 finish
 
 # 14. Another classroom: Spanish at the projector's scale, the glancing hit at

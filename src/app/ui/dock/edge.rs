@@ -47,19 +47,14 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge, ppp
     if live {
         ui.ctx().set_cursor_icon(egui::CursorIcon::ResizeVertical);
     }
-    // A grip in the middle, stronger while it can be moved.
-    let visuals = ui.visuals();
-    let color = if live {
-        visuals.strong_text_color()
-    } else {
-        visuals.weak_text_color()
-    };
-    let middle = grip.center_top().x;
-    for k in 0..2 {
-        let y = top + 1.0 + 2.0 * k as f32;
-        ui.painter().line_segment(
-            [egui::pos2(middle - 16.0, y), egui::pos2(middle + 16.0, y)],
-            egui::Stroke::new(1.0, color),
+    // Marked only while it can be moved, as egui marks a panel's edge: a
+    // grip drawn always struck through the caption or the tab's first line.
+    if live {
+        let layer = egui::LayerId::new(egui::Order::Foreground, id.with("line"));
+        ui.ctx().layer_painter(layer).hline(
+            grip.x_range(),
+            top,
+            egui::Stroke::new(2.0, ui.visuals().strong_text_color()),
         );
     }
     let set = |h: f32| Command::SetTabHeight(Some(h.clamp(edge.least, edge.most)));

@@ -20,8 +20,10 @@ pub const RIM_COLOR: Color32 = L_COLOR;
 pub const ROOMY_PLOT: f32 = 140.0;
 /// The marks where walls pushed the discs.
 pub const WALL_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
-/// Below this height (points) a plot has no room for its legend box.
-pub const COMPACT_PLOT_HEIGHT: f32 = 110.0;
+/// Below this height (points) a plot has no room for a legend box of three
+/// names (p_x, p_y and the walls' marks; or the three energies) above its
+/// time axis: at 110 the box grew over the line above the plots.
+pub const COMPACT_PLOT_HEIGHT: f32 = 130.0;
 
 /// The speed histogram against Maxwell–Boltzmann; with `rims`, each bin's
 /// rim-speed bar beside its speed bar, and the rim speeds' law.
