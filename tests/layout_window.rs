@@ -501,8 +501,9 @@ fn in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlappi
 /// At 1024×768 and text size 2 the dock's tab is 100 points high. The
 /// momentum diagram and the speed histogram take most of it (their numbers
 /// and axis names had left the diagram a quarter, 23 points), inside the
-/// tab; and a line cut to its room shows one tooltip when hovered (egui's
-/// own one for the cut text had stacked under the app's).
+/// tab; a line cut to its room shows one tooltip when hovered (egui's own
+/// one for the cut text had stacked under the app's); and the top bar's
+/// hidden values show on a click (no hover on a touch screen).
 fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip() {
     let x = Xvfb::start("plots");
     let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
@@ -574,6 +575,18 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
         app.move_to([500.0, 200.0]);
         app.wait_for("no tooltip", 120, |s| s["ui"]["tooltips"] == 0);
     }
+    // What the top bar has no room for shows on a click too, and stays
+    // until a click elsewhere: a touch screen has no hover.
+    app.click(widget(&s, "top_bar_more", 0.5));
+    app.move_to([500.0, 200.0]);
+    for _ in 0..5 {
+        let s = app.wait_frames(1);
+        assert_eq!(s["ui"]["tooltips"], 1, "the hidden values after a click");
+    }
+    app.click([500.0, 200.0]);
+    app.wait_for("the hidden values put away", 30, |s| {
+        s["ui"]["tooltips"] == 0
+    });
     app.quit();
 }
 

@@ -348,10 +348,20 @@ impl TopBar {
                     }
                 }
                 if !hidden.is_empty() {
-                    // On hover, or while it has the keys (Tab reaches it).
+                    // On hover, while it has the keys (Tab reaches it), or
+                    // from a click until the next click elsewhere: a touch
+                    // screen (a classroom's board) has no hover.
                     let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
                     let hidden = hidden.join("\n");
-                    let r = if r.has_focus() {
+                    let pinned_id = r.id.with("pinned");
+                    let mut pinned = ui.data(|d| d.get_temp::<bool>(pinned_id)).unwrap_or(false);
+                    if r.clicked() {
+                        pinned = !pinned;
+                    } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
+                        pinned = false;
+                    }
+                    ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
+                    let r = if r.has_focus() || pinned {
                         r.show_tooltip_text(hidden);
                         r
                     } else {
