@@ -55,6 +55,10 @@ fn main() -> std::process::ExitCode {
             at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip,
         ),
         (
+            "at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column",
+            at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column,
+        ),
+        (
             "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
             tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world,
         ),
@@ -587,6 +591,39 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
     app.wait_for("the hidden values put away", 30, |s| {
         s["ui"]["tooltips"] == 0
     });
+    app.quit();
+}
+
+/// At 1024×768 and text size 2 the Discs table is wider than the window:
+/// it scrolls sideways (a touchpad, a sideways wheel, its bar) to its last
+/// column, the kinetic energy, which had been cut off out of reach.
+fn at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column() {
+    let x = Xvfb::start("discs");
+    let args = ["--size", "1024x768", "--ui-scale", "2"];
+    let app = Sandbox::start(&x, &args);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    let s = app.state();
+    app.click(widget(&s, "tab_discs", 0.5));
+    let s = app.wait_for("the Discs tab", 60, |s| s["ui"]["tab"] == "Discs");
+    // Where the last column starts (out of sight: nowhere, or past the
+    // window's edge less the 100 px it needs).
+    let start = |s: &Value| {
+        s["panel_widgets"]["discs_last_column"][0]
+            .as_f64()
+            .unwrap_or(f64::INFINITY)
+    };
+    assert!(
+        start(&s) > 1024.0 - 100.0,
+        "already in sight: {}",
+        start(&s)
+    );
+    let table = rect(&s["panel_widgets"]["tab_discs"]);
+    app.move_to([500.0, table[1] - 60.0]);
+    app.wait_frames(2);
+    app.xdo(&["click", "--repeat", "12", "--delay", "40", "7"]);
+    app.wait_for("the table scrolled", 60, |s| start(s) < 1024.0 - 100.0);
     app.quit();
 }
 

@@ -50,6 +50,12 @@ fn spin_headings() -> [(String, String); 3] {
     ]
 }
 
+/// The first column's least width (the disc's colour and number), and the
+/// others', wide and narrow (with the units under the names), in points.
+const FIRST_COLUMN: f32 = 60.0;
+const WIDE_COLUMN: f32 = 90.0;
+const NARROW_COLUMN: f32 = 64.0;
+
 /// Column headings, with units.
 fn headings() -> [String; 9] {
     [
@@ -100,22 +106,29 @@ impl View for DiscsTable {
         let spin_columns = if spin { 3 } else { 0 };
         let spin_headings = spin_headings();
         // With the spin columns, narrower ones (units under the names), so
-        // that all twelve fit the dock of a 1280-pixel window.
+        // that all twelve fit the dock of a 1280-pixel window. (Not for want
+        // of width alone: the names on two lines took the one row a
+        // projector's tab has room for.)
+        let columns = 8 + spin_columns;
+        let gap = ui.spacing().item_spacing.x;
+        let across = |width: f32| FIRST_COLUMN + columns as f32 * (width + gap) + gap;
         let (column_width, cell_width, header_height) = if spin {
-            (64.0, 62.0, 2.0 * row_height)
+            (NARROW_COLUMN, 62.0, 2.0 * row_height)
         } else {
-            (90.0, 84.0, row_height)
+            (WIDE_COLUMN, 84.0, row_height)
         };
-        // Wider than the dock with the spin columns: it scrolls sideways
-        // then (only then, as its bar would lie over the last row). The rows
+        // Wider than the dock even so: it scrolls sideways (only then, as
+        // its bar would lie over the last row; without it the last columns,
+        // |v|, |p| and the energy, were cut off out of reach). The rows
         // scroll within the dock's height, with room for two of them at
         // least: the table's own least height (200 points) grew a short dock
         // over the world when there were many discs.
+        let sideways = across(column_width) > ui.available_width();
         let height = ui.available_height();
         let two_rows = 2.0 * (row_height + ui.spacing().item_spacing.y);
         egui::ScrollArea::horizontal()
             .id_salt("discs_table_scroll")
-            .enable_scrolling(spin)
+            .enable_scrolling(sideways)
             .show(ui, |ui| {
                 TableBuilder::new(ui)
                     .id_salt("discs_table")
@@ -123,23 +136,31 @@ impl View for DiscsTable {
                     .max_scroll_height((height - header_height).max(two_rows))
                     .striped(true)
                     .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
-                    .column(Column::auto().at_least(60.0))
-                    .columns(Column::auto().at_least(column_width), 8 + spin_columns)
+                    .column(Column::auto().at_least(FIRST_COLUMN))
+                    .columns(Column::auto().at_least(column_width), columns)
                     .header(header_height, |mut header| {
-                        for h in headings() {
+                        // The last column noted: whether it is in sight.
+                        let last = headings().len() - 1;
+                        for (k, h) in headings().into_iter().enumerate() {
                             let h = if spin {
                                 h.replacen(" (", "\n(", 1)
                             } else {
                                 h.to_string()
                             };
-                            header.col(|ui| {
+                            let (_, r) = header.col(|ui| {
                                 ui.strong(h);
                             });
+                            if k == last && spin_columns == 0 {
+                                cx.note("discs_last_column", &r);
+                            }
                         }
-                        for (h, meaning) in &spin_headings[..spin_columns] {
-                            header.col(|ui| {
+                        for (k, (h, meaning)) in spin_headings[..spin_columns].iter().enumerate() {
+                            let (_, r) = header.col(|ui| {
                                 ui.strong(h).on_hover_text(meaning);
                             });
+                            if k + 1 == spin_columns {
+                                cx.note("discs_last_column", &r);
+                            }
                         }
                     })
                     .body(|body| {
