@@ -576,24 +576,6 @@ fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
     app.quit();
 }
 
-/// The open tab's content rectangle: under the world and its caption strip
-/// (one row, as high as the top bar).
-fn tab_content(s: &Value) -> [f64; 4] {
-    let num = |v: &Value| -> [f64; 4] { std::array::from_fn(|k| v[k].as_f64().unwrap()) };
-    let (world, row) = (
-        num(&s["layout"]["world"]),
-        num(&s["layout"]["panels"][0])[3],
-    );
-    let top = world[1] + world[3] + row;
-    s["layout"]["panels"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(num)
-        .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
-        .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
-}
-
 /// At a projector's size (1024×768, text size 2) the ledger's tab opens
 /// 200 px high, with its table's numbers in sight (the names wrap). Its top
 /// edge dragged up gives it what the world can spare (the world keeps 40 %
@@ -602,13 +584,7 @@ fn tab_content(s: &Value) -> [f64; 4] {
 /// row, Enter gives the tab its own height back.
 fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
     let x = Xvfb::start("edge");
-    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 200.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "j"]);
-    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    let app = projector_at_impact(&x, "pt-BR");
     let s = app.wait_frames(3);
     let own = tab_content(&s)[3];
     let table = &s["panel_widgets"]["ledger_newest"];

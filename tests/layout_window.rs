@@ -406,13 +406,7 @@ fn a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much() 
 fn projector_ledger(lang: &str) {
     let x = Xvfb::start("projector");
     let window = [1024.0, 768.0];
-    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", lang];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 200.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "j"]);
-    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    let app = projector_at_impact(&x, lang);
     let s = app.wait_frames(3);
     check_layout(&s, "1024x768 scale 2 after J", 2.0, window);
     assert_eq!(s["layout"]["side"], "drawer", "{}", s["layout"]);
@@ -510,29 +504,8 @@ fn in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlappi
 /// hidden values show on a click (no hover on a touch screen).
 fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip() {
     let x = Xvfb::start("plots");
-    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 200.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "j"]);
-    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
-    // The tab's content: under the world and its caption strip (one row,
-    // as high as the top bar).
-    let content = |s: &Value| {
-        let (world, row) = (
-            rect(&s["layout"]["world"]),
-            rect(&s["layout"]["panels"][0])[3],
-        );
-        let top = world[1] + world[3] + row;
-        s["layout"]["panels"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(rect)
-            .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
-            .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
-    };
+    let app = projector_at_impact(&x, "pt-BR");
+    let content = tab_content;
     for (key, tab, plot, share) in [
         ("d", "Momenta", "momenta_plot", 0.55),
         ("F4", "Speeds", "speeds_plot", 0.4),

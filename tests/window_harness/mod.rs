@@ -416,3 +416,34 @@ pub fn widget(state: &Value, name: &str, t: f64) -> [f64; 2] {
         .collect();
     [r[0] + t * r[2], r[1] + 0.5 * r[3]]
 }
+
+/// The open tab's content rectangle [x, y, w, h]: under the world and its
+/// caption strip (one row, as high as the top bar).
+pub fn tab_content(s: &Value) -> [f64; 4] {
+    let num = |v: &Value| -> [f64; 4] { std::array::from_fn(|k| v[k].as_f64().unwrap()) };
+    let (world, row) = (
+        num(&s["layout"]["world"]),
+        num(&s["layout"]["panels"][0])[3],
+    );
+    let top = world[1] + world[3] + row;
+    s["layout"]["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(num)
+        .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
+        .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
+}
+
+/// The window at a projector's size (1024×768, text size 2) in `lang`, on
+/// the glancing hit run to its instant (J), the ledger open.
+pub fn projector_at_impact(x: &Xvfb, lang: &str) -> Sandbox {
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", lang];
+    let app = Sandbox::start(x, &args);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "j"]);
+    app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
+    app
+}
