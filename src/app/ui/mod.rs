@@ -338,6 +338,7 @@ impl Panels {
                             least,
                             most,
                             row: row.h,
+                            ppp,
                         },
                     );
                     self.dock.show(ui, &mut cx, row.h / ppp, edge)

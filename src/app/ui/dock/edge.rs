@@ -18,6 +18,8 @@ pub struct TabEdge {
     pub most: f32,
     /// One row (a step of the arrows).
     pub row: f32,
+    /// Px per egui point.
+    pub ppp: f32,
 }
 
 /// How far below the edge the pointer takes it, in points (above it is the
@@ -25,8 +27,9 @@ pub struct TabEdge {
 const GRIP_POINTS: f32 = 4.0;
 
 /// The edge along the top of `area` (the tab's content, in points), noted
-/// as `tab_edge`; `ppp` is px per point.
-pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge, ppp: f32) {
+/// as `tab_edge`.
+pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
+    let ppp = edge.ppp;
     let top = ui.clip_rect().top().min(area.top());
     let grip = egui::Rect::from_min_max(
         egui::pos2(area.left(), top),

@@ -63,8 +63,7 @@ impl BottomDock {
             }
         }
         if let (true, Some(edge)) = (expanded, edge) {
-            let ppp = crate::app::ui::px_per_point(ui.ctx());
-            edge::show(ui, cx, full, edge, ppp);
+            edge::show(ui, cx, full, edge);
         }
         let mut strip = ui.new_child(
             egui::UiBuilder::new()
