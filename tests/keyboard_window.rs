@@ -50,6 +50,10 @@ fn main() -> std::process::ExitCode {
             the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys,
         ),
         (
+            "the_text_size_and_theme_chosen_are_kept_for_the_next_start",
+            the_text_size_and_theme_chosen_are_kept_for_the_next_start,
+        ),
+        (
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
             q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre,
         ),
@@ -480,6 +484,48 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
     seen.dedup();
     assert_eq!(seen.len(), 4, "each Down a language: {seen:?}");
     app.quit();
+}
+
+/// A teacher sets the projector's text size and the light theme once: the
+/// next start opens with them, `--ui-scale` overrides them for one run
+/// only, and a start after that has them again.
+fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
+    let x = Xvfb::start("remembered");
+    let state = tempfile::tempdir().unwrap();
+    let chosen = |s: &Value| {
+        let ui = &s["ui"];
+        (ui["text_size"].as_f64().unwrap(), ui["theme"].to_string())
+    };
+    let first = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(chosen(&first.state()), (1.0, "\"dark\"".into()));
+    first.move_to([5.0, 400.0]);
+    tab_to(&first, "section_view", 60);
+    first.xdo(&["key", "space"]);
+    first.wait_frames(3);
+    tab_to(&first, "theme", 20);
+    first.xdo(&["key", "space"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "Escape"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "F2"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "F2"]);
+    assert_eq!(chosen(&first.wait_frames(3)), (2.0, "\"light\"".into()));
+    first.quit();
+
+    let second = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(chosen(&second.state()), (2.0, "\"light\"".into()));
+    second.quit();
+    let once = Sandbox::start_with_state(&x, &["--paused", "--ui-scale", "1"], state.path());
+    assert_eq!(chosen(&once.state()), (1.0, "\"light\"".into()));
+    once.quit();
+    let third = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(
+        chosen(&third.state()),
+        (2.0, "\"light\"".into()),
+        "--ui-scale is for one run"
+    );
+    third.quit();
 }
 
 fn q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre() {

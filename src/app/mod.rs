@@ -231,11 +231,7 @@ impl App {
             from_link,
             lang: options.lang,
             system_lang: system_language(),
-            theme: if options.light {
-                model::Theme::Light
-            } else {
-                model::Theme::Dark
-            },
+            theme: options.light.then_some(model::Theme::Light),
         });
         if model.recovery.offered.is_some() {
             eprintln!(

@@ -48,10 +48,11 @@ pub struct WindowOptions {
     #[arg(long, default_value = "1280x800", value_parser = crate::cli::window_size)]
     pub size: (i32, i32),
     /// Size of every text and control, 1 to 2.5 (F2 cycles 1, 1.5 and 2; 2 is
-    /// for a projector).
-    #[arg(long, value_name = "SCALE", default_value_t = 1.0, value_parser = crate::cli::ui_scale)]
-    pub ui_scale: f32,
-    /// Start in the light theme (for a projector in a bright room).
+    /// for a projector); default: the size chosen before, else 1.
+    #[arg(long, value_name = "SCALE", value_parser = crate::cli::ui_scale)]
+    pub ui_scale: Option<f32>,
+    /// Start in the light theme (for a projector in a bright room); without
+    /// it, the theme chosen before, else dark.
     #[arg(long)]
     pub light: bool,
     /// Open straight on the scene, without the start screen's tiles (which

@@ -351,23 +351,29 @@ impl Sandbox {
                     self.pointer.cancel();
                 }
             }
-            SetScale(s) => self.panels.set_scale(s),
+            SetScale(s) => {
+                self.panels.set_scale(s);
+                let scale = self.panels.scale;
+                self.remember(|r| r.text_size = Some(scale));
+            }
             NextScale => {
                 self.panels.set_scale(next_scale(self.panels.scale));
                 let scale = crate::app::numbers::field(f64::from(self.panels.scale));
                 self.toast(tr!("text-size", scale = scale));
+                let scale = self.panels.scale;
+                self.remember(|r| r.text_size = Some(scale));
             }
-            SetTheme(t) => self.panels.theme = t,
+            SetTheme(t) => {
+                self.panels.theme = t;
+                self.remember(|r| r.theme = Some(t));
+            }
             SetLanguage(lang) => {
                 crate::app::lang::set_language(lang);
                 // Shown and said in the new language, so that the last
                 // message (the strip, the page's live region) is not left
                 // in the old one.
                 self.toast(tr!("language-now"));
-                self.session.settings.settings.language = Some(lang.code().to_string());
-                if let Some(problem) = self.session.settings.save() {
-                    self.report(problem);
-                }
+                self.remember(|r| r.language = Some(lang.code().to_string()));
             }
             Fullscreen => self.session.requests.fullscreen = true,
             Quit => self.session.requests.quit = true,

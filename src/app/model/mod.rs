@@ -175,7 +175,7 @@ pub struct Session {
     pub now: f64,
     /// What only the window can do, asked for by commands.
     pub requests: Requests,
-    /// What is remembered between runs (language, sound).
+    /// What is remembered between runs (language, sound, text size, theme).
     pub settings: settings::Remembered,
     /// The sound switch and the clicks the window is to play.
     pub sound: sound::Sound,
@@ -210,8 +210,10 @@ pub struct Start {
     pub out: PathBuf,
     /// The recovery file's folder and the seconds between autosaves.
     pub recovery: (PathBuf, f64),
-    pub scale: f32,
-    pub theme: Theme,
+    /// `--ui-scale`: the text size for this run, over the one remembered.
+    pub scale: Option<f32>,
+    /// `--light`: the theme for this run, over the one remembered.
+    pub theme: Option<Theme>,
     /// Open on the start screen.
     pub start_screen: bool,
     /// The scene came from a shared link (the browser).
@@ -233,6 +235,11 @@ impl Sandbox {
         // The language first, so that every message is in it.
         let (remembered, unreadable) = settings::Remembered::load(&start.recovery.0);
         let sound_on = remembered.settings.sound;
+        let scale = start.scale.or(remembered.settings.text_size).unwrap_or(1.0);
+        let theme = start
+            .theme
+            .or(remembered.settings.theme)
+            .unwrap_or(Theme::Dark);
         crate::app::lang::set_language(settings::choose_language(
             start.lang,
             remembered.language(),
@@ -265,7 +272,7 @@ impl Sandbox {
             overlays: Overlays::default(),
             record: Record::default(),
             undo: undo::Undo::default(),
-            panels: Panels::new(start.scale, start.theme),
+            panels: Panels::new(scale, theme),
             messages: Messages::default(),
             steps: StepReport::default(),
             recovery,
@@ -336,6 +343,14 @@ impl Sandbox {
     pub fn report(&mut self, message: String) {
         eprintln!("impulse: {message}");
         self.toast_for(message, 8.0);
+    }
+
+    /// Changes what is remembered for the next start; a failed write is
+    /// reported, and the change holds for this run.
+    pub fn remember(&mut self, change: impl FnOnce(&mut settings::Settings)) {
+        if let Some(problem) = self.session.settings.change(change) {
+            self.report(problem);
+        }
     }
 
     /// Whether a modal question or the start screen waits for an answer

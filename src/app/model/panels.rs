@@ -42,7 +42,8 @@ impl DockTab {
 }
 
 /// Dark (the default, for a screen) or light (for a projector in a bright room).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Theme {
     Dark,
     Light,

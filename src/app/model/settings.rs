@@ -1,5 +1,6 @@
-//! What the window remembers between runs: the language the person chose
-//! and whether they turned sound on. A small TOML file, `settings.toml`,
+//! What the window remembers between runs: the language the person chose,
+//! whether they turned sound on, the text size and the theme (a teacher sets
+//! the projector's once). A small TOML file, `settings.toml`,
 //! beside the recovery file (`$XDG_STATE_HOME/impulse/`, see
 //! [`super::recovery::folder`]); in the browser the same name in the page's
 //! local storage. Tests isolate it the way they isolate recovery (their own
@@ -7,6 +8,7 @@
 //! defaults hold; a write that fails is reported and nothing else changes.
 
 use super::recovery::keep;
+use super::Theme;
 use crate::app::lang::{tr, Lang};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -16,7 +18,9 @@ pub const FILE_NAME: &str = "settings.toml";
 
 /// What is remembered.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
+// Unknown fields are passed over, so that a file written by a newer
+// Impulse still gives an older one its language.
+#[serde(default)]
 pub struct Settings {
     /// The language chosen in View (a tag: "es", "pt-BR"); none: the
     /// system's or the browser's.
@@ -24,6 +28,12 @@ pub struct Settings {
     pub language: Option<String>,
     /// Sound was turned on.
     pub sound: bool,
+    /// The size of text and controls chosen in View or with F2.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub text_size: Option<f32>,
+    /// The theme chosen in View.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub theme: Option<Theme>,
 }
 
 /// The settings and where they are kept.
@@ -59,6 +69,17 @@ impl Remembered {
     /// The language remembered, if it is one Impulse speaks.
     pub fn language(&self) -> Option<Lang> {
         self.settings.language.as_deref().and_then(Lang::from_tag)
+    }
+
+    /// Changes the settings by `change` and, if that changed them, writes
+    /// them; what went wrong, if anything.
+    pub fn change(&mut self, change: impl FnOnce(&mut Settings)) -> Option<String> {
+        let before = self.settings.clone();
+        change(&mut self.settings);
+        if self.settings == before {
+            return None;
+        }
+        self.save()
     }
 
     /// Writes the settings (atomically); what went wrong, if anything.
@@ -103,15 +124,57 @@ mod tests {
         assert_eq!((r.settings.clone(), problem), (Settings::default(), None));
         r.settings.language = Some("pt-BR".into());
         r.settings.sound = true;
+        r.settings.text_size = Some(2.0);
+        r.settings.theme = Some(Theme::Light);
         assert_eq!(r.save(), None);
         let (again, problem) = Remembered::load(dir.path());
         assert_eq!(problem, None);
         assert_eq!(again.language(), Some(Lang::PtBr));
-        assert!(again.settings.sound);
-        std::fs::write(dir.path().join(FILE_NAME), "language = 3\n").unwrap();
+        assert_eq!(again.settings, r.settings);
+        // A file from a newer Impulse, with a field this one does not know.
+        let text = std::fs::read_to_string(dir.path().join(FILE_NAME)).unwrap();
+        std::fs::write(dir.path().join(FILE_NAME), text + "later = 1\n").unwrap();
+        let (newer, problem) = Remembered::load(dir.path());
+        assert_eq!((newer.settings, problem), (r.settings.clone(), None));
+        std::fs::write(dir.path().join(FILE_NAME), "theme = \"dim\"\n").unwrap();
         let (bad, problem) = Remembered::load(dir.path());
         assert_eq!(bad.settings, Settings::default());
         assert!(problem.unwrap().contains(FILE_NAME));
+    }
+
+    #[test]
+    fn a_change_is_written_only_when_it_changes_something() {
+        let dir = tempfile::tempdir().unwrap();
+        let (mut r, _) = Remembered::load(dir.path());
+        assert_eq!(r.change(|s| s.sound = false), None);
+        assert!(!dir.path().join(FILE_NAME).exists(), "nothing changed");
+        assert_eq!(r.change(|s| s.text_size = Some(1.5)), None);
+        let (again, _) = Remembered::load(dir.path());
+        assert_eq!(again.settings.text_size, Some(1.5));
+    }
+
+    #[test]
+    fn the_text_size_and_theme_chosen_are_where_the_next_start_opens() {
+        use crate::app::model::{tests::sandbox_with, Command};
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+        assert_eq!((s.panels.scale, s.panels.theme), (1.0, Theme::Dark));
+        s.apply(Command::NextScale);
+        s.apply(Command::NextScale);
+        s.apply(Command::SetTheme(Theme::Light));
+        let again = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+        assert_eq!(
+            (again.panels.scale, again.panels.theme),
+            (2.0, Theme::Light)
+        );
+        s.apply(Command::SetScale(1.7));
+        let (r, _) = Remembered::load(dir.path());
+        assert_eq!(r.settings.text_size, Some(1.7));
+        // A number outside the slider's range is kept as the window took it.
+        s.apply(Command::SetScale(9.0));
+        let (r, _) = Remembered::load(dir.path());
+        assert_eq!(r.settings.text_size, Some(s.panels.scale));
+        assert!(s.panels.scale <= 2.5);
     }
 
     #[test]

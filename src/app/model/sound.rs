@@ -224,10 +224,7 @@ impl Sandbox {
             crate::app::lang::tr!("sound-off")
         });
         // Remembered: on at the next start only if it was turned on.
-        self.session.settings.settings.sound = on;
-        if let Some(problem) = self.session.settings.save() {
-            self.report(problem);
-        }
+        self.remember(|r| r.sound = on);
     }
 
     /// Before the frame's steps: the ledger's count and the simulated time,
