@@ -565,6 +565,32 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
         s["ui"]["tooltips"] == 0
     });
     app.quit();
+
+    // Rough discs: the speeds and the energy's shares side by side, each
+    // plot under one line of names (wrapped onto two, they left the
+    // shares a strip 22 px high).
+    let rough = asset("preset-rough-gas.toml");
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
+    let app = Sandbox::start(&x, &[&args[..], &[rough.as_str(), "--paused"]].concat());
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "F4"]);
+    let s = app.wait_for("Speeds", 60, |s| s["ui"]["tab"] == "Speeds");
+    let area = content(&s);
+    for plot in ["speeds_plot", "shares_plot"] {
+        let frame = rect(&s["panel_widgets"][plot]);
+        assert!(
+            frame[3] >= 0.4 * area[3],
+            "{plot}: a frame {} px high in a tab {} px high",
+            frame[3],
+            area[3]
+        );
+    }
+    app.move_to([area[0] + 0.9 * area[2], area[1] + 12.0]);
+    app.wait_for("the names' meaning", 120, |s| {
+        s["ui"]["tooltips"].as_u64() > Some(0)
+    });
+    assert_eq!(app.wait_frames(2)["ui"]["tooltips"], 1);
+    app.quit();
 }
 
 /// At 1024×768 and text size 2 the Discs table is wider than the window:

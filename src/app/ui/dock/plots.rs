@@ -1,11 +1,12 @@
 //! What the dock's plots share: the series' colours (Okabe–Ito), a plot
 //! that holds still, a y range that shows a conserved total as a flat line,
-//! the speed histogram, an x axis that gives way in a short dock, and a
-//! series named in its colour.
+//! the speed histogram, axes that give way in a short dock, and series
+//! named in their colours on one line.
 
 use crate::app::lang::tr;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::plain;
+use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
 use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotPoints};
 
@@ -120,6 +121,15 @@ pub fn x_axis(plot: Plot<'static>, height: f32, name: String, unit: &'static str
         .x_axis_formatter(move |mark, _| format!("{} {unit}", tick(mark)))
 }
 
+/// The y axis's unit beside a plot with room for it; beside a shorter one
+/// (no name, see [`x_axis`]) on each number instead ("100 %").
+pub fn y_unit(plot: Plot<'static>, height: f32, unit: &'static str) -> Plot<'static> {
+    if height >= ROOMY_PLOT {
+        return plot.y_axis_label(unit);
+    }
+    plot.y_axis_formatter(move |mark, _| format!("{} {unit}", tick(mark)))
+}
+
 /// An axis's number, with as many decimals as its step needs and the
 /// language's decimal separator.
 fn tick(mark: egui_plot::GridMark) -> String {
@@ -127,9 +137,34 @@ fn tick(mark: egui_plot::GridMark) -> String {
     plain(mark.value, decimals)
 }
 
-/// A plot's series named in its colour, in the line above the plot.
-pub fn named(ui: &mut egui::Ui, name: &str, color: Color32) -> egui::Response {
-    ui.label(RichText::new(name).color(color).strong())
+/// A plot's series named in their colours on one line above it, after a
+/// plain `lead` word if given; cut with "…" where the column is narrow, and
+/// hovered, `more` (what the names mean). Names wrapped onto a second line
+/// took a projector's short plot down to a strip.
+pub fn names_line(
+    ui: &mut egui::Ui,
+    lead: Option<String>,
+    names: &[(String, Color32)],
+    more: String,
+) -> egui::Response {
+    let style = ui.style().clone();
+    let mut job = egui::text::LayoutJob::default();
+    let parts = lead.map(|lead| RichText::new(lead));
+    let names = names
+        .iter()
+        .map(|(name, color)| RichText::new(name).color(*color).strong());
+    for (k, part) in parts.into_iter().chain(names).enumerate() {
+        if k > 0 {
+            RichText::new("  ").append_to(
+                &mut job,
+                &style,
+                Default::default(),
+                egui::Align::Center,
+            );
+        }
+        part.append_to(&mut job, &style, Default::default(), egui::Align::Center);
+    }
+    one_line(ui, job, Some(more))
 }
 
 /// A plot that holds still: no scrolling, dragging or zooming, which in a

@@ -45,27 +45,28 @@ impl View for Speeds {
         let kt = with_unit(h.kt, 3, "J");
         ui.columns(2, |columns| {
             let ui = &mut columns[0];
-            ui.horizontal_wrapped(|ui| {
-                // Each name stays whole; a narrow column moves it down.
-                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                let meaning = tr!("speeds-rim-meaning", kt = kt.as_str());
-                named(ui, &format!("■ {}", tr!("speeds-name")), PX_COLOR).on_hover_text(&meaning);
-                named(ui, &format!("■ {}", tr!("rim-speeds")), RIM_COLOR)
-                    .on_hover_text(tr!("rim-speeds-hover", meaning = meaning.as_str()));
-            });
+            let meaning = tr!("speeds-rim-meaning", kt = kt.as_str());
+            let rim_meaning = tr!("rim-speeds-hover", meaning = meaning.as_str());
+            let names = [
+                (format!("■ {}", tr!("speeds-name")), PX_COLOR),
+                (format!("■ {}", tr!("rim-speeds")), RIM_COLOR),
+            ];
+            names_line(ui, None, &names, format!("{meaning}\n\n{rim_meaning}"));
             let height = ui.available_height();
             let r = speed_plot(ui, &h, Some(&rims), height, false);
             cx.note("speeds_plot", &r);
             let ui = &mut columns[1];
-            ui.horizontal_wrapped(|ui| {
-                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                ui.label(tr!("shares-energy"))
-                    .on_hover_text(tr!("shares-energy-hover"));
-                named(ui, &format!("— {}", tr!("shares-moving")), KE_COLOR);
-                named(ui, &format!("— {}", tr!("shares-turning")), ROT_COLOR);
-                named(ui, &format!("- - {}", tr!("shares-one-third")), ROT_COLOR)
-                    .on_hover_text(tr!("shares-one-third-hover"));
-            });
+            let names = [
+                (format!("— {}", tr!("shares-moving")), KE_COLOR),
+                (format!("— {}", tr!("shares-turning")), ROT_COLOR),
+                (format!("- - {}", tr!("shares-one-third")), ROT_COLOR),
+            ];
+            let more = format!(
+                "{}\n\n{}",
+                tr!("shares-energy-hover"),
+                tr!("shares-one-third-hover")
+            );
+            names_line(ui, Some(tr!("shares-energy")), &names, more);
             let height = ui.available_height();
             let moving: Vec<[f64; 2]> = samples
                 .iter()
@@ -75,9 +76,9 @@ impl View for Speeds {
                 .iter()
                 .map(|s| [s.time, 100.0 * s.rotation_share()])
                 .collect();
-            x_axis(still_plot("shares_plot"), height, tr!("axis-time"), "s")
+            let plot = x_axis(still_plot("shares_plot"), height, tr!("axis-time"), "s");
+            let r = y_unit(plot, height, "%")
                 .height(height)
-                .y_axis_label(if height >= ROOMY_PLOT { "%" } else { "" })
                 .include_y(0.0)
                 .include_y(100.0)
                 .label_formatter(|name, v| {
@@ -104,6 +105,7 @@ impl View for Speeds {
                             .width(2.5),
                     );
                 });
+            cx.note("shares_plot", &r.response);
         });
     }
 }
