@@ -149,7 +149,7 @@ pub fn names_line(
 ) -> egui::Response {
     let style = ui.style().clone();
     let mut job = egui::text::LayoutJob::default();
-    let parts = lead.map(|lead| RichText::new(lead));
+    let parts = lead.map(RichText::new);
     let names = names
         .iter()
         .map(|(name, color)| RichText::new(name).color(*color).strong());
