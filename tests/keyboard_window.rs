@@ -50,6 +50,10 @@ fn main() -> std::process::ExitCode {
             the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys,
         ),
         (
+            "tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first",
+            tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first,
+        ),
+        (
             "the_text_size_and_theme_chosen_are_kept_for_the_next_start",
             the_text_size_and_theme_chosen_are_kept_for_the_next_start,
         ),
@@ -483,6 +487,56 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
     }
     seen.dedup();
     assert_eq!(seen.len(), 4, "each Down a language: {seen:?}");
+    app.quit();
+}
+
+/// At 1024×768 and text size 2 the Discs table is wider than the window.
+/// Tab to a row's last field (v_y) shows the row's last columns too (|v|,
+/// |p| and the energy, which hold no control), and Tab on to the next row
+/// scrolls down to it and brings its first columns back.
+fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first() {
+    let x = Xvfb::start("discs table");
+    let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    let s = app.state();
+    app.click(widget(&s, "tab_discs", 0.5));
+    app.wait_for("the Discs tab", 60, |s| s["ui"]["tab"] == "Discs");
+    let width = 1024.0;
+    let cell = |s: &Value, name: &str| -> Option<[f64; 4]> {
+        let r = &s["panel_widgets"][name];
+        (0..4)
+            .map(|k| r[k].as_f64())
+            .collect::<Option<Vec<_>>>()
+            .map(|v| [v[0], v[1], v[2], v[3]])
+    };
+    // Inside the window's width and the tab's height.
+    let in_sight = |s: &Value, name: &str| {
+        let tab = tab_content(s);
+        let r = cell(s, name);
+        let inside = r.is_some_and(|r| {
+            r[0] >= -0.5
+                && r[0] + r[2] <= width + 0.5
+                && r[1] >= tab[1] - 0.5
+                && r[1] + r[3] <= tab[1] + tab[3] + 0.5
+        });
+        assert!(inside, "{name} {r:?} out of sight of the tab {tab:?}");
+    };
+    tab_to(&app, "discs_vy_0", 80);
+    let s = app.wait_frames(2);
+    in_sight(&s, "discs_vy_0");
+    // The energy's column starts with room for its numbers (its heading's
+    // cell runs on past the window).
+    let last = cell(&s, "discs_last_column");
+    assert!(
+        last.is_some_and(|r| r[0] <= width - 100.0),
+        "the energy's column: {last:?}"
+    );
+    // The next row, below the one row the tab has room for.
+    tab_to(&app, "discs_mass_1", 3);
+    let s = app.wait_frames(2);
+    in_sight(&s, "discs_mass_1");
     app.quit();
 }
 

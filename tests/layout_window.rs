@@ -574,7 +574,10 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
     let app = Sandbox::start(&x, &[&args[..], &[rough.as_str(), "--paused"]].concat());
     app.move_to([500.0, 200.0]);
     app.xdo(&["key", "F4"]);
-    let s = app.wait_for("Speeds", 60, |s| s["ui"]["tab"] == "Speeds");
+    let s = app.wait_for("the two plots", 60, |s| {
+        let noted = |name: &str| s["panel_widgets"][name].is_array();
+        s["ui"]["tab"] == "Speeds" && noted("speeds_plot") && noted("shares_plot")
+    });
     let area = content(&s);
     for plot in ["speeds_plot", "shares_plot"] {
         let frame = rect(&s["panel_widgets"][plot]);

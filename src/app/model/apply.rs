@@ -358,9 +358,9 @@ impl Sandbox {
             }
             NextScale => {
                 self.panels.set_scale(next_scale(self.panels.scale));
-                let scale = crate::app::numbers::field(f64::from(self.panels.scale));
-                self.toast(tr!("text-size", scale = scale));
                 let scale = self.panels.scale;
+                let shown = crate::app::numbers::field(f64::from(scale));
+                self.toast(tr!("text-size", scale = shown));
                 self.remember(|r| r.text_size = Some(scale));
             }
             SetTheme(t) => {

@@ -307,9 +307,15 @@ fn reveal_focus(ui: &egui::Ui, marks: &Marks, first: usize) {
 /// Scrolls the control that has just got the keyboard into sight; called
 /// inside its scroll area (a table's own, where [`scroll`] is not used).
 pub fn into_sight(r: &egui::Response) {
-    if r.gained_focus() || focus_is_new(&r.ctx) {
+    if just_focused(r) {
         r.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
     }
+}
+
+/// Whether the control has just got the keyboard: this frame, or between
+/// the frames (see [`note_focus`]).
+pub fn just_focused(r: &egui::Response) -> bool {
+    r.gained_focus() || (r.has_focus() && focus_is_new(&r.ctx))
 }
 
 /// The id under which [`note_focus`] keeps whether the keyboard moved.

@@ -6,7 +6,7 @@
 //! and the answer shows above the table, where it is seen without
 //! scrolling.
 
-use super::super::dialog::into_sight;
+use super::super::dialog::{into_sight, just_focused};
 use super::super::widgets::{select_all_on_focus, show_note};
 use super::super::{Cx, Stop, View};
 use crate::app::lang::tr;
@@ -55,6 +55,9 @@ fn spin_headings() -> [(String, String); 3] {
 const FIRST_COLUMN: f32 = 60.0;
 const WIDE_COLUMN: f32 = 90.0;
 const NARROW_COLUMN: f32 = 64.0;
+/// Up to this many discs every row of the table is laid out, each frame;
+/// a larger gas lays out only the rows in sight.
+const EVERY_ROW_UP_TO: usize = 100;
 
 /// Column headings, with units.
 fn headings() -> [String; 9] {
@@ -125,15 +128,26 @@ impl View for DiscsTable {
         // over the world when there were many discs.
         let sideways = across(column_width) > ui.available_width();
         let height = ui.available_height();
-        let two_rows = 2.0 * (row_height + ui.spacing().item_spacing.y);
+        let one_row = row_height + ui.spacing().item_spacing.y;
+        let two_rows = 2.0 * one_row;
+        // No taller than the tab leaves: a table that claimed two rows in a
+        // projector's tab, which has room for one, put the second out of
+        // sight below the tab, where Tab went without scrolling to it.
+        let rows_height = (height - header_height).max(one_row);
+        // What the keyboard has just reached, to be shown sideways: the
+        // table's own rows scroll take every scroll request made inside
+        // them, so the sideways one is made after the table. From a row's
+        // last field (v_y) to its last column: |v|, |p| and the energy
+        // hold no control Tab could reach.
+        let mut reveal: Option<egui::Rect> = None;
         egui::ScrollArea::horizontal()
             .id_salt("discs_table_scroll")
             .enable_scrolling(sideways)
             .show(ui, |ui| {
                 TableBuilder::new(ui)
                     .id_salt("discs_table")
-                    .min_scrolled_height(two_rows)
-                    .max_scroll_height((height - header_height).max(two_rows))
+                    .min_scrolled_height(two_rows.min(rows_height))
+                    .max_scroll_height(rows_height)
                     .striped(true)
                     .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
                     .column(Column::auto().at_least(FIRST_COLUMN))
@@ -163,8 +177,8 @@ impl View for DiscsTable {
                             }
                         }
                     })
-                    .body(|body| {
-                        body.rows(row_height, particles.len(), |mut row| {
+                    .body(|mut body| {
+                        let add_row = |mut row: egui_extras::TableRow| {
                             let i = row.index();
                             let p = &particles[i];
                             row.set_selected(selected == Some(i));
@@ -181,6 +195,9 @@ impl View for DiscsTable {
                                 );
                                 let r = ui.selectable_label(selected == Some(i), format!("{i}"));
                                 stops.push(Stop::control(&r));
+                                if just_focused(&r) {
+                                    reveal = Some(r.rect);
+                                }
                                 if r.clicked() {
                                     select = Some(i);
                                 }
@@ -195,6 +212,8 @@ impl View for DiscsTable {
                                 p.momentum().length(),
                                 p.kinetic_energy(),
                             ];
+                            let mut to_end = false;
+                            let mut last = egui::Rect::NOTHING;
                             for (column, value) in values.into_iter().enumerate() {
                                 // Editable: mass (column 0), v_x (3), v_y (4).
                                 let field_index = match column {
@@ -203,7 +222,7 @@ impl View for DiscsTable {
                                     4 => Some(3),
                                     _ => None,
                                 };
-                                row.col(|ui| match field_index {
+                                (last, _) = row.col(|ui| match field_index {
                                     None => {
                                         ui.label(plain(value, 3));
                                     }
@@ -226,6 +245,10 @@ impl View for DiscsTable {
                                         cells.push((format!("{name}_{i}"), r.rect, r.has_focus()));
                                         stops.push(Stop::control(&r));
                                         into_sight(&r);
+                                        if just_focused(&r) {
+                                            reveal = Some(r.rect);
+                                            to_end = f == 3;
+                                        }
                                         if r.changed() && !mine {
                                             start = Some(CellEdit {
                                                 disc: i,
@@ -249,13 +272,31 @@ impl View for DiscsTable {
                             }
                             if spin {
                                 for value in [p.spin, p.rotational_energy(), p.angular_momentum()] {
-                                    row.col(|ui| {
+                                    (last, _) = row.col(|ui| {
                                         ui.label(plain(value, 3));
                                     });
                                 }
                             }
-                        });
+                            if to_end {
+                                reveal = reveal.map(|r| r.union(last));
+                            }
+                        };
+                        // A class's scene: every row laid out, so that Tab
+                        // reaches each (egui lays out only the rows in
+                        // sight of a long table, and Tab skips the rest).
+                        if particles.len() <= EVERY_ROW_UP_TO {
+                            let mut add_row = add_row;
+                            for _ in 0..particles.len() {
+                                body.row(row_height, &mut add_row);
+                            }
+                        } else {
+                            body.rows(row_height, particles.len(), add_row);
+                        }
                     });
+                if let Some(rect) = reveal {
+                    let none = egui::style::ScrollAnimation::none();
+                    ui.scroll_to_rect_animation(rect, None, none);
+                }
             });
         cx.marks.text_focus |= focused;
         cx.marks.stops.extend(stops);
