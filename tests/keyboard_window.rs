@@ -493,7 +493,8 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
 /// At 1024×768 and text size 2 the Discs table is wider than the window.
 /// Tab to a row's last field (v_y) shows the row's last columns too (|v|,
 /// |p| and the energy, which hold no control), and Tab on to the next row
-/// scrolls down to it and brings its first columns back.
+/// scrolls down to it and brings its first columns back. Ctrl+A, Ctrl+C
+/// and Ctrl+S there type nothing.
 fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first() {
     let x = Xvfb::start("discs table");
     let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
@@ -537,6 +538,21 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
     tab_to(&app, "discs_mass_1", 3);
     let s = app.wait_frames(2);
     in_sight(&s, "discs_mass_1");
+    // Keys with Ctrl in a field type nothing (each had typed its letter
+    // over the selected number), and Enter leaves the mass as it was.
+    let mass = |s: &Value| s["particles"][1]["mass"].as_f64().unwrap();
+    let before = mass(&s);
+    for key in ["ctrl+a", "ctrl+c", "ctrl+s", "Return"] {
+        app.xdo(&["key", key]);
+        app.wait_frames(2);
+    }
+    let s = app.wait_frames(3);
+    assert_eq!(
+        s["ui"]["table_note"],
+        Value::Null,
+        "the field took a letter"
+    );
+    assert_eq!(mass(&s), before);
     app.quit();
 }
 

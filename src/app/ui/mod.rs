@@ -29,6 +29,7 @@ mod side;
 mod start;
 mod strip;
 mod top_bar;
+mod typing;
 pub mod widgets;
 
 use crate::app::layout::{self, Docks, Rects, SideDock};
@@ -280,6 +281,7 @@ impl Panels {
             self.applied = Some((p.scale, p.theme));
         }
         let ppp = px_per_point(ctx);
+        typing::drop_characters_typed_with_ctrl(ctx);
         dialog::note_focus(ctx, &mut self.trail.seen);
         let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {

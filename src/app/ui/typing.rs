@@ -1,0 +1,113 @@
+//! Typing into a field, mended where egui-macroquad gets it wrong. On X11,
+//! miniquad reports a key's character before the key itself, and
+//! egui-macroquad passes the character on with the modifiers of the key
+//! before: Ctrl+S typed "s" over a field's selected text, Ctrl+C replaced
+//! it with "c" before copying, Ctrl+V put a "v" before what it pasted. A
+//! character that comes just before a key pressed with Ctrl (or Cmd), or
+//! before a cut, copy or paste, is dropped. AltGr, which some keyboards
+//! send as Ctrl+Alt, keeps its characters.
+
+use egui::{Event, Modifiers};
+
+/// Drops from this frame's input the characters typed with Ctrl.
+pub fn drop_characters_typed_with_ctrl(ctx: &egui::Context) {
+    ctx.input_mut(|i| {
+        let held = i.modifiers;
+        mend(&mut i.events, held);
+    });
+}
+
+/// Whether `m` is Ctrl or Cmd without Alt (AltGr).
+fn commanding(m: Modifiers) -> bool {
+    (m.ctrl || m.command || m.mac_cmd) && !m.alt
+}
+
+/// Removes each one-character text event that is the character of the
+/// event after it, when that is a key pressed with Ctrl, a cut or a copy,
+/// or (with Ctrl held now) a paste's text.
+fn mend(events: &mut Vec<Event>, held: Modifiers) {
+    let stray = |k: usize| -> bool {
+        let Some(Event::Text(t)) = events.get(k) else {
+            return false;
+        };
+        if t.chars().count() != 1 {
+            return false;
+        }
+        match events.get(k + 1) {
+            Some(Event::Key {
+                pressed: true,
+                modifiers,
+                ..
+            }) => commanding(*modifiers),
+            Some(Event::Cut | Event::Copy) => true,
+            Some(Event::Text(_)) => commanding(held),
+            _ => false,
+        }
+    };
+    let drop: Vec<bool> = (0..events.len()).map(stray).collect();
+    let mut k = 0;
+    events.retain(|_| {
+        k += 1;
+        !drop[k - 1]
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::Key;
+
+    fn key(key: Key, modifiers: Modifiers) -> Event {
+        Event::Key {
+            key,
+            physical_key: None,
+            pressed: true,
+            repeat: false,
+            modifiers,
+        }
+    }
+
+    fn text(t: &str) -> Event {
+        Event::Text(t.to_string())
+    }
+
+    #[test]
+    fn a_character_typed_with_ctrl_is_dropped_and_typing_is_kept() {
+        let ctrl = Modifiers::CTRL;
+        let none = Modifiers::NONE;
+        let alt_gr = Modifiers::CTRL | Modifiers::ALT;
+        // Ctrl+S, Ctrl+C (a copy), Ctrl+V (the paste's text), Ctrl+A.
+        let mut events = vec![
+            text("s"),
+            key(Key::S, ctrl),
+            text("c"),
+            Event::Copy,
+            text("v"),
+            text("2.5"),
+            text("a"),
+            key(Key::A, ctrl),
+        ];
+        mend(&mut events, ctrl);
+        assert_eq!(
+            events,
+            vec![
+                key(Key::S, ctrl),
+                Event::Copy,
+                text("2.5"),
+                key(Key::A, ctrl)
+            ]
+        );
+        // Plain typing, and AltGr's characters, stay.
+        let typed = vec![
+            text("1"),
+            key(Key::Num1, none),
+            text("@"),
+            key(Key::Q, alt_gr),
+            text("é"),
+            text("x"),
+        ];
+        let mut events = typed.clone();
+        mend(&mut events, none);
+        assert_eq!(events, typed);
+    }
+}
