@@ -176,6 +176,8 @@ pub fn still_plot(id: &str) -> Plot<'static> {
     Plot::new(id)
         .x_axis_formatter(axis)
         .y_axis_formatter(axis)
+        .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
+        .y_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
         // Never taller than the dock leaves it (egui_plot's least is 64
         // points, which grew a short dock over the world).
         .min_size(egui::vec2(40.0, 16.0))
@@ -184,6 +186,15 @@ pub fn still_plot(id: &str) -> Plot<'static> {
         .allow_zoom(false)
         .allow_boxed_zoom(false)
         .sense(egui::Sense::hover())
+}
+
+/// The grid's steps: the smallest power of ten the plot has room for, and
+/// five and ten of it. egui_plot's own steps go up by tens, so that a plot
+/// of 0 to 9 s, too narrow to number every second, numbered only 0 s.
+fn steps_of_one_five_ten(input: egui_plot::GridInput) -> [f64; 3] {
+    let least = input.base_step_size.abs().max(f64::MIN_POSITIVE);
+    let unit = 10f64.powf(least.log10().ceil());
+    [unit, 5.0 * unit, 10.0 * unit]
 }
 
 /// A y range that shows a conserved total as a flat line, not its rounding
@@ -202,7 +213,23 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::padded_range;
+    use super::{padded_range, steps_of_one_five_ten};
+    use egui_plot::GridInput;
+
+    #[test]
+    fn the_grid_steps_are_a_power_of_ten_then_five_and_ten_of_it() {
+        let steps = |base_step_size| {
+            steps_of_one_five_ten(GridInput {
+                bounds: (0.0, 10.0),
+                base_step_size,
+            })
+        };
+        assert_eq!(steps(0.3), [1.0, 5.0, 10.0]);
+        assert_eq!(steps(1.0), [1.0, 5.0, 10.0]);
+        assert_eq!(steps(1.5), [10.0, 50.0, 100.0]);
+        let tiny = steps(0.0);
+        assert!(tiny.iter().all(|s| s.is_finite() && *s > 0.0), "{tiny:?}");
+    }
 
     #[test]
     fn a_conserved_total_gets_a_range_wider_than_its_noise() {
