@@ -188,6 +188,13 @@ pub fn still_plot(id: &str) -> Plot<'static> {
         .sense(egui::Sense::hover())
 }
 
+/// A plot against time that starts where its samples start and spans a
+/// second at least: with one sample, egui_plot centred it on a time axis from
+/// −10 to 10 s.
+pub fn from_start(plot: Plot<'static>, start: f64) -> Plot<'static> {
+    plot.include_x(start).include_x(start + 1.0)
+}
+
 /// The grid's steps: the smallest power of ten the plot has room for, and
 /// five and ten of it. egui_plot's own steps go up by tens, so that a plot
 /// of 0 to 9 s, too narrow to number every second, numbered only 0 s.

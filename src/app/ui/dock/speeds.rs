@@ -76,7 +76,9 @@ impl View for Speeds {
                 .iter()
                 .map(|s| [s.time, 100.0 * s.rotation_share()])
                 .collect();
-            let plot = x_axis(still_plot("shares_plot"), height, tr!("axis-time"), "s");
+            let start = samples.first().map_or(model.world.time, |s| s.time);
+            let plot = from_start(still_plot("shares_plot"), start);
+            let plot = x_axis(plot, height, tr!("axis-time"), "s");
             let r = y_unit(plot, height, "%")
                 .height(height)
                 .include_y(0.0)

@@ -83,6 +83,7 @@ impl View for Totals {
             }
         });
         let height = ui.available_height();
+        let start = samples.first().map_or(model.world.time, |s| s.time);
         let legend = |corner| (!compact).then(|| Legend::default().position(corner));
         let series = |value: fn(&crate::app::model::totals::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
@@ -100,7 +101,7 @@ impl View for Totals {
         ];
         ui.columns(3, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
-            let plot = still_plot("momentum_plot").height(height);
+            let plot = from_start(still_plot("momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
@@ -140,7 +141,7 @@ impl View for Totals {
                     );
                 });
             let (lo, hi) = padded_range(l.iter().map(|p| p[1]));
-            let plot = still_plot("angular_momentum_plot").height(height);
+            let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
@@ -162,7 +163,7 @@ impl View for Totals {
                 });
             let shown = &energy_series[..energies.len()];
             let (lo, hi) = padded_range(shown.iter().flatten().map(|p| p[1]));
-            let plot = still_plot("energy_plot").height(height);
+            let plot = from_start(still_plot("energy_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
