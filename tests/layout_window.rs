@@ -594,6 +594,22 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
     });
     assert_eq!(app.wait_frames(2)["ui"]["tooltips"], 1);
     app.quit();
+
+    // In words (in French, whose tab row has room for the tab's name): the
+    // line said at the impact is whole inside the tab (the explanation
+    // above it, on three lines, had left it one).
+    let app = projector_at_impact(&x, "fr");
+    let s = app.state();
+    app.click(widget(&s, "tab_words", 0.5));
+    let s = app.wait_for("the newest line", 60, |s| {
+        s["panel_widgets"]["words_newest"].is_array()
+    });
+    let (area, said) = (content(&s), rect(&s["panel_widgets"]["words_newest"]));
+    assert!(
+        said[1] >= area[1] - 0.5 && said[1] + said[3] <= area[1] + area[3] + 0.5,
+        "the line said {said:?} inside the tab {area:?}"
+    );
+    app.quit();
 }
 
 /// At 1024×768 and text size 2 the Discs table is wider than the window:

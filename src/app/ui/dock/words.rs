@@ -3,7 +3,7 @@
 //! (the page's live region), here for anyone who wants it in words.
 
 use super::super::dialog::scroll;
-use super::super::widgets::command_button;
+use super::super::widgets::{command_button, one_line};
 use super::{Cx, View};
 use crate::app::lang::tr;
 use crate::app::model::Command;
@@ -14,18 +14,21 @@ pub struct Words;
 impl View for Words {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
-        ui.horizontal_wrapped(|ui| {
+        // One line, so that a projector's short tab keeps its room for the
+        // lines said (the explanation on three lines left one); the whole
+        // explanation on hover where it is cut.
+        ui.horizontal(|ui| {
             command_button(ui, cx, Command::Describe, Some("describe"));
-            ui.label(tr!("words-line"));
+            one_line(ui, tr!("words-line"), None);
         });
         let area = egui::ScrollArea::vertical().auto_shrink([false, true]);
-        scroll(ui, cx, area, "words", |ui, _| {
+        scroll(ui, cx, area, "words", |ui, cx| {
             let said = &model.messages.narration.said;
             if said.is_empty() {
                 ui.label(tr!("words-none"));
             }
-            for (t, line) in said.iter().rev() {
-                ui.horizontal_wrapped(|ui| {
+            for (k, (t, line)) in said.iter().rev().enumerate() {
+                let r = ui.horizontal_wrapped(|ui| {
                     // The simulation's t, as everywhere in the window.
                     ui.weak(format!(
                         "t = {}",
@@ -33,6 +36,9 @@ impl View for Words {
                     ));
                     ui.add(egui::Label::new(line).wrap());
                 });
+                if k == 0 {
+                    cx.note("words_newest", &r.response);
+                }
             }
         });
     }
