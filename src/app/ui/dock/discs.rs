@@ -135,8 +135,9 @@ impl View for DiscsTable {
         // sight below the tab, where Tab went without scrolling to it.
         let rows_height = (height - header_height).max(one_row);
         // What the keyboard has just reached, to be shown sideways: the
-        // table's own rows scroll take every scroll request made inside
-        // them, so the sideways one is made after the table. From a row's
+        // rows scroll in an area of their own, which takes every scroll
+        // request made inside it, so the sideways one is made after the
+        // table. From a row's
         // last field (v_y) to its last column: |v|, |p| and the energy
         // hold no control Tab could reach.
         let mut reveal: Option<egui::Rect> = None;
@@ -178,7 +179,7 @@ impl View for DiscsTable {
                         }
                     })
                     .body(|mut body| {
-                        let add_row = |mut row: egui_extras::TableRow| {
+                        let mut add_row = |mut row: egui_extras::TableRow| {
                             let i = row.index();
                             let p = &particles[i];
                             row.set_selected(selected == Some(i));
@@ -285,7 +286,6 @@ impl View for DiscsTable {
                         // reaches each (egui lays out only the rows in
                         // sight of a long table, and Tab skips the rest).
                         if particles.len() <= EVERY_ROW_UP_TO {
-                            let mut add_row = add_row;
                             for _ in 0..particles.len() {
                                 body.row(row_height, &mut add_row);
                             }
