@@ -239,17 +239,18 @@ mod tests {
         assert!(command_for(Key::Left, false, false, Trigger::Hold).is_some());
     }
 
-    /// The README's key table is this table: `UPDATE_README=1 cargo test`
-    /// writes it there.
+    /// The key table of the user's documents (`docs/keys.md`, which the
+    /// README links) is this table: `UPDATE_README=1 cargo test` writes it
+    /// there.
     #[test]
-    fn the_readme_key_table_is_the_bindings_table() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+    fn the_documented_key_table_is_the_bindings_table() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/keys.md");
         let readme = std::fs::read_to_string(path).unwrap();
         let (start, end) = ("<!-- keys: start -->\n", "<!-- keys: end -->");
-        let a = readme.find(start).expect("the README marks its key table") + start.len();
+        let a = readme.find(start).expect("docs/keys.md marks its key table") + start.len();
         let b = readme
             .find(end)
-            .expect("the README marks its key table's end");
+            .expect("docs/keys.md marks its key table's end");
         let wanted = markdown_table();
         if readme[a..b] != wanted && std::env::var_os("UPDATE_README").is_some() {
             let updated = format!("{}{wanted}{}", &readme[..a], &readme[b..]);
@@ -259,7 +260,7 @@ mod tests {
         assert_eq!(
             readme[a..b],
             wanted,
-            "the README's key table differs from the bindings: UPDATE_README=1 cargo test writes it"
+            "docs/keys.md's key table differs from the bindings: UPDATE_README=1 cargo test writes it"
         );
     }
 
