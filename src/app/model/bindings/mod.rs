@@ -245,20 +245,20 @@ mod tests {
     #[test]
     fn the_documented_key_table_is_the_bindings_table() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/keys.md");
-        let readme = std::fs::read_to_string(path).unwrap();
+        let doc = std::fs::read_to_string(path).unwrap();
         let (start, end) = ("<!-- keys: start -->\n", "<!-- keys: end -->");
-        let a = readme.find(start).expect("docs/keys.md marks its key table") + start.len();
-        let b = readme
+        let a = doc.find(start).expect("docs/keys.md marks its key table") + start.len();
+        let b = doc
             .find(end)
             .expect("docs/keys.md marks its key table's end");
         let wanted = markdown_table();
-        if readme[a..b] != wanted && std::env::var_os("UPDATE_README").is_some() {
-            let updated = format!("{}{wanted}{}", &readme[..a], &readme[b..]);
+        if doc[a..b] != wanted && std::env::var_os("UPDATE_README").is_some() {
+            let updated = format!("{}{wanted}{}", &doc[..a], &doc[b..]);
             std::fs::write(path, updated).unwrap();
             return;
         }
         assert_eq!(
-            readme[a..b],
+            doc[a..b],
             wanted,
             "docs/keys.md's key table differs from the bindings: UPDATE_README=1 cargo test writes it"
         );
