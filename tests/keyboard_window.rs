@@ -493,11 +493,22 @@ fn a_drop_down_steps_through_its_choices_with_the_arrows() {
 /// At 1024×768 and text size 2 the Discs table is wider than the window.
 /// Tab to a row's last field (v_y) shows the row's last columns too (|v|,
 /// |p| and the energy, which hold no control), and Tab on to the next row
-/// scrolls down to it and brings its first columns back. Ctrl+A, Ctrl+C
-/// and Ctrl+S there type nothing.
+/// scrolls down to it and brings its first columns back. Ctrl+A and Ctrl+C
+/// there type nothing; a mass typed and Ctrl+S is applied and saved.
 fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first() {
     let x = Xvfb::start("discs table");
-    let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
+    let out = tempfile::tempdir().unwrap();
+    let out_dir = out.path().to_str().unwrap();
+    let args = [
+        "--paused",
+        "--size",
+        "1024x768",
+        "--ui-scale",
+        "2",
+        "--out",
+        out_dir,
+    ];
+    let app = Sandbox::start(&x, &args);
     app.move_to([500.0, 200.0]);
     app.xdo(&["key", "4"]);
     app.wait_frames(3);
@@ -542,7 +553,7 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
     // over the selected number), and Enter leaves the mass as it was.
     let mass = |s: &Value| s["particles"][1]["mass"].as_f64().unwrap();
     let before = mass(&s);
-    for key in ["ctrl+a", "ctrl+c", "ctrl+s", "Return"] {
+    for key in ["ctrl+a", "ctrl+c", "Return"] {
         app.xdo(&["key", key]);
         app.wait_frames(2);
     }
@@ -553,6 +564,23 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
         "the field took a letter"
     );
     assert_eq!(mass(&s), before);
+    // A mass typed and Ctrl+S: applied, as Enter does, then saved with it.
+    tab_to(&app, "discs_mass_1", 30);
+    app.xdo(&["type", "2"]);
+    app.wait_frames(2);
+    app.xdo(&["key", "ctrl+s"]);
+    app.wait_for("the mass applied", 60, |s| mass(s) == 2.0);
+    let saved: Vec<_> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    assert_eq!(saved.len(), 1, "one scene saved: {saved:?}");
+    let scene = impulse::Scene::load(&saved[0])
+        .unwrap()
+        .build("saved")
+        .unwrap();
+    assert_eq!(scene.particles[1].mass, 2.0, "the file has the mass typed");
     app.quit();
 }
 
@@ -564,7 +592,8 @@ fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
     let state = tempfile::tempdir().unwrap();
     let chosen = |s: &Value| {
         let ui = &s["ui"];
-        (ui["text_size"].as_f64().unwrap(), ui["theme"].to_string())
+        let size = s["layout"]["ui_scale"].as_f64().unwrap();
+        (size, ui["theme"].to_string())
     };
     let first = Sandbox::start_with_state(&x, &["--paused"], state.path());
     assert_eq!(chosen(&first.state()), (1.0, "\"dark\"".into()));

@@ -170,8 +170,6 @@ pub struct UiDump {
     /// The start screen's tiles.
     pub start_open: bool,
     pub theme: String,
-    /// The size of text and controls (1 to 2.5; F2, View, `--ui-scale`).
-    pub text_size: f32,
     #[serde(flatten)]
     pub keys: KeysDump,
     /// The window's language ("en", "pt-BR", "qps").
@@ -340,7 +338,6 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 presets_open: m.panels.presets_open,
                 start_open: m.panels.start_open,
                 theme: m.panels.theme.name().to_string(),
-                text_size: m.panels.scale,
                 keys: KeysDump {
                     typing: panels.typing,
                     panel_keyboard: panels.panel_keyboard,

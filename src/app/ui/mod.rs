@@ -282,6 +282,7 @@ impl Panels {
         }
         let ppp = px_per_point(ctx);
         typing::drop_characters_typed_with_ctrl(ctx);
+        let saving = typing::enter_before_saving(ctx);
         dialog::note_focus(ctx, &mut self.trail.seen);
         let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {
@@ -374,6 +375,10 @@ impl Panels {
         // it docked again is closed, not kept for later.
         if p.drawer_open && !matches!(rects.side_dock, SideDock::Drawer { .. }) {
             out.push(Command::CloseDrawer);
+        }
+        // Ctrl+S in a field: saved after what the field applied.
+        if saving {
+            out.push(Command::Save);
         }
         let world = ctx.available_rect();
         let over_area = ctx.is_pointer_over_area() || ctx.is_using_pointer();

@@ -6,8 +6,53 @@
 //! character that comes just before a key pressed with Ctrl (or Cmd), or
 //! before a cut, copy or paste, is dropped. AltGr, which some keyboards
 //! send as Ctrl+Alt, keeps its characters.
+//!
+//! And Ctrl+S in a field applies what was typed, as Enter does, before the
+//! window's binding saves: a number typed and saved is in the file.
 
-use egui::{Event, Modifiers};
+use egui::{Event, Id, Key, Modifiers};
+
+/// Where a field whose Enter does something else than apply a value (the
+/// scene file's path: Enter opens it) leaves its id, so that Ctrl+S there
+/// is no Enter.
+pub const NO_ENTER_ON_SAVE: &str = "typing_no_enter_on_save";
+
+/// Ctrl+S while a field has the keyboard: an Enter for the field first.
+/// Whether the window is to save after this frame's views (the keys that
+/// leave a field belong to it, so the window's own binding rests).
+pub fn enter_before_saving(ctx: &egui::Context) -> bool {
+    let Some(focused) = ctx.memory(|m| m.focused()) else {
+        return false;
+    };
+    let other = ctx.data(|d| d.get_temp::<Id>(Id::new(NO_ENTER_ON_SAVE)));
+    if !ctx.wants_keyboard_input() || other == Some(focused) {
+        return false;
+    }
+    ctx.input_mut(|i| enter_after_save(&mut i.events))
+}
+
+/// Puts an Enter after each Ctrl+S (without Shift) in `events`; whether
+/// there was one.
+fn enter_after_save(events: &mut Vec<Event>) -> bool {
+    let saves: Vec<usize> = (0..events.len())
+        .filter(|&k| {
+            matches!(events[k], Event::Key { key: Key::S, pressed: true, modifiers, .. }
+                if commanding(modifiers) && !modifiers.shift)
+        })
+        .collect();
+    let any = !saves.is_empty();
+    for k in saves.into_iter().rev() {
+        let enter = Event::Key {
+            key: Key::Enter,
+            physical_key: None,
+            pressed: true,
+            repeat: false,
+            modifiers: Modifiers::NONE,
+        };
+        events.insert(k + 1, enter);
+    }
+    any
+}
 
 /// Drops from this frame's input the characters typed with Ctrl.
 pub fn drop_characters_typed_with_ctrl(ctx: &egui::Context) {
@@ -55,7 +100,6 @@ fn mend(events: &mut Vec<Event>, held: Modifiers) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use egui::Key;
 
     fn key(key: Key, modifiers: Modifiers) -> Event {
         Event::Key {
@@ -69,6 +113,29 @@ mod tests {
 
     fn text(t: &str) -> Event {
         Event::Text(t.to_string())
+    }
+
+    #[test]
+    fn ctrl_s_is_followed_by_an_enter_for_the_field() {
+        let mut events = vec![text("2"), key(Key::S, Modifiers::CTRL), text("x")];
+        assert!(enter_after_save(&mut events));
+        assert_eq!(
+            events,
+            vec![
+                text("2"),
+                key(Key::S, Modifiers::CTRL),
+                key(Key::Enter, Modifiers::NONE),
+                text("x")
+            ]
+        );
+        // Plain S, and Ctrl+Shift+S, are no save.
+        let mut events = vec![
+            key(Key::S, Modifiers::NONE),
+            key(Key::S, Modifiers::CTRL | Modifiers::SHIFT),
+        ];
+        let before = events.clone();
+        assert!(!enter_after_save(&mut events));
+        assert_eq!(events, before);
     }
 
     #[test]

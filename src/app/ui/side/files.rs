@@ -46,6 +46,9 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         );
         cx.note("scene_path", &r);
         cx.marks.text_field(&r);
+        // Enter here opens the file: Ctrl+S is no Enter.
+        let no_enter = egui::Id::new(super::super::typing::NO_ENTER_ON_SAVE);
+        ui.ctx().data_mut(|d| d.insert_temp(no_enter, r.id));
         enter = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
     }
     ui.horizontal_wrapped(|ui| {
