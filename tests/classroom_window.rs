@@ -63,11 +63,7 @@ fn number_keys_open_presets_and_ctrl_s_saves_a_scene_that_reopens_exactly() {
     let after_save = app.wait_frames(3);
     assert_eq!(after_save["paused"], true);
     assert_eq!(after_save["steps"], paused["steps"], "no step while paused");
-    let saved: Vec<PathBuf> = std::fs::read_dir(out.path())
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
+    let saved = saved_scenes(out.path());
     assert_eq!(saved.len(), 1, "one scene saved in {out_dir}: {saved:?}");
     let reloaded = Scene::load(&saved[0]).unwrap().build("saved").unwrap();
     assert_eq!(

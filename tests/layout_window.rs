@@ -617,14 +617,8 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
 /// column, the kinetic energy, which had been cut off out of reach.
 fn at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column() {
     let x = Xvfb::start("discs");
-    let args = ["--size", "1024x768", "--ui-scale", "2"];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 200.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
+    let app = projector_discs_tab(&x, &[]);
     let s = app.state();
-    app.click(widget(&s, "tab_discs", 0.5));
-    let s = app.wait_for("the Discs tab", 60, |s| s["ui"]["tab"] == "Discs");
     // Where the last column starts (out of sight: nowhere, or past the
     // window's edge less the 100 px it needs).
     let start = |s: &Value| {

@@ -447,3 +447,44 @@ pub fn projector_at_impact(x: &Xvfb, lang: &str) -> Sandbox {
     app.wait_for("the collision", 60, |s| s["ui"]["tab"] == "Collisions");
     app
 }
+
+pub fn focus(s: &Value) -> Option<String> {
+    s["ui"]["focus"].as_str().map(str::to_string)
+}
+
+/// Presses Tab until `name` has the keys (at most `most` times).
+pub fn tab_to(app: &Sandbox, name: &str, most: usize) -> Value {
+    let mut seen = Vec::new();
+    for _ in 0..most {
+        app.xdo(&["key", "Tab"]);
+        let s = app.wait_frames(3);
+        if focus(&s).as_deref() == Some(name) {
+            return s;
+        }
+        seen.push(focus(&s));
+    }
+    panic!("Tab never reached {name}: {seen:?}");
+}
+
+/// The glancing preset at 1024×768 and text size 2 (with `more` on the
+/// command line), its Discs tab open: a table wider than the window.
+pub fn projector_discs_tab(x: &Xvfb, more: &[&str]) -> Sandbox {
+    let args = [&["--size", "1024x768", "--ui-scale", "2"][..], more].concat();
+    let app = Sandbox::start(x, &args);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    let s = app.state();
+    app.click(widget(&s, "tab_discs", 0.5));
+    app.wait_for("the Discs tab", 60, |s| s["ui"]["tab"] == "Discs");
+    app
+}
+
+/// The scene files saved in `dir`.
+pub fn saved_scenes(dir: &Path) -> Vec<PathBuf> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect()
+}

@@ -1,0 +1,142 @@
+//! Fields typed into and settings kept, under Xvfb with xdotool: the
+//! Discs table at a projector's size follows Tab to each field and the
+//! rest of its row; Ctrl with a letter types nothing there, and Ctrl+S
+//! applies what was typed and saves it; the text size and theme chosen are
+//! where the next start opens.
+
+#[path = "window_harness/mod.rs"]
+mod harness;
+
+use harness::*;
+use serde_json::Value;
+
+fn main() -> std::process::ExitCode {
+    harness::run(vec![
+        (
+            "tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first",
+            tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first,
+        ),
+        (
+            "the_text_size_and_theme_chosen_are_kept_for_the_next_start",
+            the_text_size_and_theme_chosen_are_kept_for_the_next_start,
+        ),
+    ])
+}
+
+/// At 1024×768 and text size 2 the Discs table is wider than the window.
+/// Tab to a row's last field (v_y) shows the row's last columns too (|v|,
+/// |p| and the energy, which hold no control), and Tab on to the next row
+/// scrolls down to it and brings its first columns back. Ctrl+A and Ctrl+C
+/// there type nothing; a mass typed and Ctrl+S is applied and saved.
+fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first() {
+    let x = Xvfb::start("discs table");
+    let out = tempfile::tempdir().unwrap();
+    let out_dir = out.path().to_str().unwrap();
+    let app = projector_discs_tab(&x, &["--paused", "--out", out_dir]);
+    let width = 1024.0;
+    let cell = |s: &Value, name: &str| -> Option<[f64; 4]> {
+        let r = &s["panel_widgets"][name];
+        (0..4)
+            .map(|k| r[k].as_f64())
+            .collect::<Option<Vec<_>>>()
+            .map(|v| [v[0], v[1], v[2], v[3]])
+    };
+    // Inside the window's width and the tab's height.
+    let in_sight = |s: &Value, name: &str| {
+        let tab = tab_content(s);
+        let r = cell(s, name);
+        let inside = r.is_some_and(|r| {
+            r[0] >= -0.5
+                && r[0] + r[2] <= width + 0.5
+                && r[1] >= tab[1] - 0.5
+                && r[1] + r[3] <= tab[1] + tab[3] + 0.5
+        });
+        assert!(inside, "{name} {r:?} out of sight of the tab {tab:?}");
+    };
+    tab_to(&app, "discs_vy_0", 80);
+    let s = app.wait_frames(2);
+    in_sight(&s, "discs_vy_0");
+    // The energy's column starts with room for its numbers (its heading's
+    // cell runs on past the window).
+    let last = cell(&s, "discs_last_column");
+    assert!(
+        last.is_some_and(|r| r[0] <= width - 100.0),
+        "the energy's column: {last:?}"
+    );
+    // The next row, below the one row the tab has room for.
+    tab_to(&app, "discs_mass_1", 3);
+    let s = app.wait_frames(2);
+    in_sight(&s, "discs_mass_1");
+    // Keys with Ctrl in a field type nothing (each had typed its letter
+    // over the selected number), and Enter leaves the mass as it was.
+    let mass = |s: &Value| s["particles"][1]["mass"].as_f64().unwrap();
+    let before = mass(&s);
+    for key in ["ctrl+a", "ctrl+c", "Return"] {
+        app.xdo(&["key", key]);
+        app.wait_frames(2);
+    }
+    let s = app.wait_frames(3);
+    assert_eq!(
+        s["ui"]["table_note"],
+        Value::Null,
+        "the field took a letter"
+    );
+    assert_eq!(mass(&s), before);
+    // A mass typed and Ctrl+S: applied, as Enter does, then saved with it.
+    tab_to(&app, "discs_mass_1", 30);
+    app.xdo(&["type", "2"]);
+    app.wait_frames(2);
+    app.xdo(&["key", "ctrl+s"]);
+    app.wait_for("the mass applied", 60, |s| mass(s) == 2.0);
+    let saved = saved_scenes(out.path());
+    assert_eq!(saved.len(), 1, "one scene saved: {saved:?}");
+    let scene = impulse::Scene::load(&saved[0])
+        .unwrap()
+        .build("saved")
+        .unwrap();
+    assert_eq!(scene.particles[1].mass, 2.0, "the file has the mass typed");
+    app.quit();
+}
+
+/// A teacher sets the projector's text size and the light theme once: the
+/// next start opens with them, `--ui-scale` overrides them for one run
+/// only, and a start after that has them again.
+fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
+    let x = Xvfb::start("remembered");
+    let state = tempfile::tempdir().unwrap();
+    let chosen = |s: &Value| {
+        let ui = &s["ui"];
+        let size = s["layout"]["ui_scale"].as_f64().unwrap();
+        (size, ui["theme"].to_string())
+    };
+    let first = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(chosen(&first.state()), (1.0, "\"dark\"".into()));
+    first.move_to([5.0, 400.0]);
+    tab_to(&first, "section_view", 60);
+    first.xdo(&["key", "space"]);
+    first.wait_frames(3);
+    tab_to(&first, "theme", 20);
+    first.xdo(&["key", "space"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "Escape"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "F2"]);
+    first.wait_frames(3);
+    first.xdo(&["key", "F2"]);
+    assert_eq!(chosen(&first.wait_frames(3)), (2.0, "\"light\"".into()));
+    first.quit();
+
+    let second = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(chosen(&second.state()), (2.0, "\"light\"".into()));
+    second.quit();
+    let once = Sandbox::start_with_state(&x, &["--paused", "--ui-scale", "1"], state.path());
+    assert_eq!(chosen(&once.state()), (1.0, "\"light\"".into()));
+    once.quit();
+    let third = Sandbox::start_with_state(&x, &["--paused"], state.path());
+    assert_eq!(
+        chosen(&third.state()),
+        (2.0, "\"light\"".into()),
+        "--ui-scale is for one run"
+    );
+    third.quit();
+}
