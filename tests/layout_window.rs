@@ -499,9 +499,10 @@ fn in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlappi
 /// At 1024×768 and text size 2 the dock's tab is 100 points high. The
 /// momentum diagram and the speed histogram take most of it (their numbers
 /// and axis names had left the diagram a quarter, 23 points), inside the
-/// tab; a line cut to its room shows one tooltip when hovered (egui's own
-/// one for the cut text had stacked under the app's); and the top bar's
-/// hidden values show on a click (no hover on a touch screen).
+/// tab, as do the rough gas's speeds, shares and totals; a line cut to its
+/// room shows one tooltip when hovered (egui's own one for the cut text had
+/// stacked under the app's); and the top bar's hidden values show on a
+/// click (no hover on a touch screen).
 fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tooltip() {
     let x = Xvfb::start("plots");
     let app = projector_at_impact(&x, "pt-BR");
@@ -593,6 +594,34 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
         s["ui"]["tooltips"].as_u64() > Some(0)
     });
     assert_eq!(app.wait_frames(2)["ui"]["tooltips"], 1);
+    // The Totals of rough discs: six series named on the change's last
+    // line, not on lines of their own (which left the plots strips 35 px
+    // high), and time axes numbered without a name under them; the last
+    // plot ends short of the tab's edge, which cut its last number.
+    // Run a while first: the walls' pushes make the change's numbers long.
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "space"]);
+    app.wait_for("a few seconds run", 600, |s| s["time"].as_f64() > Some(3.0));
+    app.xdo(&["key", "space", "t"]);
+    let plots = ["momentum_plot", "angular_momentum_plot", "energy_plot"];
+    let s = app.wait_for("the three totals", 60, |s| {
+        s["ui"]["tab"] == "Totals" && plots.iter().all(|p| s["panel_widgets"][p].is_array())
+    });
+    let area = content(&s);
+    for plot in plots {
+        let frame = rect(&s["panel_widgets"][plot]);
+        assert!(
+            frame[3] >= 0.25 * area[3],
+            "{plot}: a frame {} px high in a tab {} px high",
+            frame[3],
+            area[3]
+        );
+        assert!(
+            frame[1] + frame[3] <= area[1] + area[3] + 0.5
+                && frame[0] + frame[2] <= area[0] + area[2] - 20.0,
+            "{plot} {frame:?} inside the tab {area:?} with room for its last number"
+        );
+    }
     app.quit();
 
     // In words (in French, whose tab row has room for the tab's name): the

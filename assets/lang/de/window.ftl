@@ -244,7 +244,7 @@ speeds-axis-rim = Geschwindigkeit, Randgeschwindigkeit (m/s)
 speeds-axis = Geschwindigkeit (m/s)
 speeds-name = Geschwindigkeiten |v|
 speeds-discs = Scheiben
-speeds-per = pro m/s
+speeds-count = Scheiben je Balken
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = Randgeschwindigkeiten |ω|·r
 rim-speeds-equal = Randgeschwindigkeiten bei gleicher Verteilung
@@ -252,7 +252,7 @@ speeds-too-few = Zu wenige bewegte Scheiben für eine Verteilung: Vorlage 8 ausp
 speeds-line = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen. Kurve: wie sich ein Gas einpendelt (Maxwell–Boltzmann).
 speeds-hover = { $line }
     Die Kurve zeigt, wo die Geschwindigkeiten landen, wenn Stöße die Energie zufällig verteilt haben, für Scheiben mit im Mittel so viel Energie: kT = Ekin/N = { $kt } (die Temperatur, als Energie pro Scheibe).
-speeds-rim-meaning = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen (oder ihren Rand drehen), pro m/s. Kurven: wo sie sich einpendeln, wenn die Energie gleichmäßig verteilt ist, bei der Temperatur kT = Ekin/N = { $kt }: Maxwell–Boltzmann für die Geschwindigkeiten (durchgezogen) und für die Randgeschwindigkeiten (gestrichelt).
+speeds-rim-meaning = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen (oder ihren Rand drehen). Kurven: wo sie sich einpendeln, wenn die Energie gleichmäßig verteilt ist, bei der Temperatur kT = Ekin/N = { $kt }: Maxwell–Boltzmann für die Geschwindigkeiten (durchgezogen) und für die Randgeschwindigkeiten (gestrichelt).
 rim-speeds-hover = Wie schnell sich der Rand jeder Scheibe bei ihrer Drehung bewegt: ihre Winkelgeschwindigkeit ω mal ihr Radius r.
     { $meaning }
 shares-energy = Energie:

@@ -241,7 +241,7 @@ speeds-axis-rim = speed, rim speed (m/s)
 speeds-axis = speed (m/s)
 speeds-name = speeds |v|
 speeds-discs = discs
-speeds-per = per m/s
+speeds-count = discs in each bar
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = rim speeds |ω|·r
 rim-speeds-equal = rim speeds, shared equally
@@ -249,7 +249,7 @@ speeds-too-few = Too few moving discs for a distribution: try preset 8, a gas.
 speeds-line = Bars: how many discs move at each speed. Curve: how a gas settles (Maxwell–Boltzmann).
 speeds-hover = { $line }
     The curve is where the speeds end up once collisions have shared the energy out at random, for discs with this much energy each on average: kT = KE/N = { $kt } (the temperature, in energy per disc).
-speeds-rim-meaning = Bars: how many discs move (or turn their edge) at each speed, per m/s. Curves: where they settle when the energy is shared equally, at the temperature kT = KE/N = { $kt }: Maxwell–Boltzmann for the speeds (solid), and for the rim speeds (dashed).
+speeds-rim-meaning = Bars: how many discs move (or turn their edge) at each speed. Curves: where they settle when the energy is shared equally, at the temperature kT = KE/N = { $kt }: Maxwell–Boltzmann for the speeds (solid), and for the rim speeds (dashed).
 rim-speeds-hover = How fast the edge of each disc moves as it turns: its spin ω times its radius r.
     { $meaning }
 shares-energy = energy:

@@ -244,7 +244,7 @@ speeds-axis-rim = rapidez, rapidez del borde (m/s)
 speeds-axis = rapidez (m/s)
 speeds-name = rapidez |v|
 speeds-discs = discos
-speeds-per = por m/s
+speeds-count = discos en cada barra
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = rapidez del borde |ω|·r
 rim-speeds-equal = rapidez del borde, reparto equitativo
@@ -252,7 +252,7 @@ speeds-too-few = Muy pocos discos en movimiento para una distribución: prueba e
 speeds-line = Barras: cuántos discos se mueven con cada rapidez. Curva: cómo se reparte en un gas en equilibrio (Maxwell–Boltzmann).
 speeds-hover = { $line }
     La curva muestra cómo quedan repartidas las rapideces cuando los choques ya han repartido la energía al azar, para discos con esta energía media cada uno: kT = Ec/N = { $kt } (la temperatura, en energía por disco).
-speeds-rim-meaning = Barras: cuántos discos se mueven (o mueven su borde al girar) con cada rapidez, por m/s. Curvas: cómo se reparten cuando la energía está repartida por igual, a la temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para la rapidez (línea continua) y para la rapidez del borde (discontinua).
+speeds-rim-meaning = Barras: cuántos discos se mueven (o mueven su borde al girar) con cada rapidez. Curvas: cómo se reparten cuando la energía está repartida por igual, a la temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para la rapidez (línea continua) y para la rapidez del borde (discontinua).
 rim-speeds-hover = Lo rápido que se mueve el borde de cada disco al girar: su giro ω por su radio r.
     { $meaning }
 shares-energy = energía:

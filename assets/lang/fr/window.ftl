@@ -241,7 +241,7 @@ speeds-axis-rim = vitesse, vitesse du bord (m/s)
 speeds-axis = vitesse (m/s)
 speeds-name = vitesses |v|
 speeds-discs = disques
-speeds-per = par m/s
+speeds-count = disques par barre
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = vitesses du bord |ω|·r
 rim-speeds-equal = vitesses du bord, à parts égales
@@ -249,7 +249,7 @@ speeds-too-few = Trop peu de disques en mouvement pour une distribution : essay
 speeds-line = Barres : combien de disques vont à chaque vitesse. Courbe : où se stabilise un gaz (Maxwell–Boltzmann).
 speeds-hover = { $line }
     La courbe montre où finissent les vitesses une fois que les collisions ont réparti l'énergie au hasard, pour des disques ayant chacun cette énergie en moyenne : kT = Ec/N = { $kt } (la température, en énergie par disque).
-speeds-rim-meaning = Barres : combien de disques se déplacent (ou font tourner leur bord) à chaque vitesse, par m/s. Courbes : où ils se stabilisent quand l'énergie est partagée à parts égales, à la température kT = Ec/N = { $kt } : Maxwell–Boltzmann pour les vitesses (trait plein) et pour les vitesses du bord (pointillés).
+speeds-rim-meaning = Barres : combien de disques se déplacent (ou font tourner leur bord) à chaque vitesse. Courbes : où ils se stabilisent quand l'énergie est partagée à parts égales, à la température kT = Ec/N = { $kt } : Maxwell–Boltzmann pour les vitesses (trait plein) et pour les vitesses du bord (pointillés).
 rim-speeds-hover = La vitesse à laquelle le bord de chaque disque se déplace quand il tourne : sa vitesse angulaire ω multipliée par son rayon r.
     { $meaning }
 shares-energy = énergie :

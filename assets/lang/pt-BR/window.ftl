@@ -241,7 +241,7 @@ speeds-axis-rim = velocidade, velocidade da borda (m/s)
 speeds-axis = velocidade (m/s)
 speeds-name = velocidades |v|
 speeds-discs = discos
-speeds-per = por m/s
+speeds-count = discos em cada barra
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = velocidades da borda |ω|·r
 rim-speeds-equal = velocidades da borda, divisão igual
@@ -249,7 +249,7 @@ speeds-too-few = Poucos discos em movimento para uma distribuição: experimente
 speeds-line = Barras: quantos discos se movem com cada velocidade. Curva: como um gás se acomoda (Maxwell–Boltzmann).
 speeds-hover = { $line }
     A curva mostra onde as velocidades chegam depois que as colisões repartiram a energia ao acaso, para discos com esta energia cada um, em média: kT = Ec/N = { $kt } (a temperatura, em energia por disco).
-speeds-rim-meaning = Barras: quantos discos se movem (ou movem a borda, girando) com cada velocidade, por m/s. Curvas: onde eles se acomodam quando a energia é repartida igualmente, à temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para as velocidades (contínua) e para as velocidades da borda (tracejada).
+speeds-rim-meaning = Barras: quantos discos se movem (ou movem a borda, girando) com cada velocidade. Curvas: onde eles se acomodam quando a energia é repartida igualmente, à temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para as velocidades (contínua) e para as velocidades da borda (tracejada).
 rim-speeds-hover = Quão rápido a borda de cada disco se move enquanto ele gira: a sua rotação ω vezes o seu raio r.
     { $meaning }
 shares-energy = energia:

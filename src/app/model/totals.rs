@@ -161,6 +161,8 @@ pub struct SpeedHistogram {
     /// Share of the discs per m/s in each bin: a probability density, so
     /// the bars and the law share one axis.
     pub density: Vec<f64>,
+    /// How many discs the histogram counts (moving or not).
+    pub discs: usize,
 }
 
 /// Speed bins of the histogram.
@@ -237,7 +239,14 @@ impl SpeedHistogram {
             sigma2,
             bin_width,
             density,
+            discs: n,
         })
+    }
+
+    /// A density times this is a number of discs in one bin: what a bar
+    /// shows, and what the law expects there.
+    pub fn discs_per_density(&self) -> f64 {
+        self.discs as f64 * self.bin_width
     }
 
     /// The law's density at speed `v` (per m/s).
@@ -295,6 +304,17 @@ mod tests {
         }
         assert!((integral - 1.0).abs() < 1e-6, "{integral}");
         assert!((h.kt - world.metrics().kinetic_energy / n).abs() < 1e-12);
+        // What the plot draws: each bar the discs in its bin, counted here
+        // afresh.
+        for (k, &d) in h.density.iter().enumerate() {
+            let (lo, hi) = (k as f64 * h.bin_width, (k + 1) as f64 * h.bin_width);
+            let inside = world.particles.iter().map(|p| p.vel.length());
+            let inside = inside.filter(|v| (lo..hi).contains(v)).count();
+            assert!(
+                (d * h.discs_per_density() - inside as f64).abs() < 1e-9,
+                "bin {k}"
+            );
+        }
     }
 
     #[test]

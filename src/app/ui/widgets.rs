@@ -20,7 +20,13 @@ pub fn one_line(
     text: impl Into<egui::WidgetText>,
     more: Option<String>,
 ) -> egui::Response {
-    let (pos, galley, response) = egui::Label::new(text).truncate().layout_in_ui(ui);
+    cut_label(ui, egui::Label::new(text).truncate(), more)
+}
+
+/// `label` laid out and drawn with one tooltip, as [`one_line`] is: `more`
+/// when given, else the whole text if it was cut.
+pub fn cut_label(ui: &mut Ui, label: egui::Label, more: Option<String>) -> egui::Response {
+    let (pos, galley, response) = label.layout_in_ui(ui);
     response.widget_info(|| {
         egui::WidgetInfo::labeled(egui::WidgetType::Label, ui.is_enabled(), galley.text())
     });

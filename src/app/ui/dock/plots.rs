@@ -27,7 +27,10 @@ pub const WALL_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
 pub const COMPACT_PLOT_HEIGHT: f32 = 130.0;
 
 /// The speed histogram against Maxwell–Boltzmann; with `rims`, each bin's
-/// rim-speed bar beside its speed bar, and the rim speeds' law.
+/// rim-speed bar beside its speed bar, and the rim speeds' law. A bar is
+/// the number of discs in its bin and a curve the number the law expects
+/// there: "how many discs" needs no unit, where a density (per m/s) beside
+/// a short plot, with no room for the axis's name, was a bare "0.5".
 pub fn speed_plot(
     ui: &mut egui::Ui,
     h: &SpeedHistogram,
@@ -41,17 +44,20 @@ pub fn speed_plot(
     } else {
         (0.5, 0.9)
     };
+    let discs = h.discs_per_density();
     let bars: Vec<Bar> = h
         .density
         .iter()
         .enumerate()
-        .map(|(k, &d)| Bar::new((k as f64 + offset) * h.bin_width, d).width(h.bin_width * width))
+        .map(|(k, &d)| {
+            Bar::new((k as f64 + offset) * h.bin_width, d * discs).width(h.bin_width * width)
+        })
         .collect();
     let top = h.bin_width * h.density.len() as f64;
     let curve = |law: &dyn Fn(f64) -> f64| -> Vec<[f64; 2]> {
         (0..=200)
             .map(|k| top * k as f64 / 200.0)
-            .map(|v| [v, law(v)])
+            .map(|v| [v, law(v) * discs])
             .collect()
     };
     let law = curve(&|v| h.law(v));
@@ -61,7 +67,8 @@ pub fn speed_plot(
             .iter()
             .enumerate()
             .map(|(k, &d)| {
-                Bar::new((k as f64 + 1.0 - offset) * h.bin_width, d).width(h.bin_width * width)
+                Bar::new((k as f64 + 1.0 - offset) * h.bin_width, d * discs)
+                    .width(h.bin_width * width)
             })
             .collect();
         (bars, curve(&|u| r.law(u)))
@@ -71,7 +78,8 @@ pub fn speed_plot(
     } else {
         (tr!("speeds-axis"), tr!("speeds-discs"))
     };
-    let per = tr!("speeds-per");
+    let count = tr!("speeds-count");
+    let discs_word = tr!("speeds-discs");
     let plot = still_plot("speeds_plot").height(height);
     let plot = if legend {
         plot.legend(Legend::default().position(Corner::RightTop))
@@ -81,12 +89,14 @@ pub fn speed_plot(
     x_axis(plot, height, x_label, "m/s")
         // Rotated beside a short plot, the name would run past it.
         .y_axis_label(if height >= ROOMY_PLOT {
-            per.clone()
+            count
         } else {
             String::new()
         })
         .include_y(0.0)
-        .label_formatter(move |_, v| format!("{} m/s\n{} {per}", plain(v.x, 2), plain(v.y, 3)))
+        .label_formatter(move |_, v| {
+            format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
+        })
         .show(ui, |plot| {
             plot.bar_chart(BarChart::new(bars).name(speed_name).color(PX_COLOR));
             plot.line(
@@ -165,6 +175,22 @@ pub fn names_line(
         part.append_to(&mut job, &style, Default::default(), egui::Align::Center);
     }
     one_line(ui, job, Some(more))
+}
+
+/// Room kept right of plots side by side for half of a number on the time
+/// axis: the last column's plot ends at the dock's edge, which cut a "1 s"
+/// standing at the plot's end in half.
+const EDGE_ROOM: f32 = 12.0;
+
+/// `ui.columns(n, add)` for plots, short of the dock's right edge by
+/// [`EDGE_ROOM`].
+pub fn plot_columns<R>(ui: &mut egui::Ui, n: usize, add: impl FnOnce(&mut [egui::Ui]) -> R) -> R {
+    let mut room = ui.available_rect_before_wrap();
+    room.max.x -= EDGE_ROOM.min(0.5 * room.width());
+    ui.scope_builder(egui::UiBuilder::new().max_rect(room), |ui| {
+        ui.columns(n, add)
+    })
+    .inner
 }
 
 /// A plot that holds still: no scrolling, dragging or zooming, which in a

@@ -43,7 +43,7 @@ impl View for Speeds {
         let rims = RimHistogram::of(&model.world, &h);
         let samples: Vec<_> = model.record.totals.samples().copied().collect();
         let kt = with_unit(h.kt, 3, "J");
-        ui.columns(2, |columns| {
+        plot_columns(ui, 2, |columns| {
             let ui = &mut columns[0];
             let meaning = tr!("speeds-rim-meaning", kt = kt.as_str());
             let rim_meaning = tr!("rim-speeds-hover", meaning = meaning.as_str());

@@ -2,13 +2,14 @@
 //! and the energy against time, each in its own plot, with the change since
 //! the record began above them.
 
-use super::super::widgets::angular_momentum_tip;
+use super::super::widgets::{angular_momentum_tip, cut_label};
 use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::numbers::{plain, vector, with_unit};
-use egui::RichText;
+use egui::text::LayoutJob;
+use egui::{Align, FontSelection, RichText};
 use egui_plot::{Corner, Legend, Line, LineStyle, PlotPoints, VLine};
 
 /// The tab (no state of its own).
@@ -66,22 +67,16 @@ impl View for Totals {
             energies.push((rotational.clone(), rotational, ROT_COLOR));
             energies.push((tr!("totals-ke-sum"), tr!("totals-sum"), total_color));
         }
-        ui.horizontal_wrapped(|ui| {
-            let hover = angular_momentum_tip(tr!("totals-hover"), &model.world);
+        let hover = angular_momentum_tip(tr!("totals-hover"), &model.world);
+        if compact {
+            let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
+            let short = energies
+                .iter()
+                .map(|(_, name, color)| (name.as_str(), *color));
+            change_and_names(ui, drift, names.into_iter().chain(short), hover);
+        } else {
             ui.label(drift).on_hover_text(hover);
-            if compact {
-                let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
-                let short = energies
-                    .iter()
-                    .map(|(_, name, color)| (name.as_str(), *color));
-                for (name, color) in names.into_iter().chain(short) {
-                    // Whole, on the next line if need be: never "—" here
-                    // and its name there.
-                    let name = RichText::new(format!("— {name}")).color(color).strong();
-                    ui.add(egui::Label::new(name).wrap_mode(egui::TextWrapMode::Extend));
-                }
-            }
-        });
+        }
         let height = ui.available_height();
         let start = samples.first().map_or(model.world.time, |s| s.time);
         let legend = |corner| (!compact).then(|| Legend::default().position(corner));
@@ -99,14 +94,14 @@ impl View for Totals {
             series(|s| s.rotational_energy),
             series(|s| s.energy()),
         ];
-        ui.columns(3, |columns| {
+        plot_columns(ui, 3, |columns| {
             let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
             let plot = from_start(still_plot("momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label(tr!("axis-time"))
+            let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 // Too low for a rotated label: the line above gives the units.
                 .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
                 .include_y(lo)
@@ -140,13 +135,14 @@ impl View for Totals {
                             .width(2.5),
                     );
                 });
+            cx.note("momentum_plot", &shown.response);
             let (lo, hi) = padded_range(l.iter().map(|p| p[1]));
             let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label(tr!("axis-time"))
+            let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
                 .include_y(lo)
                 .include_y(hi)
@@ -161,14 +157,15 @@ impl View for Totals {
                             .width(2.5),
                     );
                 });
-            let shown = &energy_series[..energies.len()];
-            let (lo, hi) = padded_range(shown.iter().flatten().map(|p| p[1]));
+            cx.note("angular_momentum_plot", &shown.response);
+            let plotted = &energy_series[..energies.len()];
+            let (lo, hi) = padded_range(plotted.iter().flatten().map(|p| p[1]));
             let plot = from_start(still_plot("energy_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
-            plot.x_axis_label(tr!("axis-time"))
+            let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 .y_axis_label(match (compact, spin) {
                     (true, _) => String::new(),
                     (false, true) => tr!("axis-energy"),
@@ -180,7 +177,7 @@ impl View for Totals {
                     format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
                 })
                 .show(&mut columns[2], |plot| {
-                    for ((name, _, color), points) in energies.iter().zip(shown) {
+                    for ((name, _, color), points) in energies.iter().zip(plotted) {
                         plot.line(
                             Line::new(PlotPoints::from(points.clone()))
                                 .name(name)
@@ -189,6 +186,46 @@ impl View for Totals {
                         );
                     }
                 });
+            cx.note("energy_plot", &shown.response);
         });
     }
+}
+
+/// The change since the record began, whole on as many lines as it needs,
+/// then the plots' series named in their colours on the rest of its last
+/// line, cut with "…" where that is full: then the hover, `more`, ends with
+/// them all. Wrapped onto lines of their own, the six names of rough discs
+/// took a projector's plots down to strips 35 px high.
+fn change_and_names<'a>(
+    ui: &mut egui::Ui,
+    change: String,
+    names: impl Iterator<Item = (&'a str, egui::Color32)>,
+    more: String,
+) -> egui::Response {
+    let style = ui.style().clone();
+    let append = |job: &mut LayoutJob, text: RichText| {
+        text.append_to(job, &style, FontSelection::Default, Align::Center)
+    };
+    let mut job = LayoutJob::default();
+    append(&mut job, RichText::new(change));
+    job.wrap.max_width = ui.available_width();
+    let rows = ui.fonts(|f| f.layout_job(job.clone())).rows.len();
+    let mut all = Vec::new();
+    for (name, color) in names {
+        all.push(format!("— {name}"));
+        // A breakable gap before each name, none inside it: never "—" on
+        // one line and its name on the next.
+        let name = format!("—\u{a0}{}", name.replace(' ', "\u{a0}"));
+        append(&mut job, RichText::new("  "));
+        append(&mut job, RichText::new(name).color(color).strong());
+    }
+    job.wrap.max_rows = rows;
+    job.wrap.overflow_character = Some('…');
+    let galley = ui.fonts(|f| f.layout_job(job));
+    let more = if galley.elided {
+        format!("{more}\n\n{}", all.join("   "))
+    } else {
+        more
+    };
+    cut_label(ui, egui::Label::new(galley), Some(more))
 }
