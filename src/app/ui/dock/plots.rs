@@ -199,7 +199,12 @@ pub fn plot_columns<R>(ui: &mut egui::Ui, n: usize, add: impl FnOnce(&mut [egui:
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
     let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| tick(mark);
+    // egui_plot hides the time axis's numbers closer than 60 points, sized
+    // for long numbers: a projector's 120-point plot of 9 s then numbered
+    // only "0 s". Ours are short ("5 s"), and one too wide is still left out.
+    let x_axis = egui_plot::AxisHints::new_x().label_spacing(40.0..=55.0);
     Plot::new(id)
+        .custom_x_axes(vec![x_axis])
         .x_axis_formatter(axis)
         .y_axis_formatter(axis)
         .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
@@ -246,7 +251,7 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::{padded_range, steps_of_one_five_ten};
+    use super::{from_start, padded_range, steps_of_one_five_ten, still_plot, x_axis};
     use egui_plot::GridInput;
 
     #[test]
@@ -262,6 +267,47 @@ mod tests {
         assert_eq!(steps(1.5), [10.0, 50.0, 100.0]);
         let tiny = steps(0.0);
         assert!(tiny.iter().all(|s| s.is_finite() && *s > 0.0), "{tiny:?}");
+    }
+
+    /// The time axis's numbers a plot `width` points wide over 0 to `end`
+    /// seconds shows, drawn by egui without a window.
+    fn time_numbers(width: f32, end: f64) -> Vec<String> {
+        let ctx = egui::Context::default();
+        crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
+        let mut numbers = Vec::new();
+        for _ in 0..3 {
+            // egui settles its layout over a few frames.
+            let out = ctx.run(Default::default(), |ctx| {
+                egui::CentralPanel::default().show(ctx, |ui| {
+                    ui.allocate_ui(egui::vec2(width, 60.0), |ui| {
+                        let plot = from_start(still_plot("time"), 0.0).include_x(end);
+                        x_axis(plot, 60.0, String::new(), "s")
+                            .height(60.0)
+                            .show(ui, |_| {})
+                    })
+                });
+            });
+            numbers = out
+                .shapes
+                .iter()
+                .filter_map(|clipped| match &clipped.shape {
+                    egui::Shape::Text(text) => Some(text.galley.text().to_string()),
+                    _ => None,
+                })
+                .filter(|text| text.ends_with(" s"))
+                .collect();
+        }
+        numbers
+    }
+
+    #[test]
+    fn a_short_time_axis_numbers_every_five_seconds() {
+        // A projector's third of a 1024-px dock at text size 2: 120 points.
+        let numbers = time_numbers(120.0, 9.0);
+        assert!(numbers.contains(&"5 s".to_string()), "{numbers:?}");
+        // And never so close that they run into each other.
+        let numbers = time_numbers(60.0, 9.0);
+        assert!(!numbers.contains(&"1 s".to_string()), "{numbers:?}");
     }
 
     #[test]
