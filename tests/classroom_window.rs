@@ -227,13 +227,26 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
     let closing = (vec2(&a["vel"])[0] - vec2(&b["vel"])[0]).abs();
     let contact = gap / closing;
     app.xdo(&["key", "j"]);
-    let hit = app.wait_frames(3);
+    let hit = app.wait_for("the newest impact's table", 60, |s| {
+        s["panel_widgets"]["ledger_total_p"].is_array()
+    });
     assert_eq!(hit["paused"], true);
     assert_eq!(hit["collisions_recorded"], 1);
     let t = hit["time"].as_f64().unwrap();
     assert!(
         (t - contact).abs() < 1e-9,
         "stopped at t = {t}, contact at {contact}"
+    );
+    // The Collisions tab opened on the impact shows, without scrolling,
+    // the two discs' momenta and their total before and after (under the
+    // count and a heading, the total had been out of sight).
+    let (total, tab) = (
+        rect(&hit["panel_widgets"]["ledger_total_p"]),
+        tab_content(&hit),
+    );
+    assert!(
+        total[1] >= tab[1] - 0.5 && total[1] + total[3] <= tab[1] + tab[3] + 0.5,
+        "the total momentum's row {total:?} in the tab {tab:?}"
     );
 
     // Rewind three snapshots: earlier, and the discs are back apart.

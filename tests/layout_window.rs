@@ -65,14 +65,6 @@ fn main() -> std::process::ExitCode {
     ])
 }
 
-/// [x, y, w, h] of a dump rectangle.
-fn rect(v: &Value) -> [f64; 4] {
-    std::array::from_fn(|k| {
-        v[k].as_f64()
-            .unwrap_or_else(|| panic!("not a rectangle: {v}"))
-    })
-}
-
 /// Whether two rectangles share any area (touching edges do not count).
 fn overlap(a: [f64; 4], b: [f64; 4]) -> bool {
     let e = 0.5; // half a pixel: egui rounds panel edges

@@ -417,6 +417,14 @@ pub fn widget(state: &Value, name: &str, t: f64) -> [f64; 2] {
     [r[0] + t * r[2], r[1] + 0.5 * r[3]]
 }
 
+/// [x, y, w, h] of a dump rectangle.
+pub fn rect(v: &Value) -> [f64; 4] {
+    std::array::from_fn(|k| {
+        v[k].as_f64()
+            .unwrap_or_else(|| panic!("not a rectangle: {v}"))
+    })
+}
+
 /// The open tab's content rectangle [x, y, w, h]: under the world and its
 /// caption strip (one row, as high as the top bar).
 pub fn tab_content(s: &Value) -> [f64; 4] {

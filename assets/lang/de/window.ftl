@@ -206,10 +206,12 @@ ledger-what = was
 ledger-what-hover = welche Scheiben, oder welche Scheibe und Wand
 ledger-dp-hover = die Änderung des Gesamtimpulses der beteiligten Scheiben: null zwischen Scheiben, an einer Wand der Kraftstoß der Wand
 ledger-dke-hover = die Änderung ihrer kinetischen Energie, der Bewegungsenergie: null bei einem elastischen Stoß, kleiner als null, wenn etwas verloren geht
-ledger-newest = Zuletzt: { $who } bei t = { $time }
+ledger-newest = { $who }, { $when }
 ledger-disc-p = Scheibe { $disc }: p (kg·m/s)
 ledger-disc-ke = Scheibe { $disc }: { $ke } (J)
 ledger-disc-v = Scheibe { $disc }: v { $part } (m/s)
+ledger-both-p = beide Scheiben: p (kg·m/s)
+ledger-both-ke = beide Scheiben: { $ke } (J)
 ledger-along-impact = längs der Stoßlinie
 ledger-across-impact = quer dazu
 ledger-away-from-wall = von der Wand weg

@@ -203,10 +203,12 @@ ledger-what = what
 ledger-what-hover = which discs, or which disc and wall
 ledger-dp-hover = the change of the total momentum of the discs in it: zero between discs, the wall's push at a wall
 ledger-dke-hover = the change of their kinetic energy, the energy of moving: zero in an elastic collision, less than zero when some is lost
-ledger-newest = Newest: { $who } at t = { $time }
+ledger-newest = { $who }, { $when }
 ledger-disc-p = disc { $disc }: p (kg·m/s)
 ledger-disc-ke = disc { $disc }: { $ke } (J)
 ledger-disc-v = disc { $disc }: v { $part } (m/s)
+ledger-both-p = both discs: p (kg·m/s)
+ledger-both-ke = both discs: { $ke } (J)
 ledger-along-impact = along the line of impact
 ledger-across-impact = across it
 ledger-away-from-wall = away from the wall

@@ -206,10 +206,12 @@ ledger-what = qué
 ledger-what-hover = qué discos, o qué disco y qué pared
 ledger-dp-hover = el cambio de la cantidad de movimiento total de los discos que intervienen: cero entre discos, el empuje de la pared en una pared
 ledger-dke-hover = el cambio de su energía cinética, la energía del movimiento: cero en un choque elástico, menor que cero cuando se pierde parte de ella
-ledger-newest = Más reciente: { $who } en t = { $time }
+ledger-newest = { $who }, { $when }
 ledger-disc-p = disco { $disc }: p (kg·m/s)
 ledger-disc-ke = disco { $disc }: { $ke } (J)
 ledger-disc-v = disco { $disc }: v { $part } (m/s)
+ledger-both-p = los dos discos: p (kg·m/s)
+ledger-both-ke = los dos discos: { $ke } (J)
 ledger-along-impact = a lo largo de la línea de impacto
 ledger-across-impact = perpendicular a ella
 ledger-away-from-wall = alejándose de la pared

@@ -203,10 +203,12 @@ ledger-what = quoi
 ledger-what-hover = quels disques, ou quel disque et quel mur
 ledger-dp-hover = la variation de la quantité de mouvement totale des disques concernés : nulle entre disques, égale à la poussée du mur pour un choc contre un mur
 ledger-dke-hover = la variation de leur énergie cinétique, l'énergie du mouvement : nulle lors d'un choc élastique, négative quand une partie est perdue
-ledger-newest = Dernière : { $who } à t = { $time }
+ledger-newest = { $who }, { $when }
 ledger-disc-p = disque { $disc } : p (kg·m/s)
 ledger-disc-ke = disque { $disc } : { $ke } (J)
 ledger-disc-v = disque { $disc } : v { $part } (m/s)
+ledger-both-p = les deux disques : p (kg·m/s)
+ledger-both-ke = les deux disques : { $ke } (J)
 ledger-along-impact = selon la ligne d'impact
 ledger-across-impact = perpendiculaire
 ledger-away-from-wall = en s'éloignant du mur

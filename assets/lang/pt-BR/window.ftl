@@ -203,10 +203,12 @@ ledger-what = o quê
 ledger-what-hover = quais discos, ou qual disco e qual parede
 ledger-dp-hover = a variação da quantidade de movimento total dos discos envolvidos: zero entre discos, o empurrão da parede numa parede
 ledger-dke-hover = a variação da energia cinética deles, a energia do movimento: zero numa colisão elástica, menor que zero quando parte dela se perde
-ledger-newest = Mais recente: { $who } em t = { $time }
+ledger-newest = { $who }, { $when }
 ledger-disc-p = disco { $disc }: p (kg·m/s)
 ledger-disc-ke = disco { $disc }: { $ke } (J)
 ledger-disc-v = disco { $disc }: v { $part } (m/s)
+ledger-both-p = os dois discos: p (kg·m/s)
+ledger-both-ke = os dois discos: { $ke } (J)
 ledger-along-impact = ao longo da linha de impacto
 ledger-across-impact = perpendicular a ela
 ledger-away-from-wall = para longe da parede

@@ -62,7 +62,9 @@ impl Cx<'_> {
         self.out.push(command);
     }
 
-    /// Notes a widget's rectangle under `name` (for the state dump).
+    /// Notes a widget's rectangle under `name` (for the state dump), unless
+    /// another layer covers its centre (the drawer over the dock's plots):
+    /// the dump lists what a person can see.
     pub fn note(&mut self, name: impl Into<String>, response: &egui::Response) {
         let name = name.into();
         if response.has_focus() {
@@ -71,7 +73,10 @@ impl Cx<'_> {
         if response.sense.is_focusable() {
             self.marks.stops.push(Stop::control(response));
         }
-        self.marks.note(name, response.rect);
+        let top = response.ctx.layer_id_at(response.rect.center());
+        if top.is_none_or(|top| top == response.layer_id) {
+            self.marks.note(name, response.rect);
+        }
     }
 }
 

@@ -36,11 +36,6 @@ impl View for Collisions {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
         let world = &model.world;
-        ui.horizontal_wrapped(|ui| {
-            let r = ui.label(count_line(world));
-            cx.note("ledger_count", &r);
-            command_button(ui, cx, Command::NextCollision, None);
-        });
         let recent: Vec<Impact> = world
             .ledger
             .impacts()
@@ -49,15 +44,21 @@ impl View for Collisions {
             .copied()
             .collect();
         let Some(newest) = recent.first() else {
+            count(ui, cx);
             ui.add(egui::Label::new(tr!("ledger-empty")).wrap());
             return;
         };
         if ui.available_width() >= SIDE_BY_SIDE {
+            // The count over the list, so the newest impact's table starts
+            // at the top: at a laptop's size its third row, the total
+            // momentum, was cut off.
             ui.columns(2, |columns| {
+                count(&mut columns[0], cx);
                 list(&mut columns[0], cx, &recent);
                 detail(&mut columns[1], cx, newest);
             });
         } else {
+            count(ui, cx);
             scroll(
                 ui,
                 cx,
@@ -71,6 +72,15 @@ impl View for Collisions {
             );
         }
     }
+}
+
+/// The impacts counted, as the top bar counts them, and the key to the next.
+fn count(ui: &mut egui::Ui, cx: &mut Cx) {
+    ui.horizontal_wrapped(|ui| {
+        let r = ui.label(count_line(&cx.model.world));
+        cx.note("ledger_count", &r);
+        command_button(ui, cx, Command::NextCollision, None);
+    });
 }
 
 /// The kept impacts, newest first.
@@ -107,75 +117,73 @@ fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
     });
 }
 
-/// The newest impact, disc by disc, before and after.
+/// The newest impact, before and after: each quantity for one disc and the
+/// other, and for a pair their total (the lesson: p stays, KE stays when
+/// elastic). Who and when name the table's first column, not a line above
+/// it, which at a projector had left room for the column names only and no
+/// row.
 fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
-    ui.strong(tr!(
-        "ledger-newest",
-        who = who(impact),
-        time = with_unit(impact.time(), 3, "s")
-    ));
-    // Per disc: momentum and kinetic energy, and the velocity along the
-    // line of impact and across it (at a wall: away from it and along it).
-    type Split = ((f64, f64), (f64, f64));
-    let disc_rows = |d: usize,
-                     (p0, p1): (DVec2, DVec2),
-                     (e0, e1): (f64, f64),
-                     split: Split,
-                     names: [String; 2]| {
-        let ((n0, t0), (n1, t1)) = split;
-        let [along, across] = names;
-        [
-            (
-                tr!("ledger-disc-p", disc = d),
-                vector(p0, 3, ""),
-                vector(p1, 3, ""),
-            ),
-            (
-                tr!("ledger-disc-ke", disc = d, ke = tr!("symbol-ke")),
-                plain(e0, 3),
-                plain(e1, 3),
-            ),
-            (
-                tr!("ledger-disc-v", disc = d, part = along),
-                plain(n0, 3),
-                plain(n1, 3),
-            ),
-            (
-                tr!("ledger-disc-v", disc = d, part = across),
-                plain(t0, 3),
-                plain(t1, 3),
-            ),
-        ]
-    };
-    let mut rows: Vec<(String, String, String)> = Vec::new();
+    // Never "t =" on one line and "1.784 s" on the next.
+    let when = format!("t = {}", with_unit(impact.time(), 3, "s")).replace(' ', "\u{a0}");
+    let heading = tr!("ledger-newest", who = who(impact), when = when);
+    // (name, before, after, the name a total's row is noted under).
+    let mut rows: Vec<(String, String, String, Option<&str>)> = Vec::new();
+    let row = |name, (b, a): (String, String)| (name, b, a, None);
+    let pair_of = |(b, a): (DVec2, DVec2)| (vector(b, 3, ""), vector(a, 3, ""));
+    let plain_pair = |(b, a): (f64, f64)| (plain(b, 3), plain(a, 3));
+    let ke = tr!("symbol-ke");
     match impact {
         Impact::Pair(c) => {
-            for k in 0..2 {
-                let names = [tr!("ledger-along-impact"), tr!("ledger-across-impact")];
-                let split = c.components(k);
-                rows.extend(disc_rows(
-                    c.discs[k],
-                    c.momentum(k),
-                    c.kinetic_energy(k),
-                    split,
-                    names,
+            let (along, across) = (tr!("ledger-along-impact"), tr!("ledger-across-impact"));
+            let split = [c.components(0), c.components(1)];
+            let discs = [0, 1];
+            for k in discs {
+                rows.push(row(
+                    tr!("ledger-disc-p", disc = c.discs[k]),
+                    pair_of(c.momentum(k)),
                 ));
+            }
+            let (p0, p1) = (c.momentum(0), c.momentum(1));
+            let total = pair_of((p0.0 + p1.0, p0.1 + p1.1));
+            rows.push((
+                tr!("ledger-both-p"),
+                total.0,
+                total.1,
+                Some("ledger_total_p"),
+            ));
+            for k in discs {
+                let name = tr!("ledger-disc-ke", disc = c.discs[k], ke = ke.as_str());
+                rows.push(row(name, plain_pair(c.kinetic_energy(k))));
+            }
+            let (e0, e1) = (c.kinetic_energy(0), c.kinetic_energy(1));
+            let total = plain_pair((e0.0 + e1.0, e0.1 + e1.1));
+            let name = tr!("ledger-both-ke", ke = ke.as_str());
+            rows.push((name, total.0, total.1, Some("ledger_total_ke")));
+            for (part, pick) in [(&along, 0), (&across, 1)] {
+                for k in discs {
+                    let ((n0, t0), (n1, t1)) = split[k];
+                    let name = tr!("ledger-disc-v", disc = c.discs[k], part = part.as_str());
+                    let parts = if pick == 0 { (n0, n1) } else { (t0, t1) };
+                    rows.push(row(name, plain_pair(parts)));
+                }
             }
         }
         Impact::Wall(w) => {
-            let names = [tr!("ledger-away-from-wall"), tr!("ledger-along-wall")];
-            rows.extend(disc_rows(
-                w.disc,
-                w.momentum(),
-                w.kinetic_energy(),
-                w.components(),
-                names,
-            ));
-            rows.push((
-                tr!("ledger-wall-push"),
-                String::new(),
-                vector(w.wall_impulse(), 3, ""),
-            ));
+            let d = w.disc;
+            let ((n0, t0), (n1, t1)) = w.components();
+            rows.push(row(tr!("ledger-disc-p", disc = d), pair_of(w.momentum())));
+            let name = tr!("ledger-disc-ke", disc = d, ke = ke.as_str());
+            rows.push(row(name, plain_pair(w.kinetic_energy())));
+            let away = tr!(
+                "ledger-disc-v",
+                disc = d,
+                part = tr!("ledger-away-from-wall")
+            );
+            rows.push(row(away, plain_pair((n0, n1))));
+            let along = tr!("ledger-disc-v", disc = d, part = tr!("ledger-along-wall"));
+            rows.push(row(along, plain_pair((t0, t1))));
+            let push = vector(w.wall_impulse(), 3, "");
+            rows.push((tr!("ledger-wall-push"), String::new(), push, None));
         }
     }
     // The names wrap before the numbers are pushed out of sight: at a
@@ -195,7 +203,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     let numbers = widest(
         &mut rows
             .iter()
-            .flat_map(|(_, b, a)| [b, a])
+            .flat_map(|(_, b, a, _)| [b, a])
             .chain([&before, &after]),
     );
     let spacing = 18.0;
@@ -209,12 +217,21 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             .spacing([spacing, 4.0])
             .max_col_width(names.max(numbers))
             .show(ui, |ui| {
-                for h in [String::new(), before, after] {
-                    ui.strong(h);
-                }
+                ui.add(egui::Label::new(egui::RichText::new(heading).strong()).wrap());
+                ui.strong(before);
+                ui.strong(after);
                 ui.end_row();
-                for (what, before, after) in rows {
-                    ui.add(egui::Label::new(what).wrap());
+                for (what, before, after, total) in rows {
+                    let strong = |text: String| egui::RichText::new(text).strong();
+                    let (what, before, after) = if total.is_some() {
+                        (strong(what), strong(before), strong(after))
+                    } else {
+                        (what.into(), before.into(), after.into())
+                    };
+                    let r = ui.add(egui::Label::new(what).wrap());
+                    if let Some(name) = total {
+                        cx.note(name, &r);
+                    }
                     ui.label(before);
                     ui.label(after);
                     ui.end_row();
