@@ -178,6 +178,7 @@ impl Dialog {
                 })
                 .inner
         });
+        cx.marks.covers.push((self.layer(), response.response.rect));
         Shown {
             rect: response.response.rect,
             close,

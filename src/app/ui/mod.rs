@@ -62,9 +62,9 @@ impl Cx<'_> {
         self.out.push(command);
     }
 
-    /// Notes a widget's rectangle under `name` (for the state dump), unless
-    /// another layer covers its centre (the drawer over the dock's plots):
-    /// the dump lists what a person can see.
+    /// Notes a widget's rectangle under `name` (for the state dump), and
+    /// its layer, so that one a dialog covers is left out
+    /// ([`Marks::leave_out_covered`]).
     pub fn note(&mut self, name: impl Into<String>, response: &egui::Response) {
         let name = name.into();
         if response.has_focus() {
@@ -73,10 +73,8 @@ impl Cx<'_> {
         if response.sense.is_focusable() {
             self.marks.stops.push(Stop::control(response));
         }
-        let top = response.ctx.layer_id_at(response.rect.center());
-        if top.is_none_or(|top| top == response.layer_id) {
-            self.marks.note(name, response.rect);
-        }
+        self.marks.layers.insert(name.clone(), response.layer_id);
+        self.marks.note(name, response.rect);
     }
 }
 
@@ -106,6 +104,11 @@ pub struct Marks {
     pub lists: BTreeMap<String, ListScroll>,
     /// Tooltips showing: hovering shows one at most.
     pub tooltips: usize,
+    /// The layers of the widgets [`Cx::note`] noted.
+    pub layers: BTreeMap<String, egui::LayerId>,
+    /// The dialogs shown this frame, bottom first: their layers and
+    /// rectangles (points).
+    pub covers: Vec<(egui::LayerId, egui::Rect)>,
 }
 
 /// How far a list to read is scrolled (pixels).
@@ -142,6 +145,28 @@ impl Stop {
 }
 
 impl Marks {
+    /// Leaves out of the dump the widgets whose centre a dialog shown over
+    /// them this frame covers (the drawer over the dock's plots): the dump
+    /// lists what a person can see. (egui's own test of what is on top also
+    /// counts a dialog closed this frame, for one frame more.)
+    pub fn leave_out_covered(&mut self) {
+        let (covers, layers, ppp) = (&self.covers, &self.layers, self.ppp);
+        self.widgets.retain(|name, r| {
+            let Some(layer) = layers.get(name) else {
+                return true;
+            };
+            let centre = egui::pos2(r[0] + 0.5 * r[2], r[1] + 0.5 * r[3]) / ppp;
+            // Under its own dialog, only the dialogs shown after it cover it.
+            let above = covers
+                .iter()
+                .position(|(l, _)| l == layer)
+                .map_or(0, |k| k + 1);
+            !covers[above..]
+                .iter()
+                .any(|(l, rect)| l != layer && rect.contains(centre))
+        });
+    }
+
     /// Records a widget's rectangle (egui points) under `name`, in pixels.
     pub fn note(&mut self, name: impl Into<String>, rect: egui::Rect) {
         self.widgets.insert(name.into(), to_px(rect, self.ppp));
@@ -368,6 +393,7 @@ impl Panels {
                 .show(ctx, &mut cx, |ui, cx| self.side.ui(ui, cx));
         }
         self.popups.show(ctx, &mut cx);
+        self.marks.leave_out_covered();
         // A slider's value box typed into keeps the keyboard too.
         let boxed = egui::Id::new(widgets::TYPING_IN_A_BOX);
         if ctx

@@ -131,11 +131,14 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     let row = |name, (b, a): (String, String)| (name, b, a, None);
     let pair_of = |(b, a): (DVec2, DVec2)| (vector(b, 3, ""), vector(a, 3, ""));
     let plain_pair = |(b, a): (f64, f64)| (plain(b, 3), plain(a, 3));
+    // A velocity's parts before and after, along the line of impact (at a
+    // wall: away from it) and across it.
+    type Split = ((f64, f64), (f64, f64));
+    let along: fn(Split) -> (f64, f64) = |((n0, _), (n1, _))| (n0, n1);
+    let across: fn(Split) -> (f64, f64) = |((_, t0), (_, t1))| (t0, t1);
     let ke = tr!("symbol-ke");
     match impact {
         Impact::Pair(c) => {
-            let (along, across) = (tr!("ledger-along-impact"), tr!("ledger-across-impact"));
-            let split = [c.components(0), c.components(1)];
             let discs = [0, 1];
             for k in discs {
                 rows.push(row(
@@ -159,29 +162,28 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             let total = plain_pair((e0.0 + e1.0, e0.1 + e1.1));
             let name = tr!("ledger-both-ke", ke = ke.as_str());
             rows.push((name, total.0, total.1, Some("ledger_total_ke")));
-            for (part, pick) in [(&along, 0), (&across, 1)] {
+            for (part, of) in [
+                (tr!("ledger-along-impact"), along),
+                (tr!("ledger-across-impact"), across),
+            ] {
                 for k in discs {
-                    let ((n0, t0), (n1, t1)) = split[k];
                     let name = tr!("ledger-disc-v", disc = c.discs[k], part = part.as_str());
-                    let parts = if pick == 0 { (n0, n1) } else { (t0, t1) };
-                    rows.push(row(name, plain_pair(parts)));
+                    rows.push(row(name, plain_pair(of(c.components(k)))));
                 }
             }
         }
         Impact::Wall(w) => {
             let d = w.disc;
-            let ((n0, t0), (n1, t1)) = w.components();
             rows.push(row(tr!("ledger-disc-p", disc = d), pair_of(w.momentum())));
             let name = tr!("ledger-disc-ke", disc = d, ke = ke.as_str());
             rows.push(row(name, plain_pair(w.kinetic_energy())));
-            let away = tr!(
-                "ledger-disc-v",
-                disc = d,
-                part = tr!("ledger-away-from-wall")
-            );
-            rows.push(row(away, plain_pair((n0, n1))));
-            let along = tr!("ledger-disc-v", disc = d, part = tr!("ledger-along-wall"));
-            rows.push(row(along, plain_pair((t0, t1))));
+            for (part, of) in [
+                (tr!("ledger-away-from-wall"), along),
+                (tr!("ledger-along-wall"), across),
+            ] {
+                let name = tr!("ledger-disc-v", disc = d, part = part.as_str());
+                rows.push(row(name, plain_pair(of(w.components()))));
+            }
             let push = vector(w.wall_impulse(), 3, "");
             rows.push((tr!("ledger-wall-push"), String::new(), push, None));
         }
