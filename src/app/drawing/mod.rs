@@ -208,7 +208,7 @@ fn dashed_line(from: Vec2, to: Vec2, dash: f32, width: f32, color: Color) {
     }
 }
 
-/// Every disc in one instanced draw call (see [`super::discs`]), each with
+/// Every disc in one instanced draw call (see [`discs`]), each with
 /// its spin line when spin is shown ([`spin_shown`]), and a ring round the
 /// selected one.
 pub fn draw_discs(
@@ -365,7 +365,7 @@ pub fn hollow_arrow(from: Vec2, to: Vec2, half_width: f32, line: f32, color: Col
 }
 
 /// Velocity and momentum arrows, as toggled; only those long enough to read
-/// ([`super::cull::MIN_ARROW_PIXELS`]) and crossing the world's rectangle.
+/// ([`cull::MIN_ARROW_PIXELS`]) and crossing the world's rectangle.
 /// Momentum arrows are wide and hollow and drawn first, so a velocity arrow
 /// lying along one shows inside it.
 pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Look) {

@@ -192,16 +192,33 @@ impl View for Totals {
 }
 
 /// The change since the record began, whole on as many lines as it needs,
-/// then the plots' series named in their colours on the rest of its last
-/// line, cut with "…" where that is full: then the hover, `more`, ends with
-/// them all. Wrapped onto lines of their own, the six names of rough discs
-/// took a projector's plots down to strips 35 px high.
+/// then the plots' series named in their colours after it, on two lines at
+/// most or the change's last, cut with "…" where that is full: then the
+/// hover, `more`, ends with them all. Wrapped onto lines of their own, the
+/// six names of rough discs took a projector's plots down to strips 35 px
+/// high; kept to the change's one line, the names of a 1280-px projector's
+/// plots were cut to "— p_…".
 fn change_and_names<'a>(
     ui: &mut egui::Ui,
     change: String,
     names: impl Iterator<Item = (&'a str, egui::Color32)>,
     more: String,
 ) -> egui::Response {
+    let (galley, all) = change_and_names_galley(ui, change, names);
+    let more = if galley.elided {
+        format!("{more}\n\n{all}")
+    } else {
+        more
+    };
+    cut_label(ui, egui::Label::new(galley), Some(more))
+}
+
+/// [`change_and_names`]'s text laid out to `ui`'s width, and every name.
+fn change_and_names_galley<'a>(
+    ui: &egui::Ui,
+    change: String,
+    names: impl Iterator<Item = (&'a str, egui::Color32)>,
+) -> (std::sync::Arc<egui::Galley>, String) {
     let style = ui.style().clone();
     let append = |job: &mut LayoutJob, text: RichText| {
         text.append_to(job, &style, FontSelection::Default, Align::Center)
@@ -219,13 +236,59 @@ fn change_and_names<'a>(
         append(&mut job, RichText::new("  "));
         append(&mut job, RichText::new(name).color(color).strong());
     }
-    job.wrap.max_rows = rows;
+    job.wrap.max_rows = rows.max(2);
     job.wrap.overflow_character = Some('…');
-    let galley = ui.fonts(|f| f.layout_job(job));
-    let more = if galley.elided {
-        format!("{more}\n\n{}", all.join("   "))
-    } else {
-        more
-    };
-    cut_label(ui, egui::Label::new(galley), Some(more))
+    (ui.fonts(|f| f.layout_job(job)), all.join("   "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::change_and_names_galley;
+    use egui::Color32;
+
+    /// The galley for a line `width` points wide, laid out by egui without
+    /// a window.
+    fn galley(width: f32, change: &str, names: &[&str]) -> std::sync::Arc<egui::Galley> {
+        let ctx = egui::Context::default();
+        crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
+        let mut out = None;
+        for _ in 0..2 {
+            let _ = ctx.run(Default::default(), |ctx| {
+                egui::CentralPanel::default().show(ctx, |ui| {
+                    ui.allocate_ui(egui::vec2(width, 100.0), |ui| {
+                        let names = names.iter().map(|n| (*n, Color32::WHITE));
+                        out = Some(change_and_names_galley(ui, change.into(), names).0);
+                    });
+                });
+            });
+        }
+        out.unwrap()
+    }
+
+    #[test]
+    fn the_change_stays_whole_and_the_names_take_two_lines_at_most() {
+        let change = "change since 0.00 s: Δp (−11.360, −0.058) kg·m/s, ΔL 80.799 kg·m²/s, \
+                      ΔE 0.000 J";
+        let rough = ["p_x", "p_y", "L", "KE", "rotational KE", "sum"];
+        // Wide enough for the change on one line: the names go on to a
+        // second (kept to the first, they were cut to "— p_…").
+        let wide = galley(700.0, change, &rough[..4]);
+        assert!(!wide.elided && wide.rows.len() == 2, "{}", wide.text());
+        // The change on two lines: the names fill the rest of the second
+        // and are cut there, never a third line; the change stays whole.
+        let narrow = galley(420.0, change, &rough);
+        assert_eq!(narrow.rows.len(), 2, "{}", narrow.text());
+        assert!(
+            narrow.elided && narrow.text().starts_with(change),
+            "{}",
+            narrow.text()
+        );
+        // A change longer than two lines keeps all its lines.
+        let tall = galley(200.0, change, &rough);
+        assert!(
+            tall.rows.len() >= 3 && tall.text().starts_with(change),
+            "{}",
+            tall.text()
+        );
+    }
 }
