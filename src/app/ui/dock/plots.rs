@@ -199,12 +199,12 @@ pub fn plot_columns<R>(ui: &mut egui::Ui, n: usize, add: impl FnOnce(&mut [egui:
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
     let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| tick(mark);
-    // egui_plot hides the time axis's numbers closer than 60 points, sized
-    // for long numbers: a projector's 120-point plot of 9 s then numbered
-    // only "0 s". Ours are short ("5 s"), and one too wide is still left out.
-    let x_axis = egui_plot::AxisHints::new_x().label_spacing(40.0..=55.0);
+    // egui_plot hides the x axis's numbers closer than 60 points, sized for
+    // long numbers: a projector's 120-point plot of 9 s then numbered only
+    // "0 s". Ours are short ("5 s"), and one too wide is still left out.
+    let spaced = egui_plot::AxisHints::new_x().label_spacing(40.0..=55.0);
     Plot::new(id)
-        .custom_x_axes(vec![x_axis])
+        .custom_x_axes(vec![spaced])
         .x_axis_formatter(axis)
         .y_axis_formatter(axis)
         .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
