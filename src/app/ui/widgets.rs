@@ -303,3 +303,21 @@ pub fn angular_momentum_tip(tip: String, world: &impulse::World) -> String {
         tip
     }
 }
+
+/// Runs `add` in a ui `size` points large, in an egui without a window and
+/// styled as the app's, over three frames (egui settles its layout over a
+/// few): the last frame's output. For tests of what a widget lays out.
+#[cfg(test)]
+pub fn headless(size: egui::Vec2, mut add: impl FnMut(&mut Ui)) -> egui::FullOutput {
+    let ctx = egui::Context::default();
+    crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
+    let mut out = None;
+    for _ in 0..3 {
+        out = Some(ctx.run(Default::default(), |ctx| {
+            egui::CentralPanel::default().show(ctx, |ui| {
+                ui.allocate_ui(size, &mut add);
+            });
+        }));
+    }
+    out.expect("three frames")
+}

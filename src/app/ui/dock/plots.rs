@@ -252,6 +252,7 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::{from_start, padded_range, steps_of_one_five_ten, still_plot, x_axis};
+    use crate::app::ui::widgets::headless;
     use egui_plot::GridInput;
 
     #[test]
@@ -272,32 +273,20 @@ mod tests {
     /// The time axis's numbers a plot `width` points wide over 0 to `end`
     /// seconds shows, drawn by egui without a window.
     fn time_numbers(width: f32, end: f64) -> Vec<String> {
-        let ctx = egui::Context::default();
-        crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
-        let mut numbers = Vec::new();
-        for _ in 0..3 {
-            // egui settles its layout over a few frames.
-            let out = ctx.run(Default::default(), |ctx| {
-                egui::CentralPanel::default().show(ctx, |ui| {
-                    ui.allocate_ui(egui::vec2(width, 60.0), |ui| {
-                        let plot = from_start(still_plot("time"), 0.0).include_x(end);
-                        x_axis(plot, 60.0, String::new(), "s")
-                            .height(60.0)
-                            .show(ui, |_| {})
-                    })
-                });
-            });
-            numbers = out
-                .shapes
-                .iter()
-                .filter_map(|clipped| match &clipped.shape {
-                    egui::Shape::Text(text) => Some(text.galley.text().to_string()),
-                    _ => None,
-                })
-                .filter(|text| text.ends_with(" s"))
-                .collect();
-        }
-        numbers
+        let out = headless(egui::vec2(width, 60.0), |ui| {
+            let plot = from_start(still_plot("time"), 0.0).include_x(end);
+            x_axis(plot, 60.0, String::new(), "s")
+                .height(60.0)
+                .show(ui, |_| {});
+        });
+        out.shapes
+            .iter()
+            .filter_map(|clipped| match &clipped.shape {
+                egui::Shape::Text(text) => Some(text.galley.text().to_string()),
+                _ => None,
+            })
+            .filter(|text| text.ends_with(" s"))
+            .collect()
     }
 
     #[test]

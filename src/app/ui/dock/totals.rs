@@ -244,24 +244,17 @@ fn change_and_names_galley<'a>(
 #[cfg(test)]
 mod tests {
     use super::change_and_names_galley;
+    use crate::app::ui::widgets::headless;
     use egui::Color32;
 
     /// The galley for a line `width` points wide, laid out by egui without
     /// a window.
     fn galley(width: f32, change: &str, names: &[&str]) -> std::sync::Arc<egui::Galley> {
-        let ctx = egui::Context::default();
-        crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
         let mut out = None;
-        for _ in 0..2 {
-            let _ = ctx.run(Default::default(), |ctx| {
-                egui::CentralPanel::default().show(ctx, |ui| {
-                    ui.allocate_ui(egui::vec2(width, 100.0), |ui| {
-                        let names = names.iter().map(|n| (*n, Color32::WHITE));
-                        out = Some(change_and_names_galley(ui, change.into(), names).0);
-                    });
-                });
-            });
-        }
+        headless(egui::vec2(width, 100.0), |ui| {
+            let names = names.iter().map(|n| (*n, Color32::WHITE));
+            out = Some(change_and_names_galley(ui, change.into(), names).0);
+        });
         out.unwrap()
     }
 
