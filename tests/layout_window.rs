@@ -454,14 +454,25 @@ fn projector_ledger(lang: &str) {
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");
-    // The key list fits the window, its key column too.
+    // The key list fits the window.
     app.xdo(&["key", "h"]);
-    let s = app.wait_for("the help", 30, |s| {
-        s["panel_widgets"]["help_window"].is_array()
+    app.wait_for("the help", 30, |s| {
+        s["panel_widgets"]["help_first_meaning"].is_array()
     });
-    let _ = s;
+    // egui lays a new box out once unseen; the frame after is the first shown.
+    let s = app.wait_frames(1);
+    let first = rect(&s["panel_widgets"]["help_first_meaning"]);
     let s = app.wait_frames(3);
     let help = rect(&s["panel_widgets"]["help_window"]);
+    // Each key's meaning has the room to read on one line where its keys do
+    // (no column of keys squeezes it into three), and nothing moves after H.
+    let keys = rect(&s["panel_widgets"]["help_first_keys"]);
+    let meaning = rect(&s["panel_widgets"]["help_first_meaning"]);
+    assert!(
+        meaning[3] < 1.5 * keys[3],
+        "{lang}: the first key's meaning wraps: {meaning:?}, its keys {keys:?}"
+    );
+    assert_eq!(first, meaning, "{lang}: the key list moved after it opened");
     assert!(
         help[0] >= 0.0
             && help[1] >= 0.0

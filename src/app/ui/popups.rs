@@ -2,7 +2,8 @@
 //! the key list (H), made from the bindings table, the preset menu (P), and
 //! the question whether to restore a session that did not close normally.
 //! Each fits the window at every scale: a fixed size within the window,
-//! two columns where it is wide, scrolling where it is tall.
+//! two columns where it is wide, each key over its meaning where it is
+//! narrow, scrolling where it is tall.
 
 use super::dialog::{scroll, Dialog};
 use super::Cx;
@@ -23,17 +24,53 @@ fn fitted(screen: egui::Rect, wanted: egui::Vec2) -> egui::Vec2 {
     )
 }
 
-/// One help line: its keys (bold) and what they do, with the control that
-/// does the same.
-fn help_row(ui: &mut egui::Ui, keys: &str, help: &str, control: Option<&str>) {
-    ui.label(RichText::new(keys).strong());
-    let what = match control {
+/// What a help line says its keys do, with the control that does the same.
+fn help_text(help: &str, control: Option<&str>) -> String {
+    match control {
         Some(c) => format!("{help} ({c})"),
         None => help.to_string(),
-    };
-    ui.add(egui::Label::new(what).wrap());
-    ui.end_row();
+    }
 }
+
+/// Where a help line's keys and their meaning were laid out.
+type LineRects = (egui::Rect, egui::Rect);
+
+/// One help line in a table: its keys (bold) and what they do.
+fn help_row(ui: &mut egui::Ui, keys: &str, what: String) -> LineRects {
+    let keys = ui.label(RichText::new(keys).strong()).rect;
+    let meaning = ui.add(egui::Label::new(what).wrap()).rect;
+    ui.end_row();
+    (keys, meaning)
+}
+
+/// The key list where a table's two columns would squeeze both (a
+/// projector's scale): each line's keys in bold over what they do, indented,
+/// on a stripe of its own. Laid out in one pass, so nothing moves after H.
+fn help_stacked(ui: &mut egui::Ui, lines: &[(String, String)]) -> Option<LineRects> {
+    let stripe = ui.visuals().faint_bg_color;
+    let mut first = None;
+    for (i, (keys, what)) in lines.iter().enumerate() {
+        let fill = if i % 2 == 1 {
+            stripe
+        } else {
+            egui::Color32::TRANSPARENT
+        };
+        egui::Frame::NONE
+            .fill(fill)
+            .inner_margin(egui::Margin::symmetric(4, 3))
+            .show(ui, |ui| {
+                ui.set_width(ui.available_width());
+                let shown = ui.add(egui::Label::new(RichText::new(keys).strong()).wrap());
+                let meaning = ui.indent(keys, |ui| ui.add(egui::Label::new(what.as_str()).wrap()));
+                first.get_or_insert((shown.rect, meaning.inner.rect));
+            });
+    }
+    first
+}
+
+/// Below this width (points) the key list stacks each line's keys over
+/// what they do instead of a table of two columns.
+const STACKED_BELOW: f32 = 640.0;
 
 impl Popups {
     /// The popups that are open.
@@ -78,6 +115,7 @@ impl Popups {
             .iter()
             // The browser keeps these keys for itself.
             .filter(|b| !(cfg!(target_arch = "wasm32") && browser_keeps(b)))
+            .map(|b| (b.keys(), help_text(&b.help(), control_of(b).as_deref())))
             .collect();
         // Modal: it covers most of the window (all of it at a projector's
         // scale), and Tab must not walk the controls hidden behind it.
@@ -86,35 +124,37 @@ impl Popups {
             .closable()
             .modal(ctx)
             .show(ctx, cx, |ui, cx| {
-                scroll(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, _| {
-                    let grid =
-                        |ui: &mut egui::Ui,
-                         id: &str,
-                         part: &[&&crate::app::model::bindings::Binding]| {
-                            egui::Grid::new(id)
-                                .striped(true)
-                                .num_columns(2)
-                                .max_col_width(ui.available_width() * 0.62)
-                                .show(ui, |ui| {
-                                    for b in part {
-                                        help_row(
-                                            ui,
-                                            &b.keys(),
-                                            &b.help(),
-                                            control_of(b).as_deref(),
-                                        );
-                                    }
-                                });
-                        };
-                    let refs: Vec<_> = lines.iter().collect();
-                    if two_columns {
-                        let half = refs.len().div_ceil(2);
+                scroll(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, cx| {
+                    let grid = |ui: &mut egui::Ui, id: &str, part: &[(String, String)]| {
+                        egui::Grid::new(id)
+                            .striped(true)
+                            .num_columns(2)
+                            .max_col_width(ui.available_width() * 0.62)
+                            .show(ui, |ui| {
+                                let mut rows = part.iter().map(|(k, w)| help_row(ui, k, w.clone()));
+                                let first = rows.next();
+                                rows.for_each(drop);
+                                first
+                            })
+                            .inner
+                    };
+                    // Where the first line is, for the state dump: the window
+                    // tests check that its meaning has room, and stays put.
+                    let first = if two_columns {
+                        let half = lines.len().div_ceil(2);
                         ui.columns(2, |columns| {
-                            grid(&mut columns[0], "help_left", &refs[..half]);
-                            grid(&mut columns[1], "help_right", &refs[half..]);
-                        });
+                            let first = grid(&mut columns[0], "help_left", &lines[..half]);
+                            grid(&mut columns[1], "help_right", &lines[half..]);
+                            first
+                        })
+                    } else if ui.available_width() < STACKED_BELOW {
+                        help_stacked(ui, &lines)
                     } else {
-                        grid(ui, "help_grid", &refs);
+                        grid(ui, "help_grid", &lines)
+                    };
+                    if let Some((keys, meaning)) = first {
+                        cx.marks.note("help_first_keys", keys);
+                        cx.marks.note("help_first_meaning", meaning);
                     }
                 });
             });
