@@ -400,6 +400,15 @@ fn projector_ledger(lang: &str) {
     assert_eq!(s["layout"]["side"], "drawer", "{}", s["layout"]);
     assert_eq!(s["layout"]["tab_folded"], false, "the ledger is open");
     assert_eq!(s["ui"]["language"], lang);
+    // The impact's lesson in sight without scrolling: both discs' momenta
+    // and their total (under the count, the total was out of sight). Not in
+    // the pseudo-language, whose names are longer than any language's and
+    // take two lines here: for it, nothing cut off is what counts.
+    let (total, tab) = (rect(&s["panel_widgets"]["ledger_total_p"]), tab_content(&s));
+    assert!(
+        lang == "qps" || total[1] >= tab[1] - 0.5 && total[1] + total[3] <= tab[1] + tab[3] + 0.5,
+        "{lang}: the total momentum's row {total:?} in the tab {tab:?}"
+    );
     // The tabs one by one, or, where their names do not fit, as a list.
     let tabs = [
         "tab_totals",

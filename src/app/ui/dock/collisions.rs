@@ -58,7 +58,9 @@ impl View for Collisions {
                 detail(&mut columns[1], cx, newest);
             });
         } else {
-            count(ui, cx);
+            // The newest impact first, and the count with its key to the
+            // next under it: at a projector the tab holds four rows, and
+            // under the count the two discs' total momentum was out of sight.
             scroll(
                 ui,
                 cx,
@@ -66,6 +68,7 @@ impl View for Collisions {
                 "ledger_stacked",
                 |ui, cx| {
                     detail(ui, cx, newest);
+                    count(ui, cx);
                     ui.separator();
                     list(ui, cx, &recent);
                 },
@@ -125,7 +128,7 @@ fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
 fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     // Never "t =" on one line and "1.784 s" on the next.
     let when = format!("t = {}", with_unit(impact.time(), 3, "s")).replace(' ', "\u{a0}");
-    let heading = tr!("ledger-newest", who = who(impact), when = when);
+    let heading = tr!("ledger-newest", who = who(impact), when = when.as_str());
     // (name, before, after, the name a total's row is noted under).
     let mut rows: Vec<(String, String, String, Option<&str>)> = Vec::new();
     let row = |name, (b, a): (String, String)| (name, b, a, None);
@@ -211,11 +214,25 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     let spacing = 18.0;
     let names = (ui.available_width() - 2.0 * (numbers + spacing) - SCROLL_BAR)
         .max(NAMES_AT_LEAST * ui.available_width());
+    // Who and when on one line, or when alone where that would take two:
+    // a pair's rows name both discs, and at a projector in German the
+    // second line had pushed the total momentum out of sight.
+    let heading = if matches!(impact, Impact::Pair(_))
+        && widest(&mut std::iter::once(&heading)) > names.max(numbers)
+    {
+        when
+    } else {
+        heading
+    };
     let area = egui::ScrollArea::both().auto_shrink([false, true]);
     scroll(ui, cx, area, "ledger_detail", |ui, cx| {
+        // Rows as tall as their text, not as a button: at a projector the
+        // heading and three rows (the discs' momenta and their total) fit.
+        let line = ui.text_style_height(&egui::TextStyle::Body);
         let r = egui::Grid::new("ledger_newest")
             .striped(true)
             .num_columns(3)
+            .min_row_height(line)
             .spacing([spacing, 4.0])
             .max_col_width(names.max(numbers))
             .show(ui, |ui| {
