@@ -247,6 +247,11 @@ speeds-axis = Geschwindigkeit (m/s)
 speeds-name = Geschwindigkeiten |v|
 speeds-discs = Scheiben
 speeds-count = Scheiben je Balken
+# Hovering a bar: how many discs it counts, and its speeds.
+speeds-bar = { $count ->
+    [one] eine Scheibe
+   *[other] { $count } Scheiben
+} von { $low } bis { $high } m/s
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = Randgeschwindigkeiten |ω|·r
 rim-speeds-equal = Randgeschwindigkeiten bei gleicher Verteilung

@@ -244,6 +244,11 @@ speeds-axis = speed (m/s)
 speeds-name = speeds |v|
 speeds-discs = discs
 speeds-count = discs in each bar
+# Hovering a bar: how many discs it counts, and its speeds.
+speeds-bar = { $count ->
+    [one] one disc
+   *[other] { $count } discs
+} from { $low } to { $high } m/s
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = rim speeds |ω|·r
 rim-speeds-equal = rim speeds, shared equally

@@ -247,6 +247,11 @@ speeds-axis = rapidez (m/s)
 speeds-name = rapidez |v|
 speeds-discs = discos
 speeds-count = discos en cada barra
+# Hovering a bar: how many discs it counts, and its speeds.
+speeds-bar = { $count ->
+    [one] un disco
+   *[other] { $count } discos
+} de { $low } a { $high } m/s
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = rapidez del borde |ω|·r
 rim-speeds-equal = rapidez del borde, reparto equitativo

@@ -244,6 +244,11 @@ speeds-axis = vitesse (m/s)
 speeds-name = vitesses |v|
 speeds-discs = disques
 speeds-count = disques par barre
+# Hovering a bar: how many discs it counts, and its speeds.
+speeds-bar = { $count ->
+    [one] un disque
+   *[other] { $count } disques
+} de { $low } à { $high } m/s
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = vitesses du bord |ω|·r
 rim-speeds-equal = vitesses du bord, à parts égales

@@ -244,6 +244,11 @@ speeds-axis = velocidade (m/s)
 speeds-name = velocidades |v|
 speeds-discs = discos
 speeds-count = discos em cada barra
+# Hovering a bar: how many discs it counts, and its speeds.
+speeds-bar = { $count ->
+    [one] um disco
+   *[other] { $count } discos
+} de { $low } a { $high } m/s
 maxwell-boltzmann = Maxwell–Boltzmann
 rim-speeds = velocidades da borda |ω|·r
 rim-speeds-equal = velocidades da borda, divisão igual

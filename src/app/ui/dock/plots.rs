@@ -8,7 +8,7 @@ use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::plain;
 use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
-use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotPoints};
+use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoints};
 
 /// Colours of the plotted totals (Okabe–Ito).
 pub const PX_COLOR: Color32 = Color32::from_rgb(86, 180, 233); // sky blue
@@ -98,7 +98,17 @@ pub fn speed_plot(
             format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
         })
         .show(ui, |plot| {
-            plot.bar_chart(BarChart::new(bars).name(speed_name).color(PX_COLOR));
+            let bin_width = h.bin_width;
+            let two = rims.is_some();
+            let hover = move |bar: &Bar, chart: &BarChart| {
+                bar_hover(two.then(|| chart.name()), bar, bin_width)
+            };
+            plot.bar_chart(
+                BarChart::new(bars)
+                    .name(speed_name)
+                    .color(PX_COLOR)
+                    .element_formatter(Box::new(hover)),
+            );
             plot.line(
                 Line::new(PlotPoints::from(law))
                     .name(tr!("maxwell-boltzmann"))
@@ -106,7 +116,12 @@ pub fn speed_plot(
                     .width(3.0),
             );
             if let Some((bars, law)) = rim {
-                plot.bar_chart(BarChart::new(bars).name(tr!("rim-speeds")).color(RIM_COLOR));
+                plot.bar_chart(
+                    BarChart::new(bars)
+                        .name(tr!("rim-speeds"))
+                        .color(RIM_COLOR)
+                        .element_formatter(Box::new(hover)),
+                );
                 plot.line(
                     Line::new(PlotPoints::from(law))
                         .name(tr!("rim-speeds-equal"))
@@ -117,6 +132,22 @@ pub fn speed_plot(
             }
         })
         .response
+}
+
+/// What hovering a speed bar says, on one line (egui_plot puts it at the
+/// bar's top, where a second line was cut off by the plot's edge): how many
+/// discs it counts and the bin's speeds ("12 discs from 1.00 to 1.25 m/s"),
+/// after its series where two are drawn, where egui_plot would show the
+/// bare height ("12").
+fn bar_hover(series: Option<&str>, bar: &Bar, bin_width: f64) -> String {
+    let bin = (bar.argument / bin_width).floor();
+    let count = bar.value.round() as i64;
+    let (low, high) = (plain(bin * bin_width, 2), plain((bin + 1.0) * bin_width, 2));
+    let what = tr!("speeds-bar", count = count, low = low, high = high);
+    match series {
+        Some(series) => format!("{series}: {what}"),
+        None => what,
+    }
 }
 
 /// The x axis's name under a plot with room for it; under a shorter one
@@ -251,9 +282,9 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::{from_start, padded_range, steps_of_one_five_ten, still_plot, x_axis};
+    use super::{bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, x_axis};
     use crate::app::ui::widgets::headless;
-    use egui_plot::GridInput;
+    use egui_plot::{Bar, GridInput};
 
     #[test]
     fn the_grid_steps_are_a_power_of_ten_then_five_and_ten_of_it() {
@@ -287,6 +318,26 @@ mod tests {
             })
             .filter(|text| text.ends_with(" s"))
             .collect()
+    }
+
+    #[test]
+    fn a_speed_bar_says_how_many_discs_it_counts_and_between_which_speeds() {
+        use crate::app::lang::{set_language, Lang};
+        // The third bin of 0.25 m/s, its bar drawn off its centre (beside a
+        // rim-speed bar), its height a count with a rounding error.
+        let bar = Bar::new(0.57, 12.000000001);
+        assert_eq!(
+            bar_hover(Some("speeds |v|"), &bar, 0.25),
+            "speeds |v|: 12 discs from 0.50 to 0.75 m/s"
+        );
+        assert_eq!(
+            bar_hover(None, &Bar::new(0.125, 1.0), 0.25),
+            "one disc from 0.00 to 0.25 m/s"
+        );
+        set_language(Lang::De);
+        let german = bar_hover(None, &bar, 0.25);
+        set_language(Lang::En);
+        assert_eq!(german, "12 Scheiben von 0,50 bis 0,75 m/s");
     }
 
     #[test]
