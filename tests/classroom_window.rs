@@ -97,7 +97,9 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
     .unwrap();
     let bad = dir.path().join("bad-scene-1-cr.toml");
     std::fs::write(&bad, "name = \"Bad\"\n[world]\nsize = [16.0, 10.0\n").unwrap();
-    let app = Sandbox::start(&x, &["--paused"]);
+    let out = tempfile::tempdir().unwrap();
+    let out_dir = out.path().to_str().expect("utf-8 temp path");
+    let app = Sandbox::start(&x, &["--paused", "--out", out_dir]);
     let s0 = app.wait_frames(2);
     assert_eq!(s0["panel_visible"], true, "the panel is shown by default");
     let world = &s0["layout"]["world"];
@@ -180,6 +182,19 @@ fn the_side_panel_opens_scene_files_keeps_the_scene_on_a_bad_one_and_sets_restit
     app.wait_frames(1);
     app.xdo(&["type", "--delay", "30", bad.to_str().unwrap()]);
     app.wait_frames(2);
+    // Ctrl+S in the path's field saves the scene, as anywhere; it opens
+    // nothing (Enter there would open the file typed).
+    app.xdo(&["key", "ctrl+s"]);
+    let saved = app.wait_frames(3);
+    assert_eq!(
+        saved_scenes(out.path()).len(),
+        1,
+        "Ctrl+S in the path's field saved into {out_dir}"
+    );
+    assert_eq!(
+        saved["scene_origin"], s1["scene_origin"],
+        "and opened nothing"
+    );
     click(widget(&s2, "open", 0.5));
     let s3 = app.wait_frames(3);
     assert_eq!(

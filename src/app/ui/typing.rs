@@ -14,32 +14,37 @@ use egui::{Event, Id, Key, Modifiers};
 
 /// Where a field whose Enter does something else than apply a value (the
 /// scene file's path: Enter opens it) leaves its id, so that Ctrl+S there
-/// is no Enter.
+/// saves without an Enter.
 pub const NO_ENTER_ON_SAVE: &str = "typing_no_enter_on_save";
 
-/// Ctrl+S while a field has the keyboard: an Enter for the field first.
+/// Ctrl+S while a field has the keyboard: an Enter for the field first
+/// (none in the scene file's path: it would open the file typed there).
 /// Whether the window is to save after this frame's views (the keys that
 /// leave a field belong to it, so the window's own binding rests).
 pub fn enter_before_saving(ctx: &egui::Context) -> bool {
     let Some(focused) = ctx.memory(|m| m.focused()) else {
         return false;
     };
-    let other = ctx.data(|d| d.get_temp::<Id>(Id::new(NO_ENTER_ON_SAVE)));
-    if !ctx.wants_keyboard_input() || other == Some(focused) {
+    if !ctx.wants_keyboard_input() {
         return false;
     }
+    let other = ctx.data(|d| d.get_temp::<Id>(Id::new(NO_ENTER_ON_SAVE)));
+    if other == Some(focused) {
+        return ctx.input(|i| i.events.iter().any(is_save));
+    }
     ctx.input_mut(|i| enter_after_save(&mut i.events))
+}
+
+/// Whether `event` is Ctrl+S (without Shift) pressed.
+fn is_save(event: &Event) -> bool {
+    matches!(event, Event::Key { key: Key::S, pressed: true, modifiers, .. }
+        if commanding(*modifiers) && !modifiers.shift)
 }
 
 /// Puts an Enter after each Ctrl+S (without Shift) in `events`; whether
 /// there was one.
 fn enter_after_save(events: &mut Vec<Event>) -> bool {
-    let saves: Vec<usize> = (0..events.len())
-        .filter(|&k| {
-            matches!(events[k], Event::Key { key: Key::S, pressed: true, modifiers, .. }
-                if commanding(modifiers) && !modifiers.shift)
-        })
-        .collect();
+    let saves: Vec<usize> = (0..events.len()).filter(|&k| is_save(&events[k])).collect();
     let any = !saves.is_empty();
     for k in saves.into_iter().rev() {
         let enter = Event::Key {
