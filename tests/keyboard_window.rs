@@ -563,7 +563,8 @@ fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
 /// edge dragged up gives it what the world can spare (the world keeps 40 %
 /// of the window and 240 px each way); from the keyboard, Tab reaches the
 /// edge, End and Home take it to the shortest and the tallest, Up adds a
-/// row, Enter gives the tab its own height back.
+/// row, Enter gives the tab its own height back. The next start opens the
+/// tab at the height last set.
 fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
     let x = Xvfb::start("edge");
     let app = projector_at_impact(&x, "pt-BR");
@@ -606,5 +607,20 @@ fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
             "{key} kept the keys"
         );
     }
+    // The height set is where the next start opens the tab.
+    app.xdo(&["key", "Up"]);
+    let set = app.wait_for("a row more", 30, |s| {
+        (tab_content(s)[3] - own - row).abs() < 0.5
+    });
+    let settings = |state: &std::path::Path| state.join("impulse").join("settings.toml");
+    let kept = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(kept.path().join("impulse")).unwrap();
+    // (None written: the next start opens the tab at its own height.)
+    let _ = std::fs::copy(settings(app._dir.path()), settings(kept.path()));
     app.quit();
+    let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
+    let again = Sandbox::start_with_state(&x, &args, kept.path());
+    let s = again.wait_frames(3);
+    assert_eq!(tab_content(&s)[3], tab_content(&set)[3], "the next start");
+    again.quit();
 }

@@ -115,6 +115,7 @@ impl Sandbox {
             | Fullscreen
             | SetScale(_)
             | SetTabHeight(_)
+            | KeepTabHeight
             | NextScale
             | SetTheme(_)
             | SetLanguage(_)
@@ -332,6 +333,10 @@ impl Sandbox {
             }
             ToggleDockExpanded => self.panels.dock_expanded = !self.panels.dock_expanded,
             SetTabHeight(h) => self.panels.tab_height = h.filter(|h| h.is_finite()),
+            KeepTabHeight => {
+                let height = self.panels.tab_height;
+                self.remember(|r| r.tab_height = height);
+            }
             ToggleDocks => self.panels.docks_open = !self.panels.docks_open,
             ToggleSide => self.panels.side_open = !self.panels.side_open,
             ToggleDrawer => self.panels.drawer_open = !self.panels.drawer_open,

@@ -160,6 +160,9 @@ pub enum Command {
     ToggleDockExpanded,
     /// The open tab's height in px (its top edge dragged); None: its own.
     SetTabHeight(Option<f32>),
+    /// The tab's height is set (the drag let go, a key pressed): remembered
+    /// for the next start.
+    KeepTabHeight,
     ToggleDocks,
     ToggleSide,
     ToggleDrawer,

@@ -272,7 +272,10 @@ impl Sandbox {
             overlays: Overlays::default(),
             record: Record::default(),
             undo: undo::Undo::default(),
-            panels: Panels::new(scale, theme),
+            panels: Panels {
+                tab_height: remembered.settings.tab_height.filter(|h| h.is_finite()),
+                ..Panels::new(scale, theme)
+            },
             messages: Messages::default(),
             steps: StepReport::default(),
             recovery,

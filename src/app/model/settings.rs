@@ -1,6 +1,6 @@
 //! What the window remembers between runs: the language the person chose,
-//! whether they turned sound on, the text size and the theme (a teacher sets
-//! the projector's once). A small TOML file, `settings.toml`,
+//! whether they turned sound on, the text size, the theme and the open
+//! tab's height (a teacher sets the projector's once). A small TOML file, `settings.toml`,
 //! beside the recovery file (`$XDG_STATE_HOME/impulse/`, see
 //! [`super::recovery::folder`]); in the browser the same name in the page's
 //! local storage. Tests isolate it the way they isolate recovery (their own
@@ -34,6 +34,10 @@ pub struct Settings {
     /// The theme chosen in View.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub theme: Option<Theme>,
+    /// The open tab's height (px) its top edge was last set to; none: the
+    /// tab's own.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tab_height: Option<f32>,
 }
 
 /// The settings and where they are kept.
@@ -126,6 +130,7 @@ mod tests {
         r.settings.sound = true;
         r.settings.text_size = Some(2.0);
         r.settings.theme = Some(Theme::Light);
+        r.settings.tab_height = Some(320.0);
         assert_eq!(r.save(), None);
         let (again, problem) = Remembered::load(dir.path());
         assert_eq!(problem, None);
@@ -175,6 +180,26 @@ mod tests {
         let (r, _) = Remembered::load(dir.path());
         assert_eq!(r.settings.text_size, Some(s.panels.scale));
         assert!(s.panels.scale <= 2.5);
+    }
+
+    #[test]
+    fn the_tab_height_set_is_where_the_next_start_opens_once_let_go() {
+        use crate::app::model::{tests::sandbox_with, Command};
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+        assert_eq!(s.panels.tab_height, None);
+        // Dragged: written once, when let go, not at every step.
+        s.apply(Command::SetTabHeight(Some(250.0)));
+        s.apply(Command::SetTabHeight(Some(300.0)));
+        assert_eq!(Remembered::load(dir.path()).0.settings.tab_height, None);
+        s.apply(Command::KeepTabHeight);
+        let again = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+        assert_eq!(again.panels.tab_height, Some(300.0));
+        // Back to the tab's own height, and so at the next start.
+        s.apply(Command::SetTabHeight(None));
+        s.apply(Command::KeepTabHeight);
+        let again = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+        assert_eq!(again.panels.tab_height, None);
     }
 
     #[test]

@@ -4,7 +4,8 @@
 //! the arrows move it a row, Page Up and Page Down three, Home and End to
 //! the tallest and the shortest, Enter back to the tab's own height; so
 //! does a double-click. The layout keeps it within what the world leaves
-//! ([`crate::app::layout::tab_range`]).
+//! ([`crate::app::layout::tab_range`]). Where it is set is remembered for
+//! the next start ([`crate::app::model::settings`]).
 
 use super::super::Cx;
 use crate::app::lang::tr;
@@ -63,6 +64,10 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
     let set = |h: f32| Command::SetTabHeight(Some(h.clamp(edge.least, edge.most)));
     if r.double_clicked() {
         cx.send(Command::SetTabHeight(None));
+        cx.send(Command::KeepTabHeight);
+    } else if r.drag_stopped() {
+        // Remembered for the next start once let go.
+        cx.send(Command::KeepTabHeight);
     } else if r.dragged() {
         // Where the pointer is, less where on the grip it was taken: no
         // rounding adds up over a slow drag.
@@ -98,10 +103,12 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
         for (key, by) in keys {
             if ui.input(|i| i.key_pressed(key)) {
                 cx.send(set(edge.height + by));
+                cx.send(Command::KeepTabHeight);
             }
         }
         if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
             cx.send(Command::SetTabHeight(None));
+            cx.send(Command::KeepTabHeight);
         }
     }
 }
