@@ -36,7 +36,7 @@ fn help_text(help: &str, control: Option<&str>) -> String {
 type LineRects = (egui::Rect, egui::Rect);
 
 /// One help line in a table: its keys (bold) and what they do.
-fn help_row(ui: &mut egui::Ui, keys: &str, what: String) -> LineRects {
+fn help_row(ui: &mut egui::Ui, keys: &str, what: &str) -> LineRects {
     let keys = ui.label(RichText::new(keys).strong()).rect;
     let meaning = ui.add(egui::Label::new(what).wrap()).rect;
     ui.end_row();
@@ -131,9 +131,10 @@ impl Popups {
                             .num_columns(2)
                             .max_col_width(ui.available_width() * 0.62)
                             .show(ui, |ui| {
-                                let mut rows = part.iter().map(|(k, w)| help_row(ui, k, w.clone()));
-                                let first = rows.next();
-                                rows.for_each(drop);
+                                let mut first = None;
+                                for (keys, what) in part {
+                                    first.get_or_insert(help_row(ui, keys, what));
+                                }
                                 first
                             })
                             .inner
