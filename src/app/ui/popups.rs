@@ -60,16 +60,22 @@ fn help_stacked(ui: &mut egui::Ui, lines: &[(String, String)]) -> Option<LineRec
             .inner_margin(egui::Margin::symmetric(4, 3))
             .show(ui, |ui| {
                 ui.set_width(ui.available_width());
-                let shown = ui.add(egui::Label::new(RichText::new(keys).strong()).wrap());
-                let meaning = ui.indent(keys, |ui| ui.add(egui::Label::new(what.as_str()).wrap()));
-                first.get_or_insert((shown.rect, meaning.inner.rect));
+                // Ragged, not justified as in `ui.columns`: justified words
+                // drift apart on a line that wraps.
+                ui.with_layout(egui::Layout::top_down(egui::Align::Min), |ui| {
+                    let shown = ui.add(egui::Label::new(RichText::new(keys).strong()).wrap());
+                    let meaning =
+                        ui.indent(keys, |ui| ui.add(egui::Label::new(what.as_str()).wrap()));
+                    first.get_or_insert((shown.rect, meaning.inner.rect));
+                });
             });
     }
     first
 }
 
-/// Below this width (points) the key list stacks each line's keys over
-/// what they do instead of a table of two columns.
+/// Below this width (points) a column of the key list stacks each line's
+/// keys over what they do instead of a table of two columns, which gave
+/// the meanings a third of it (three to five lines in German).
 const STACKED_BELOW: f32 = 640.0;
 
 impl Popups {
@@ -141,17 +147,22 @@ impl Popups {
                     };
                     // Where the first line is, for the state dump: the window
                     // tests check that its meaning has room, and stays put.
+                    let list = |ui: &mut egui::Ui, id: &str, part: &[(String, String)]| {
+                        if ui.available_width() < STACKED_BELOW {
+                            help_stacked(ui, part)
+                        } else {
+                            grid(ui, id, part)
+                        }
+                    };
                     let first = if two_columns {
                         let half = lines.len().div_ceil(2);
                         ui.columns(2, |columns| {
-                            let first = grid(&mut columns[0], "help_left", &lines[..half]);
-                            grid(&mut columns[1], "help_right", &lines[half..]);
+                            let first = list(&mut columns[0], "help_left", &lines[..half]);
+                            list(&mut columns[1], "help_right", &lines[half..]);
                             first
                         })
-                    } else if ui.available_width() < STACKED_BELOW {
-                        help_stacked(ui, &lines)
                     } else {
-                        grid(ui, "help_grid", &lines)
+                        list(ui, "help_grid", &lines)
                     };
                     if let Some((keys, meaning)) = first {
                         cx.marks.note("help_first_keys", keys);
