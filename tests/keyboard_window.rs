@@ -616,7 +616,7 @@ fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
     let kept = tempfile::tempdir().unwrap();
     std::fs::create_dir_all(kept.path().join("impulse")).unwrap();
     // (None written: the next start opens the tab at its own height.)
-    let _ = std::fs::copy(settings(app._dir.path()), settings(kept.path()));
+    let _ = std::fs::copy(settings(&app.state), settings(kept.path()));
     app.quit();
     let args = ["--size", "1024x768", "--ui-scale", "2", "--lang", "pt-BR"];
     let again = Sandbox::start_with_state(&x, &args, kept.path());

@@ -164,6 +164,8 @@ pub struct Sandbox {
     pub child: Child,
     pub dump: PathBuf,
     pub display: String,
+    /// Its `XDG_STATE_HOME` (recovery and settings files under `impulse/`).
+    pub state: PathBuf,
     pub _dir: tempfile::TempDir,
 }
 
@@ -215,6 +217,7 @@ impl Sandbox {
             child,
             dump,
             display: x.display.clone(),
+            state: state.to_path_buf(),
             _dir: dir,
         };
         sandbox.wait_frames(5);

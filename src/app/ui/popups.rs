@@ -145,8 +145,6 @@ impl Popups {
                             })
                             .inner
                     };
-                    // Where the first line is, for the state dump: the window
-                    // tests check that its meaning has room, and stays put.
                     let list = |ui: &mut egui::Ui, id: &str, part: &[(String, String)]| {
                         if ui.available_width() < STACKED_BELOW {
                             help_stacked(ui, part)
@@ -154,6 +152,8 @@ impl Popups {
                             grid(ui, id, part)
                         }
                     };
+                    // Where the first line is, for the state dump: the window
+                    // tests check that its meaning has room, and stays put.
                     let first = if two_columns {
                         let half = lines.len().div_ceil(2);
                         ui.columns(2, |columns| {

@@ -122,9 +122,9 @@ fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
 
 /// The newest impact, before and after: each quantity for one disc and the
 /// other, and for a pair their total (the lesson: p stays, KE stays when
-/// elastic). Who and when name the table's first column, not a line above
-/// it, which at a projector had left room for the column names only and no
-/// row.
+/// elastic). Who and when (when alone for a pair, where both take two
+/// lines) name the table's first column, not a line above it, which at a
+/// projector had left room for the column names only and no row.
 fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     // Never "t =" on one line and "1.784 s" on the next.
     let when = format!("t = {}", with_unit(impact.time(), 3, "s")).replace(' ', "\u{a0}");

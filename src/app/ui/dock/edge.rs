@@ -62,11 +62,15 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
         );
     }
     let set = |h: f32| Command::SetTabHeight(Some(h.clamp(edge.least, edge.most)));
-    if r.double_clicked() {
-        cx.send(Command::SetTabHeight(None));
+    // A height set at once (a key, a double-click) is remembered for the
+    // next start at once; a drag's, when it is let go.
+    let set_and_keep = |cx: &mut Cx, height: Command| {
+        cx.send(height);
         cx.send(Command::KeepTabHeight);
+    };
+    if r.double_clicked() {
+        set_and_keep(cx, Command::SetTabHeight(None));
     } else if r.drag_stopped() {
-        // Remembered for the next start once let go.
         cx.send(Command::KeepTabHeight);
     } else if r.dragged() {
         // Where the pointer is, less where on the grip it was taken: no
@@ -102,13 +106,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
         ];
         for (key, by) in keys {
             if ui.input(|i| i.key_pressed(key)) {
-                cx.send(set(edge.height + by));
-                cx.send(Command::KeepTabHeight);
+                set_and_keep(cx, set(edge.height + by));
             }
         }
         if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-            cx.send(Command::SetTabHeight(None));
-            cx.send(Command::KeepTabHeight);
+            set_and_keep(cx, Command::SetTabHeight(None));
         }
     }
 }
