@@ -33,6 +33,10 @@ fn main() -> std::process::ExitCode {
             screenshot_saves_the_frame_as_a_png,
         ),
         (
+            "edges_are_smoothed_unless_the_window_is_told_not_to",
+            edges_are_smoothed_unless_the_window_is_told_not_to,
+        ),
+        (
             "a_gas_of_many_discs_opens_draws_them_and_reports_frame_times",
             a_gas_of_many_discs_opens_draws_them_and_reports_frame_times,
         ),
@@ -230,11 +234,30 @@ fn screenshot_saves_the_frame_as_a_png() {
     );
 }
 
+/// As shipped, the window asks for 4 samples per pixel (discs' and lines'
+/// edges smoothed); `--no-antialias`, which the other window tests use,
+/// asks for none. The dump says what OpenGL gave.
+fn edges_are_smoothed_unless_the_window_is_told_not_to() {
+    let x = Xvfb::start("samples");
+    let shipped = Sandbox::start_as_shipped(&x, &["--paused"]);
+    let samples = shipped.wait_frames(2)["samples"].as_i64();
+    assert!(samples.is_some_and(|n| n >= 2), "as shipped: {samples:?}");
+    shipped.quit();
+    let plain = Sandbox::start(&x, &["--paused"]);
+    let samples = plain.wait_frames(2)["samples"].as_i64();
+    assert!(
+        samples.is_some_and(|n| n <= 1),
+        "--no-antialias: {samples:?}"
+    );
+    plain.quit();
+}
+
 fn a_gas_of_many_discs_opens_draws_them_and_reports_frame_times() {
     let x = Xvfb::start("gas");
     let dir = tempfile::tempdir().unwrap();
     let (csv, png) = (dir.path().join("times.csv"), dir.path().join("gas.png"));
-    let app = Sandbox::start(
+    // The frame times a person would see: edges smoothed.
+    let app = Sandbox::start_as_shipped(
         &x,
         &[
             "--gas",

@@ -98,6 +98,18 @@ pub fn mark_open() {
     WINDOW_OPEN.store(true, Ordering::SeqCst);
 }
 
+/// Samples per pixel the window's drawing surface has, as OpenGL reports
+/// it (4 with edges smoothed; 0 or 1 without). Call with the window's
+/// context current, as it is inside a frame.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn samples_per_pixel() -> i32 {
+    const GL_SAMPLES: u32 = 0x80A9;
+    let mut samples = 0;
+    // SAFETY: a query of one integer into a local, with the context current.
+    unsafe { macroquad::miniquad::gl::glGetIntegerv(GL_SAMPLES, &mut samples) };
+    samples
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -56,6 +56,10 @@ pub struct FrameDump {
     pub sleeping: bool,
     /// Frames drawn by the idle timer, so far.
     pub idle_frames: u64,
+    /// Samples per pixel of the drawing surface, as OpenGL reports it: 4
+    /// with edges smoothed, 0 or 1 with `--no-antialias` (none in the
+    /// browser).
+    pub samples: Option<i32>,
 }
 
 /// Simulated time and the clock.

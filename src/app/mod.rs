@@ -74,13 +74,14 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
     };
     let (width, height) = options.size;
     let plain = options.scene.is_none() && options.gas.is_none();
+    let sample_count = if options.no_antialias { 1 } else { 4 };
     let app = App::new(options, (scene, origin, world), plain, false);
     let conf = Conf {
         window_title: title,
         window_width: width,
         window_height: height,
         window_resizable: true,
-        sample_count: 4,
+        sample_count,
         platform: Platform {
             linux_backend: LinuxBackend::X11WithWaylandFallback,
             linux_wm_class: WM_CLASS,
@@ -202,6 +203,9 @@ struct App {
     idle: idle::Idle,
     /// The state last handed to the page to keep, and when (the browser).
     kept: (u64, f64),
+    /// Samples per pixel of the drawing surface, once the first frame has
+    /// asked OpenGL (the desktop).
+    samples: Option<i32>,
     /// What the browser's page around the canvas was last told.
     page: page::Page,
 }
@@ -249,6 +253,7 @@ impl App {
             frame_stats: frame_stats::FrameStats::new(keep_all),
             idle: idle::Idle::new(WM_CLASS),
             kept: (0, f64::NEG_INFINITY),
+            samples: None,
             page: page::Page::default(),
         }
     }
@@ -274,7 +279,10 @@ impl App {
             if self.frame == 0 {
                 self.model.fit_camera();
                 #[cfg(not(target_arch = "wasm32"))]
-                display::mark_open();
+                {
+                    display::mark_open();
+                    self.samples = Some(display::samples_per_pixel());
+                }
             }
             commands.extend(self.input.commands(&mut self.panels, &self.model, mouse));
             commands.extend(self.page.commands());
@@ -352,6 +360,7 @@ impl App {
                 frame: self.frame,
                 sleeping: self.idle.sleeping(),
                 idle_frames: self.idle.idle_frames,
+                samples: self.samples,
             },
             panels: &self.panels,
             world_text_px: self.painter.smallest_text(),

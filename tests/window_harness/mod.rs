@@ -159,6 +159,14 @@ impl Drop for Xvfb {
     }
 }
 
+/// How a window is started: on the start screen or straight on the scene;
+/// with its edges smoothed as shipped or not.
+#[derive(Default)]
+struct Launch {
+    start_screen: bool,
+    as_shipped: bool,
+}
+
 /// The `impulse` window running on an Xvfb display.
 pub struct Sandbox {
     pub child: Child,
@@ -171,44 +179,62 @@ pub struct Sandbox {
 
 impl Sandbox {
     /// The window with its own state folder (so its autosave is its own).
+    /// Its edges are drawn unsmoothed (`--no-antialias`): under Xvfb the
+    /// software renderer then draws a frame in less than half the time, and
+    /// the tests read layout and behaviour, which the smoothing does not
+    /// touch. [`Sandbox::start_as_shipped`] keeps the smoothing.
     pub fn start(x: &Xvfb, args: &[&str]) -> Sandbox {
-        let dir = tempfile::tempdir().expect("temp dir");
-        let state = dir.path().to_path_buf();
-        Sandbox::start_in(x, args, &state, dir)
+        Sandbox::start_in(x, args, None, Launch::default())
+    }
+
+    /// The window with everything as shipped: its edges smoothed.
+    pub fn start_as_shipped(x: &Xvfb, args: &[&str]) -> Sandbox {
+        let launch = Launch {
+            as_shipped: true,
+            ..Launch::default()
+        };
+        Sandbox::start_in(x, args, None, launch)
     }
 
     /// The window keeping its recovery file in `state` (`XDG_STATE_HOME`).
     pub fn start_with_state(x: &Xvfb, args: &[&str], state: &Path) -> Sandbox {
-        let dir = tempfile::tempdir().expect("temp dir");
-        Sandbox::start_in(x, args, state, dir)
+        Sandbox::start_in(x, args, Some(state), Launch::default())
     }
 
     /// The window as a plain start opens it: on the start screen.
     pub fn start_plain(x: &Xvfb, args: &[&str]) -> Sandbox {
-        let dir = tempfile::tempdir().expect("temp dir");
-        let state = dir.path().to_path_buf();
-        Sandbox::start_in(x, &[&["--start-screen"], args].concat(), &state, dir)
+        let launch = Launch {
+            start_screen: true,
+            ..Launch::default()
+        };
+        Sandbox::start_in(x, args, None, launch)
     }
 
-    fn start_in(x: &Xvfb, args: &[&str], state: &Path, dir: tempfile::TempDir) -> Sandbox {
+    fn start_in(x: &Xvfb, args: &[&str], state: Option<&Path>, launch: Launch) -> Sandbox {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let state = state.unwrap_or(dir.path()).to_path_buf();
         let dump = dir.path().join("state.json");
-        // The start screen only where a test asks for it (start_plain).
-        let (args, start): (Vec<&str>, bool) = match args.split_first() {
-            Some((&"--start-screen", rest)) => (rest.to_vec(), true),
-            _ => (args.to_vec(), false),
-        };
         // English, unless the test asks for a language: the messages the
         // tests read are English, whatever the machine's locale.
         let lang = !args.contains(&"--lang");
         let child = Command::new(env!("CARGO_BIN_EXE_impulse"))
-            .args(&args)
-            .args(if start { &[][..] } else { &["--no-start"][..] })
+            .args(args)
+            .args(if launch.start_screen {
+                &[][..]
+            } else {
+                &["--no-start"][..]
+            })
+            .args(if launch.as_shipped {
+                &[][..]
+            } else {
+                &["--no-antialias"][..]
+            })
             .args(if lang { &["--lang", "en"][..] } else { &[][..] })
             .arg("--dump-state")
             .arg(&dump)
             .args(["--exit-after", "120"])
             .env("DISPLAY", &x.display)
-            .env("XDG_STATE_HOME", state)
+            .env("XDG_STATE_HOME", &state)
             .stdout(Stdio::null())
             .stderr(Stdio::inherit())
             .spawn()
@@ -217,7 +243,7 @@ impl Sandbox {
             child,
             dump,
             display: x.display.clone(),
-            state: state.to_path_buf(),
+            state,
             _dir: dir,
         };
         sandbox.wait_frames(5);
