@@ -72,9 +72,9 @@ pub fn run(options: WindowOptions) -> anyhow::Result<()> {
         Some(name) => format!("Impulse - {name}"),
         None => "Impulse".to_string(),
     };
-    let (width, height) = options.size;
+    let (width, height) = options.look.size;
     let plain = options.scene.is_none() && options.gas.is_none();
-    let sample_count = if options.no_antialias { 1 } else { 4 };
+    let sample_count = if options.look.no_antialias { 1 } else { 4 };
     let app = App::new(options, (scene, origin, world), plain, false);
     let conf = Conf {
         window_title: title,
@@ -230,12 +230,12 @@ impl App {
             dt: options.dt,
             out: options.out.clone(),
             recovery: (model::recovery::folder(&options.out), options.autosave),
-            scale: options.ui_scale,
+            scale: options.look.ui_scale,
             start_screen: plain && !options.no_start,
             from_link,
             lang: options.lang,
             system_lang: system_language(),
-            theme: options.light.then_some(model::Theme::Light),
+            theme: options.look.light.then_some(model::Theme::Light),
         });
         if model.recovery.offered.is_some() {
             eprintln!(

@@ -44,6 +44,24 @@ pub struct WindowOptions {
     #[arg(long, value_name = "SECONDS", default_value_t = model::recovery::DEFAULT_EVERY,
           value_parser = crate::cli::non_negative_seconds)]
     pub autosave: f64,
+    /// How the window looks.
+    #[command(flatten)]
+    pub look: LookOptions,
+    /// Open straight on the scene, without the start screen's tiles (which
+    /// a start without a scene file shows).
+    #[arg(long)]
+    pub no_start: bool,
+    /// The window's language: en, es, fr, de or pt-BR (qps: a pseudo-language
+    /// for layout checks) [default: the one chosen in View before, else the
+    /// system's]. The command line and its messages stay English.
+    #[arg(long, value_name = "LANG", value_parser = crate::cli::language)]
+    pub lang: Option<lang::Lang>,
+}
+
+/// How the window looks: its size, the size of its text, its theme and its
+/// edges.
+#[derive(Clone, Debug, clap::Args)]
+pub struct LookOptions {
     /// Window size in pixels, WIDTHxHEIGHT.
     #[arg(long, default_value = "1280x800", value_parser = crate::cli::window_size)]
     pub size: (i32, i32),
@@ -60,15 +78,6 @@ pub struct WindowOptions {
     /// it, the theme chosen before, else dark.
     #[arg(long)]
     pub light: bool,
-    /// Open straight on the scene, without the start screen's tiles (which
-    /// a start without a scene file shows).
-    #[arg(long)]
-    pub no_start: bool,
-    /// The window's language: en, es, fr, de or pt-BR (qps: a pseudo-language
-    /// for layout checks) [default: the one chosen in View before, else the
-    /// system's]. The command line and its messages stay English.
-    #[arg(long, value_name = "LANG", value_parser = crate::cli::language)]
-    pub lang: Option<lang::Lang>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
