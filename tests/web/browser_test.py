@@ -358,6 +358,40 @@ try:
         1.6 < zoom < 2.9 and len(s["particles"]) == n + 1,
         f"two fingers spread to 2.5× apart zoom in {zoom:.2f}× and launch nothing",
     )
+
+    # A finger held on a button shows its tooltip, as a mouse resting there
+    # does; let go after a long press (0.6 s after the tooltip showed: longer
+    # than the tooltip's delay of 0.5 s, shorter than the 0.8 s a mouse's
+    # click may last), it does not press the button. (With frames of about
+    # 80 ms here the hold's length is coarse; the unit test
+    # `a_finger_let_go_after_the_tooltips_delay_does_not_press_but_a_mouse_may`
+    # checks the limit itself.)
+    s = with_dpr(d, wait_frames(d, 1))
+    rect = s["panel_widgets"]["play"]
+    on_play = [rect[0] + rect[2] / 2, rect[1] + rect[3] / 2]
+    touch(d, "touchStart", [on_play])
+    try:
+        s = wait_state(d, lambda s: s["ui"]["tooltips"] >= 1, seconds=5, what="a tooltip")
+        shown = True
+    except AssertionError:
+        s, shown = state(d), False
+    check(shown and s["paused"], f"a finger held on Play shows its tooltip ({s['ui']['tooltips']} shown; "
+          f"frames of {s['timing']['frame_ms']:.0f} ms)")
+    time.sleep(0.6)
+    touch(d, "touchEnd", [])
+    s = wait_frames(d, 5)
+    check(s["paused"], "and letting go after a long press does not press it")
+    # A tap still does.
+    touch(d, "touchStart", [on_play])
+    touch(d, "touchEnd", [])
+    try:
+        s = wait_state(d, lambda s: not s["paused"], seconds=5, what="a tap on Play")
+    except AssertionError:
+        s = state(d)
+    check(not s["paused"], "a tap on Play presses it")
+    touch(d, "touchStart", [on_play])
+    touch(d, "touchEnd", [])
+    wait_state(d, lambda s: s["paused"], seconds=5, what="a tap on Pause")
     click_widget(d, s, "play")
 
     # A preset opens from the Presets menu.
