@@ -3,7 +3,8 @@
 //! On Linux the window needs an X server (or Wayland). Without one the binary
 //! prints one line naming the headless commands instead of a backtrace; a
 //! panic hook catches what the probe cannot see (a missing libGL, say) until
-//! the first frame is on screen.
+//! the first frame is on screen. Once it is, the surface's samples per pixel
+//! are asked of OpenGL (the state dump reports them).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -133,6 +133,12 @@ def touch(driver, kind, points):
     )
 
 
+def tap(driver, at):
+    """A finger put down at CSS point `at` and lifted at once."""
+    touch(driver, "touchStart", [at])
+    touch(driver, "touchEnd", [])
+
+
 def click_widget(driver, s, name):
     rect = s["panel_widgets"][name]
     pointer(driver, [[rect[0] + rect[2] / 2, rect[1] + rect[3] / 2]], hold=False)
@@ -382,15 +388,13 @@ try:
     s = wait_frames(d, 5)
     check(s["paused"], "and letting go after a long press does not press it")
     # A tap still does.
-    touch(d, "touchStart", [on_play])
-    touch(d, "touchEnd", [])
+    tap(d, on_play)
     try:
         s = wait_state(d, lambda s: not s["paused"], seconds=5, what="a tap on Play")
     except AssertionError:
         s = state(d)
     check(not s["paused"], "a tap on Play presses it")
-    touch(d, "touchStart", [on_play])
-    touch(d, "touchEnd", [])
+    tap(d, on_play)
     wait_state(d, lambda s: s["paused"], seconds=5, what="a tap on Pause")
     click_widget(d, s, "play")
 

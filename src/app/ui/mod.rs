@@ -395,13 +395,16 @@ fn hold_is_not_a_tap(ctx: &egui::Context) {
     ctx.options_mut(|o| o.input_options.max_click_duration = limit);
 }
 
+/// egui's own limit on a click's length (s), for the mouse.
+static MOUSE_CLICK: std::sync::LazyLock<f64> =
+    std::sync::LazyLock::new(|| egui::Options::default().input_options.max_click_duration);
+
 /// How long a press may last and still be a click or tap (s).
 fn longest_click(finger: bool, tooltip_delay: f32) -> f64 {
-    const MOUSE: f64 = 0.8;
     if finger {
         f64::from(tooltip_delay)
     } else {
-        MOUSE
+        *MOUSE_CLICK
     }
 }
 
