@@ -182,6 +182,8 @@ pub struct UiDump {
     pub edits: EditsDump,
     /// Tooltips showing (one at most: two stacked was a fault).
     pub tooltips: usize,
+    /// Where a tooltip showing is: [x, y, w, h] in pixels.
+    pub tooltip: Option<[f32; 4]>,
 }
 
 /// Who has the keyboard.
@@ -359,6 +361,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                     message: m.message().map(str::to_string),
                 },
                 tooltips: panels.marks.tooltips,
+                tooltip: panels.marks.tooltip_rect,
             },
         },
         realtime: RealtimeDump {

@@ -379,11 +379,19 @@ try:
     try:
         s = wait_state(d, lambda s: s["ui"]["tooltips"] >= 1, seconds=5, what="a tooltip")
         shown = True
+        shown_at = time.time()
     except AssertionError:
         s, shown = state(d), False
     check(shown and s["paused"], f"a finger held on Play shows its tooltip ({s['ui']['tooltips']} shown; "
           f"frames of {s['timing']['frame_ms']:.0f} ms)")
-    time.sleep(0.6)
+    # Where the hand does not cover it: not under the control, as egui puts
+    # it for a mouse, but beside it (the top bar has no room above).
+    if shown:
+        tip = wait_frames(d, 2)["ui"]["tooltip"]
+        beside = tip is not None and (tip[0] >= rect[0] + rect[2] or tip[0] + tip[2] <= rect[0]) \
+            and tip[1] < rect[1] + rect[3]
+        check(beside, f"its tooltip is beside Play, not under it (tooltip {tip}, Play {rect})")
+    time.sleep(max(0.0, shown_at + 0.6 - time.time()) if shown else 0.6)
     touch(d, "touchEnd", [])
     s = wait_frames(d, 5)
     check(s["paused"], "and letting go after a long press does not press it")

@@ -13,6 +13,7 @@
 //! for [`pass_over_containers`] to move the keyboard on from them.
 
 use super::{Cx, Marks};
+use crate::app::ui::tip::Tip;
 
 /// Where a box goes.
 pub enum Place {
@@ -153,7 +154,7 @@ impl Dialog {
                             if self.closable {
                                 let r = ui
                                     .add(egui::Button::new("×").min_size(egui::vec2(side, side)))
-                                    .on_hover_text(crate::app::lang::tr!("close"));
+                                    .tip(crate::app::lang::tr!("close"));
                                 cx.note(format!("{}_close", self.name), &r);
                                 close = r.clicked();
                             }

@@ -31,6 +31,8 @@ pub struct Marks {
     pub lists: BTreeMap<String, ListScroll>,
     /// Tooltips showing: hovering shows one at most.
     pub tooltips: usize,
+    /// Where a tooltip showing is (pixels).
+    pub tooltip_rect: Option<[f32; 4]>,
     /// The layers of the widgets [`super::Cx::note`] noted.
     pub layers: BTreeMap<String, egui::LayerId>,
     /// The dialogs shown this frame, bottom first: their layers and

@@ -30,6 +30,7 @@ mod popups;
 mod side;
 mod start;
 mod strip;
+mod tip;
 mod top_bar;
 mod typing;
 pub mod widgets;
@@ -322,13 +323,18 @@ impl Panels {
         if let Some(id) = focused {
             focus_ring(ctx, id, p.theme);
         }
-        self.marks.tooltips = ctx.memory(|m| {
+        let tooltips: Vec<egui::LayerId> = ctx.memory(|m| {
             let layers = m.areas().visible_layer_ids();
             layers
-                .iter()
+                .into_iter()
                 .filter(|l| l.order == egui::Order::Tooltip)
-                .count()
+                .collect()
         });
+        self.marks.tooltips = tooltips.len();
+        self.marks.tooltip_rect = tooltips
+            .first()
+            .and_then(|l| egui::AreaState::load(ctx, l.id))
+            .map(|a| to_px(a.rect(), ppp));
         self.marks.focus_rect = focused
             .and_then(|id| ctx.read_response(id))
             .map(|r| to_px(r.rect, ppp));
@@ -388,9 +394,11 @@ pub fn px_per_point(ctx: &egui::Context) -> f32 {
 /// A finger held on a control shows its tooltip once the tooltip's delay
 /// has passed, as a resting mouse does; letting go then must not press the
 /// control. So while a finger is on the screen a press is a tap only as long
-/// as that delay (egui's own limit, 0.8 s, stays for the mouse).
+/// as that delay (egui's own limit, 0.8 s, stays for the mouse), and its
+/// tooltips go where the hand does not cover them ([`tip`]).
 fn hold_is_not_a_tap(ctx: &egui::Context) {
     let finger = !macroquad::input::touches().is_empty();
+    tip::set_finger(ctx, finger);
     let limit = longest_click(finger, ctx.style().interaction.tooltip_delay);
     ctx.options_mut(|o| o.input_options.max_click_duration = limit);
 }

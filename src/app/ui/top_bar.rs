@@ -12,6 +12,7 @@ use crate::app::model::lesson::{count_line, pi_result, warning_text};
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::ui::tip::Tip;
 use egui::{Color32, RichText, WidgetText};
 use std::sync::Arc;
 
@@ -340,7 +341,7 @@ impl TopBar {
                     }
                     let r = ui.label(g);
                     let r = match item.hover {
-                        Some(h) => r.on_hover_text(h),
+                        Some(h) => r.tip(h),
                         None => r,
                     };
                     if let Some(name) = item.name {
@@ -362,10 +363,10 @@ impl TopBar {
                     }
                     ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
                     let r = if r.has_focus() || pinned {
-                        r.show_tooltip_text(hidden);
+                        r.tip_now(hidden);
                         r
                     } else {
-                        r.on_hover_text(hidden)
+                        r.tip(hidden)
                     };
                     cx.note("top_bar_more", &r);
                 }

@@ -7,13 +7,14 @@
 use super::Cx;
 use crate::app::model::bindings;
 use crate::app::model::{Command, Note};
+use crate::app::ui::tip::Tip;
 use egui::{ComboBox, Slider, Ui};
 use std::fmt::Display;
 
 /// One line of text, cut with "…" where it has no room. Hovered, it shows
 /// `more` when given, else the whole line if it was cut: one tooltip. (egui's
 /// own label adds the whole line's tooltip whenever it cuts, and a second
-/// `on_hover_text` stacked another under it: the name twice, or the line
+/// `on_hover_text` ([`super::tip::Tip::tip`]) stacked another under it: the name twice, or the line
 /// under its explanation.)
 pub fn one_line(
     ui: &mut Ui,
@@ -35,8 +36,8 @@ pub fn cut_label(ui: &mut Ui, label: egui::Label, more: Option<String>) -> egui:
         ui.painter().galley(pos, galley.clone(), color);
     }
     match more {
-        Some(more) => response.on_hover_text(more),
-        None if galley.elided => response.on_hover_text(galley.text()),
+        Some(more) => response.tip(more),
+        None if galley.elided => response.tip(galley.text()),
         None => response,
     }
 }
@@ -65,7 +66,7 @@ pub fn labelled_button(
     let tip = bindings::tooltip(&command);
     let mut r = ui.button(label);
     if !tip.is_empty() {
-        r = r.on_hover_text(tip);
+        r = r.tip(tip);
     }
     match name {
         Some(name) => cx.note(name, &r),
@@ -147,7 +148,7 @@ pub fn pick(
             }
         })
         .response
-        .on_hover_text(hover);
+        .tip(hover);
     cx.note(name, &r);
     arrow_choice(&r, current, choices.len()).or(clicked)
 }

@@ -10,6 +10,7 @@ use crate::app::lang::tr;
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
 use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::ui::tip::Tip;
 use glam::DVec2;
 use impulse::ledger::Impact;
 
@@ -105,7 +106,7 @@ fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
                         tr!("ledger-dke-hover"),
                     ),
                 ] {
-                    ui.strong(h).on_hover_text(hover);
+                    ui.strong(h).tip(hover);
                 }
                 ui.end_row();
                 for impact in recent {
@@ -257,7 +258,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
                 }
             })
             .response
-            .on_hover_text(tr!("ledger-detail-hover"));
+            .tip(tr!("ledger-detail-hover"));
         // Its whole width (the dump shows whether any is cut off).
         cx.note("ledger_newest", &r);
     });

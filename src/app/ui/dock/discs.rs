@@ -14,6 +14,7 @@ use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
 use crate::app::numbers::plain;
+use crate::app::ui::tip::Tip;
 use egui::Color32;
 use egui_extras::{Column, TableBuilder};
 
@@ -171,7 +172,7 @@ impl View for DiscsTable {
                         }
                         for (k, (h, meaning)) in spin_headings[..spin_columns].iter().enumerate() {
                             let (_, r) = header.col(|ui| {
-                                ui.strong(h).on_hover_text(meaning);
+                                ui.strong(h).tip(meaning);
                             });
                             if k + 1 == spin_columns {
                                 cx.note("discs_last_column", &r);

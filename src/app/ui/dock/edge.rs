@@ -10,6 +10,7 @@
 use super::super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::Command;
+use crate::app::ui::tip::Tip;
 
 /// The open tab's height and what it may be, in px.
 #[derive(Clone, Copy, Debug)]
@@ -38,7 +39,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
     );
     let id = ui.id().with("tab_edge");
     let r = ui.interact(grip, id, egui::Sense::click_and_drag());
-    let r = r.on_hover_text(tr!("tab-edge-hover"));
+    let r = r.tip(tr!("tab-edge-hover"));
     r.widget_info(|| {
         egui::WidgetInfo::slider(
             ui.is_enabled(),

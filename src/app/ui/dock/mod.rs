@@ -19,6 +19,7 @@ mod words;
 
 use super::{Cx, View};
 use crate::app::model::{Command, DockTab};
+use crate::app::ui::tip::Tip;
 use egui::RichText;
 
 /// Every tab, in the row's order: its key in the model and its view.
@@ -123,17 +124,13 @@ impl BottomDock {
             let r = strip.selectable_label(chosen, RichText::new(tab.title()).strong());
             cx.note(format!("tab_{}", tab.key().to_lowercase()), &r);
             let tip = crate::app::model::bindings::tooltip(&Command::ShowTab(*tab));
-            let r = if tip.is_empty() {
-                r
-            } else {
-                r.on_hover_text(tip)
-            };
+            let r = if tip.is_empty() { r } else { r.tip(tip) };
             if r.clicked() {
                 cx.send(Command::ClickTab(*tab));
             }
         }
         strip.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            let r = ui.button(toggle_label).on_hover_text(toggle_hover);
+            let r = ui.button(toggle_label).tip(toggle_hover);
             cx.note("dock_toggle", &r);
             if r.clicked() {
                 cx.send(Command::ToggleDockExpanded);

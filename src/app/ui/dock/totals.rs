@@ -8,6 +8,7 @@ use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::ui::tip::Tip;
 use egui::text::LayoutJob;
 use egui::{Align, FontSelection, RichText};
 use egui_plot::{Corner, Legend, Line, LineStyle, PlotPoints, VLine};
@@ -75,7 +76,7 @@ impl View for Totals {
                 .map(|(_, name, color)| (name.as_str(), *color));
             change_and_names(ui, drift, names.into_iter().chain(short), hover);
         } else {
-            ui.label(drift).on_hover_text(hover);
+            ui.label(drift).tip(hover);
         }
         let height = ui.available_height();
         let start = samples.first().map_or(model.world.time, |s| s.time);

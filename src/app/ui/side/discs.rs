@@ -11,6 +11,7 @@ use crate::app::model::edit::FIELDS;
 use crate::app::model::gesture::radius_for_mass;
 use crate::app::model::Command;
 use crate::app::numbers::{field, with_unit};
+use crate::app::ui::tip::Tip;
 use egui::Ui;
 
 /// The selected disc's text fields.
@@ -39,7 +40,7 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
     let mut on = follows;
     let r = ui
         .checkbox(&mut on, tr!("size-follows-mass"))
-        .on_hover_text(tr!("size-follows-mass-hover"));
+        .tip(tr!("size-follows-mass-hover"));
     cx.note("size_follows_mass", &r);
     if r.changed() {
         cx.send(Command::SizeFollowsMass(on));
@@ -64,7 +65,7 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
             cx.send(Command::SetNewRadius(r));
         }
         let tip = tooltip(&Command::StepNewRadius(Dir::Up));
-        cx.note("new_radius", &track.on_hover_text(tip));
+        cx.note("new_radius", &track.tip(tip));
     }
     let mut m = disc.mass;
     let (track, changed) = slider(ui, &tr!("mass-label"), &mut m, 0.01..=100.0, true, 2, " kg");
@@ -72,7 +73,7 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
         cx.send(Command::SetNewMass(m));
     }
     let tip = tooltip(&Command::StepNewMass(Dir::Up));
-    cx.note("new_mass", &track.on_hover_text(tip));
+    cx.note("new_mass", &track.tip(tip));
 }
 
 impl DiscFields {
@@ -123,7 +124,7 @@ impl DiscFields {
                 }
             });
         ui.horizontal(|ui| {
-            let r = ui.button(tr!("apply")).on_hover_text(tr!("apply-hover"));
+            let r = ui.button(tr!("apply")).tip(tr!("apply-hover"));
             cx.note("apply", &r);
             if r.clicked() || enter {
                 self.apply(cx, i);

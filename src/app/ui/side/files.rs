@@ -9,6 +9,7 @@ use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
 use crate::app::model::{next_scale, scenes, Command, Theme, UI_SCALE_RANGE};
 use crate::app::numbers::{plain, with_unit};
+use crate::app::ui::tip::Tip;
 use egui::Ui;
 
 /// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
@@ -53,7 +54,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
     }
     ui.horizontal_wrapped(|ui| {
         if !in_browser {
-            let r = ui.button(tr!("open")).on_hover_text(tr!("open-hover"));
+            let r = ui.button(tr!("open")).tip(tr!("open-hover"));
             cx.note("open", &r);
             if r.clicked() || enter {
                 cx.send(Command::OpenFile(path.clone()));
@@ -61,7 +62,7 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         }
         command_button(ui, cx, Command::Save, Some("save"));
         if in_browser {
-            let r = ui.button(tr!("share")).on_hover_text(tr!("share-hover"));
+            let r = ui.button(tr!("share")).tip(tr!("share-hover"));
             cx.note("share", &r);
             if r.clicked() {
                 cx.send(Command::Share);
@@ -101,7 +102,7 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
             Theme::Light => tr!("theme-light"),
             Theme::Dark => tr!("theme-dark"),
         };
-        let r = ui.button(label).on_hover_text(tr!("theme-hover"));
+        let r = ui.button(label).tip(tr!("theme-hover"));
         cx.note("theme", &r);
         if r.clicked() {
             cx.send(Command::SetTheme(other));
@@ -159,7 +160,7 @@ pub fn details(ui: &mut Ui, cx: &mut Cx) {
         "dt-line",
         dt = with_unit(model.clock.dt * 1e3, 3, "ms")
     ))
-    .on_hover_text(tr!("dt-hover"));
+    .tip(tr!("dt-hover"));
     ui.label(tr!(
         "step-time-line",
         time = with_unit(median, 1, "µs"),

@@ -10,6 +10,7 @@ use crate::app::model::clock::TIME_SCALES;
 use crate::app::model::command::Law;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
+use crate::app::ui::tip::Tip;
 use egui::Ui;
 use impulse::Boundary;
 
@@ -41,7 +42,7 @@ fn coefficient(ui: &mut Ui, cx: &mut Cx, law: Law, (label, name, hover): (&str, 
     } else {
         format!("{hover}\n{keys}")
     };
-    cx.note(name, &r.on_hover_text(hover));
+    cx.note(name, &r.tip(hover));
 }
 
 /// Restitution, gravity, edges, time scale; with rough discs (a scene
@@ -86,7 +87,7 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
     let tip = crate::app::model::bindings::tooltip(&Command::ToggleGravity);
     cx.note(
         "gravity",
-        &r.on_hover_text(format!(
+        &r.tip(format!(
             "{}\n{tip}",
             tr!(
                 "gravity-hover",
@@ -150,7 +151,7 @@ pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
     let mut on = friction.is_some();
     let r = ui
         .checkbox(&mut on, tr!("friction-on-label"))
-        .on_hover_text(tr!("friction-hover"));
+        .tip(tr!("friction-hover"));
     cx.note("friction_on", &r);
     let kept = ui
         .ctx()

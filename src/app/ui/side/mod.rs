@@ -20,6 +20,7 @@ use crate::app::lang::tr;
 use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
 use crate::app::model::start::{Section, Tile};
 use crate::app::model::Command;
+use crate::app::ui::tip::Tip;
 use egui::{CollapsingHeader, Ui};
 
 /// The side dock's own state: the fields being typed in.
@@ -185,7 +186,7 @@ fn toggle(
     };
     let mut r = ui.checkbox(&mut value, label);
     if !hover.is_empty() {
-        r = r.on_hover_text(hover);
+        r = r.tip(hover);
     }
     if r.clicked() {
         cx.send(command);
