@@ -6,6 +6,7 @@ use super::command::EditPlace;
 use super::{Note, Sandbox};
 use crate::app::lang::{text as words, tr};
 use crate::app::numbers::{field, plain};
+use impulse::scene::limits;
 use impulse::Particle;
 
 /// The selected disc's editable quantities, in field order (their names
@@ -47,7 +48,8 @@ impl DiscEdit {
 
 /// Reads the fields the user changed (`None`: untouched, in [`FIELDS`]
 /// order). Every value must be a finite number; mass and radius positive,
-/// the radius at most `max_radius`. The error is one short line.
+/// the radius at most `max_radius`, each in a scene file's range (so that a
+/// saved scene opens again). The error is one short line.
 pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<DiscEdit, String> {
     let mut values = [None; 4];
     for (k, text) in changed.into_iter().enumerate() {
@@ -67,6 +69,16 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
         }
         if k == 1 && v > max_radius {
             return Err(tr!("edit-radius-too-large", radius = field(max_radius)));
+        }
+        // A scene file's ranges: what is saved opens again.
+        let (lo, hi, range) = match k {
+            0 => (limits::MASS[0], limits::MASS[1], "10⁻¹² kg, 10¹² kg"),
+            1 => (limits::LENGTH[0], limits::LENGTH[1], "10⁻⁹ m, 10⁹ m"),
+            _ => (-limits::SPEED, limits::SPEED, "−10⁸ m/s, 10⁸ m/s"),
+        };
+        if !(lo..=hi).contains(&v) {
+            let (lo, hi) = range.split_once(", ").unwrap_or((range, range));
+            return Err(tr!("edit-out-of-range", name = name, lo = lo, hi = hi));
         }
         values[k] = Some(v);
     }
@@ -90,7 +102,27 @@ impl Sandbox {
             EditPlace::Fields => self.biggest_radius(),
             EditPlace::Table => f64::INFINITY,
         };
-        let edit = parse_disc_edit(changed, max_radius).and_then(|e| self.sized_edit(disc, e));
+        // What a scene file asks of the velocity as a whole.
+        let velocity_kept = |e: DiscEdit| {
+            let mut p = self.world.particles[disc];
+            e.apply(&mut p);
+            let across = self.world.laws.constrain.map(|a| p.vel[1 - a.index()]);
+            if p.vel.length() > limits::SPEED {
+                Err(tr!("edit-too-fast"))
+            } else if across.is_some_and(|v| v != 0.0) {
+                let name = if across == Some(p.vel.y) {
+                    "v_y"
+                } else {
+                    "v_x"
+                };
+                Err(tr!("edit-across-the-line", name = name))
+            } else {
+                Ok(e)
+            }
+        };
+        let edit = parse_disc_edit(changed, max_radius)
+            .and_then(velocity_kept)
+            .and_then(|e| self.sized_edit(disc, e));
         let note = match edit {
             Ok(edit) if edit.is_empty() => Note::ok(tr!("edit-nothing-changed")),
             Ok(edit) => {
@@ -171,8 +203,11 @@ impl Sandbox {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::model::command::{Command, EditPlace};
+    use crate::app::model::tests::sandbox_in;
     use glam::DVec2;
     use impulse::Color as DiscColor;
+    use impulse::Scene;
 
     #[test]
     fn edits_parse_only_what_changed_and_refuse_bad_numbers() {
@@ -257,5 +292,62 @@ mod tests {
             (1.0, 0.25, DVec2::new(3.0, -1.0))
         );
         assert_eq!(p.pos, DVec2::new(1.0, 2.0));
+    }
+
+    /// What the Discs table takes, a scene file takes: every edit it accepts
+    /// leaves a scene that saves and opens again; numbers past a scene file's
+    /// ranges are refused, saying the range.
+    #[test]
+    fn an_edit_the_table_takes_saves_a_scene_that_opens_again() {
+        let dir = tempfile::tempdir().unwrap();
+        for file in ["preset-4-glancing.toml", "preset-1-head-on.toml"] {
+            let mut s = sandbox_in(dir.path(), file);
+            let edit = |s: &mut Sandbox, k: usize, text: &str| {
+                let mut fields: [Option<String>; 4] = Default::default();
+                fields[k] = Some(text.into());
+                s.apply(Command::EditDisc {
+                    disc: 0,
+                    text: fields,
+                    from: EditPlace::Table,
+                });
+                s.messages.table.clone().unwrap()
+            };
+            for (k, text, range) in [
+                (0, "1e13", "10¹² kg"),
+                (0, "1e-13", "10⁻¹² kg"),
+                (1, "1e10", "10⁹ m"),
+                (2, "-2e8", "10⁸ m/s"),
+                (3, "1e300", "10⁸ m/s"),
+            ] {
+                let before = s.fingerprint();
+                let note = edit(&mut s, k, text);
+                assert!(
+                    note.error && note.text.contains(range),
+                    "{file} {text}: {note:?}"
+                );
+                assert_eq!(s.fingerprint(), before, "{file} {text}");
+            }
+            // Each component inside its range, the speed past it.
+            edit(&mut s, 2, "9e7");
+            let note = edit(&mut s, 3, "9e7");
+            assert!(
+                note.error && note.text.contains("10⁸ m/s"),
+                "{file}: {note:?}"
+            );
+            for (k, text) in [(0, "1e12"), (3, "1"), (2, "-3e7"), (0, "2e-12"), (3, "0")] {
+                let note = edit(&mut s, k, text);
+                if file.contains("head-on") && text == "1" {
+                    assert!(note.error && note.text.contains("one line"), "{note:?}");
+                }
+                let saved = s.current_scene().to_toml();
+                let reopened =
+                    Scene::parse(&saved, "saved.toml").and_then(|sc| sc.build("saved.toml"));
+                assert!(
+                    note.error || reopened.is_ok(),
+                    "{file}: {text} taken ({note:?}), but the saved scene does not open: {:?}",
+                    reopened.err()
+                );
+            }
+        }
     }
 }
