@@ -92,7 +92,7 @@ separated-lowered = exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt, was die Energie um { $energy } verringert hat
-next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: Ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
+next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
 next-collision-wall = Scheibe { $disc } traf die { $wall ->
     [left] linke
     [right] rechte
