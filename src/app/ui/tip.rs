@@ -102,6 +102,34 @@ mod tests {
         ctx.options_mut(|o| o.input_options.max_click_duration = delay);
     }
 
+    /// One pass of egui at `time` with `events`, a button at `at` with its
+    /// tooltip, a finger down or not; the rectangle of the tooltip showing.
+    fn pass(
+        ctx: &Context,
+        time: f64,
+        events: Vec<egui::Event>,
+        at: Pos2,
+        finger: bool,
+    ) -> Option<Rect> {
+        let input = egui::RawInput {
+            time: Some(time),
+            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(800.0, 600.0))),
+            events,
+            ..Default::default()
+        };
+        let _ = ctx.run(input, |ctx| {
+            set_finger(ctx, finger);
+            egui::Area::new(Id::new("buttons"))
+                .fixed_pos(at)
+                .show(ctx, |ui| ui.button("Play").tip("Space: pause / resume"));
+        });
+        let layers = ctx.memory(|m| m.areas().visible_layer_ids());
+        layers
+            .into_iter()
+            .find(|l| l.order == egui::Order::Tooltip)
+            .and_then(|l| egui::AreaState::load(ctx, l.id).map(|a| a.rect()))
+    }
+
     /// The rectangle of the tooltip a button at `at` shows in each pass
     /// (every 0.1 s), the pointer arriving on it at 0.3 s (egui places the
     /// area in its first passes) and, with a finger, pressing it there and
@@ -111,7 +139,6 @@ mod tests {
         if finger {
             finger_click_limit(&ctx);
         }
-        let screen = Rect::from_min_size(Pos2::ZERO, vec2(800.0, 600.0));
         let on = at + vec2(5.0, 5.0);
         let mut shown = Vec::new();
         for k in 0..=18 {
@@ -127,25 +154,7 @@ mod tests {
                     });
                 }
             }
-            let input = egui::RawInput {
-                time: Some(f64::from(k) * 0.1),
-                screen_rect: Some(screen),
-                events,
-                ..Default::default()
-            };
-            let _ = ctx.run(input, |ctx| {
-                set_finger(ctx, finger);
-                egui::Area::new(Id::new("buttons"))
-                    .fixed_pos(at)
-                    .show(ctx, |ui| ui.button("Play").tip("Space: pause / resume"));
-            });
-            let layers = ctx.memory(|m| m.areas().visible_layer_ids());
-            shown.push(
-                layers
-                    .into_iter()
-                    .find(|l| l.order == egui::Order::Tooltip)
-                    .and_then(|l| egui::AreaState::load(&ctx, l.id).map(|a| a.rect())),
-            );
+            shown.push(pass(&ctx, f64::from(k) * 0.1, events, at, finger));
         }
         shown
     }
@@ -201,7 +210,6 @@ mod tests {
     fn after_a_tap_a_held_finger_still_shows_the_tooltip() {
         let ctx = Context::default();
         finger_click_limit(&ctx);
-        let screen = Rect::from_min_size(Pos2::ZERO, vec2(800.0, 600.0));
         let on = pos2(305.0, 305.0);
         let button = |pressed| egui::Event::PointerButton {
             pos: on,
@@ -220,20 +228,7 @@ mod tests {
                 10 => vec![button(true)],
                 _ => vec![],
             };
-            let input = egui::RawInput {
-                time: Some(f64::from(k) * 0.1),
-                screen_rect: Some(screen),
-                events,
-                ..Default::default()
-            };
-            let _ = ctx.run(input, |ctx| {
-                set_finger(ctx, true);
-                egui::Area::new(Id::new("buttons"))
-                    .fixed_pos(pos2(300.0, 300.0))
-                    .show(ctx, |ui| ui.button("Play").tip("Space: pause / resume"));
-            });
-            let layers = ctx.memory(|m| m.areas().visible_layer_ids());
-            shown = layers.iter().any(|l| l.order == egui::Order::Tooltip);
+            shown = pass(&ctx, f64::from(k) * 0.1, events, pos2(300.0, 300.0), true).is_some();
         }
         assert!(shown, "no tooltip after a tap");
     }
