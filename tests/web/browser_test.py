@@ -365,13 +365,13 @@ try:
         f"two fingers spread to 2.5× apart zoom in {zoom:.2f}× and launch nothing",
     )
 
-    # A finger held on a button shows its tooltip, as a mouse resting there
-    # does; let go after a long press (0.6 s after the tooltip showed: longer
-    # than the tooltip's delay of 0.5 s, shorter than the 0.8 s a mouse's
-    # click may last), it does not press the button. (With frames of about
-    # 80 ms here the hold's length is coarse; the unit test
+    # A finger held on a button shows its tooltip once held for the tooltip's
+    # delay (0.5 s); let go 0.6 s after it showed, it does not press the
+    # button. (That hold is longer than the 0.8 s a mouse's click may last,
+    # and frames of about 80 ms here make its length coarse, so this shows
+    # the behaviour in a real browser; the unit test
     # `a_finger_let_go_after_the_tooltips_delay_does_not_press_but_a_mouse_may`
-    # checks the limit itself.)
+    # checks the finger's limit itself.)
     s = with_dpr(d, wait_frames(d, 1))
     rect = s["panel_widgets"]["play"]
     on_play = [rect[0] + rect[2] / 2, rect[1] + rect[3] / 2]
@@ -385,7 +385,8 @@ try:
     check(shown and s["paused"], f"a finger held on Play shows its tooltip ({s['ui']['tooltips']} shown; "
           f"frames of {s['timing']['frame_ms']:.0f} ms)")
     # Where the hand does not cover it: not under the control, as egui puts
-    # it for a mouse, but beside it (the top bar has no room above).
+    # it for a mouse, but beside it (Play, at the top of the side controls,
+    # has no room above).
     if shown:
         tip = wait_frames(d, 2)["ui"]["tooltip"]
         beside = tip is not None and (tip[0] >= rect[0] + rect[2] or tip[0] + tip[2] <= rect[0]) \

@@ -71,14 +71,13 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
             return Err(tr!("edit-radius-too-large", radius = field(max_radius)));
         }
         // A scene file's ranges: what is saved opens again.
-        let (lo, hi, range) = match k {
-            0 => (limits::MASS[0], limits::MASS[1], "10⁻¹² kg, 10¹² kg"),
-            1 => (limits::LENGTH[0], limits::LENGTH[1], "10⁻⁹ m, 10⁹ m"),
-            _ => (-limits::SPEED, limits::SPEED, "−10⁸ m/s, 10⁸ m/s"),
+        let ([lo, hi], [least, most]) = match k {
+            0 => (limits::MASS, ["10⁻¹² kg", "10¹² kg"]),
+            1 => (limits::LENGTH, ["10⁻⁹ m", "10⁹ m"]),
+            _ => ([-limits::SPEED, limits::SPEED], ["−10⁸ m/s", "10⁸ m/s"]),
         };
         if !(lo..=hi).contains(&v) {
-            let (lo, hi) = range.split_once(", ").unwrap_or((range, range));
-            return Err(tr!("edit-out-of-range", name = name, lo = lo, hi = hi));
+            return Err(tr!("edit-out-of-range", name = name, lo = least, hi = most));
         }
         values[k] = Some(v);
     }
@@ -106,15 +105,12 @@ impl Sandbox {
         let velocity_kept = |e: DiscEdit| {
             let mut p = self.world.particles[disc];
             e.apply(&mut p);
-            let across = self.world.laws.constrain.map(|a| p.vel[1 - a.index()]);
+            // The component across a one-dimensional world's line.
+            let across = self.world.laws.constrain.map(|a| 1 - a.index());
             if p.vel.length() > limits::SPEED {
                 Err(tr!("edit-too-fast"))
-            } else if across.is_some_and(|v| v != 0.0) {
-                let name = if across == Some(p.vel.y) {
-                    "v_y"
-                } else {
-                    "v_x"
-                };
+            } else if let Some(c) = across.filter(|&c| p.vel[c] != 0.0) {
+                let name = words(FIELDS[2 + c], &[]);
                 Err(tr!("edit-across-the-line", name = name))
             } else {
                 Ok(e)

@@ -14,8 +14,8 @@ use std::fmt::Display;
 /// One line of text, cut with "…" where it has no room. Hovered, it shows
 /// `more` when given, else the whole line if it was cut: one tooltip. (egui's
 /// own label adds the whole line's tooltip whenever it cuts, and a second
-/// `on_hover_text` ([`super::tip::Tip::tip`]) stacked another under it: the name twice, or the line
-/// under its explanation.)
+/// tooltip ([`super::tip::Tip::tip`]) stacked another under it: the name
+/// twice, or the line under its explanation.)
 pub fn one_line(
     ui: &mut Ui,
     text: impl Into<egui::WidgetText>,
