@@ -68,14 +68,21 @@ pub fn window_size(s: &str) -> Result<(i32, i32), String> {
 /// Most discs `--gas` builds.
 pub const MAX_GAS: usize = 1_000_000;
 
-/// Command-line parser for `--gas`: 1 to [`MAX_GAS`] discs.
+/// Command-line parser for `--gas`: 1 to [`MAX_GAS`] discs, written as a
+/// whole number (`100000`, or `1e5` as a scientist writes it). The error
+/// says which was wrong: not a number, not whole, or out of the range.
 pub fn gas_count(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if (1..=MAX_GAS).contains(&n) => Ok(n),
-        _ => Err(format!(
-            "{s:?} is not a number of discs from 1 to {MAX_GAS}"
-        )),
+    let range = format!("the gas takes 1 to {MAX_GAS} discs");
+    let Some(x) = s.trim().parse::<f64>().ok().filter(|x| x.is_finite()) else {
+        return Err(format!("{s:?} is not a number: {range}"));
+    };
+    if x.fract() != 0.0 {
+        return Err(format!("{s} is not a whole number of discs: {range}"));
     }
+    if !(1.0..=MAX_GAS as f64).contains(&x) {
+        return Err(format!("{s} discs is out of range: {range}"));
+    }
+    Ok(x as usize)
 }
 
 /// A number for a message: plain when it reads well, in e-notation when it

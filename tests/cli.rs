@@ -78,11 +78,19 @@ fn wrong_arguments_are_refused_by_the_parser() {
 #[test]
 fn gas_wants_a_disc_count_and_no_scene_file_beside_it() {
     for (value, why) in [
-        ("0", "from 1 to 1000000"),
-        ("-5", "from 1 to 1000000"),
-        ("1000001", "from 1 to 1000000"),
-        ("many", "from 1 to 1000000"),
-        ("1e5", "from 1 to 1000000"),
+        (
+            "0",
+            "0 discs is out of range: the gas takes 1 to 1000000 discs",
+        ),
+        ("-5", "-5 discs is out of range"),
+        ("1000001", "1000001 discs is out of range"),
+        ("2e6", "2e6 discs is out of range"),
+        (
+            "many",
+            "\"many\" is not a number: the gas takes 1 to 1000000 discs",
+        ),
+        ("2.5", "2.5 is not a whole number of discs"),
+        ("inf", "\"inf\" is not a number"),
     ] {
         let out = impulse(&[&format!("--gas={value}")]);
         assert_eq!(out.status.code(), Some(2), "--gas {value}");
@@ -97,10 +105,13 @@ fn gas_wants_a_disc_count_and_no_scene_file_beside_it() {
         "{}",
         stderr(&out)
     );
-    // A good count gets as far as the display check.
-    let out = impulse(&["--gas", "100000", "--frame-stats", "times.csv"]);
-    assert_eq!(out.status.code(), Some(1));
-    assert!(stderr(&out).contains("display"), "{}", stderr(&out));
+    // A good count, plain or as a scientist writes it, gets as far as the
+    // display check.
+    for count in ["100000", "1e5"] {
+        let out = impulse(&["--gas", count, "--frame-stats", "times.csv"]);
+        assert_eq!(out.status.code(), Some(1), "--gas {count}");
+        assert!(stderr(&out).contains("display"), "{}", stderr(&out));
+    }
 }
 
 #[test]

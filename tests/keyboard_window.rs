@@ -121,9 +121,13 @@ fn tab_walks_the_controls_in_reading_order_with_a_ring_in_the_dark_theme() {
             .position(|f| f.as_deref() == Some(name))
             .unwrap_or_else(|| panic!("Tab never reached {name}: {seen:?}"))
     };
-    // The top bar's button, then the side dock from its first row.
+    // The top bar's buttons left to right, then the side dock from its
+    // first row.
     assert!(
-        at("start") < at("play") && at("play") < at("step") && at("step") < at("reset"),
+        at("sound") < at("start")
+            && at("start") < at("play")
+            && at("play") < at("step")
+            && at("step") < at("reset"),
         "{seen:?}"
     );
     // Shift+Tab goes back one.

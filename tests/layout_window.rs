@@ -463,6 +463,14 @@ fn projector_ledger(lang: &str) {
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");
+    // L (show or hide the controls) opens and shuts the drawer here; it
+    // does not hide the drawer's button, and the controls with it.
+    for open in [true, false] {
+        app.xdo(&["key", "l"]);
+        let s = app.wait_frames(3);
+        assert_eq!(s["ui"]["drawer_open"], open, "L");
+        assert!(s["panel_widgets"]["drawer_toggle"].is_array(), "L");
+    }
     // The key list fits the window.
     app.xdo(&["key", "h"]);
     app.wait_for("the help", 30, |s| {

@@ -101,6 +101,14 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
     app.wait_for("the hidden values put away", 30, |s| {
         s["ui"]["tooltips"] == 0
     });
+    // Esc puts them away too, as it does any popup.
+    app.click(widget(&s, "top_bar_more", 0.5));
+    app.move_to([500.0, 200.0]);
+    app.wait_for("the hidden values again", 30, |s| s["ui"]["tooltips"] == 1);
+    app.xdo(&["key", "Escape"]);
+    app.wait_for("the hidden values put away by Esc", 30, |s| {
+        s["ui"]["tooltips"] == 0
+    });
     app.quit();
 }
 

@@ -98,6 +98,21 @@ fn overlapping_discs_are_refused() {
 fn syntax_errors_and_unknown_fields_give_the_line() {
     let msg = error_of("[world]\nsize = [10.0, 10.0\n");
     assert!(msg.contains("line 2"), "{msg}");
+    // A syntax error reads as a sentence: the line, the parser's words, the
+    // column and the line quoted; not the parser's picture of the line with
+    // a caret under it, squashed onto one line ("| 3 | gravity … | ^ |").
+    let msg = error_of("[world]\nsize = [16.0, 10.0\ngravity = [0, 0]\n");
+    assert_eq!(
+        msg,
+        "lab.toml, line 3: invalid array, expected `]`, at column 1 of \"gravity = [0, 0]\""
+    );
+    let long = format!("[world]\nsize = [1.0, 2.0] {}\n", "x".repeat(300));
+    let msg = error_of(&long);
+    assert!(
+        msg.starts_with("lab.toml, line 2: ") && msg.contains("size = [1.0, 2.0] xxx"),
+        "{msg}"
+    );
+    assert!(msg.chars().count() < 200 && msg.contains("…\""), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, 10.0]\nviscosity = 0.3\n");
     assert!(msg.contains("line 3") && msg.contains("viscosity"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, -1.0]\n");

@@ -287,8 +287,13 @@ impl App {
             commands.extend(self.input.commands(&mut self.panels, &self.model, mouse));
             commands.extend(self.page.commands());
             let running = !self.model.clock.paused;
+            let drawer = self
+                .panels
+                .rects
+                .as_ref()
+                .is_some_and(|r| matches!(r.side_dock, layout::SideDock::Drawer { .. }));
             for command in commands {
-                self.model.apply(command);
+                self.model.apply(command.in_layout(drawer));
             }
             self.carry_out_requests();
             let step_start = impulse::clock::Instant::now();

@@ -1,6 +1,7 @@
 //! Numbers as the screen shows them, in one place: a fixed number of
 //! decimals, never in e-notation, never "-0.000" (a value below display
-//! precision is 0.000), with its unit, and with the decimal separator of
+//! precision is 0.000), with its unit (a quantity of a million or more as
+//! 2.000×10¹², not thirteen digits), and with the decimal separator of
 //! the language spoken ([`crate::app::lang::decimal_comma`]: "2,000 J";
 //! a vector's components are then separated by "; "). Fields read numbers
 //! with either separator ([`parse`]). Files, the dump and the command line
@@ -58,16 +59,44 @@ pub fn parse(text: &str) -> Option<f64> {
 
 /// `v` and its unit: "2.000 J".
 pub fn with_unit(v: f64, decimals: usize, unit: &str) -> String {
-    format!("{} {unit}", plain(v, decimals))
+    format!("{} {unit}", quantity(v, decimals))
+}
+
+/// Values from this size up are written with a power of ten.
+const POWER_FROM: f64 = 1e6;
+
+/// A measured quantity: [`plain`], but from a million up as the mantissa
+/// with `decimals` decimals times a power of ten, as a textbook writes it
+/// ("2.000×10¹²"): a 10¹² kg disc's momentum fits the line it is on.
+pub fn quantity(v: f64, decimals: usize) -> String {
+    if !v.is_finite() || v.abs() < POWER_FROM {
+        return plain(v, decimals);
+    }
+    let mut power = v.abs().log10().floor() as i32;
+    let mut mantissa = v / 10f64.powi(power);
+    // 9.9996 with three decimals would show as 10.000.
+    if plain(mantissa.abs(), decimals).starts_with("10") {
+        power += 1;
+        mantissa = v / 10f64.powi(power);
+    }
+    let digits: String = power
+        .to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'][d as usize - '0' as usize],
+        })
+        .collect();
+    format!("{}×10{digits}", plain(mantissa, decimals))
 }
 
 /// A vector and its unit: "(2.000, 0.000) kg·m/s".
 pub fn vector(v: DVec2, decimals: usize, unit: &str) -> String {
     format!(
         "({}{}{}) {unit}",
-        plain(v.x, decimals),
+        quantity(v.x, decimals),
         list_separator(),
-        plain(v.y, decimals)
+        quantity(v.y, decimals)
     )
 }
 
@@ -103,6 +132,19 @@ pub fn field(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_million_and_more_is_written_with_a_power_of_ten() {
+        assert_eq!(with_unit(999_999.0, 3, "J"), "999999.000 J");
+        assert_eq!(with_unit(2e12, 3, "J"), "2.000×10¹² J");
+        assert_eq!(with_unit(-1.5e6, 2, "J"), "−1.50×10⁶ J");
+        assert_eq!(quantity(9.9996e8, 3), "1.000×10⁹");
+        assert_eq!(
+            vector(DVec2::new(2e12, 0.0), 3, "kg·m/s"),
+            "(2.000×10¹², 0.000) kg·m/s"
+        );
+        assert_eq!(quantity(f64::INFINITY, 3), "∞");
+    }
 
     #[test]
     fn tiny_values_print_as_zero_without_a_sign_or_an_exponent() {

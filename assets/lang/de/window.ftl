@@ -27,6 +27,7 @@ resting-contacts-hover = Scheiben, die aufeinander oder an einer Wand liegen: Si
 show-panels = Leisten einblenden
 top-bar-more = … mehr
 running-slower = läuft mit { $rate }× Echtzeit
+running-slower-many = läuft mit { $rate }× Echtzeit: mit weniger Scheiben ginge es schneller
 method-in-use = aktiv: { $method } / { $broad }
 method-in-use-auto = aktiv: { $method } / { $broad } (auto: { $reason })
 

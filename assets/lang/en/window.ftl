@@ -27,6 +27,7 @@ resting-contacts-hover = discs lying on each other or on a wall: not counted as 
 show-panels = Show panels
 top-bar-more = … more
 running-slower = running at { $rate }× real time
+running-slower-many = running at { $rate }× real time: fewer discs would run faster
 method-in-use = in use: { $method } / { $broad }
 method-in-use-auto = in use: { $method } / { $broad } (auto: { $reason })
 

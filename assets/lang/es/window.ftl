@@ -27,6 +27,7 @@ resting-contacts-hover = discos apoyados unos sobre otros o sobre una pared: no 
 show-panels = Mostrar paneles
 top-bar-more = … más
 running-slower = simulando a { $rate }× el tiempo real
+running-slower-many = simulando a { $rate }× el tiempo real: con menos discos iría más rápido
 method-in-use = en uso: { $method } / { $broad }
 method-in-use-auto = en uso: { $method } / { $broad } (auto: { $reason })
 

@@ -27,6 +27,7 @@ resting-contacts-hover = disques posés les uns sur les autres ou contre un mur�
 show-panels = Afficher panneaux
 top-bar-more = … plus
 running-slower = simulation à { $rate }× le temps réel
+running-slower-many = simulation à { $rate }× le temps réel : avec moins de disques, ce serait plus rapide
 method-in-use = en cours : { $method } / { $broad }
 method-in-use-auto = en cours : { $method } / { $broad } (auto : { $reason })
 

@@ -27,6 +27,7 @@ resting-contacts-hover = discos apoiados uns nos outros ou numa parede: não con
 show-panels = Mostrar painéis
 top-bar-more = … mais
 running-slower = rodando a { $rate }× o tempo real
+running-slower-many = rodando a { $rate }× o tempo real: com menos discos seria mais rápido
 method-in-use = em uso: { $method } / { $broad }
 method-in-use-auto = em uso: { $method } / { $broad } (auto: { $reason })
 

@@ -280,7 +280,7 @@ impl World {
     /// on if it was off. `verlet` records no pair collisions (see
     /// [`crate::ledger`]), so with it this runs to the limit.
     pub fn run_to_next_collision(&mut self, dt: f64, limit: f64) -> Option<Collision> {
-        match self.run_to_next(Next::Collision, dt, limit)? {
+        match self.run_to_next(Next::Collision, dt, limit, &mut |_, _| {})? {
             Impact::Pair(c) => Some(c),
             Impact::Wall(_) => None,
         }
@@ -296,12 +296,31 @@ impl World {
     /// `None`, so the caller tells it from "none within the limit" by the
     /// world's counters.
     pub fn run_to_next_impact(&mut self, dt: f64, limit: f64) -> Option<Impact> {
-        self.run_to_next(Next::Impact, dt, limit)
+        self.run_to_next(Next::Impact, dt, limit, &mut |_, _| {})
+    }
+
+    /// [`World::run_to_next_impact`], handing the world and the step's
+    /// statistics to `watch` after every step, so a caller can record the
+    /// way there (its plots, trails and rewind history) as a frame would.
+    pub fn run_to_next_impact_watched(
+        &mut self,
+        dt: f64,
+        limit: f64,
+        watch: &mut dyn FnMut(&World, &StepStats),
+    ) -> Option<Impact> {
+        self.run_to_next(Next::Impact, dt, limit, watch)
     }
 
     /// Steps of `dt` until the ledger records the `next` thing looked for,
-    /// or `limit` seconds have passed, or a step makes no progress.
-    fn run_to_next(&mut self, next: Next, dt: f64, limit: f64) -> Option<Impact> {
+    /// or `limit` seconds have passed, or a step makes no progress; `watch`
+    /// sees the world after each step.
+    fn run_to_next(
+        &mut self,
+        next: Next,
+        dt: f64,
+        limit: f64,
+        watch: &mut dyn FnMut(&World, &StepStats),
+    ) -> Option<Impact> {
         if !self.ledger.is_on() {
             self.ledger.keep(1);
         }
@@ -322,7 +341,7 @@ impl World {
             // for (with room for one, a wall hit after a pair collision
             // would); the ledger goes back to its size after the step.
             self.ledger.keep(usize::MAX);
-            self.step(dt.min(until - self.time).max(f64::MIN_POSITIVE));
+            let stats = self.step(dt.min(until - self.time).max(f64::MIN_POSITIVE));
             if seen(&self.ledger) > before {
                 found = match next {
                     Next::Collision => self.ledger.last().copied().map(Impact::Pair),
@@ -330,6 +349,7 @@ impl World {
                 };
             }
             self.ledger.keep(keep);
+            watch(self, &stats);
             if self.time == time_before && found.is_none() {
                 break; // no progress (the event cap)
             }

@@ -258,7 +258,8 @@ fn reads_as_words(text: &str) -> bool {
 }
 
 /// Where a literal is not for a person to read in the window: the terminal
-/// (which stays English), names in the state dump and egui's ids, shader
+/// (which stays English), names in the state dump and egui's ids (and its
+/// reasons to run a pass again, for debugging), shader
 /// and thread names, command-line flags, file names.
 const NOT_WORDS: &[&str] = &[
     "eprintln!(",
@@ -272,6 +273,7 @@ const NOT_WORDS: &[&str] = &[
     "assert!(",
     "Id::new(",
     "id_salt(",
+    "request_discard(",
     "UniformDesc::new(",
     "VertexAttribute::",
     "#[arg(",

@@ -76,7 +76,7 @@ impl Sandbox {
         let merge = self.undo.would_merge(kind, now);
         let before = (!merge).then(|| self.moment());
         let print = self.fingerprint();
-        let edits_discs = command.edits_discs();
+        let voids_caption = command.voids_caption();
         self.carry_out(command);
         if self.fingerprint() == print {
             return;
@@ -89,7 +89,7 @@ impl Sandbox {
         if kind != "edit-open-scene" && kind != "edit-reset" {
             self.open.unsaved = true;
         }
-        if edits_discs {
+        if voids_caption {
             self.open.edited = true;
         }
     }

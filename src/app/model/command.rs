@@ -220,15 +220,35 @@ impl Command {
         })
     }
 
-    /// Whether a change this command makes to the discs means the scene's
-    /// caption may no longer hold (a law change keeps the discs).
-    pub fn edits_discs(&self) -> bool {
+    /// The command as meant where the controls are a drawer (a small window,
+    /// a large text size): showing or hiding the controls (L) opens or shuts
+    /// the drawer. Hiding the side there would hide the drawer's button
+    /// instead, and the controls with it.
+    pub fn in_layout(self, drawer: bool) -> Command {
+        match self {
+            Command::ToggleSide if drawer => Command::ToggleDrawer,
+            other => other,
+        }
+    }
+
+    /// Whether a change this command makes means the scene's caption may
+    /// no longer hold: a change to the discs, or to a law they obey ("the
+    /// moving disc stops dead" fails at e = 0.5, "momentum stays the same"
+    /// under gravity). The method and its settings keep the caption.
+    pub fn voids_caption(&self) -> bool {
+        use Command::*;
         matches!(
             self,
-            Command::EditDisc { .. }
-                | Command::DeleteSelected
-                | Command::AimSelected(_)
-                | Command::LaunchAtCentre
+            EditDisc { .. }
+                | DeleteSelected
+                | AimSelected(_)
+                | LaunchAtCentre
+                | SetLaw(..)
+                | NudgeLaw(..)
+                | SetFriction(_)
+                | SetGravity(_)
+                | ToggleGravity
+                | SetBoundary(_)
         )
     }
 }

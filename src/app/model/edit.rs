@@ -346,4 +346,49 @@ mod tests {
             }
         }
     }
+
+    /// The caption ("the moving disc stops dead") is voided by a change to
+    /// the discs or to a law they obey, not by the method; undo takes the
+    /// change back with the note that reported it.
+    #[test]
+    fn a_law_changed_voids_the_caption_and_undo_takes_edits_with_their_notes() {
+        use crate::app::model::command::Law;
+        use crate::app::model::tests::later;
+        use impulse::method::{Method, Setting};
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        s.apply(Command::SetMethod(Setting::Fixed(Method::Verlet)));
+        assert!(!s.open.edited, "the method keeps the caption");
+        later(&mut s, 1.0);
+        s.apply(Command::SetLaw(Law::Restitution, 0.5));
+        assert!(
+            s.open.edited,
+            "at e = 0.5 the moving disc does not stop dead"
+        );
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        assert!(!s.open.edited && s.world.laws.restitution == 1.0);
+        later(&mut s, 1.0);
+        s.apply(Command::ToggleGravity);
+        assert!(s.open.edited, "under gravity the momentum does not stay");
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        for from in [EditPlace::Table, EditPlace::Fields] {
+            later(&mut s, 1.0);
+            s.apply(Command::EditDisc {
+                disc: 0,
+                text: [Some("2.5".into()), None, None, None],
+                from,
+            });
+            assert!(s.messages.table.is_some() || s.messages.fields.is_some());
+            later(&mut s, 1.0);
+            s.apply(Command::Undo);
+            assert_eq!(s.world.particles[0].mass, 1.0);
+            assert_eq!(
+                (&s.messages.table, &s.messages.fields),
+                (&None, &None),
+                "{from:?}: the note went with the edit"
+            );
+        }
+    }
 }

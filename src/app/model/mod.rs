@@ -62,6 +62,10 @@ use overlays::Overlays;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
+/// Above this many discs, a scene that runs slower than asked suggests
+/// fewer.
+const MANY_DISCS: usize = 10_000;
+
 /// A line of feedback under a control.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Note {
@@ -404,14 +408,20 @@ impl Sandbox {
     }
 
     /// "running at 0.31× real time" when the simulation goes more than 10 %
-    /// slower than the time scale asks.
+    /// slower than the time scale asks; with many discs, that fewer would
+    /// run faster (the steps and the drawing both grow with their number).
     pub fn slow_note(&self) -> Option<String> {
         let rate = self.sim_rate()?;
         if self.clock.paused || rate >= 0.9 * self.clock.time_scale() {
             return None;
         }
         let digits = if rate < 0.1 { 3 } else { 2 };
-        Some(tr!("running-slower", rate = plain(rate, digits)))
+        let rate = plain(rate, digits);
+        Some(if self.world.particles.len() > MANY_DISCS {
+            tr!("running-slower-many", rate = rate)
+        } else {
+            tr!("running-slower", rate = rate)
+        })
     }
 
     /// The method the steps use now ("impulse").

@@ -393,6 +393,9 @@ impl Sandbox {
         // the ledger came back with the world.
         self.record.history.clear();
         self.record.totals.clear();
+        // "Applied to disc 2" no longer holds; the toast says what undo did.
+        self.messages.fields = None;
+        self.messages.table = None;
         self.pointer.cancel();
         if self.selected_disc().is_none() {
             self.selected = None;

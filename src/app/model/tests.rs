@@ -51,7 +51,7 @@ fn levels(s: &Sandbox) -> usize {
 
 /// Advances the window's clock by `seconds` (undo merges changes of one
 /// kind closer together than 0.75 s).
-fn later(s: &mut Sandbox, seconds: f64) {
+pub(super) fn later(s: &mut Sandbox, seconds: f64) {
     let now = s.session.now + seconds;
     s.begin_frame(now);
 }

@@ -7,6 +7,11 @@ use super::{scenes, totals, DockTab, Sandbox};
 use crate::app::lang::tr;
 use crate::app::numbers::{plain, vector, with_unit};
 
+/// How often (s of simulated time) a run to the next collision records the
+/// totals, trails and rewind history on its way: as often as a frame at 60
+/// frames a second would.
+const RECORD_EVERY: f64 = 1.0 / 60.0;
+
 impl Sandbox {
     /// One frame of `frame_seconds` of real time: runs the steps the clock
     /// asks for as long as they fit in `budget` seconds of wall clock (at
@@ -129,11 +134,8 @@ impl Sandbox {
             self.world.ledger.keep(LEDGER_KEEP);
         }
         let counted = self.world.total_pair_collisions;
-        let found = self
-            .world
-            .run_to_next_impact(self.clock.dt, NEXT_COLLISION_LIMIT);
+        let found = self.run_recording(NEXT_COLLISION_LIMIT);
         let unrecorded = self.world.total_pair_collisions > counted;
-        self.record.history.record(&self.world);
         self.overlays.contact = true;
         self.panels.docks_open = true;
         self.panels.dock_expanded = true;
@@ -170,6 +172,49 @@ impl Sandbox {
                 limit = with_unit(NEXT_COLLISION_LIMIT, 0, "s")
             )),
         }
+    }
+
+    /// Runs to the next impact for at most `limit` seconds, recording the
+    /// way there as playing would: the totals, trails and rewind history
+    /// every [`RECORD_EVERY`] of simulated time, and in small scenes the
+    /// totals just before and after each step with an impact. So the plots
+    /// show a wall's push as a step at its instant, not a ramp from where
+    /// J was pressed, and the rewind steps back through the approach.
+    fn run_recording(&mut self, limit: f64) -> Option<impulse::ledger::Impact> {
+        let small = self.world.particles.len() <= totals::SAMPLE_COLLISIONS_MAX_DISCS;
+        let record = &mut self.record;
+        let mut before = (self.world.time, self.world.metrics());
+        let mut recorded = self.world.time;
+        let found =
+            self.world
+                .run_to_next_impact_watched(self.clock.dt, limit, &mut |world, stats| {
+                    let impacts = stats.pair_collisions + stats.wall_hits > 0;
+                    let frame = world.time - recorded >= RECORD_EVERY;
+                    if !(small || impacts || frame) {
+                        return;
+                    }
+                    let now = world.metrics();
+                    if small && impacts {
+                        record.totals.push_at(before.0, world, &before.1);
+                    }
+                    if stats.wall_hits > 0 {
+                        record.totals.mark_wall(world.time);
+                    }
+                    if impacts || frame {
+                        record.totals.push(world, &now);
+                        record.trails.record(world);
+                        record.history.record(world);
+                        recorded = world.time;
+                    }
+                    before = (world.time, now);
+                });
+        if recorded != self.world.time {
+            let now = self.world.metrics();
+            self.record.totals.push(&self.world, &now);
+            self.record.trails.record(&self.world);
+            self.record.history.record(&self.world);
+        }
+        found
     }
 
     /// Shows an earlier (or later) recorded moment; pauses.
@@ -238,5 +283,104 @@ impl Sandbox {
             p.vel -= m.center_of_mass_velocity;
         }
         Some(seen)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::RECORD_EVERY;
+    use crate::app::model::command::Command;
+    use crate::app::model::tests::sandbox_in;
+    use impulse::method::{Method, Setting};
+
+    /// Head-on (no gravity): the totals change only at an impact. J twice,
+    /// to the collision at 2.4 s and to the right wall at 5.6 s: the plot
+    /// holds the totals J started from up to the impact, sampled as often
+    /// as frames would, and changes there (before, the wall's push was a
+    /// straight ramp from where J was pressed); the rewind steps back
+    /// through the approach instead of jumping to where J was pressed.
+    #[test]
+    fn the_way_to_the_next_collision_is_plotted_and_kept_as_playing_would() {
+        let dir = tempfile::tempdir().unwrap();
+        for method in [
+            Setting::Auto,
+            Setting::Fixed(Method::Exact),
+            Setting::Fixed(Method::Impulse),
+        ] {
+            let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+            s.apply(Command::SetMethod(method));
+            let frame = RECORD_EVERY + s.clock.dt + 1e-9;
+            for j in 0..2 {
+                let start = s.world.metrics();
+                let (t0, p0, e0) = (s.world.time, start.momentum, start.kinetic_energy);
+                s.apply(Command::NextCollision);
+                let hit = s.world.ledger.last_impact().unwrap().time();
+                let samples: Vec<_> = s
+                    .record
+                    .totals
+                    .samples()
+                    .filter(|x| x.time >= t0)
+                    .copied()
+                    .collect();
+                let approach: Vec<_> = samples.iter().filter(|x| x.time < hit - 1e-9).collect();
+                let label = format!("{method}, J number {}", j + 1);
+                assert!(
+                    approach.len() as f64 >= (hit - t0) / frame,
+                    "{label}: {} samples over {} s",
+                    approach.len(),
+                    hit - t0
+                );
+                for x in &approach {
+                    assert!(
+                        (x.momentum - p0).length() < 1e-9 && (x.energy() - e0).abs() < 1e-9,
+                        "{label}: at {} s the plot has p {} and E {}, not {p0} and {e0}",
+                        x.time,
+                        x.momentum,
+                        x.energy()
+                    );
+                }
+                let last_before = approach.last().map_or(t0, |x| x.time);
+                assert!(hit - last_before <= frame, "{label}: {last_before} → {hit}");
+                for pair in samples.windows(2) {
+                    assert!(pair[1].time - pair[0].time <= frame, "{label}: {pair:?}");
+                }
+                let now = s.world.metrics();
+                assert_eq!(samples.last().map(|x| x.momentum), Some(now.momentum));
+                // One moment back is on the way, not where J was pressed.
+                s.apply(Command::Scrub(-1));
+                let back = s.world.time;
+                assert!(back < hit && hit - back <= frame, "{label}: back to {back}");
+                s.apply(Command::Scrub(1));
+                assert!(
+                    (s.world.time - hit).abs() <= s.clock.dt + 1e-9,
+                    "{label}: forward to {}, the impact at {hit}, dt {}",
+                    s.world.time,
+                    s.clock.dt
+                );
+            }
+            assert!(s.world.time > 5.0, "{method}: reached the right wall");
+        }
+    }
+
+    /// A scene running slower than asked says so, and with many discs
+    /// suggests fewer.
+    #[test]
+    fn a_slow_scene_says_its_rate_and_with_many_discs_suggests_fewer() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-8-gas.toml");
+        s.clock.paused = false;
+        // 0.3 simulated seconds a real second, for two seconds.
+        for k in 0..=20 {
+            let now = f64::from(k) * 0.1;
+            s.steps.realtime.push(now, 0.3 * now, true);
+        }
+        let note = s.slow_note().expect("slower than asked");
+        assert_eq!(note, "running at 0.30× real time");
+        let disc = s.world.particles[0];
+        s.world.particles.resize(super::super::MANY_DISCS + 1, disc);
+        let note = s.slow_note().expect("slower than asked");
+        assert!(note.ends_with("fewer discs would run faster"), "{note}");
+        s.clock.paused = true;
+        assert_eq!(s.slow_note(), None, "paused: nothing to say");
     }
 }

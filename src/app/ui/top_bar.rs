@@ -11,7 +11,7 @@ use crate::app::lang::tr;
 use crate::app::model::lesson::{count_line, pi_result, warning_text};
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
-use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::numbers::{plain, quantity, vector, with_unit};
 use crate::app::ui::tip::Tip;
 use egui::{Color32, RichText, WidgetText};
 use std::sync::Arc;
@@ -130,8 +130,8 @@ impl View for TopBar {
             optional.push(
                 Item::new(tr!(
                     "energy-with-turning",
-                    moving = plain(m.kinetic_energy, 3),
-                    turning = plain(m.rotational_energy, 3),
+                    moving = quantity(m.kinetic_energy, 3),
+                    turning = quantity(m.rotational_energy, 3),
                     total = with_unit(m.kinetic_energy + m.rotational_energy, 3, "J")
                 ))
                 .hover(tr!("energy-with-turning-hover")),
@@ -289,11 +289,33 @@ impl TopBar {
                 }
             }
         }
-        // The buttons first, from the right; the line gets what they leave.
+        // The buttons first, at the right; the line gets what they leave.
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            ui.spacing_mut().item_spacing.x = 8.0;
-            for (label, command, name) in buttons {
-                super::widgets::labelled_button(ui, cx, label, command, Some(name));
+            // Made left to right, so that Tab meets them in reading order
+            // (egui's Tab follows the order controls are made), in a group
+            // as wide as they were last frame.
+            let group = ui.id().with("top_bar_buttons");
+            let width = ui
+                .data(|d| d.get_temp::<f32>(group))
+                .unwrap_or(buttons_width);
+            let size = egui::vec2(width, ui.available_height());
+            let used = ui
+                .allocate_ui_with_layout(
+                    size,
+                    egui::Layout::left_to_right(egui::Align::Center),
+                    |ui| {
+                        ui.spacing_mut().item_spacing.x = 8.0;
+                        for (label, command, name) in buttons.into_iter().rev() {
+                            super::widgets::labelled_button(ui, cx, label, command, Some(name));
+                        }
+                        ui.min_rect().width()
+                    },
+                )
+                .inner;
+            if (used - width).abs() > 0.5 {
+                ui.data_mut(|d| d.insert_temp(group, used));
+                ui.ctx()
+                    .request_discard("the top bar's buttons changed width");
             }
             ui.add_space(spacing);
             ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
@@ -350,7 +372,7 @@ impl TopBar {
                 }
                 if !hidden.is_empty() {
                     // On hover, while it has the keys (Tab reaches it), or
-                    // from a click until the next click elsewhere: a touch
+                    // from a click until the next click elsewhere or Esc: a touch
                     // screen (a classroom's board) has no hover.
                     let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
                     let hidden = hidden.join("\n");
@@ -359,6 +381,15 @@ impl TopBar {
                     if r.clicked() {
                         pinned = !pinned;
                     } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
+                        pinned = false;
+                    }
+                    // Esc lets go of it, as of any popup; and it gives way to
+                    // the key list and the start screen, which it would cover.
+                    let panels = &cx.model.panels;
+                    if ui.input(|i| i.key_pressed(egui::Key::Escape))
+                        || panels.help_open
+                        || panels.start_open
+                    {
                         pinned = false;
                     }
                     ui.data_mut(|d| d.insert_temp(pinned_id, pinned));

@@ -5,6 +5,7 @@
 //! every readout of the angular momentum L.
 
 use super::Cx;
+use crate::app::lang::tr;
 use crate::app::model::bindings;
 use crate::app::model::{Command, Note};
 use crate::app::ui::tip::Tip;
@@ -202,9 +203,51 @@ pub fn arrow_choice(r: &egui::Response, current: Option<usize>, count: usize) ->
     (Some(next) != current).then_some(next)
 }
 
+/// How a slider's value reads: its track, the decimals shown, its unit,
+/// and whether the number is a size whose direction the label gives (a sign
+/// typed is dropped, and said so: "−9.8" for gravity pointing down).
+#[derive(Clone, Copy, Debug)]
+pub struct Reading {
+    pub log: bool,
+    pub decimals: usize,
+    pub suffix: &'static str,
+    pub magnitude: bool,
+}
+
+impl Reading {
+    /// A linear track, `decimals` shown, `suffix` after the number.
+    pub fn new(decimals: usize, suffix: &'static str) -> Self {
+        Self {
+            log: false,
+            decimals,
+            suffix,
+            magnitude: false,
+        }
+    }
+
+    /// A logarithmic track.
+    pub fn log(self) -> Self {
+        Self { log: true, ..self }
+    }
+
+    /// A size only: a sign typed is dropped.
+    pub fn magnitude(self) -> Self {
+        Self {
+            magnitude: true,
+            ..self
+        }
+    }
+}
+
+/// How long the line under a slider that says what became of a typed
+/// number stays (s).
+const TYPED_NOTE_SECONDS: f64 = 8.0;
+
 /// A slider under its label, as wide as the dock allows, with its value
 /// (and unit) in a box beside it that can also be dragged or typed into
-/// (while it has the keyboard the shortcuts stay quiet).
+/// (while it has the keyboard the shortcuts stay quiet). A number typed
+/// outside the range is taken at the nearest end, and a line under the
+/// slider says so for a few seconds: nothing changes without a word.
 /// Returns the track's response, so its rectangle is the track's, and
 /// whether the value changed.
 pub fn slider(
@@ -212,49 +255,105 @@ pub fn slider(
     label: &str,
     value: &mut f64,
     range: std::ops::RangeInclusive<f64>,
-    log: bool,
-    decimals: usize,
-    suffix: &str,
+    reading: Reading,
 ) -> (egui::Response, bool) {
+    let Reading {
+        log,
+        decimals,
+        suffix,
+        magnitude,
+    } = reading;
     ui.add(egui::Label::new(label).wrap());
     let value_box = 96.0;
     ui.spacing_mut().slider_width = (ui.available_width() - value_box).max(60.0);
-    ui.horizontal(|ui| {
-        let track = ui.add(
-            Slider::new(value, range.clone())
-                .logarithmic(log)
-                .show_value(false),
-        );
-        let speed = if log {
-            0.01 * *value
-        } else {
-            0.005 * (range.end() - range.start())
-        };
-        if !ui.is_enabled() {
-            // egui's value box takes Tab even where it is disabled, and
-            // then lets the keyboard drop: a plain box shows the value.
-            let text = format!("{}{suffix}", crate::app::numbers::plain(*value, decimals));
-            ui.add(egui::Button::new(text));
-            return (track, false);
-        }
-        let boxed = ui.add(
-            egui::DragValue::new(value)
-                .range(range)
-                .speed(speed)
-                .suffix(suffix)
-                // In the language's numbers (2,50), either separator typed.
-                .custom_formatter(move |v, _| crate::app::numbers::plain(v, decimals))
-                .custom_parser(crate::app::numbers::parse),
-        );
-        if boxed.has_focus() {
-            // Typed into: the shortcuts stay quiet (a digit is a digit).
+    let note_id = ui.id().with(("typed_note", label));
+    let (track, changed) = ui
+        .horizontal(|ui| {
+            let track = ui.add(
+                Slider::new(value, range.clone())
+                    .logarithmic(log)
+                    .show_value(false),
+            );
+            let speed = if log {
+                0.01 * *value
+            } else {
+                0.005 * (range.end() - range.start())
+            };
+            if !ui.is_enabled() {
+                // egui's value box takes Tab even where it is disabled, and
+                // then lets the keyboard drop: a plain box shows the value.
+                let text = format!("{}{suffix}", crate::app::numbers::plain(*value, decimals));
+                ui.add(egui::Button::new(text));
+                return (track, false);
+            }
+            // What was typed, before egui keeps it to the range.
+            let typed = std::cell::Cell::new(None);
+            let boxed = ui.add(
+                egui::DragValue::new(value)
+                    .range(range.clone())
+                    .speed(speed)
+                    .suffix(suffix)
+                    // In the language's numbers (2,50), either separator typed.
+                    .custom_formatter(move |v, _| crate::app::numbers::plain(v, decimals))
+                    .custom_parser(|text| {
+                        let v = crate::app::numbers::parse(text)?;
+                        typed.set(Some((text.trim().replace('-', "−"), v)));
+                        Some(if magnitude { v.abs() } else { v })
+                    }),
+            );
+            if boxed.has_focus() {
+                // Typed into: the shortcuts stay quiet (a digit is a digit).
+                ui.ctx()
+                    .data_mut(|d| d.insert_temp(egui::Id::new(TYPING_IN_A_BOX), true));
+            }
+            let typed = typed
+                .take()
+                .filter(|_| boxed.changed() || boxed.lost_focus());
+            if let Some((text, v)) = typed {
+                let number = |v: f64| crate::app::numbers::plain(v, decimals);
+                let taken = format!("{}{suffix}", number(*value));
+                let said = if !range.contains(&if magnitude { v.abs() } else { v }) {
+                    Some(Note::error(tr!(
+                        "slider-out-of-range",
+                        typed = text,
+                        low = number(*range.start()),
+                        high = format!("{}{suffix}", number(*range.end())),
+                        value = taken
+                    )))
+                } else if magnitude && v < 0.0 {
+                    Some(Note::ok(tr!(
+                        "slider-sign-dropped",
+                        typed = text,
+                        value = taken
+                    )))
+                } else {
+                    None
+                };
+                let until = ui.input(|i| i.time) + TYPED_NOTE_SECONDS;
+                ui.ctx().data_mut(|d| match said {
+                    Some(said) => d.insert_temp(note_id, (said, until)),
+                    None => d.remove::<(Note, f64)>(note_id),
+                });
+            }
+            let changed = track.changed() || boxed.changed();
+            (track, changed)
+        })
+        .inner;
+    if track.dragged() {
+        ui.ctx().data_mut(|d| d.remove::<(Note, f64)>(note_id));
+    }
+    let note = ui.ctx().data(|d| d.get_temp::<(Note, f64)>(note_id));
+    if let Some((said, until)) = note {
+        let now = ui.input(|i| i.time);
+        if now < until {
+            show_note(ui, &said);
             ui.ctx()
-                .data_mut(|d| d.insert_temp(egui::Id::new(TYPING_IN_A_BOX), true));
+                .request_repaint_after(std::time::Duration::from_secs_f64(until - now));
+        } else {
+            ui.ctx().data_mut(|d| d.remove::<(Note, f64)>(note_id));
         }
-        let changed = track.changed() || boxed.changed();
-        (track, changed)
-    })
-    .inner
+    }
+    (track, changed)
 }
 
 /// Where a value box notes that it has the keyboard (egui's memory).
@@ -322,3 +421,6 @@ pub fn headless(size: egui::Vec2, mut add: impl FnMut(&mut Ui)) -> egui::FullOut
     }
     out.expect("three frames")
 }
+
+#[cfg(test)]
+mod tests;

@@ -31,11 +31,7 @@ pub(super) fn type_error(
     let path = e.path().to_string();
     let inner = e.into_inner();
     if path.is_empty() || path == "." {
-        // A syntax error: the parser's message says where.
-        return SceneError::Syntax {
-            origin: origin.to_string(),
-            message: one_line(&inner.to_string()),
-        };
+        return syntax_error(text, origin, &inner);
     }
     let line = inner
         .span()
@@ -48,6 +44,70 @@ pub(super) fn type_error(
         origin,
         field: path,
         reason: one_line(&plain_words(inner.message())),
+    }
+}
+
+/// Most characters of the offending line a syntax error quotes.
+const QUOTED_CHARS: usize = 60;
+
+/// A syntax error as a sentence on one line: the file and line, the
+/// parser's words, the column and the line itself, quoted
+/// (`scene.toml, line 3: invalid array, expected `]`, at column 1 of
+/// "gravity = [0, 0]"`). The parser's own text draws the line with a caret
+/// under it, which on one line reads as `| | 3 | gravity … | ^ |`.
+fn syntax_error(text: &str, origin: &str, e: &toml::de::Error) -> SceneError {
+    let words = e
+        .message()
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let Some(span) = e.span() else {
+        return SceneError::Syntax {
+            origin: origin.to_string(),
+            message: one_line(&words),
+        };
+    };
+    let at = span.start.min(text.len());
+    let mut at = (0..=at)
+        .rev()
+        .find(|&i| text.is_char_boundary(i))
+        .unwrap_or(0);
+    // At the end of the text (an array left open), or on a blank line: the
+    // end of the last line with something on it, where the parser gave up.
+    let blank = |at: usize| {
+        let start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+        let end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+        text[start..end].trim().is_empty()
+    };
+    while at > 0 && blank(at) {
+        let start = text[..at].rfind('\n').unwrap_or(0);
+        at = text[..start].trim_end().len();
+    }
+    let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    let line = text[..at].matches('\n').count() + 1;
+    let column = text[line_start..at].chars().count() + 1;
+    let quoted: String = text[line_start..line_end]
+        .trim_end()
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect();
+    let quoted = if quoted.chars().count() > QUOTED_CHARS {
+        let cut: String = quoted.chars().take(QUOTED_CHARS - 1).collect();
+        format!("{cut}…")
+    } else {
+        quoted
+    };
+    let message = if quoted.trim().is_empty() {
+        format!("{words}, at column {column}")
+    } else {
+        format!("{words}, at column {column} of \"{quoted}\"")
+    };
+    SceneError::Syntax {
+        origin: format!("{origin}, line {line}"),
+        message: one_line(&message),
     }
 }
 

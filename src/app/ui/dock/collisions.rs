@@ -83,7 +83,12 @@ fn count(ui: &mut egui::Ui, cx: &mut Cx) {
     ui.horizontal_wrapped(|ui| {
         let r = ui.label(count_line(&cx.model.world));
         cx.note("ledger_count", &r);
-        command_button(ui, cx, Command::NextCollision, None);
+        command_button(
+            ui,
+            cx,
+            Command::NextCollision,
+            Some("next_collision_in_tab"),
+        );
     });
 }
 

@@ -2,7 +2,7 @@
 //! and *Selected disc* (its mass, radius and velocity as text fields that
 //! follow the disc until typed in; Apply or Enter sends the edit).
 
-use super::super::widgets::{command_button, select_all_on_focus, show_note, slider};
+use super::super::widgets::{command_button, select_all_on_focus, show_note, slider, Reading};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::bindings::tooltip;
@@ -57,9 +57,7 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
             &tr!("radius-label"),
             &mut r,
             0.05..=2.0f64.min(biggest).max(0.06),
-            true,
-            2,
-            " m",
+            Reading::new(2, " m").log(),
         );
         if changed {
             cx.send(Command::SetNewRadius(r));
@@ -68,7 +66,13 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
         cx.note("new_radius", &track.tip(tip));
     }
     let mut m = disc.mass;
-    let (track, changed) = slider(ui, &tr!("mass-label"), &mut m, 0.01..=100.0, true, 2, " kg");
+    let (track, changed) = slider(
+        ui,
+        &tr!("mass-label"),
+        &mut m,
+        0.01..=100.0,
+        Reading::new(2, " kg").log(),
+    );
     if changed {
         cx.send(Command::SetNewMass(m));
     }

@@ -3,7 +3,9 @@
 //! screen, hide the panels) and, under *More*, *Details* (method, broad
 //! phase, substeps and what a step costs).
 
-use super::super::widgets::{combo, command_button, pick, setting_combo, show_note, slider};
+use super::super::widgets::{
+    combo, command_button, pick, setting_combo, show_note, slider, Reading,
+};
 use super::Cx;
 use crate::app::lang::{tr, Lang};
 use crate::app::model::apply::{BROAD_PHASES, METHODS, SUBSTEPS};
@@ -68,9 +70,9 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
                 cx.send(Command::Share);
             }
         }
-        command_button(ui, cx, Command::Clear, None);
-        command_button(ui, cx, Command::Export, None);
-        command_button(ui, cx, Command::Screenshot, None);
+        command_button(ui, cx, Command::Clear, Some("clear"));
+        command_button(ui, cx, Command::Export, Some("export"));
+        command_button(ui, cx, Command::Screenshot, Some("screenshot"));
     });
     if in_browser {
         ui.label(tr!("saves-download"));
@@ -88,7 +90,13 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
     let panels = &cx.model.panels;
     let mut scale = f64::from(panels.scale);
     let range = f64::from(*UI_SCALE_RANGE.start())..=f64::from(*UI_SCALE_RANGE.end());
-    let (r, changed) = slider(ui, &tr!("ui-scale-label"), &mut scale, range, false, 1, "×");
+    let (r, changed) = slider(
+        ui,
+        &tr!("ui-scale-label"),
+        &mut scale,
+        range,
+        Reading::new(1, "×"),
+    );
     cx.note("ui_scale", &r);
     // Applied when let go: the panel must not change size under the pointer.
     if r.drag_stopped() || (changed && !r.dragged()) {
@@ -107,15 +115,15 @@ pub fn view(ui: &mut Ui, cx: &mut Cx) {
         if r.clicked() {
             cx.send(Command::SetTheme(other));
         }
-        command_button(ui, cx, Command::ZoomIn, None);
-        command_button(ui, cx, Command::ZoomOut, None);
+        command_button(ui, cx, Command::ZoomIn, Some("zoom_in"));
+        command_button(ui, cx, Command::ZoomOut, Some("zoom_out"));
         // A page may go full screen only inside the click's own event,
         // which a frame never is: in the browser its own full-screen key
         // (F11, or the Chromebook's) does it.
         if !cfg!(target_arch = "wasm32") {
-            command_button(ui, cx, Command::Fullscreen, None);
+            command_button(ui, cx, Command::Fullscreen, Some("fullscreen"));
         }
-        command_button(ui, cx, Command::ToggleDocks, None);
+        command_button(ui, cx, Command::ToggleDocks, Some("hide_panels"));
     });
     language(ui, cx);
 }

@@ -3,7 +3,7 @@
 //! laws (roughness and friction). A slider sends its value as a command;
 //! the model keeps it in range and remembers it for undo.
 
-use super::super::widgets::{pick, slider};
+use super::super::widgets::{pick, slider, Reading};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::clock::TIME_SCALES;
@@ -16,7 +16,8 @@ use impulse::Boundary;
 
 use crate::app::model::apply::EARTH_GRAVITY;
 
-/// The gravity slider's value: tenths, sticking to Earth's within 0.15.
+/// The gravity slider's track's value: tenths, sticking to Earth's within
+/// 0.15.
 pub fn snap_gravity(g: f64) -> f64 {
     if (g - EARTH_GRAVITY).abs() < 0.15 {
         EARTH_GRAVITY
@@ -29,7 +30,7 @@ pub fn snap_gravity(g: f64) -> f64 {
 fn coefficient(ui: &mut Ui, cx: &mut Cx, law: Law, (label, name, hover): (&str, &str, &str)) {
     let mut value = law.of(&cx.model.world.laws);
     let (lo, hi) = law.range().control;
-    let (r, changed) = slider(ui, label, &mut value, lo..=hi, false, 2, "");
+    let (r, changed) = slider(ui, label, &mut value, lo..=hi, Reading::new(2, ""));
     if changed {
         cx.send(Command::SetLaw(law, value));
     }
@@ -77,12 +78,13 @@ pub fn laws(ui: &mut Ui, cx: &mut Cx) {
         &tr!("gravity-label"),
         &mut g,
         lo..=hi,
-        false,
-        2,
-        " m/s²",
+        Reading::new(2, " m/s²").magnitude(),
     );
     if changed {
-        cx.send(Command::SetGravity(snap_gravity(g)));
+        // The track snaps (a drag cannot land on 9.81); a number typed or
+        // dragged in the box is taken as it is.
+        let g = if r.changed() { snap_gravity(g) } else { g };
+        cx.send(Command::SetGravity(g));
     }
     let tip = crate::app::model::bindings::tooltip(&Command::ToggleGravity);
     cx.note(
@@ -164,7 +166,13 @@ pub fn advanced(ui: &mut Ui, cx: &mut Cx) {
     let (r, changed) = ui
         .add_enabled_ui(on, |ui| {
             let (lo, hi) = impulse::laws::FRICTION_RANGE.control;
-            slider(ui, &tr!("friction-label"), &mut mu, lo..=hi, false, 2, "")
+            slider(
+                ui,
+                &tr!("friction-label"),
+                &mut mu,
+                lo..=hi,
+                Reading::new(2, ""),
+            )
         })
         .inner;
     if changed && on {

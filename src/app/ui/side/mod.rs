@@ -160,10 +160,10 @@ fn transport(ui: &mut Ui, cx: &mut Cx) {
         command_button(ui, cx, Command::Reset, Some("reset"));
         command_button(ui, cx, Command::Undo, Some("undo"));
         command_button(ui, cx, Command::Redo, Some("redo"));
-        command_button(ui, cx, Command::Slower, None);
-        command_button(ui, cx, Command::Faster, None);
+        command_button(ui, cx, Command::Slower, Some("slower"));
+        command_button(ui, cx, Command::Faster, Some("faster"));
         command_button(ui, cx, Command::TogglePresets, Some("presets"));
-        command_button(ui, cx, Command::Fit, None);
+        command_button(ui, cx, Command::Fit, Some("fit"));
         command_button(ui, cx, Command::ToggleHelp, Some("help"));
     });
 }
