@@ -168,6 +168,11 @@ pub fn apply(ctx: &egui::Context, pixels_per_point: f32, theme: Theme) {
     style.spacing.interact_size.y = 24.0;
     style.spacing.item_spacing = egui::vec2(8.0, 5.0);
     style.spacing.slider_width = 130.0;
+    // A list taller than its room shows a thin handle at rest, not only
+    // under the pointer: a touch screen has no hover, and a start screen
+    // whose last tiles are below the fold must say there is more.
+    style.spacing.scroll.floating_width = 4.0;
+    style.spacing.scroll.dormant_handle_opacity = 0.7;
     ctx.set_style_of(preference, style);
     // A wheel's notch scrolls a panel (the preset menu, the side dock) by a
     // line: on X11 miniquad reports a notch as 1, which egui-macroquad
@@ -230,5 +235,59 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A list taller than its room shows its scroll handle with no pointer
+    /// over it (a touch screen has no hover); the list that fits shows none.
+    #[test]
+    fn a_list_taller_than_its_room_shows_its_handle_at_rest() {
+        let handles = |rows: usize| {
+            let ctx = egui::Context::default();
+            apply(&ctx, 1.0, Theme::Dark);
+            let mut shapes = Vec::new();
+            let mut area = egui::Rect::NOTHING;
+            for k in 0..3 {
+                let input = egui::RawInput {
+                    time: Some(f64::from(k) * 0.1),
+                    screen_rect: Some(egui::Rect::from_min_size(
+                        egui::Pos2::ZERO,
+                        egui::vec2(400.0, 300.0),
+                    )),
+                    ..Default::default()
+                };
+                let out = ctx.run(input, |ctx| {
+                    egui::CentralPanel::default().show(ctx, |ui| {
+                        let r = egui::ScrollArea::vertical()
+                            .auto_shrink(false)
+                            .max_height(150.0)
+                            .show(ui, |ui| {
+                                for row in 0..rows {
+                                    ui.label(format!("row {row}"));
+                                }
+                            });
+                        area = r.inner_rect;
+                    });
+                });
+                shapes = ctx.tessellate(out.shapes, 1.0);
+            }
+            // Painted near the area's right edge, narrow and tall: a handle.
+            shapes
+                .iter()
+                .filter_map(|c| match &c.primitive {
+                    egui::epaint::Primitive::Mesh(m) => Some(m),
+                    _ => None,
+                })
+                .filter(|m| {
+                    let b = m.calc_bounds();
+                    let seen = m.vertices.iter().any(|v| v.color.a() > 40);
+                    seen && b.width() <= 8.0
+                        && b.height() >= 10.0
+                        && b.right() >= area.right() - 12.0
+                        && b.right() <= area.right() + 12.0
+                })
+                .count()
+        };
+        assert!(handles(60) > 0, "no handle on a list of 60 rows at rest");
+        assert_eq!(handles(3), 0, "a handle on a list that fits");
     }
 }

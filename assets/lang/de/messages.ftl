@@ -18,7 +18,7 @@ warning-substeps = { $substeps ->
     [one] 1 Teilschritt
    *[other] { $substeps } Teilschritte
 } pro Schritt: Die schnellste Scheibe legt pro Teilschritt { $radii }-mal ihren Radius zurück und kann durch andere hindurchfliegen
-warning-stall = { $method }: Der Schritt wurde abgebrochen, und die Simulationszeit kommt nicht mehr voran (zu viele Stöße auf einmal); Verfahren impulse wählen
+warning-stall = { $method }: zu viele Stöße auf einmal, die Zeit steht still; zum Weiterlaufen das Verfahren impulse wählen (unter Mehr)
 
 ## Szenen und Dateien
 file-cannot-create = { $folder } kann nicht angelegt werden: { $error }

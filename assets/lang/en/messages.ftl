@@ -18,7 +18,7 @@ warning-substeps = { $substeps ->
     [one] 1 substep
    *[other] { $substeps } substeps
 } per step: the fastest disc moves { $radii }× its radius per substep and can pass through others
-warning-stall = { $method }: the step was cut short and the simulation time has stopped advancing (too many collisions at once); choose impulse
+warning-stall = { $method }: too many collisions at once, so time has stopped; to go on, choose the method impulse (under More)
 
 ## Scenes and files
 file-cannot-create = cannot create { $folder }: { $error }

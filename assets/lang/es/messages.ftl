@@ -18,7 +18,7 @@ warning-substeps = { $substeps ->
     [one] 1 subpaso
    *[other] { $substeps } subpasos
 } por paso: el disco más rápido avanza { $radii }× su radio en cada subpaso y puede atravesar a otros
-warning-stall = { $method }: el paso se cortó y el tiempo de la simulación ha dejado de avanzar (demasiados choques a la vez); elige impulse
+warning-stall = { $method }: demasiados choques a la vez, así que el tiempo se ha detenido; para seguir, elige el método impulse (en Más)
 
 ## Escenas y archivos
 file-cannot-create = no se puede crear { $folder }: { $error }

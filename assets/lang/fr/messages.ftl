@@ -18,7 +18,7 @@ warning-substeps = { $substeps ->
     [one] { $substeps } sous-pas
    *[other] { $substeps } sous-pas
 } par pas : le disque le plus rapide parcourt { $radii }× son rayon par sous-pas et peut traverser les autres
-warning-stall = { $method } : le pas a été écourté et le temps simulé n'avance plus (trop de collisions à la fois) ; choisissez impulse
+warning-stall = { $method } : trop de collisions à la fois, le temps s'est arrêté ; pour continuer, choisissez la méthode impulse (sous Plus)
 
 ## Scènes et fichiers
 file-cannot-create = impossible de créer { $folder } : { $error }

@@ -18,7 +18,7 @@ warning-substeps = { $substeps ->
     [one] { $substeps } subpasso
    *[other] { $substeps } subpassos
 } por passo: o disco mais rápido anda { $radii }× o seu raio por subpasso e pode atravessar outros
-warning-stall = { $method }: o passo foi encurtado e o tempo da simulação parou de avançar (colisões demais ao mesmo tempo); escolha impulse
+warning-stall = { $method }: colisões demais ao mesmo tempo, e o tempo parou; para continuar, escolha o método impulse (em Mais)
 
 ## Cenas e arquivos
 file-cannot-create = não foi possível criar { $folder }: { $error }
