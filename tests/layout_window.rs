@@ -519,6 +519,16 @@ fn at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column() 
     let x = Xvfb::start("discs");
     let app = projector_discs_tab(&x, &[]);
     let s = app.state();
+    // Both discs' rows in sight in the short tab: the line on how to edit
+    // gives way to the headings' tooltips (it took the second row's room).
+    let area = tab_content(&s);
+    for cell in ["discs_mass_0", "discs_mass_1"] {
+        let r = rect(&s["panel_widgets"][cell]);
+        assert!(
+            r[1] >= area[1] && r[1] + r[3] <= area[1] + area[3] + 0.5,
+            "{cell} {r:?} is not inside the tab {area:?}"
+        );
+    }
     // Where the last column starts (out of sight: nowhere, or past the
     // window's edge less the 100 px it needs).
     let start = |s: &Value| {

@@ -82,18 +82,32 @@ impl View for DiscsTable {
         if let Some(sent) = self.sent.take() {
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
         }
-        ui.horizontal_wrapped(|ui| {
-            ui.label(tr!("table-line"));
-            if let Some(note) = &note {
-                let r = show_note(ui, note);
-                cx.note("table_note", &r);
-            }
-        });
+        let row_height = ui.spacing().interact_size.y + 2.0;
+        // How to edit, on a line above the table where there is room for it
+        // and three rows (or every disc) besides; in a short tab (a
+        // projector's at 1024×768) the line would take a disc's row, and the
+        // headings' tooltips say it instead.
+        let line = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+        let rows = model.world.particles.len().clamp(1, 3) as f32;
+        let header = if spin_shown(&model.world) { 2.0 } else { 1.0 } * row_height;
+        let needed = line + header + rows * (row_height + ui.spacing().item_spacing.y);
+        let hint_line = ui.available_height() >= needed || model.world.particles.is_empty();
+        if hint_line || note.is_some() {
+            ui.horizontal_wrapped(|ui| {
+                if hint_line {
+                    ui.label(tr!("table-line"));
+                }
+                if let Some(note) = &note {
+                    let r = show_note(ui, note);
+                    cx.note("table_note", &r);
+                }
+            });
+        }
         if model.world.particles.is_empty() {
             ui.label(tr!("table-no-discs"));
             return;
         }
-        let row_height = ui.spacing().interact_size.y + 2.0;
+        let how_to_edit = (!hint_line).then(|| tr!("table-line"));
         let mut commit: Option<CellEdit> = None;
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
@@ -164,7 +178,10 @@ impl View for DiscsTable {
                                 h.to_string()
                             };
                             let (_, r) = header.col(|ui| {
-                                ui.strong(h);
+                                let r = ui.strong(h);
+                                if let Some(how) = &how_to_edit {
+                                    r.tip(how);
+                                }
                             });
                             if k == last && spin_columns == 0 {
                                 cx.note("discs_last_column", &r);
