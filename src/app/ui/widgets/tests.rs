@@ -53,22 +53,16 @@ fn typed(
     };
     pass(0.1, vec![Event::PointerMoved(at), click(true)], &mut value);
     pass(0.2, vec![click(false)], &mut value);
-    let select_all = Event::Key {
-        key: Key::A,
+    let press = |key, modifiers| Event::Key {
+        key,
         physical_key: None,
         pressed: true,
         repeat: false,
-        modifiers: Modifiers::COMMAND,
+        modifiers,
     };
+    let select_all = press(Key::A, Modifiers::COMMAND);
     pass(0.3, vec![select_all, Event::Text(text.into())], &mut value);
-    let enter = Event::Key {
-        key: Key::Enter,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers: Modifiers::NONE,
-    };
-    pass(0.4, vec![enter], &mut value);
+    pass(0.4, vec![press(Key::Enter, Modifiers::NONE)], &mut value);
     let (then, _) = pass(0.5, vec![], &mut value);
     let (later, _) = pass(10.5, vec![], &mut value);
     (value, then, later)
