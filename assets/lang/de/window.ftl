@@ -9,6 +9,7 @@ scene-untitled = Sandkasten
 state-rewound = ZURÜCKGESPULT
 state-paused = PAUSIERT
 state-running = LÄUFT
+state-stalled = STECKT FEST
 rewound-line = zurückgespult auf Stand { $snapshot } von { $snapshots } ({ $oldest } bis { $newest } s): Leertaste setzt fort
 momentum-hover = Gesamtimpuls der Scheiben
 momentum-walls-push = p = { $momentum } (Wände stoßen)

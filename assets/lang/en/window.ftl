@@ -9,6 +9,7 @@ scene-untitled = Sandbox
 state-rewound = REWOUND
 state-paused = PAUSED
 state-running = RUNNING
+state-stalled = STUCK
 rewound-line = rewound to snapshot { $snapshot } of { $snapshots } ({ $oldest } to { $newest } s): Space resumes
 momentum-hover = total momentum of the discs
 momentum-walls-push = p = { $momentum } (walls push)

@@ -9,6 +9,7 @@ scene-untitled = Experimento libre
 state-rewound = REBOBINADO
 state-paused = EN PAUSA
 state-running = EN MARCHA
+state-stalled = ATASCADO
 rewound-line = rebobinado a la instantánea { $snapshot } de { $snapshots } (de { $oldest } a { $newest } s): Espacio reanuda
 momentum-hover = cantidad de movimiento total de los discos
 momentum-walls-push = p = { $momentum } (empujan las paredes)

@@ -9,6 +9,7 @@ scene-untitled = Bac à sable
 state-rewound = REMBOBINÉ
 state-paused = EN PAUSE
 state-running = EN COURS
+state-stalled = BLOQUÉ
 rewound-line = rembobiné à l'instantané { $snapshot } sur { $snapshots } (de { $oldest } à { $newest } s) : Espace pour reprendre
 momentum-hover = quantité de mouvement totale des disques
 momentum-walls-push = p = { $momentum } (les murs poussent)

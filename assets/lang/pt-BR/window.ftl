@@ -9,6 +9,7 @@ scene-untitled = Caixa livre
 state-rewound = REBOBINADO
 state-paused = PAUSADO
 state-running = RODANDO
+state-stalled = TRAVADO
 rewound-line = voltou ao registro { $snapshot } de { $snapshots } ({ $oldest } a { $newest } s): Espaço continua
 momentum-hover = quantidade de movimento total dos discos
 momentum-walls-push = p = { $momentum } (paredes empurram)

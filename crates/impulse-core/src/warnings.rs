@@ -112,8 +112,8 @@ pub fn warnings_with_travel(world: &World, dt: f64, measured: Option<f64>) -> Ve
         out.push(Warning {
             code: STALL,
             text: format!(
-                "{}: the step was cut short and the simulation time has stopped advancing \
-                 (too many collisions at once); choose impulse",
+                "{}: too many collisions at once, so time has stopped; to go on, choose the \
+                 method impulse",
                 method.name()
             ),
             values: Vec::new(),

@@ -63,10 +63,20 @@ impl View for TopBar {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
         let name = model.scene_name();
+        let method = model.method_in_use();
+        let warnings = impulse::warnings::warnings(world, model.clock.dt);
+        let stall = warnings
+            .iter()
+            .find(|w| w.code == impulse::warnings::STALL)
+            .map(|w| warning_text(w, &method));
         let state = if model.record.history.cursor().is_some() {
             RichText::new(format!("⏸ {}", tr!("state-rewound"))).color(paused)
         } else if model.clock.paused {
             RichText::new(format!("⏸ {}", tr!("state-paused"))).color(paused)
+        } else if stall.is_some() {
+            // Running, but the clock does not move: said where it is always
+            // in sight, not only among the warnings "… more" may hold.
+            RichText::new(format!("⚠ {}", tr!("state-stalled"))).color(paused)
         } else {
             // The time scale only when it is not real time: a short line.
             let scale = model.clock.time_scale();
@@ -85,7 +95,10 @@ impl View for TopBar {
         let essential = [
             Item::new(RichText::new(name).strong()),
             Item::new(format!("t = {}", with_unit(world.time, 2, "s"))),
-            Item::new(state.strong()).named("run_state"),
+            match stall {
+                Some(why) => Item::new(state.strong()).named("run_state").hover(why),
+                None => Item::new(state.strong()).named("run_state"),
+            },
         ];
         // Shown as far as the line reaches, in this order.
         let mut optional = Vec::new();
@@ -104,8 +117,7 @@ impl View for TopBar {
             )));
         }
         // What the method cannot promise comes before the numbers it affects.
-        let method = model.method_in_use();
-        for warning in impulse::warnings::warnings(world, model.clock.dt) {
+        for warning in warnings {
             let text = warning_text(&warning, &method);
             optional.push(
                 Item::new(RichText::new(format!("⚠ {text}")).color(paused))
@@ -351,6 +363,10 @@ impl TopBar {
                 cx.note("scene_name", &r);
                 for item in [time, state] {
                     let r = ui.label(item.text);
+                    let r = match item.hover {
+                        Some(h) => r.tip(h),
+                        None => r,
+                    };
                     if let Some(name) = item.name {
                         cx.note(name, &r);
                     }
