@@ -14,10 +14,10 @@ pi-result = { $count } Stöße: π ≈ { $pi }
 ## Was ein Verfahren nicht versprechen kann
 warning-verlet = verlet: Stöße verlieren Energie; die Stoßzahl e = { $restitution } wird nicht eingehalten
 warning-seed = seed: schnelle Scheiben können durcheinander hindurchfliegen
-warning-substeps = { $substeps ->
+warning-substeps = schnelle Scheiben können durcheinander hindurchfliegen: Die schnellste legt in einem kleinen Schritt { $radii }-mal ihren Radius zurück ({ $substeps ->
     [one] 1 Teilschritt
    *[other] { $substeps } Teilschritte
-} pro Schritt: Die schnellste Scheibe legt pro Teilschritt { $radii }-mal ihren Radius zurück und kann durch andere hindurchfliegen
+} pro Schritt; mehr davon, unter Mehr, verhindern es)
 warning-stall = { $method }: zu viele Stöße auf einmal, die Zeit steht still; zum Weiterlaufen das Verfahren impulse wählen (unter Mehr)
 
 ## Szenen und Dateien

@@ -14,10 +14,10 @@ pi-result = { $count } collisions: π ≈ { $pi }
 ## What a method cannot promise
 warning-verlet = verlet: collisions lose energy; the restitution e = { $restitution } is not honoured
 warning-seed = seed: fast discs can pass through each other
-warning-substeps = { $substeps ->
+warning-substeps = fast discs can pass through each other: the fastest moves { $radii }× its radius in one small step ({ $substeps ->
     [one] 1 substep
    *[other] { $substeps } substeps
-} per step: the fastest disc moves { $radii }× its radius per substep and can pass through others
+} per step; more of them, under More, prevent it)
 warning-stall = { $method }: too many collisions at once, so time has stopped; to go on, choose the method impulse (under More)
 
 ## Scenes and files

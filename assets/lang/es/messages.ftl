@@ -14,10 +14,10 @@ pi-result = { $count } choques: π ≈ { $pi }
 ## Lo que un método no puede prometer
 warning-verlet = verlet: los choques pierden energía; no se respeta la restitución e = { $restitution }
 warning-seed = seed: los discos rápidos pueden atravesarse
-warning-substeps = { $substeps ->
+warning-substeps = los discos rápidos pueden atravesarse: el más rápido avanza { $radii }× su radio en un paso pequeño ({ $substeps ->
     [one] 1 subpaso
    *[other] { $substeps } subpasos
-} por paso: el disco más rápido avanza { $radii }× su radio en cada subpaso y puede atravesar a otros
+} por paso; más subpasos, en Más, lo evitan)
 warning-stall = { $method }: demasiados choques a la vez, así que el tiempo se ha detenido; para seguir, elige el método impulse (en Más)
 
 ## Escenas y archivos

@@ -14,10 +14,10 @@ pi-result = { $count } collisions : π ≈ { $pi }
 ## Ce qu'une méthode ne peut pas promettre
 warning-verlet = verlet : les collisions perdent de l'énergie ; le coefficient de restitution e = { $restitution } n'est pas respecté
 warning-seed = seed : des disques rapides peuvent se traverser
-warning-substeps = { $substeps ->
+warning-substeps = des disques rapides peuvent se traverser : le plus rapide parcourt { $radii }× son rayon en un petit pas ({ $substeps ->
     [one] { $substeps } sous-pas
    *[other] { $substeps } sous-pas
-} par pas : le disque le plus rapide parcourt { $radii }× son rayon par sous-pas et peut traverser les autres
+} par pas ; davantage de sous-pas, sous Plus, l'empêchent)
 warning-stall = { $method } : trop de collisions à la fois, le temps s'est arrêté ; pour continuer, choisissez la méthode impulse (sous Plus)
 
 ## Scènes et fichiers

@@ -14,10 +14,10 @@ pi-result = { $count } colisões: π ≈ { $pi }
 ## O que um método não pode prometer
 warning-verlet = verlet: as colisões perdem energia; o coeficiente de restituição e = { $restitution } não é respeitado
 warning-seed = seed: discos rápidos podem atravessar uns aos outros
-warning-substeps = { $substeps ->
-    [one] { $substeps } subpasso
+warning-substeps = discos rápidos podem atravessar uns aos outros: o mais rápido anda { $radii }× o seu raio num passo pequeno ({ $substeps ->
+    [one] 1 subpasso
    *[other] { $substeps } subpassos
-} por passo: o disco mais rápido anda { $radii }× o seu raio por subpasso e pode atravessar outros
+} por passo; mais subpassos, em Mais, evitam isso)
 warning-stall = { $method }: colisões demais ao mesmo tempo, e o tempo parou; para continuar, escolha o método impulse (em Mais)
 
 ## Cenas e arquivos
