@@ -286,6 +286,15 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
             .iter()
             .any(|(n, _)| n.as_deref() == Some("top_bar_more"));
         assert_eq!(more, args.contains(&"--ui-scale"), "{args:?}: {seen:?}");
+        // The top bar in reading order: "… more" at the line's end, then its
+        // buttons from the left.
+        let at = |name: &str| seen.iter().position(|(n, _)| n.as_deref() == Some(name));
+        if more {
+            assert!(
+                at("top_bar_more") < at("sound") && at("sound") < at("start"),
+                "{args:?}: {seen:?}"
+            );
+        }
         app.quit();
     }
 }

@@ -104,7 +104,7 @@ fn syntax_errors_and_unknown_fields_give_the_line() {
     let msg = error_of("[world]\nsize = [16.0, 10.0\ngravity = [0, 0]\n");
     assert_eq!(
         msg,
-        "lab.toml, line 3: invalid array, expected `]`, at column 1 of \"gravity = [0, 0]\""
+        "lab.toml, line 3: invalid array; expected `]` (column 1: \"gravity = [0, 0]\")"
     );
     let long = format!("[world]\nsize = [1.0, 2.0] {}\n", "x".repeat(300));
     let msg = error_of(&long);
@@ -112,7 +112,10 @@ fn syntax_errors_and_unknown_fields_give_the_line() {
         msg.starts_with("lab.toml, line 2: ") && msg.contains("size = [1.0, 2.0] xxx"),
         "{msg}"
     );
-    assert!(msg.chars().count() < 200 && msg.contains("…\""), "{msg}");
+    assert!(msg.chars().count() < 200 && msg.contains("…\")"), "{msg}");
+    // What the parser expected, as one list.
+    let msg = error_of("[world]\nsize = [1.0, 2.0]\nrestitution = 1.0.0\n");
+    assert!(msg.contains("expected newline or `#`"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, 10.0]\nviscosity = 0.3\n");
     assert!(msg.contains("line 3") && msg.contains("viscosity"), "{msg}");
     let msg = error_of("[world]\nsize = [10.0, -1.0]\n");

@@ -51,10 +51,40 @@ pub fn list_separator() -> &'static str {
 /// hyphen, spaces around; `None` if it is not one number.
 pub fn parse(text: &str) -> Option<f64> {
     let text = text.trim().replace('−', "-").replace(',', ".");
+    // A power of ten as the screen writes it: 2.5×10⁹ (or 2.5x10^9).
+    let power = ["×10", "x10", "*10"]
+        .iter()
+        .find_map(|sign| text.split_once(sign));
+    if let Some((mantissa, exponent)) = power {
+        let exponent: String = exponent
+            .trim_start_matches('^')
+            .chars()
+            .map(|c| match c {
+                '⁻' => '-',
+                '⁰'..='⁹' | '¹' | '²' | '³' => superscript_digit(c),
+                c => c,
+            })
+            .collect();
+        let exponent: i32 = exponent.parse().ok()?;
+        return format!("{}e{exponent}", mantissa.trim())
+            .parse::<f64>()
+            .ok()
+            .filter(|_| !mantissa.trim().is_empty() && mantissa.matches('.').count() <= 1);
+    }
     if text.matches('.').count() > 1 {
         return None;
     }
     text.parse::<f64>().ok()
+}
+
+/// The digit a superscript digit stands for.
+fn superscript_digit(c: char) -> char {
+    let digits = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    digits
+        .iter()
+        .position(|&d| d == c)
+        .and_then(|k| char::from_digit(k as u32, 10))
+        .unwrap_or(c)
 }
 
 /// `v` and its unit: "2.000 J".
@@ -116,6 +146,18 @@ pub fn adaptive(v: f64, min_decimals: usize) -> String {
 /// trailing zeros, never in e-notation, so what is typed over it is what the
 /// user sees.
 pub fn field(v: f64) -> String {
+    if v.is_finite() && v.abs() >= POWER_FROM {
+        // 2.5×10⁹, the mantissa without trailing zeros; [`parse`] reads it.
+        let text = quantity(v, 6).replace('−', "-");
+        let (mantissa, power) = text.split_once('×').unwrap_or((&text, ""));
+        let point = if decimal_comma() { ',' } else { '.' };
+        let mantissa = if mantissa.contains(point) {
+            mantissa.trim_end_matches('0').trim_end_matches(point)
+        } else {
+            mantissa
+        };
+        return format!("{mantissa}×{power}");
+    }
     let text = plain(v, 6).replace('−', "-");
     let point = if decimal_comma() { ',' } else { '.' };
     if !text.contains(point) {
@@ -203,14 +245,31 @@ mod tests {
     }
 
     #[test]
-    fn fields_read_back_and_have_no_exponent() {
+    fn fields_read_back_and_have_no_e_notation() {
         assert_eq!(field(1.0), "1");
         assert_eq!(field(0.1 + 0.2), "0.3");
         assert_eq!(field(-2.345678), "-2.345678");
         assert_eq!(field(-1e-9), "0");
-        assert_eq!(field(2.5e9), "2500000000");
-        for v in [1.0, 0.3, -2.5, 0.001, 2.5e9] {
-            assert_eq!(parse(&field(v)), Some(v));
+        assert_eq!(field(999_999.0), "999999");
+        // A million and more with a power of ten, as the readouts write it
+        // (2500000000 was cut to "250000000" in a table's cell).
+        assert_eq!(field(2.5e9), "2.5×10⁹");
+        assert_eq!(field(-1e12), "-1×10¹²");
+        for v in [1.0, 0.3, -2.5, 0.001, 2.5e9, 1e12, -1.234567e7, 1e6] {
+            assert_eq!(parse(&field(v)), Some(v), "{}", field(v));
+        }
+        for (typed, v) in [
+            ("2.5×10⁹", 2.5e9),
+            ("2,5×10⁹", 2.5e9),
+            ("1x10^12", 1e12),
+            ("−3×10⁻²", -0.03),
+            ("1e12", 1e12),
+        ] {
+            assert_eq!(parse(typed), Some(v), "{typed}");
+        }
+        for bad in ["×10⁹", "2.5×10", "2.5×10⁹⁹⁹⁹⁹⁹⁹⁹⁹⁹⁹⁹", "1.2.3×10²"]
+        {
+            assert_eq!(parse(bad), None, "{bad}");
         }
     }
 }

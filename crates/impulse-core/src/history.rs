@@ -121,6 +121,18 @@ impl History {
         self.cursor = None;
     }
 
+    /// Forgets the snapshots from `time` on (an undo back to a moment of
+    /// this run: what came after it belongs to the undone timeline) and
+    /// stops showing one.
+    pub fn keep_before(&mut self, time: f64) {
+        while self.snapshots.back().is_some_and(|s| s.time >= time) {
+            if let Some(s) = self.snapshots.pop_back() {
+                self.bytes -= s.bytes();
+            }
+        }
+        self.cursor = None;
+    }
+
     /// How many snapshots are kept.
     pub fn len(&self) -> usize {
         self.snapshots.len()

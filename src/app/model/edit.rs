@@ -391,4 +391,38 @@ mod tests {
             );
         }
     }
+
+    /// "What if e = 0.3?" tried after J and undone: the plot and the rewind
+    /// keep the way to the impact (an undo cleared both).
+    #[test]
+    fn an_edit_undone_keeps_the_plot_and_the_rewind_of_the_run_so_far() {
+        use crate::app::model::command::Law;
+        use crate::app::model::tests::later;
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        s.apply(Command::NextCollision);
+        let hit = s.world.time;
+        let (samples, snapshots) = (s.record.totals.samples().count(), s.record.history.len());
+        assert!(samples > 100 && snapshots > 100, "{samples} {snapshots}");
+        later(&mut s, 1.0);
+        s.apply(Command::SetLaw(Law::Restitution, 0.3));
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        assert_eq!(s.world.laws.restitution, 1.0);
+        assert_eq!(s.world.time, hit);
+        assert!(s.record.totals.samples().count() >= samples - 1);
+        assert!(s.record.history.len() >= snapshots - 1);
+        s.apply(Command::Scrub(-1));
+        assert!(
+            s.world.time < hit && s.world.time > hit - 0.1,
+            "one step back from {hit} is {}",
+            s.world.time
+        );
+        // Another scene's undo starts its past afresh.
+        later(&mut s, 1.0);
+        s.apply(Command::OpenPreset(0));
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        assert!(s.record.history.len() <= 1);
+    }
 }

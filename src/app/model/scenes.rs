@@ -361,7 +361,7 @@ impl Sandbox {
         let present = self.moment();
         match self.undo.undo(present) {
             Some((moment, what)) => {
-                self.put_back(moment);
+                self.put_back(moment, what);
                 self.toast(tr!("undone", what = crate::app::lang::text(what, &[])));
             }
             None => self.toast(tr!("nothing-to-undo")),
@@ -373,15 +373,21 @@ impl Sandbox {
         let present = self.moment();
         match self.undo.redo(present) {
             Some((moment, what)) => {
-                self.put_back(moment);
+                self.put_back(moment, what);
                 self.toast(tr!("redone", what = crate::app::lang::text(what, &[])));
             }
             None => self.toast(tr!("nothing-to-redo")),
         }
     }
 
-    fn put_back(&mut self, moment: Moment) {
+    /// The scene as it was at `moment`, taken back (or forward) over a
+    /// change of kind `what`. The rewind history and the plot keep what led
+    /// up to that moment in this run (an edit undone, "what if e = 0.3?",
+    /// keeps the graph being discussed); another scene's start nothing.
+    fn put_back(&mut self, moment: Moment, what: &str) {
         let resized = moment.world.laws.size != self.world.laws.size;
+        let same_run = what != "edit-open-scene";
+        let at = moment.world.time;
         self.world = moment.world;
         self.open = super::OpenScene {
             scene: moment.scene,
@@ -389,10 +395,18 @@ impl Sandbox {
             edited: moment.edited,
             unsaved: true,
         };
-        // The rewind history and the plot belong to the undone timeline;
-        // the ledger came back with the world.
-        self.record.history.clear();
-        self.record.totals.clear();
+        // What came after the moment belongs to the undone timeline; the
+        // ledger came back with the world.
+        if same_run {
+            self.record.history.keep_before(at);
+            self.record.history.record(&self.world);
+            self.record.totals.keep_before(at);
+            let now = self.world.metrics();
+            self.record.totals.push(&self.world, &now);
+        } else {
+            self.record.history.clear();
+            self.record.totals.clear();
+        }
         // "Applied to disc 2" no longer holds; the toast says what undo did.
         self.messages.fields = None;
         self.messages.table = None;

@@ -96,6 +96,20 @@ impl Totals {
         }
     }
 
+    /// Forgets the samples and wall marks from `time` on (an undo back to
+    /// a moment of this run).
+    pub fn keep_before(&mut self, time: f64) {
+        while self.samples.back().is_some_and(|s| s.time >= time) {
+            self.samples.pop_back();
+        }
+        while self.walls.back().is_some_and(|&t| t >= time) {
+            self.walls.pop_back();
+        }
+        if self.samples.is_empty() {
+            self.clear();
+        }
+    }
+
     /// Starts afresh (a new scene, an edit, a rewind).
     pub fn clear(&mut self) {
         self.samples.clear();

@@ -301,121 +301,132 @@ impl TopBar {
                 }
             }
         }
-        // The buttons first, at the right; the line gets what they leave.
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            // Made left to right, so that Tab meets them in reading order
-            // (egui's Tab follows the order controls are made), in a group
-            // as wide as they were last frame.
-            let group = ui.id().with("top_bar_buttons");
-            let width = ui
-                .data(|d| d.get_temp::<f32>(group))
-                .unwrap_or(buttons_width);
-            let size = egui::vec2(width, ui.available_height());
-            let used = ui
-                .allocate_ui_with_layout(
-                    size,
-                    egui::Layout::left_to_right(egui::Align::Center),
-                    |ui| {
-                        ui.spacing_mut().item_spacing.x = 8.0;
-                        for (label, command, name) in buttons.into_iter().rev() {
-                            super::widgets::labelled_button(ui, cx, label, command, Some(name));
+        // The line first and the buttons after it, at the right, so that Tab
+        // meets everything in reading order (egui's Tab follows the order
+        // controls are made). The buttons' group is as wide as it was last
+        // frame; the line gets what it leaves.
+        let group = ui.id().with("top_bar_buttons");
+        let width = ui
+            .data(|d| d.get_temp::<f32>(group))
+            .unwrap_or(buttons_width);
+        ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
+            let line = egui::vec2(
+                (ui.available_width() - width - spacing).max(0.0),
+                ui.available_height(),
+            );
+            ui.allocate_ui_with_layout(
+                line,
+                egui::Layout::left_to_right(egui::Align::Center),
+                |ui| {
+                    // What the name and the other items may take, "… more" kept
+                    // room for.
+                    let free = ui.available_width() - more_width - fixed;
+                    let full_name = galley(ui, &name.text).size().x;
+                    let name_width = full_name.min((0.6 * free).max(40.0));
+                    // The other items that fit beside the name at that width, in
+                    // order (the last may use the room kept for "… more")...
+                    let galleys: Vec<_> =
+                        optional.iter().map(|item| galley(ui, &item.text)).collect();
+                    let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
+                    for (k, g) in galleys.iter().enumerate() {
+                        let last = k + 1 == galleys.len();
+                        let need = g.size().x + spacing - if last { more_width } else { 0.0 };
+                        if need > room {
+                            break;
                         }
-                        ui.min_rect().width()
-                    },
-                )
-                .inner;
-            if (used - width).abs() > 0.5 {
-                ui.data_mut(|d| d.insert_temp(group, used));
-                ui.ctx()
-                    .request_discard("the top bar's buttons changed width");
-            }
-            ui.add_space(spacing);
-            ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
-                // What the name and the other items may take, "… more" kept
-                // room for.
-                let free = ui.available_width() - more_width - fixed;
-                let full_name = galley(ui, &name.text).size().x;
-                let name_width = full_name.min((0.6 * free).max(40.0));
-                // The other items that fit beside the name at that width, in
-                // order (the last may use the room kept for "… more")...
-                let galleys: Vec<_> = optional.iter().map(|item| galley(ui, &item.text)).collect();
-                let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
-                for (k, g) in galleys.iter().enumerate() {
-                    let last = k + 1 == galleys.len();
-                    let need = g.size().x + spacing - if last { more_width } else { 0.0 };
-                    if need > room {
-                        break;
+                        room -= g.size().x + spacing;
+                        used += g.size().x + spacing;
+                        shown += 1;
                     }
-                    room -= g.size().x + spacing;
-                    used += g.size().x + spacing;
-                    shown += 1;
-                }
-                // ... and the room they leave goes back to the name, so that
-                // it is cut only where the line is really full.
-                let name_width = full_name.min((free - used - spacing).max(name_width));
-                ui.spacing_mut().item_spacing.x = spacing;
-                ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
-                // The name gives way first: it truncates, with the whole on hover.
-                let height = ui.available_height();
-                let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
-                    super::widgets::one_line(ui, name.text, None)
-                });
-                cx.note("scene_name", &r);
-                for item in [time, state] {
-                    let r = ui.label(item.text);
-                    let r = match item.hover {
-                        Some(h) => r.tip(h),
-                        None => r,
-                    };
-                    if let Some(name) = item.name {
-                        cx.note(name, &r);
+                    // ... and the room they leave goes back to the name, so that
+                    // it is cut only where the line is really full.
+                    let name_width = full_name.min((free - used - spacing).max(name_width));
+                    ui.spacing_mut().item_spacing.x = spacing;
+                    ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
+                    // The name gives way first: it truncates, with the whole on hover.
+                    let height = ui.available_height();
+                    let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
+                        super::widgets::one_line(ui, name.text, None)
+                    });
+                    cx.note("scene_name", &r);
+                    for item in [time, state] {
+                        let r = ui.label(item.text);
+                        let r = match item.hover {
+                            Some(h) => r.tip(h),
+                            None => r,
+                        };
+                        if let Some(name) = item.name {
+                            cx.note(name, &r);
+                        }
                     }
-                }
-                let mut hidden = Vec::new();
-                for (k, (item, g)) in optional.into_iter().zip(galleys).enumerate() {
-                    if k >= shown {
-                        hidden.push(item.text.text().to_string());
-                        continue;
+                    let mut hidden = Vec::new();
+                    for (k, (item, g)) in optional.into_iter().zip(galleys).enumerate() {
+                        if k >= shown {
+                            hidden.push(item.text.text().to_string());
+                            continue;
+                        }
+                        let r = ui.label(g);
+                        let r = match item.hover {
+                            Some(h) => r.tip(h),
+                            None => r,
+                        };
+                        if let Some(name) = item.name {
+                            cx.note(name, &r);
+                        }
                     }
-                    let r = ui.label(g);
-                    let r = match item.hover {
-                        Some(h) => r.tip(h),
-                        None => r,
-                    };
-                    if let Some(name) = item.name {
-                        cx.note(name, &r);
+                    if !hidden.is_empty() {
+                        // On hover, while it has the keys (Tab reaches it), or
+                        // from a click until the next click elsewhere or Esc: a touch
+                        // screen (a classroom's board) has no hover.
+                        let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
+                        let hidden = hidden.join("\n");
+                        let pinned_id = r.id.with("pinned");
+                        let mut pinned =
+                            ui.data(|d| d.get_temp::<bool>(pinned_id)).unwrap_or(false);
+                        if r.clicked() {
+                            pinned = !pinned;
+                        } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
+                            pinned = false;
+                        }
+                        // Esc lets go of it, as of any popup; and it gives way to
+                        // the key list and the start screen, which it would cover.
+                        let panels = &cx.model.panels;
+                        if ui.input(|i| i.key_pressed(egui::Key::Escape))
+                            || panels.help_open
+                            || panels.start_open
+                        {
+                            pinned = false;
+                        }
+                        ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
+                        let r = if r.has_focus() || pinned {
+                            r.tip_now(hidden);
+                            r
+                        } else {
+                            r.tip(hidden)
+                        };
+                        cx.note("top_bar_more", &r);
                     }
-                }
-                if !hidden.is_empty() {
-                    // On hover, while it has the keys (Tab reaches it), or
-                    // from a click until the next click elsewhere or Esc: a touch
-                    // screen (a classroom's board) has no hover.
-                    let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
-                    let hidden = hidden.join("\n");
-                    let pinned_id = r.id.with("pinned");
-                    let mut pinned = ui.data(|d| d.get_temp::<bool>(pinned_id)).unwrap_or(false);
-                    if r.clicked() {
-                        pinned = !pinned;
-                    } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
-                        pinned = false;
-                    }
-                    // Esc lets go of it, as of any popup; and it gives way to
-                    // the key list and the start screen, which it would cover.
-                    let panels = &cx.model.panels;
-                    if ui.input(|i| i.key_pressed(egui::Key::Escape))
-                        || panels.help_open
-                        || panels.start_open
-                    {
-                        pinned = false;
-                    }
-                    ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
-                    let r = if r.has_focus() || pinned {
-                        r.tip_now(hidden);
-                        r
-                    } else {
-                        r.tip(hidden)
-                    };
-                    cx.note("top_bar_more", &r);
+                },
+            );
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                let size = egui::vec2(width, ui.available_height());
+                let used = ui
+                    .allocate_ui_with_layout(
+                        size,
+                        egui::Layout::left_to_right(egui::Align::Center),
+                        |ui| {
+                            ui.spacing_mut().item_spacing.x = 8.0;
+                            for (label, command, name) in buttons.into_iter().rev() {
+                                super::widgets::labelled_button(ui, cx, label, command, Some(name));
+                            }
+                            ui.min_rect().width()
+                        },
+                    )
+                    .inner;
+                if (used - width).abs() > 0.5 {
+                    ui.data_mut(|d| d.insert_temp(group, used));
+                    ui.ctx()
+                        .request_discard("the top bar's buttons changed width");
                 }
             });
         });

@@ -331,8 +331,8 @@ pub fn slider(
                 };
                 let until = ui.input(|i| i.time) + TYPED_NOTE_SECONDS;
                 ui.ctx().data_mut(|d| match said {
-                    Some(said) => d.insert_temp(note_id, (said, until)),
-                    None => d.remove::<(Note, f64)>(note_id),
+                    Some(said) => d.insert_temp(note_id, (said, until, true)),
+                    None => d.remove::<(Note, f64, bool)>(note_id),
                 });
             }
             let changed = track.changed() || boxed.changed();
@@ -340,17 +340,26 @@ pub fn slider(
         })
         .inner;
     if track.dragged() {
-        ui.ctx().data_mut(|d| d.remove::<(Note, f64)>(note_id));
+        ui.ctx()
+            .data_mut(|d| d.remove::<(Note, f64, bool)>(note_id));
     }
-    let note = ui.ctx().data(|d| d.get_temp::<(Note, f64)>(note_id));
-    if let Some((said, until)) = note {
+    let note = ui.ctx().data(|d| d.get_temp::<(Note, f64, bool)>(note_id));
+    if let Some((said, until, fresh)) = note {
         let now = ui.input(|i| i.time);
         if now < until {
-            show_note(ui, &said);
+            let r = show_note(ui, &said);
+            if fresh {
+                // Into sight once (a projector's drawer had it below its
+                // fold), then left where the person scrolls.
+                r.scroll_to_me(None);
+                ui.ctx()
+                    .data_mut(|d| d.insert_temp(note_id, (said, until, false)));
+            }
             ui.ctx()
                 .request_repaint_after(std::time::Duration::from_secs_f64(until - now));
         } else {
-            ui.ctx().data_mut(|d| d.remove::<(Note, f64)>(note_id));
+            ui.ctx()
+                .data_mut(|d| d.remove::<(Note, f64, bool)>(note_id));
         }
     }
     (track, changed)

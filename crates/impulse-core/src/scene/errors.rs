@@ -52,17 +52,28 @@ const QUOTED_CHARS: usize = 60;
 
 /// A syntax error as a sentence on one line: the file and line, the
 /// parser's words, the column and the line itself, quoted
-/// (`scene.toml, line 3: invalid array, expected `]`, at column 1 of
-/// "gravity = [0, 0]"`). The parser's own text draws the line with a caret
+/// (`scene.toml, line 3: invalid array; expected `]` (column 1:
+/// "gravity = [0, 0]")`). The parser's own text draws the line with a caret
 /// under it, which on one line reads as `| | 3 | gravity … | ^ |`.
 fn syntax_error(text: &str, origin: &str, e: &toml::de::Error) -> SceneError {
+    // "invalid array\nexpected `]`" → "invalid array; expected `]`", and a
+    // list of what was expected read as one: "expected newline or `#`".
     let words = e
         .message()
         .lines()
         .map(str::trim)
         .filter(|l| !l.is_empty())
+        .map(|l| {
+            match l
+                .strip_prefix("expected ")
+                .and_then(|r| r.rsplit_once(", "))
+            {
+                Some((first, last)) => format!("expected {first} or {last}"),
+                None => l.to_string(),
+            }
+        })
         .collect::<Vec<_>>()
-        .join(", ");
+        .join("; ");
     let Some(span) = e.span() else {
         return SceneError::Syntax {
             origin: origin.to_string(),
@@ -101,9 +112,9 @@ fn syntax_error(text: &str, origin: &str, e: &toml::de::Error) -> SceneError {
         quoted
     };
     let message = if quoted.trim().is_empty() {
-        format!("{words}, at column {column}")
+        format!("{words} (column {column})")
     } else {
-        format!("{words}, at column {column} of \"{quoted}\"")
+        format!("{words} (column {column}: \"{quoted}\")")
     };
     SceneError::Syntax {
         origin: format!("{origin}, line {line}"),

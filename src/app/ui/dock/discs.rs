@@ -13,7 +13,7 @@ use crate::app::lang::tr;
 use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
-use crate::app::numbers::plain;
+use crate::app::numbers::quantity;
 use crate::app::ui::tip::Tip;
 use egui::Color32;
 use egui_extras::{Column, TableBuilder};
@@ -243,13 +243,13 @@ impl View for DiscsTable {
                                 };
                                 (last, _) = row.col(|ui| match field_index {
                                     None => {
-                                        ui.label(plain(value, 3));
+                                        ui.label(quantity(value, 3));
                                     }
                                     Some(f) => {
                                         let mine = editing
                                             .as_ref()
                                             .is_some_and(|e| e.disc == i && e.field == f);
-                                        let mut shown = plain(value, 3).replace('−', "-");
+                                        let mut shown = quantity(value, 3).replace('−', "-");
                                         let text = if mine { &mut edit_text } else { &mut shown };
                                         let bad = mine && note.as_ref().is_some_and(|n| n.error);
                                         let mut edit = egui::TextEdit::singleline(text)
@@ -292,7 +292,7 @@ impl View for DiscsTable {
                             if spin {
                                 for value in [p.spin, p.rotational_energy(), p.angular_momentum()] {
                                     (last, _) = row.col(|ui| {
-                                        ui.label(plain(value, 3));
+                                        ui.label(quantity(value, 3));
                                     });
                                 }
                             }

@@ -5,7 +5,7 @@
 
 use crate::app::lang::tr;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
-use crate::app::numbers::plain;
+use crate::app::numbers::{plain, quantity};
 use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
 use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoints};
@@ -174,8 +174,15 @@ pub fn y_unit(plot: Plot<'static>, height: f32, unit: &'static str) -> Plot<'sta
 /// An axis's number, with as many decimals as its step needs and the
 /// language's decimal separator.
 fn tick(mark: egui_plot::GridMark) -> String {
-    let decimals = (-mark.step_size.log10()).ceil().clamp(0.0, 6.0) as usize;
-    plain(mark.value, decimals)
+    let (v, step) = (mark.value, mark.step_size);
+    if v.abs() >= 1e6 {
+        // 8×10¹¹, not 800000000000: a number that wide squeezed a
+        // projector's plot to a sliver. As many decimals as the step needs.
+        let digits = v.abs().log10().floor() - step.log10().floor();
+        return quantity(v, digits.clamp(0.0, 3.0) as usize);
+    }
+    let decimals = (-step.log10()).ceil().clamp(0.0, 6.0) as usize;
+    plain(v, decimals)
 }
 
 /// A plot's series named in their colours on one line above it, after a
@@ -282,7 +289,9 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::{bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, x_axis};
+    use super::{
+        bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, x_axis,
+    };
     use crate::app::ui::widgets::headless;
     use egui_plot::{Bar, GridInput};
 
@@ -338,6 +347,16 @@ mod tests {
         let german = bar_hover(None, &bar, 0.25);
         set_language(Lang::En);
         assert_eq!(german, "12 Scheiben von 0,50 bis 0,75 m/s");
+    }
+
+    #[test]
+    fn an_axis_of_huge_values_numbers_them_with_a_power_of_ten() {
+        let mark = |value, step_size| egui_plot::GridMark { value, step_size };
+        assert_eq!(tick(mark(8e11, 2e11)), "8×10¹¹");
+        assert_eq!(tick(mark(1.5e6, 5e5)), "1.5×10⁶");
+        assert_eq!(tick(mark(-4e9, 1e9)), "−4×10⁹");
+        assert_eq!(tick(mark(250.0, 50.0)), "250");
+        assert_eq!(tick(mark(0.5, 0.1)), "0.5");
     }
 
     #[test]
