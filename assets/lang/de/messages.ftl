@@ -102,6 +102,7 @@ next-collision-wall = Scheibe { $disc } traf die { $wall ->
 next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
 next-collision-none = Kein Stoß innerhalb von { $limit }
 rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort
+rewound-newest = Beim neuesten aufgezeichneten Augenblick, t = { $time } s; die Leertaste läuft von hier aus weiter
 nothing-recorded = Noch nichts aufgezeichnet
 exported-downloaded = Bilanz, Scheiben, Stöße und Wandstöße als CSV-Dateien heruntergeladen
 exported = Bilanz, Scheiben, Stöße und Wandstöße nach { $folder }/ exportiert

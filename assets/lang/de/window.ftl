@@ -145,6 +145,7 @@ preset-label = Vorlage
 preset-choose = Vorlage öffnen…
 scene-drop = Szenendatei öffnen: auf die Seite ziehen und dort ablegen.
 scene-file-label = Szenendatei:
+scene-file-hint = z. B. assets/scenes/preset-8-gas.toml
 open = Öffnen
 open-hover = Enter im Feld
 share = Link teilen

@@ -102,6 +102,7 @@ next-collision-wall = Disc { $disc } hit the { $wall ->
 next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
 next-collision-none = No collision within { $limit }
 rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
+rewound-newest = At the newest recorded moment, t = { $time } s; Space runs on from here
 nothing-recorded = Nothing recorded yet
 exported-downloaded = Downloaded the totals, discs, collisions and wall impacts as CSV files
 exported = Exported totals, discs, collisions and wall impacts to { $folder }/

@@ -145,6 +145,7 @@ preset-label = preset
 preset-choose = open a preset…
 scene-drop = Open a scene file: drop it on the page.
 scene-file-label = Scene file:
+scene-file-hint = e.g. assets/scenes/preset-8-gas.toml
 open = Open
 open-hover = Enter in the field
 share = Share link

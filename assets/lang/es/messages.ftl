@@ -102,6 +102,7 @@ next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
 next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
 next-collision-none = Ningún choque en { $limit }
 rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí
+rewound-newest = En el momento grabado más reciente, t = { $time } s; Espacio sigue desde aquí
 nothing-recorded = Aún no hay nada grabado
 exported-downloaded = Se descargaron los totales, discos, choques e impactos en paredes como archivos CSV
 exported = Se exportaron los totales, discos, choques e impactos en paredes a { $folder }/

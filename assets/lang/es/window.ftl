@@ -145,6 +145,7 @@ preset-label = ejemplo
 preset-choose = abrir un ejemplo…
 scene-drop = Para abrir un archivo de escena, suéltalo sobre la página.
 scene-file-label = Archivo de escena:
+scene-file-hint = p. ej. assets/scenes/preset-8-gas.toml
 open = Abrir
 open-hover = Intro en el campo
 share = Compartir enlace

@@ -102,6 +102,7 @@ next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
 next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
 next-collision-none = Aucune collision en { $limit }
 rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
+rewound-newest = Au dernier instant enregistré, t = { $time } s ; Espace reprend à partir d'ici
 nothing-recorded = Rien d'enregistré pour l'instant
 exported-downloaded = Totaux, disques, collisions et chocs contre les murs téléchargés en fichiers CSV
 exported = Totaux, disques, collisions et chocs contre les murs exportés dans { $folder }/

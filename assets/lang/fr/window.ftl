@@ -145,6 +145,7 @@ preset-label = préréglage
 preset-choose = ouvrir un préréglage…
 scene-drop = Ouvrir un fichier de scène : déposez-le sur la page.
 scene-file-label = Fichier de scène :
+scene-file-hint = p. ex. assets/scenes/preset-8-gas.toml
 open = Ouvrir
 open-hover = Entrée dans le champ
 share = Partager le lien

@@ -102,6 +102,7 @@ next-collision-wall = O disco { $disc } bateu na parede { $wall ->
 next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
 next-collision-none = Nenhuma colisão em { $limit }
 rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
+rewound-newest = No momento gravado mais recente, t = { $time } s; Espaço continua daqui
 nothing-recorded = Nada gravado ainda
 exported-downloaded = Totais, discos, colisões e impactos nas paredes baixados como arquivos CSV
 exported = Totais, discos, colisões e impactos nas paredes exportados para { $folder }/

@@ -145,6 +145,7 @@ preset-label = exemplo
 preset-choose = abrir um exemplo…
 scene-drop = Abra um arquivo de cena: solte-o na página.
 scene-file-label = Arquivo de cena:
+scene-file-hint = ex.: assets/scenes/preset-8-gas.toml
 open = Abrir
 open-hover = Enter no campo
 share = Gerar link

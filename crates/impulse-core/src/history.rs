@@ -163,6 +163,17 @@ impl History {
         self.show(world, to)
     }
 
+    /// Back to the run: the cursor let go, if it shows the newest snapshot
+    /// (which is where the run is). Returns whether it did.
+    pub fn release_at_newest(&mut self) -> bool {
+        let newest = self.snapshots.len().checked_sub(1);
+        let live = self.cursor.is_some() && self.cursor == newest;
+        if live {
+            self.cursor = None;
+        }
+        live
+    }
+
     /// Puts snapshot `k` into `world` and points the cursor at it.
     pub fn show(&mut self, world: &mut World, k: usize) -> Option<f64> {
         let snapshot = self.snapshots.get(k)?;

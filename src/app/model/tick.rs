@@ -222,6 +222,10 @@ impl Sandbox {
         self.clock.paused = true;
         self.pointer.cancel();
         match self.record.history.scrub(&mut self.world, delta) {
+            // Forward onto the newest moment: back at the run, not rewound.
+            Some(t) if delta > 0 && self.record.history.release_at_newest() => {
+                self.toast(tr!("rewound-newest", time = plain(t, 3)));
+            }
             Some(t) => {
                 // The snapshot brought back its ledger and counters; the
                 // plot keeps what led up to this moment.
@@ -351,6 +355,13 @@ mod tests {
                 let back = s.world.time;
                 assert!(back < hit && hit - back <= frame, "{label}: back to {back}");
                 s.apply(Command::Scrub(1));
+                // Forward onto the newest moment is back at the run.
+                assert!(s.record.history.cursor().is_none(), "{label}");
+                assert!(
+                    s.message().is_some_and(|m| m.contains("newest")),
+                    "{label}: {:?}",
+                    s.message()
+                );
                 assert!(
                     (s.world.time - hit).abs() <= s.clock.dt + 1e-9,
                     "{label}: forward to {}, the impact at {hit}, dt {}",

@@ -21,6 +21,8 @@ pub struct Collisions;
 const SIDE_BY_SIDE: f32 = 760.0;
 /// Room kept for a scroll bar beside the table, in points.
 const SCROLL_BAR: f32 = 16.0;
+/// Room before a disc's row name for its colour's dot (points).
+const DOT_ROOM: f32 = 18.0;
 /// The names of the newest impact's rows keep at least this share of the
 /// width, wrapping, however wide the numbers.
 const NAMES_AT_LEAST: f32 = 0.3;
@@ -135,9 +137,22 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     // Never "t =" on one line and "1.784 s" on the next.
     let when = format!("t = {}", with_unit(impact.time(), 3, "s")).replace(' ', "\u{a0}");
     let heading = tr!("ledger-newest", who = who(impact), when = when.as_str());
-    // (name, before, after, the name a total's row is noted under).
-    let mut rows: Vec<(String, String, String, Option<&str>)> = Vec::new();
-    let row = |name, (b, a): (String, String)| (name, b, a, None);
+    // (name, before, after, the name a total's row is noted under, the
+    // colour of the disc it is about).
+    type Row<'a> = (
+        String,
+        String,
+        String,
+        Option<&'a str>,
+        Option<egui::Color32>,
+    );
+    let mut rows: Vec<Row> = Vec::new();
+    let particles = &cx.model.world.particles;
+    let colour = |disc: usize| {
+        let c = particles.get(disc)?.color;
+        Some(egui::Color32::from_rgb(c.r, c.g, c.b))
+    };
+    let row = |disc: usize, name, (b, a): (String, String)| (name, b, a, None, colour(disc));
     let pair_of = |(b, a): (DVec2, DVec2)| (vector(b, 3, ""), vector(a, 3, ""));
     let plain_pair = |(b, a): (f64, f64)| (plain(b, 3), plain(a, 3));
     // A velocity's parts before and after, along the line of impact (at a
@@ -151,6 +166,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             let discs = [0, 1];
             for k in discs {
                 rows.push(row(
+                    c.discs[k],
                     tr!("ledger-disc-p", disc = c.discs[k]),
                     pair_of(c.momentum(k)),
                 ));
@@ -162,39 +178,44 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
                 total.0,
                 total.1,
                 Some("ledger_total_p"),
+                None,
             ));
             for k in discs {
                 let name = tr!("ledger-disc-ke", disc = c.discs[k], ke = ke.as_str());
-                rows.push(row(name, plain_pair(c.kinetic_energy(k))));
+                rows.push(row(c.discs[k], name, plain_pair(c.kinetic_energy(k))));
             }
             let (e0, e1) = (c.kinetic_energy(0), c.kinetic_energy(1));
             let total = plain_pair((e0.0 + e1.0, e0.1 + e1.1));
             let name = tr!("ledger-both-ke", ke = ke.as_str());
-            rows.push((name, total.0, total.1, Some("ledger_total_ke")));
+            rows.push((name, total.0, total.1, Some("ledger_total_ke"), None));
             for (part, of) in [
                 (tr!("ledger-along-impact"), along),
                 (tr!("ledger-across-impact"), across),
             ] {
                 for k in discs {
                     let name = tr!("ledger-disc-v", disc = c.discs[k], part = part.as_str());
-                    rows.push(row(name, plain_pair(of(c.components(k)))));
+                    rows.push(row(c.discs[k], name, plain_pair(of(c.components(k)))));
                 }
             }
         }
         Impact::Wall(w) => {
             let d = w.disc;
-            rows.push(row(tr!("ledger-disc-p", disc = d), pair_of(w.momentum())));
+            rows.push(row(
+                d,
+                tr!("ledger-disc-p", disc = d),
+                pair_of(w.momentum()),
+            ));
             let name = tr!("ledger-disc-ke", disc = d, ke = ke.as_str());
-            rows.push(row(name, plain_pair(w.kinetic_energy())));
+            rows.push(row(d, name, plain_pair(w.kinetic_energy())));
             for (part, of) in [
                 (tr!("ledger-away-from-wall"), along),
                 (tr!("ledger-along-wall"), across),
             ] {
                 let name = tr!("ledger-disc-v", disc = d, part = part.as_str());
-                rows.push(row(name, plain_pair(of(w.components()))));
+                rows.push(row(d, name, plain_pair(of(w.components()))));
             }
             let push = vector(w.wall_impulse(), 3, "");
-            rows.push((tr!("ledger-wall-push"), String::new(), push, None));
+            rows.push((tr!("ledger-wall-push"), String::new(), push, None, None));
         }
     }
     // The names wrap before the numbers are pushed out of sight: at a
@@ -214,7 +235,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     let numbers = widest(
         &mut rows
             .iter()
-            .flat_map(|(_, b, a, _)| [b, a])
+            .flat_map(|(_, b, a, _, _)| [b, a])
             .chain([&before, &after]),
     );
     let spacing = 18.0;
@@ -246,14 +267,32 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
                 ui.strong(before);
                 ui.strong(after);
                 ui.end_row();
-                for (what, before, after, total) in rows {
+                for (what, before, after, total, dot) in rows {
                     let strong = |text: String| egui::RichText::new(text).strong();
                     let (what, before, after) = if total.is_some() {
                         (strong(what), strong(before), strong(after))
                     } else {
                         (what.into(), before.into(), after.into())
                     };
+                    // The disc's colour before its name, as in the Discs
+                    // tab: a student matches rows to discs by it. (A dot
+                    // painted in room left before the text: the font has
+                    // no "●".)
+                    let what: egui::WidgetText = match dot {
+                        Some(_) => {
+                            let mut job = egui::text::LayoutJob::default();
+                            let font = egui::TextStyle::Body.resolve(ui.style());
+                            let format = egui::TextFormat::simple(font, ui.visuals().text_color());
+                            job.append(what.text(), DOT_ROOM, format);
+                            job.into()
+                        }
+                        None => what.into(),
+                    };
                     let r = ui.add(egui::Label::new(what).wrap());
+                    if let Some(c) = dot {
+                        let centre = r.rect.left_top() + egui::vec2(0.4 * DOT_ROOM, 0.5 * line);
+                        ui.painter().circle_filled(centre, 0.3 * DOT_ROOM, c);
+                    }
                     if let Some(name) = total {
                         cx.note(name, &r);
                     }

@@ -44,7 +44,9 @@ pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
         ui.label(tr!("scene-file-label"));
         let r = ui.add(
             egui::TextEdit::singleline(path)
-                .hint_text("assets/scenes/preset-8-gas.toml")
+                // An example, said to be one: a bare path in grey was read
+                // as the file that is open.
+                .hint_text(tr!("scene-file-hint"))
                 .desired_width(f32::INFINITY),
         );
         cx.note("scene_path", &r);
