@@ -418,11 +418,19 @@ mod tests {
             "one step back from {hit} is {}",
             s.world.time
         );
-        // Another scene's undo starts its past afresh.
-        later(&mut s, 1.0);
-        s.apply(Command::OpenPreset(0));
-        later(&mut s, 1.0);
-        s.apply(Command::Undo);
-        assert!(s.record.history.len() <= 1);
+        // Across a reset or another scene, the past starts afresh: what was
+        // recorded since belongs to another run.
+        for change in [Command::Reset, Command::OpenPreset(0)] {
+            later(&mut s, 1.0);
+            s.apply(change);
+            for _ in 0..30 {
+                later(&mut s, 1.0 / 60.0);
+                s.apply(Command::Step);
+                s.tick(1.0 / 60.0, 1.0);
+            }
+            later(&mut s, 1.0);
+            s.apply(Command::Undo);
+            assert!(s.record.history.len() <= 1, "{}", s.record.history.len());
+        }
     }
 }

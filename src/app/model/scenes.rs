@@ -383,10 +383,13 @@ impl Sandbox {
     /// The scene as it was at `moment`, taken back (or forward) over a
     /// change of kind `what`. The rewind history and the plot keep what led
     /// up to that moment in this run (an edit undone, "what if e = 0.3?",
-    /// keeps the graph being discussed); another scene's start nothing.
+    /// keeps the graph being discussed); across a new scene or a reset,
+    /// nothing.
     fn put_back(&mut self, moment: Moment, what: &str) {
         let resized = moment.world.laws.size != self.world.laws.size;
-        let same_run = what != "edit-open-scene";
+        // A reset starts the run again: what was recorded since belongs to
+        // another run than the moment before it.
+        let same_run = !matches!(what, "edit-open-scene" | "edit-reset");
         let at = moment.world.time;
         self.world = moment.world;
         self.open = super::OpenScene {
