@@ -130,6 +130,16 @@ pub struct Record {
     pub trails: trails::Trails,
 }
 
+impl Record {
+    /// Records `world` as it is now, with its `metrics`: the totals, the
+    /// trails and a moment for the rewind.
+    pub fn moment(&mut self, world: &World, metrics: &impulse::Metrics) {
+        self.totals.push(world, metrics);
+        self.trails.record(world);
+        self.history.record(world);
+    }
+}
+
 /// How the last frames' physics went, for the Details section and the top
 /// bar's "running slower" note.
 #[derive(Clone, Debug, Default)]

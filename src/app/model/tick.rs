@@ -38,12 +38,11 @@ impl Sandbox {
             let before = sample_collisions.then(|| (self.world.time, self.world.metrics()));
             let stats = self.world.step(self.clock.dt);
             if let Some((t, m)) = before.filter(|_| stats.pair_collisions + stats.wall_hits > 0) {
-                self.record.totals.push_at(t, &self.world, &m);
                 let now = self.world.metrics();
-                self.record.totals.push(&self.world, &now);
-                if stats.wall_hits > 0 {
-                    self.record.totals.mark_wall(self.world.time);
-                }
+                let walls = stats.wall_hits > 0;
+                self.record
+                    .totals
+                    .around_impact((t, &m), &self.world, &now, walls);
             }
             if stats.separated_pairs > 0 {
                 self.toast_separated(stats.separated_pairs, stats.separation_energy);
@@ -195,24 +194,20 @@ impl Sandbox {
                     }
                     let now = world.metrics();
                     if small && impacts {
-                        record.totals.push_at(before.0, world, &before.1);
-                    }
-                    if stats.wall_hits > 0 {
-                        record.totals.mark_wall(world.time);
+                        let walls = stats.wall_hits > 0;
+                        record
+                            .totals
+                            .around_impact((before.0, &before.1), world, &now, walls);
                     }
                     if impacts || frame {
-                        record.totals.push(world, &now);
-                        record.trails.record(world);
-                        record.history.record(world);
+                        record.moment(world, &now);
                         recorded = world.time;
                     }
                     before = (world.time, now);
                 });
         if recorded != self.world.time {
             let now = self.world.metrics();
-            self.record.totals.push(&self.world, &now);
-            self.record.trails.record(&self.world);
-            self.record.history.record(&self.world);
+            self.record.moment(&self.world, &now);
         }
         found
     }

@@ -132,6 +132,23 @@ impl Totals {
         ))
     }
 
+    /// The totals just `before` a step with an impact (its start time and
+    /// totals) and `now` after it, and the walls' push marked if `walls`
+    /// hit: in small scenes the plot then drops at the impact's instant.
+    pub fn around_impact(
+        &mut self,
+        before: (f64, &Metrics),
+        world: &World,
+        now: &Metrics,
+        walls: bool,
+    ) {
+        self.push_at(before.0, world, before.1);
+        self.push(world, now);
+        if walls {
+            self.mark_wall(world.time);
+        }
+    }
+
     /// Notes that walls pushed the discs at `time` (s): the momentum plot
     /// marks it, since only there does the total momentum change.
     pub fn mark_wall(&mut self, time: f64) {
