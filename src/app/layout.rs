@@ -9,7 +9,7 @@
 //! +------------------------- top bar (1 row) --------------------------+
 //! | world (the rest)                                  | side dock      |
 //! |                                                   | (docked, or a  |
-//! +---------------- caption strip (1 row) ------------+  drawer that   |
+//! +---------- caption strip (1 row, or 2-3 lines) -----+  drawer that   |
 //! | tab content (what is granted; 0 if closed/folded) |  floats over   |
 //! +---------------- tab row (1 row) ------------------+  the world)    |
 //! +-------------------------------------------------------------------+
@@ -43,8 +43,11 @@
 //! wide, while a very wide, short one, 2424×760, may dock.) Smaller windows
 //! get the best possible: sizes never negative, everything inside.
 //!
-//! What stays fixed: the top bar, caption strip and tab row are one row
-//! each ([`row_px`]), a function of the scale alone. Opening or closing a
+//! What stays fixed: the top bar and tab row are one row each
+//! ([`row_px`]), a function of the scale alone; the caption strip is one
+//! row, or taller by a line or two while the scene's caption needs them
+//! ([`caption_px`] of [`Docks::caption_lines`], which changes with the scene
+//! or the window's width, not from frame to frame). Opening or closing a
 //! tab, or the drawer, never moves the world's top, left or width, nor the
 //! top bar, side dock or tab row; a tab moves only the world's bottom edge
 //! (and the caption strip glued under it) by the tab content's height.
@@ -54,6 +57,11 @@
 /// theme; it holds one line of 17-point body text) + 2 + 2 of a panel's
 /// frame margin + a 1-point separator, rounded up to 30.
 pub const ROW_POINTS: f32 = 30.0;
+/// A line of body text at scale 1, in points: what each line of a caption
+/// beyond the first adds to its strip (17-point text takes 19).
+pub const LINE_POINTS: f32 = 20.0;
+/// The most lines a caption strip holds.
+pub const MAX_CAPTION_LINES: u8 = 2;
 /// The smallest world, each way, in px.
 pub const MIN_WORLD_PX: f32 = 240.0;
 /// The smallest share of the window's area the world keeps.
@@ -132,6 +140,10 @@ pub struct Docks {
     /// The tab content's height the user chose (px, by dragging its top
     /// edge), instead of [`tab_wanted`]; kept within [`tab_range`].
     pub tab_height: Option<f32>,
+    /// Lines of text the caption strip holds: 1, or up to
+    /// [`MAX_CAPTION_LINES`] for a long caption (anything else is taken as
+    /// the nearest of those).
+    pub caption_lines: u8,
 }
 
 /// What became of the side dock.
@@ -163,7 +175,7 @@ pub struct Rects {
     pub tab_content: Option<Rect>,
     /// A tab is open but had to fold to the tab row (say so in the view).
     pub tab_folded: bool,
-    /// The one-line strip under the world (scale bar, caption, message).
+    /// The strip under the world (scale bar, caption, message).
     pub caption: Rect,
     pub world: Rect,
 }
@@ -188,6 +200,13 @@ fn sane_px(v: f32) -> f32 {
 /// One row (top bar, caption strip, tab row), in whole px.
 pub fn row_px(scale: f32) -> f32 {
     (ROW_POINTS * clamp_scale(scale)).round()
+}
+
+/// The caption strip's height in whole px: a row, and a line more for each
+/// line of caption beyond the first (see [`Docks::caption_lines`]).
+pub fn caption_px(scale: f32, lines: u8) -> f32 {
+    let more = f32::from(lines.clamp(1, MAX_CAPTION_LINES) - 1);
+    row_px(scale) + more * (LINE_POINTS * clamp_scale(scale)).round()
 }
 
 /// The docked side dock's width in whole px: 26 % of the window's width in
@@ -230,7 +249,7 @@ pub fn layout(window: (f32, f32), scale: f32, docks: Docks) -> Rects {
     let (w, h) = (sane_px(window.0), sane_px(window.1));
     let row = row_px(s);
     let top_h = row.min(h);
-    let caption_h = row.min(h - top_h);
+    let caption_h = caption_px(s, docks.caption_lines).min(h - top_h);
     let tabs_h = if docks.shown { row } else { 0.0 }.min(h - top_h - caption_h);
     // What the world and the tab content share.
     let room = h - top_h - caption_h - tabs_h;

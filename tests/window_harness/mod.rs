@@ -454,22 +454,28 @@ pub fn rect(v: &Value) -> [f64; 4] {
     })
 }
 
-/// The open tab's content rectangle [x, y, w, h]: under the world and its
-/// caption strip (one row, as high as the top bar).
-pub fn tab_content(s: &Value) -> [f64; 4] {
-    let num = |v: &Value| -> [f64; 4] { std::array::from_fn(|k| v[k].as_f64().unwrap()) };
-    let (world, row) = (
-        num(&s["layout"]["world"]),
-        num(&s["layout"]["panels"][0])[3],
-    );
-    let top = world[1] + world[3] + row;
+/// The caption strip's rectangle [x, y, w, h]: the panel under the world.
+pub fn caption_strip(s: &Value) -> [f64; 4] {
+    let world = rect(&s["layout"]["world"]);
+    panel_at(s, world[1] + world[3])
+}
+
+/// The panel whose top is at `top`.
+fn panel_at(s: &Value, top: f64) -> [f64; 4] {
     s["layout"]["panels"]
         .as_array()
         .unwrap()
         .iter()
-        .map(num)
+        .map(rect)
         .find(|r| (r[1] - top).abs() < 0.5 && r[3] > 0.0)
-        .unwrap_or_else(|| panic!("no tab content in {}", s["layout"]))
+        .unwrap_or_else(|| panic!("no panel at y = {top} in {}", s["layout"]))
+}
+
+/// The open tab's content rectangle [x, y, w, h]: under the world and its
+/// caption strip (a row, or taller for a long caption).
+pub fn tab_content(s: &Value) -> [f64; 4] {
+    let strip = caption_strip(s);
+    panel_at(s, strip[1] + strip[3])
 }
 
 /// The window at a projector's size (1024×768, text size 2) in `lang`, on

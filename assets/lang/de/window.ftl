@@ -136,6 +136,7 @@ size-follows-mass-hover = eine Scheibe mit 1 kg hat 0,4 m Radius; der Radius wä
 radius-from-mass = Radius { $radius } (aus der Masse)
 radius-label = Radius
 mass-label = Masse
+new-mass-hover = Neue Scheiben wiegen 0,01 bis 100 kg. Eine Scheibe in der Box nimmt jede Masse: Tippen Sie sie im Reiter Scheiben oder unter Gewählte Scheibe ein
 selected-none = Keine: eine Scheibe anklicken, um sie auszuwählen.
 apply = Übernehmen
 apply-hover = Enter in einem Feld
@@ -179,8 +180,8 @@ totals-energy = Energie
 totals-kinetic-energy = kinetische Energie
 totals-momentum = Impuls
 totals-angular-momentum = Drehimpuls L
-totals-change = Änderung seit { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-wrapping = Änderung seit { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } bleibt nicht erhalten, wenn Scheiben über den Rand springen
+totals-change = Änderung seit t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-wrapping = Änderung seit t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } bleibt nicht erhalten, wenn Scheiben über den Rand springen
 totals-none = Noch keine Aufzeichnung: Simulation laufen lassen.
 totals-rotational-ke = Rotationsenergie
 totals-ke-sum = Ekin + Rotationsenergie

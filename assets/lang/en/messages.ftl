@@ -25,6 +25,7 @@ file-cannot-create = cannot create { $folder }: { $error }
 file-cannot-write = cannot write { $file }: { $error }
 scene-cannot-open = Cannot open { $file }: { $error }
 scene-opened = Opened { $name }
+scene-opened-undo = Opened { $name }. { $undo } brings back { $previous } as you left it
 scene-kept = { $error } (kept the current scene)
 scene-reset = Scene reset
 scene-cannot-reset = Cannot reset: { $error }
@@ -101,6 +102,10 @@ next-collision-wall = Disc { $disc } hit the { $wall ->
 } wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
 next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
 next-collision-none = No collision within { $limit }
+next-collision-more = { $others ->
+    [one] At the same moment, 1 more impact: the Collisions tab lists it
+   *[other] At the same moment, { $others } more impacts: the Collisions tab lists them
+}
 rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
 rewound-newest = At the newest recorded moment, t = { $time } s; Space runs on from here
 nothing-recorded = Nothing recorded yet

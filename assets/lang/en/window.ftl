@@ -136,6 +136,7 @@ size-follows-mass-hover = a 1 kg disc is 0.4 m in radius; the radius grows as âˆ
 radius-from-mass = Radius { $radius } (from the mass)
 radius-label = Radius
 mass-label = Mass
+new-mass-hover = New discs take 0.01 to 100 kg. A disc already in the box takes any mass: type it in the Discs tab or under Selected disc
 selected-none = None: click a disc to select it.
 apply = Apply
 apply-hover = Enter in a field
@@ -179,8 +180,8 @@ totals-energy = energy
 totals-kinetic-energy = kinetic energy
 totals-momentum = momentum
 totals-angular-momentum = angular momentum L
-totals-change = change since { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-wrapping = change since { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } is not kept when discs wrap round the edges
+totals-change = change since t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-wrapping = change since t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } is not kept when discs wrap round the edges
 totals-none = No record yet: run the simulation.
 totals-rotational-ke = rotational KE
 totals-ke-sum = KE + rotational KE

@@ -136,6 +136,7 @@ size-follows-mass-hover = un disco de 1 kg tiene 0,4 m de radio; el radio crece 
 radius-from-mass = Radio { $radius } (según la masa)
 radius-label = Radio
 mass-label = Masa
+new-mass-hover = Los discos nuevos pesan de 0,01 a 100 kg. Un disco ya en la caja admite cualquier masa: escríbala en la pestaña Discos o en Disco seleccionado
 selected-none = Ninguno: haz clic en un disco para seleccionarlo.
 apply = Aplicar
 apply-hover = Intro en un campo
@@ -179,8 +180,8 @@ totals-energy = energía
 totals-kinetic-energy = energía cinética
 totals-momentum = cantidad de movimiento
 totals-angular-momentum = momento angular L
-totals-change = cambio desde { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-wrapping = cambio desde { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } no se conserva cuando los discos pasan de un borde al opuesto
+totals-change = cambio desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-wrapping = cambio desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } no se conserva cuando los discos pasan de un borde al opuesto
 totals-none = Aún no hay registro: pon en marcha la simulación.
 totals-rotational-ke = Ec de rotación
 totals-ke-sum = Ec + Ec de rotación

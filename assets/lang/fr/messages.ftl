@@ -25,6 +25,7 @@ file-cannot-create = impossible de créer { $folder } : { $error }
 file-cannot-write = impossible d'écrire { $file } : { $error }
 scene-cannot-open = Impossible d'ouvrir { $file } : { $error }
 scene-opened = Ouvert : { $name }
+scene-opened-undo = Ouvert : { $name }. { $undo } ramène { $previous } tel que vous l’avez laissé
 scene-kept = { $error } (la scène actuelle est conservée)
 scene-reset = Scène réinitialisée
 scene-cannot-reset = Impossible de réinitialiser : { $error }
@@ -101,6 +102,10 @@ next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
 } à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
 next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
 next-collision-none = Aucune collision en { $limit }
+next-collision-more = { $others ->
+    [one] Au même instant, 1 autre choc : l’onglet Collisions l’indique
+   *[other] Au même instant, { $others } autres chocs : l’onglet Collisions les indique
+}
 rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
 rewound-newest = Au dernier instant enregistré, t = { $time } s ; Espace reprend à partir d'ici
 nothing-recorded = Rien d'enregistré pour l'instant

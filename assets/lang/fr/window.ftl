@@ -136,6 +136,7 @@ size-follows-mass-hover = un disque de 1 kg a un rayon de 0,4 m ; le rayon cro�
 radius-from-mass = Rayon { $radius } (d'après la masse)
 radius-label = Rayon
 mass-label = Masse
+new-mass-hover = Les nouveaux disques pèsent de 0,01 à 100 kg. Un disque déjà dans la boîte prend n’importe quelle masse : tapez-la dans l’onglet Disques ou sous Disque sélectionné
 selected-none = Aucun : cliquez sur un disque pour le sélectionner.
 apply = Appliquer
 apply-hover = Entrée dans un champ
@@ -179,8 +180,8 @@ totals-energy = énergie
 totals-kinetic-energy = énergie cinétique
 totals-momentum = quantité de mouvement
 totals-angular-momentum = moment cinétique L
-totals-change = variation depuis { $since } : { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-wrapping = variation depuis { $since } : { $p_name } { $momentum }, { $e_name } { $energy } ; { $l_name } n'est pas conservé quand des disques passent d'un bord à l'autre
+totals-change = variation depuis t = { $since } : { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-wrapping = variation depuis t = { $since } : { $p_name } { $momentum }, { $e_name } { $energy } ; { $l_name } n'est pas conservé quand des disques passent d'un bord à l'autre
 totals-none = Rien d'enregistré pour l'instant : lancez la simulation.
 totals-rotational-ke = Ec de rotation
 totals-ke-sum = Ec + Ec de rotation

@@ -25,6 +25,7 @@ file-cannot-create = não foi possível criar { $folder }: { $error }
 file-cannot-write = não foi possível gravar { $file }: { $error }
 scene-cannot-open = Não foi possível abrir { $file }: { $error }
 scene-opened = Cena aberta: { $name }
+scene-opened-undo = Cena aberta: { $name }. { $undo } traz de volta { $previous } como você deixou
 scene-kept = { $error } (a cena atual foi mantida)
 scene-reset = Cena reiniciada
 scene-cannot-reset = Não foi possível reiniciar: { $error }
@@ -101,6 +102,10 @@ next-collision-wall = O disco { $disc } bateu na parede { $wall ->
     } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
 next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
 next-collision-none = Nenhuma colisão em { $limit }
+next-collision-more = { $others ->
+    [one] No mesmo instante, mais 1 impacto: a aba Colisões o mostra
+   *[other] No mesmo instante, mais { $others } impactos: a aba Colisões os mostra
+}
 rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
 rewound-newest = No momento gravado mais recente, t = { $time } s; Espaço continua daqui
 nothing-recorded = Nada gravado ainda

@@ -136,6 +136,7 @@ size-follows-mass-hover = um disco de 1 kg tem 0,4 m de raio; o raio cresce como
 radius-from-mass = Raio { $radius } (pela massa)
 radius-label = Raio
 mass-label = Massa
+new-mass-hover = Discos novos pesam de 0,01 a 100 kg. Um disco já na caixa aceita qualquer massa: digite-a na aba Discos ou em Disco selecionado
 selected-none = Nenhum: clique num disco para selecioná-lo.
 apply = Aplicar
 apply-hover = Enter num campo
@@ -179,8 +180,8 @@ totals-energy = energia
 totals-kinetic-energy = energia cinética
 totals-momentum = quantidade de movimento
 totals-angular-momentum = momento angular L
-totals-change = variação desde { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-wrapping = variação desde { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } não se conserva quando os discos passam de uma borda para a oposta
+totals-change = variação desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-wrapping = variação desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } não se conserva quando os discos passam de uma borda para a oposta
 totals-none = Nada registrado ainda: rode a simulação.
 totals-rotational-ke = Ec de rotação
 totals-ke-sum = Ec + Ec de rotação

@@ -354,3 +354,45 @@ fn verlet_stops_at_a_pair_collision_it_cannot_record() {
         w.time
     );
 }
+
+#[test]
+fn impacts_at_the_same_instant_are_one_stop_and_a_moment_apart_are_two() {
+    // Two equal discs (r = 0.5, 10 m box) at y = 3.5 and 6.5, moving apart
+    // at 2 m/s: each touches its wall (y = 0.5 and 9.5 for the centre)
+    // after 3/2 = 1.5 s. Mirror images: the same instant, so the
+    // total momentum goes from 0 to 0 in one stop, never through half of
+    // it. Then the upper disc 1 µm nearer its wall: two stops, 0.5 µs apart.
+    for method in METHODS {
+        let mut w = closed_box(
+            method,
+            vec![
+                disc([3.0, 3.5], [0.0, -2.0], 1.0, 0.5),
+                disc([7.0, 6.5], [0.0, 2.0], 1.0, 0.5),
+            ],
+        );
+        let hit = w.run_to_next_impact(DT, 60.0).expect("the walls");
+        assert!(on_time(method, hit.time(), 1.5), "{method:?}: {hit:?}");
+        assert_eq!(w.ledger.recorded_walls, 2, "{method:?}: both walls");
+        let p: DVec2 = w.particles.iter().map(|d| d.mass * d.vel).sum();
+        assert!(p.length() < 1e-9, "{method:?}: momentum {p} after the stop");
+        // Each came back off its wall: the upper one moves down.
+        for d in &w.particles {
+            let back = if d.pos.y > 5.0 { -2.0 } else { 2.0 };
+            assert!((d.vel.y - back).abs() < 1e-9, "{method:?}: {d:?}");
+        }
+    }
+    let mut w = closed_box(
+        Method::Exact,
+        vec![
+            disc([3.0, 3.5], [0.0, -2.0], 1.0, 0.5),
+            disc([7.0, 6.5 + 1e-6], [0.0, 2.0], 1.0, 0.5),
+        ],
+    );
+    let first = w.run_to_next_impact(DT, 60.0).expect("the ceiling");
+    assert_eq!(first.wall().map(|h| h.wall), Some(Wall::Top));
+    assert_eq!(w.ledger.recorded_walls, 1, "the floor is 0.5 µs later");
+    let second = w.run_to_next_impact(DT, 60.0).expect("the floor");
+    assert_eq!(second.wall().map(|h| h.wall), Some(Wall::Bottom));
+    let apart = second.time() - first.time();
+    assert!((apart - 0.5e-6).abs() < 1e-9, "{apart:e} s apart");
+}

@@ -6,16 +6,20 @@ const SHOWN: u8 = 1;
 const SIDE: u8 = 2;
 const TAB: u8 = 4;
 const DRAWER: u8 = 8;
+/// The scene's caption takes the most lines.
+const LONG_CAPTION: u8 = 16;
 const OPEN_TAB: u8 = SHOWN | SIDE | TAB;
 
 fn docks(bits: u8) -> Docks {
-    let [shown, side, tab_open, drawer_open] = [SHOWN, SIDE, TAB, DRAWER].map(|b| bits & b != 0);
+    let [shown, side, tab_open, drawer_open, long] =
+        [SHOWN, SIDE, TAB, DRAWER, LONG_CAPTION].map(|b| bits & b != 0);
     Docks {
         shown,
         side,
         tab_open,
         drawer_open,
         tab_height: None,
+        caption_lines: if long { MAX_CAPTION_LINES } else { 1 },
     }
 }
 
@@ -27,7 +31,7 @@ fn grid() -> impl Iterator<Item = (f32, f32, f32, u8)> {
         .into_iter()
         .flat_map(|w| [600.0, 768.0, 800.0, 900.0, 1080.0].map(|h| (w, h)));
     let scaled = sizes.flat_map(|(w, h)| SCALES.map(|s| (w, h, s)));
-    scaled.flat_map(|(w, h, s)| (0..16).map(move |b| (w, h, s, b)))
+    scaled.flat_map(|(w, h, s)| (0..32).map(move |b| (w, h, s, b)))
 }
 
 /// Inside the window, no overlaps, no gaps, nothing negative.
@@ -107,12 +111,15 @@ fn grid_tiles_keeps_guarantees_and_gives_way_in_order() {
             assert!(r.world.h - more < need(r.world.w), "{what}");
         }
         if matches!(r.side_dock, SideDock::Drawer { .. }) && s <= MAX_DOCKED_SCALE {
-            let (docked, room) = (w - side_width(w, s), h - 3.0 * row);
+            let bars = 2.0 * row + caption_px(s, d.caption_lines);
+            let (docked, room) = (w - side_width(w, s), h - bars);
             let fits = docked >= MIN_WORLD_PX && room - min_tab >= need(docked);
             assert!(!fits, "{what}");
         }
-        // The bars are one row, whatever their content.
-        assert_eq!((r.top_bar.h, r.caption.h), (row, row), "{what}");
+        // The bars are one row, whatever their content; the caption strip
+        // a row and the lines more its caption needs.
+        let caption_h = row + f32::from(d.caption_lines - 1) * (LINE_POINTS * s).round();
+        assert_eq!((r.top_bar.h, r.caption.h), (row, caption_h), "{what}");
         assert_eq!(
             r.tab_row.map(|t| (t.h, t.bottom())),
             d.shown.then_some((row, h))
@@ -282,9 +289,21 @@ fn degenerate_inputs_do_not_panic() {
     let scales = [nan, inf, -inf, 0.0, -1.0, 0.5, 1.3, 100.0];
     for (w, h) in sizes.into_iter().chain(odd) {
         for s in scales.into_iter().chain(SCALES) {
-            for b in 0..16 {
+            for b in 0..32 {
                 let r = layout((w, h), s, docks(b));
                 assert_tiles(&r, &format!("{w}x{h} at {s} {:?}", docks(b)));
+            }
+            // Lines the caption cannot have are the nearest it can.
+            for (lines, near) in [(0, 1), (3, 2), (u8::MAX, 2)] {
+                let odd = Docks {
+                    caption_lines: lines,
+                    ..docks(OPEN_TAB)
+                };
+                let near = Docks {
+                    caption_lines: near,
+                    ..odd
+                };
+                assert_eq!(layout((w, h), s, odd), layout((w, h), s, near));
             }
         }
     }

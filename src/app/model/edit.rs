@@ -433,4 +433,36 @@ mod tests {
             assert!(s.record.history.len() <= 1, "{}", s.record.history.len());
         }
     }
+
+    /// A preset opened over changed work (a digit key pressed when a click
+    /// meant for a field missed it) says the undo that brings it back, and
+    /// that undo does; over a scene only opened, it just says what opened.
+    #[test]
+    fn another_scene_opened_over_changes_says_how_to_get_them_back() {
+        use crate::app::model::command::Law;
+        let dir = tempfile::tempdir().unwrap();
+        let preset = |file: &str| {
+            let k = crate::app::model::scenes::PRESETS
+                .iter()
+                .position(|p| p.path.ends_with(file));
+            Command::OpenPreset(k.unwrap())
+        };
+        let (head_on, heavy) = (preset("1-head-on.toml"), preset("2-heavy-hits-light.toml"));
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        s.apply(heavy.clone());
+        assert_eq!(s.message(), Some("Opened Heavy hits light"));
+        s.apply(head_on);
+        s.apply(Command::SetLaw(Law::Restitution, 0.3));
+        s.session.now += 2.0;
+        s.apply(heavy);
+        assert_eq!(
+            s.message(),
+            Some(
+                "Opened Heavy hits light. Ctrl+Z brings back Head-on, equal masses as you left it"
+            )
+        );
+        s.apply(Command::Undo);
+        assert_eq!(s.world.laws.restitution, 0.3);
+        assert!(s.open.origin.contains("head-on"), "{}", s.open.origin);
+    }
 }

@@ -198,6 +198,13 @@ impl Sandbox {
     pub(super) fn open_scene(&mut self, scene: Scene, origin: String) -> Result<(), String> {
         match scene.build(&origin) {
             Ok(world) => {
+                // What the user changed is one undo away: say so, as a key
+                // pressed by a click that missed a field replaces it.
+                let lang = crate::app::lang::language().code();
+                let left = self.open.unsaved.then(|| {
+                    let name = self.open.scene.name_in(lang).unwrap_or(&self.open.origin);
+                    name.to_string()
+                });
                 self.world = world;
                 self.open.edited = scene.edited;
                 self.open.unsaved = false;
@@ -206,12 +213,27 @@ impl Sandbox {
                 self.clock.dt = scene.step_for(self.session.dt);
                 self.selected = None;
                 self.pointer.cancel();
-                let lang = crate::app::lang::language().code();
                 let name = scene.name_in(lang).unwrap_or(&origin).to_string();
                 self.open.scene = scene;
                 self.open.origin = origin;
                 self.fit_camera();
-                self.toast(tr!("scene-opened", name = name));
+                match left {
+                    Some(previous) => {
+                        let undo = super::bindings::binding_of(&super::Command::Undo)
+                            .map(|b| b.keys())
+                            .unwrap_or_default();
+                        self.toast_for(
+                            tr!(
+                                "scene-opened-undo",
+                                name = name,
+                                previous = previous,
+                                undo = undo
+                            ),
+                            8.0,
+                        );
+                    }
+                    None => self.toast(tr!("scene-opened", name = name)),
+                }
                 Ok(())
             }
             Err(e) => {

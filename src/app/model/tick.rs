@@ -133,43 +133,50 @@ impl Sandbox {
             self.world.ledger.keep(LEDGER_KEEP);
         }
         let counted = self.world.total_pair_collisions;
-        let found = self.run_recording(NEXT_COLLISION_LIMIT);
+        let (found, at_once) = self.run_recording(NEXT_COLLISION_LIMIT);
         let unrecorded = self.world.total_pair_collisions > counted;
         self.overlays.contact = true;
         self.panels.docks_open = true;
         self.panels.dock_expanded = true;
         self.panels.tab = DockTab::Collisions;
-        match found {
+        let said = match found {
             Some(impulse::ledger::Impact::Pair(c)) => {
                 let (dp, dke) = c.total_change();
-                self.toast(tr!(
+                tr!(
                     "next-collision-pair",
                     a = c.discs[0],
                     b = c.discs[1],
                     time = with_unit(c.time, 4, "s"),
                     momentum = vector(dp, 3, "kg·m/s"),
                     energy = with_unit(dke, 3, "J")
-                ));
+                )
             }
             Some(impulse::ledger::Impact::Wall(w)) => {
                 let (_, dke) = w.total_change();
-                self.toast(tr!(
+                tr!(
                     "next-collision-wall",
                     disc = w.disc,
                     wall = w.wall.name(),
                     time = with_unit(w.time, 4, "s"),
                     impulse = vector(w.wall_impulse(), 3, "kg·m/s"),
                     energy = with_unit(dke, 3, "J")
-                ));
+                )
             }
-            None if unrecorded => self.toast(tr!(
+            None if unrecorded => tr!(
                 "next-collision-verlet",
                 time = with_unit(self.world.time, 3, "s")
-            )),
-            None => self.toast(tr!(
+            ),
+            None => tr!(
                 "next-collision-none",
                 limit = with_unit(NEXT_COLLISION_LIMIT, 0, "s")
-            )),
+            ),
+        };
+        // The others of that moment: the plots and totals already hold them.
+        if found.is_some() && at_once > 1 {
+            let more = tr!("next-collision-more", others = at_once - 1);
+            self.toast(format!("{said}. {more}"));
+        } else {
+            self.toast(said);
         }
     }
 
@@ -179,7 +186,13 @@ impl Sandbox {
     /// totals just before and after each step with an impact. So the plots
     /// show a wall's push as a step at its instant, not a ramp from where
     /// J was pressed, and the rewind steps back through the approach.
-    fn run_recording(&mut self, limit: f64) -> Option<impulse::ledger::Impact> {
+    ///
+    /// Returns the impact found and how many impacts the last step had:
+    /// those of its instant with `exact` (see
+    /// [`impulse::method::exact::SAME_INSTANT`]), those of the step with the
+    /// others.
+    fn run_recording(&mut self, limit: f64) -> (Option<impulse::ledger::Impact>, usize) {
+        let mut at_once = 0;
         let small = self.world.particles.len() <= totals::SAMPLE_COLLISIONS_MAX_DISCS;
         let record = &mut self.record;
         let mut before = (self.world.time, self.world.metrics());
@@ -187,7 +200,8 @@ impl Sandbox {
         let found =
             self.world
                 .run_to_next_impact_watched(self.clock.dt, limit, &mut |world, stats| {
-                    let impacts = stats.pair_collisions + stats.wall_hits > 0;
+                    at_once = stats.pair_collisions + stats.wall_hits;
+                    let impacts = at_once > 0;
                     let frame = world.time - recorded >= RECORD_EVERY;
                     if !(small || impacts || frame) {
                         return;
@@ -209,7 +223,7 @@ impl Sandbox {
             let now = self.world.metrics();
             self.record.moment(&self.world, &now);
         }
-        found
+        (found, at_once)
     }
 
     /// Shows an earlier (or later) recorded moment; pauses.
@@ -365,6 +379,33 @@ mod tests {
                 );
             }
             assert!(s.world.time > 5.0, "{method}: reached the right wall");
+        }
+    }
+
+    /// Glancing: at t ≈ 5.57 s disc 0 hits the top wall and disc 1 the
+    /// bottom one at the same instant. J stops once for both, and says so
+    /// (it stopped twice, the first stop showing the momentum half changed).
+    #[test]
+    fn impacts_at_one_instant_are_one_stop_of_j_and_it_says_so() {
+        let dir = tempfile::tempdir().unwrap();
+        for method in [Setting::Auto, Setting::Fixed(Method::Exact)] {
+            let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+            s.apply(Command::SetMethod(method));
+            let mut stops: Vec<(f64, String)> = Vec::new();
+            while s.world.time < 6.0 && stops.len() < 50 {
+                s.apply(Command::NextCollision);
+                stops.push((s.world.time, s.message().unwrap_or_default().to_owned()));
+            }
+            for pair in stops.windows(2) {
+                assert!(pair[1].0 - pair[0].0 > 1e-9, "{method}: two stops {pair:?}");
+            }
+            let both = stops.iter().find(|(t, _)| (t - 5.5717).abs() < 5e-4);
+            let (_, said) =
+                both.unwrap_or_else(|| panic!("{method}: no stop at 5.57 s: {stops:?}"));
+            assert!(
+                said.contains("At the same moment, 1 more impact"),
+                "{method}: {said}"
+            );
         }
     }
 

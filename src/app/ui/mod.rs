@@ -8,15 +8,15 @@
 //! another view. Where everything goes is decided before any panel is
 //! drawn, by [`crate::app::layout::layout`], from the window's size, the UI
 //! scale and which docks are open; the panels take exactly the rectangles
-//! it gives, so a caption that wraps or a tab that opens never moves the
-//! world. The pass runs first in each frame, so the key and mouse bindings
+//! it gives, so a message or a tab that opens never moves the world (a
+//! scene whose caption needs two rows gets them when it opens). The pass runs first in each frame, so the key and mouse bindings
 //! know whether a text field has the keyboard and whether the pointer is on
 //! a panel.
 //!
 //! - [`top_bar`]: scene, time, running or paused, the totals, the counts.
 //! - [`side`]: the side dock's sections (also the drawer's).
 //! - [`dock`]: the bottom dock's tab row and its tabs, one file each.
-//! - [`strip`]: the line under the world: scale bar, caption, messages.
+//! - [`strip`]: the strip under the world: scale bar, caption, messages.
 //! - [`popups`]: help (from the bindings table), presets, recovery.
 //! - [`start`]: the start screen's tiles.
 //! - [`dialog`]: the boxes over the world and scroll areas, whose own parts
@@ -151,7 +151,7 @@ impl Panels {
             top_bar: top_bar::TopBar,
             side: side::SideDock::new(path),
             dock: dock::BottomDock::new(),
-            strip: strip::Strip,
+            strip: strip::Strip::default(),
             popups: popups::Popups,
             start: start::StartScreen,
             marks: Marks::default(),
@@ -210,6 +210,7 @@ impl Panels {
             tab_open: p.dock_expanded,
             drawer_open: p.drawer_open,
             tab_height: p.tab_height,
+            caption_lines: self.strip.lines(),
         };
         let rects = layout::layout(window, p.scale, docks);
         let points = |r: layout::Rect| {

@@ -257,14 +257,6 @@ impl TopBar {
         } else {
             18.0
         };
-        let galley = |ui: &egui::Ui, text: &RichText| -> Arc<egui::Galley> {
-            WidgetText::from(text.clone()).into_galley(
-                ui,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Body,
-            )
-        };
         let label = |c: &Command| crate::app::model::bindings::label(c).unwrap_or_default();
         let sound = sound_label(cx);
         let mut buttons: Vec<(String, Command, &str)> =
@@ -279,7 +271,7 @@ impl TopBar {
         }
         let more = RichText::new(tr!("top-bar-more"));
         let more_width = galley(ui, &more).size().x + spacing;
-        let [name, time, state] = essential;
+        let [_, time, state] = &essential;
         let fixed =
             galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
         // Where the buttons' words would leave the time and the state no
@@ -318,117 +310,163 @@ impl TopBar {
                 line,
                 egui::Layout::left_to_right(egui::Align::Center),
                 |ui| {
-                    // What the name and the other items may take, "… more" kept
-                    // room for.
-                    let free = ui.available_width() - more_width - fixed;
-                    let full_name = galley(ui, &name.text).size().x;
-                    let name_width = full_name.min((0.6 * free).max(40.0));
-                    // The other items that fit beside the name at that width, in
-                    // order (the last may use the room kept for "… more")...
-                    let galleys: Vec<_> =
-                        optional.iter().map(|item| galley(ui, &item.text)).collect();
-                    let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
-                    for (k, g) in galleys.iter().enumerate() {
-                        let last = k + 1 == galleys.len();
-                        let need = g.size().x + spacing - if last { more_width } else { 0.0 };
-                        if need > room {
-                            break;
-                        }
-                        room -= g.size().x + spacing;
-                        used += g.size().x + spacing;
-                        shown += 1;
-                    }
-                    // ... and the room they leave goes back to the name, so that
-                    // it is cut only where the line is really full.
-                    let name_width = full_name.min((free - used - spacing).max(name_width));
-                    ui.spacing_mut().item_spacing.x = spacing;
-                    ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
-                    // The name gives way first: it truncates, with the whole on hover.
-                    let height = ui.available_height();
-                    let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
-                        super::widgets::one_line(ui, name.text, None)
-                    });
-                    cx.note("scene_name", &r);
-                    for item in [time, state] {
-                        let r = ui.label(item.text);
-                        let r = match item.hover {
-                            Some(h) => r.tip(h),
-                            None => r,
-                        };
-                        if let Some(name) = item.name {
-                            cx.note(name, &r);
-                        }
-                    }
-                    let mut hidden = Vec::new();
-                    for (k, (item, g)) in optional.into_iter().zip(galleys).enumerate() {
-                        if k >= shown {
-                            hidden.push(item.text.text().to_string());
-                            continue;
-                        }
-                        let r = ui.label(g);
-                        let r = match item.hover {
-                            Some(h) => r.tip(h),
-                            None => r,
-                        };
-                        if let Some(name) = item.name {
-                            cx.note(name, &r);
-                        }
-                    }
-                    if !hidden.is_empty() {
-                        // On hover, while it has the keys (Tab reaches it), or
-                        // from a click until the next click elsewhere or Esc: a touch
-                        // screen (a classroom's board) has no hover.
-                        let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
-                        let hidden = hidden.join("\n");
-                        let pinned_id = r.id.with("pinned");
-                        let mut pinned =
-                            ui.data(|d| d.get_temp::<bool>(pinned_id)).unwrap_or(false);
-                        if r.clicked() {
-                            pinned = !pinned;
-                        } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
-                            pinned = false;
-                        }
-                        // Esc lets go of it, as of any popup; and it gives way to
-                        // the key list and the start screen, which it would cover.
-                        let panels = &cx.model.panels;
-                        if ui.input(|i| i.key_pressed(egui::Key::Escape))
-                            || panels.help_open
-                            || panels.start_open
-                        {
-                            pinned = false;
-                        }
-                        ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
-                        let r = if r.has_focus() || pinned {
-                            r.tip_now(hidden);
-                            r
-                        } else {
-                            r.tip(hidden)
-                        };
-                        cx.note("top_bar_more", &r);
-                    }
+                    let words = Words {
+                        essential,
+                        optional,
+                        more,
+                        spacing,
+                    };
+                    items(ui, cx, words);
                 },
             );
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                let size = egui::vec2(width, ui.available_height());
-                let used = ui
-                    .allocate_ui_with_layout(
-                        size,
-                        egui::Layout::left_to_right(egui::Align::Center),
-                        |ui| {
-                            ui.spacing_mut().item_spacing.x = 8.0;
-                            for (label, command, name) in buttons.into_iter().rev() {
-                                super::widgets::labelled_button(ui, cx, label, command, Some(name));
-                            }
-                            ui.min_rect().width()
-                        },
-                    )
-                    .inner;
-                if (used - width).abs() > 0.5 {
-                    ui.data_mut(|d| d.insert_temp(group, used));
-                    ui.ctx()
-                        .request_discard("the top bar's buttons changed width");
-                }
+                button_group(ui, cx, buttons, (group, width));
             });
         });
+    }
+}
+
+/// What the line says: the essential items, the others while they fit,
+/// "… more" for the rest, and the room between items (points).
+struct Words {
+    essential: [Item; 3],
+    optional: Vec<Item>,
+    more: RichText,
+    spacing: f32,
+}
+
+/// `text` in one line of body text.
+fn galley(ui: &egui::Ui, text: &RichText) -> Arc<egui::Galley> {
+    WidgetText::from(text.clone()).into_galley(
+        ui,
+        Some(egui::TextWrapMode::Extend),
+        f32::INFINITY,
+        egui::TextStyle::Body,
+    )
+}
+
+/// The line's items in the room `ui` has: the scene's name (cut first,
+/// whole on hover), the time and the state, then the others in order while
+/// they fit, then "… more" with the rest.
+fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
+    let Words {
+        essential: [name, time, state],
+        optional,
+        more,
+        spacing,
+    } = words;
+    let more_width = galley(ui, &more).size().x + spacing;
+    let fixed = galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
+    // What the name and the other items may take, "… more" kept room for.
+    let free = ui.available_width() - more_width - fixed;
+    let full_name = galley(ui, &name.text).size().x;
+    let name_width = full_name.min((0.6 * free).max(40.0));
+    // The other items that fit beside the name at that width, in order (the
+    // last may use the room kept for "… more")...
+    let galleys: Vec<_> = optional.iter().map(|item| galley(ui, &item.text)).collect();
+    let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
+    for (k, g) in galleys.iter().enumerate() {
+        let last = k + 1 == galleys.len();
+        let need = g.size().x + spacing - if last { more_width } else { 0.0 };
+        if need > room {
+            break;
+        }
+        room -= g.size().x + spacing;
+        used += g.size().x + spacing;
+        shown += 1;
+    }
+    // ... and the room they leave goes back to the name, so that it is cut
+    // only where the line is really full.
+    let name_width = full_name.min((free - used - spacing).max(name_width));
+    ui.spacing_mut().item_spacing.x = spacing;
+    ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
+    let height = ui.available_height();
+    let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
+        super::widgets::one_line(ui, name.text, None)
+    });
+    cx.note("scene_name", &r);
+    let said = [time, state].into_iter().map(|item| (item, None));
+    let others = optional
+        .into_iter()
+        .zip(galleys)
+        .map(|(item, g)| (item, Some(g)));
+    let mut hidden = Vec::new();
+    for (k, (item, g)) in said.chain(others).enumerate() {
+        if k >= 2 + shown {
+            hidden.push(item.text.text().to_string());
+            continue;
+        }
+        let r = match g {
+            Some(g) => ui.label(g),
+            None => ui.label(item.text),
+        };
+        let r = match item.hover {
+            Some(h) => r.tip(h),
+            None => r,
+        };
+        if let Some(name) = item.name {
+            cx.note(name, &r);
+        }
+    }
+    if !hidden.is_empty() {
+        more_label(ui, cx, more, hidden.join("\n"));
+    }
+}
+
+/// "… more", with `hidden` on hover, while it has the keys (Tab reaches
+/// it), or from a click until the next click elsewhere or Esc: a touch
+/// screen (a classroom's board) has no hover.
+fn more_label(ui: &mut egui::Ui, cx: &mut Cx, more: RichText, hidden: String) {
+    let r = ui.add(egui::Label::new(more).sense(egui::Sense::click()));
+    let pinned_id = r.id.with("pinned");
+    let mut pinned = ui.data(|d| d.get_temp::<bool>(pinned_id)).unwrap_or(false);
+    if r.clicked() {
+        pinned = !pinned;
+    } else if ui.input(|i| i.pointer.any_pressed()) && !r.hovered() {
+        pinned = false;
+    }
+    // Esc lets go of it, as of any popup; and it gives way to the key list
+    // and the start screen, which it would cover.
+    let panels = &cx.model.panels;
+    if ui.input(|i| i.key_pressed(egui::Key::Escape)) || panels.help_open || panels.start_open {
+        pinned = false;
+    }
+    ui.data_mut(|d| d.insert_temp(pinned_id, pinned));
+    let r = if r.has_focus() || pinned {
+        r.tip_now(hidden);
+        r
+    } else {
+        r.tip(hidden)
+    };
+    cx.note("top_bar_more", &r);
+}
+
+/// The buttons at the bar's right end, in a group as wide as it was last
+/// frame (`group` keeps the width); a change of width lays the frame out
+/// again.
+fn button_group(
+    ui: &mut egui::Ui,
+    cx: &mut Cx,
+    buttons: Vec<(String, Command, &str)>,
+    (group, width): (egui::Id, f32),
+) {
+    let size = egui::vec2(width, ui.available_height());
+    let used = ui
+        .allocate_ui_with_layout(
+            size,
+            egui::Layout::left_to_right(egui::Align::Center),
+            |ui| {
+                ui.spacing_mut().item_spacing.x = 8.0;
+                for (label, command, name) in buttons.into_iter().rev() {
+                    super::widgets::labelled_button(ui, cx, label, command, Some(name));
+                }
+                ui.min_rect().width()
+            },
+        )
+        .inner;
+    if (used - width).abs() > 0.5 {
+        ui.data_mut(|d| d.insert_temp(group, used));
+        ui.ctx()
+            .request_discard("the top bar's buttons changed width");
     }
 }

@@ -148,7 +148,23 @@ impl View for DiscsTable {
         // No taller than the tab leaves: a table that claimed two rows in a
         // projector's tab, which has room for one, put the second out of
         // sight below the tab, where Tab went without scrolling to it.
-        let rows_height = (height - header_height).max(one_row);
+        // The sideways bar has a thin line of its own under the rows
+        // (floating, it lay over the last row's text; a thicker one took the
+        // second row of a projector's tab).
+        let scroll = ui.spacing().scroll;
+        let sideways_bar = egui::style::ScrollStyle {
+            floating: false,
+            bar_width: 6.0,
+            bar_inner_margin: 2.0,
+            bar_outer_margin: 0.0,
+            ..scroll
+        };
+        let bar = if sideways {
+            sideways_bar.bar_width + sideways_bar.bar_inner_margin
+        } else {
+            0.0
+        };
+        let rows_height = (height - header_height - bar).max(one_row);
         // What the keyboard has just reached, to be shown sideways: the
         // rows scroll in an area of their own, which takes every scroll
         // request made inside it, so the sideways one is made after the
@@ -156,10 +172,14 @@ impl View for DiscsTable {
         // last field (v_y) to its last column: |v|, |p| and the energy
         // hold no control Tab could reach.
         let mut reveal: Option<egui::Rect> = None;
+        if sideways {
+            ui.spacing_mut().scroll = sideways_bar;
+        }
         egui::ScrollArea::horizontal()
             .id_salt("discs_table_scroll")
             .enable_scrolling(sideways)
             .show(ui, |ui| {
+                ui.spacing_mut().scroll = scroll;
                 TableBuilder::new(ui)
                     .id_salt("discs_table")
                     .min_scrolled_height(two_rows.min(rows_height))
@@ -316,6 +336,7 @@ impl View for DiscsTable {
                     ui.scroll_to_rect_animation(rect, None, none);
                 }
             });
+        ui.spacing_mut().scroll = scroll;
         cx.marks.text_focus |= focused;
         cx.marks.stops.extend(stops);
         for (name, rect, has_focus) in cells {

@@ -261,7 +261,7 @@ mod tests {
 
     #[test]
     fn the_change_stays_whole_and_the_names_take_two_lines_at_most() {
-        let change = "change since 0.00 s: Δp (−11.360, −0.058) kg·m/s, ΔL 80.799 kg·m²/s, \
+        let change = "change since t = 0.00 s: Δp (−11.360, −0.058) kg·m/s, ΔL 80.799 kg·m²/s, \
                       ΔE 0.000 J";
         let rough = ["p_x", "p_y", "L", "KE", "rotational KE", "sum"];
         // Wide enough for the change on one line: the names go on to a

@@ -76,7 +76,12 @@ pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
     if changed {
         cx.send(Command::SetNewMass(m));
     }
-    let tip = tooltip(&Command::StepNewMass(Dir::Up));
+    // Why the slider stops at 100 kg while the table takes any mass.
+    let tip = format!(
+        "{}\n{}",
+        tr!("new-mass-hover"),
+        tooltip(&Command::StepNewMass(Dir::Up))
+    );
     cx.note("new_mass", &track.tip(tip));
 }
 

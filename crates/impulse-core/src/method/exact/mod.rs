@@ -102,15 +102,20 @@ pub const SEPARATION_SWEEPS: usize = 100;
 /// progress (a sweep visits every disc): 10⁷, about half a second.
 pub const SEPARATION_WORK: usize = 10_000_000;
 
+/// Events this close after a stop's impact (s) belong to the same
+/// instant: a step ended at an impact carries them out too.
+pub const SAME_INSTANT: f64 = 1e-9;
+
 /// The exact method's state between steps. While nobody edits the world,
 /// the next step continues the event calendar where the last one stopped
 /// instead of sorting the discs and predicting every event afresh.
 #[derive(Default)]
 pub struct Exact {
     sim: Option<Sim>,
-    /// End a step at its first pair collision, at the instant of impact.
+    /// End a step at its first pair collision, at the instant of impact
+    /// (after the other impacts of that instant, see [`SAME_INSTANT`]).
     pub stop_at_collision: bool,
-    /// End a step at its first wall hit, at the instant of impact.
+    /// End a step at its first wall hit, likewise.
     pub stop_at_wall: bool,
     /// Run even a plain gas through the general loop (tests compare the
     /// two, see [`plain`]).
@@ -380,8 +385,7 @@ impl Sim {
                         self.let_go_if_moved([i, partner], gens);
                         self.hold_if_busy([i, partner]);
                         if self.stop_at_collision && self.collisions > 0 {
-                            self.stopped = true;
-                            break;
+                            self.stop_after_this_instant();
                         }
                     }
                 }
@@ -391,14 +395,21 @@ impl Sim {
                     self.hit_wall(i, usize::from(axis), upper);
                     self.let_go_if_moved([i, i], [gen, gen]);
                     if self.stop_at_wall && self.wall_hits > 0 {
-                        self.stopped = true;
-                        break;
+                        self.stop_after_this_instant();
                     }
                 }
                 Kind::Cell { axis, upper } => self.cross_cell(i, usize::from(axis), upper),
                 Kind::Leave => self.rebuild_grid(),
             }
         }
+    }
+
+    /// Ends the step once the events of this instant (to [`SAME_INSTANT`])
+    /// are carried out: two discs that hit two walls at once are one stop,
+    /// not a stop between them with the momentum only half changed.
+    fn stop_after_this_instant(&mut self) {
+        self.stopped = true;
+        self.end = self.end.min(self.now + SAME_INSTANT);
     }
 
     /// Asks the memory for what the events a bucket or three ahead will
