@@ -385,6 +385,27 @@ impl Sandbox {
         }
     }
 
+    /// Says which scene opened; over one `left` with changes, also which
+    /// key brings it back (a digit key pressed when a click meant for a
+    /// field missed it replaces the lesson at once).
+    pub(super) fn say_opened(&mut self, name: String, left: Option<String>) {
+        match left {
+            Some(previous) => {
+                let undo = super::bindings::binding_of(&Command::Undo)
+                    .map(|b| b.keys())
+                    .unwrap_or_default();
+                let said = tr!(
+                    "scene-opened-undo",
+                    name = name,
+                    previous = previous,
+                    undo = undo
+                );
+                self.toast_for(said, 8.0);
+            }
+            None => self.toast(tr!("scene-opened", name = name)),
+        }
+    }
+
     /// A preset opened by its key or the menu: all controls, and the start
     /// screen (if open) gives way.
     fn open_preset_from_menu(&mut self, k: usize) {

@@ -198,8 +198,7 @@ impl Sandbox {
     pub(super) fn open_scene(&mut self, scene: Scene, origin: String) -> Result<(), String> {
         match scene.build(&origin) {
             Ok(world) => {
-                // What the user changed is one undo away: say so, as a key
-                // pressed by a click that missed a field replaces it.
+                // What the user changed is one undo away: say so.
                 let lang = crate::app::lang::language().code();
                 let left = self.open.unsaved.then(|| {
                     let name = self.open.scene.name_in(lang).unwrap_or(&self.open.origin);
@@ -217,23 +216,7 @@ impl Sandbox {
                 self.open.scene = scene;
                 self.open.origin = origin;
                 self.fit_camera();
-                match left {
-                    Some(previous) => {
-                        let undo = super::bindings::binding_of(&super::Command::Undo)
-                            .map(|b| b.keys())
-                            .unwrap_or_default();
-                        self.toast_for(
-                            tr!(
-                                "scene-opened-undo",
-                                name = name,
-                                previous = previous,
-                                undo = undo
-                            ),
-                            8.0,
-                        );
-                    }
-                    None => self.toast(tr!("scene-opened", name = name)),
-                }
+                self.say_opened(name, left);
                 Ok(())
             }
             Err(e) => {
