@@ -460,6 +460,29 @@ fn projector_ledger(lang: &str) {
         s["panel_widgets"]["section_show"].is_array(),
         "the controls are in it"
     );
+    // The buttons leave the sections most of the drawer: those after Redo
+    // are under "… more" (in German the ten took seven rows, and the first
+    // section began three quarters of the way down).
+    let first = rect(&s["panel_widgets"]["section_collisions"]);
+    assert!(
+        first[1] < 0.5 * window[1],
+        "{lang}: the sections begin at {first:?}"
+    );
+    app.click(widget(&s, "transport_more", 0.5));
+    let s = app.wait_for("the other buttons", 30, |s| {
+        s["panel_widgets"]["help"].is_array()
+    });
+    app.click(widget(&s, "help", 0.5));
+    app.wait_for("the help from the menu", 30, |s| {
+        s["ui"]["help_open"] == true
+    });
+    app.xdo(&["key", "Escape"]);
+    app.wait_for("the help put away", 30, |s| s["ui"]["help_open"] == false);
+    let s = app.state();
+    if s["ui"]["drawer_open"] == false {
+        app.click(widget(&s, "drawer_toggle", 0.5));
+        app.wait_for("the drawer again", 30, |s| s["ui"]["drawer_open"] == true);
+    }
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");

@@ -84,6 +84,12 @@ impl Marks {
             let Some(layer) = layers.get(name) else {
                 return true;
             };
+            // A menu opened over a dialog (the drawer's "… more") is in
+            // front of it: a layer in front that is no dialog is a popup.
+            let dialog = covers.iter().any(|(l, _)| l == layer);
+            if layer.order >= egui::Order::Foreground && !dialog {
+                return true;
+            }
             let centre = egui::pos2(r[0] + 0.5 * r[2], r[1] + 0.5 * r[3]) / ppp;
             // Under its own dialog, only the dialogs shown after it cover it.
             let above = covers

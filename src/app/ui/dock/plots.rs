@@ -241,12 +241,15 @@ pub fn still_plot(id: &str) -> Plot<'static> {
     // long numbers: a projector's 120-point plot of 9 s then numbered only
     // "0 s". Ours are short ("5 s"), and one too wide is still left out.
     let spaced = egui_plot::AxisHints::new_x().label_spacing(40.0..=55.0);
+    // And the value axis's numbers wherever they fit (see `value_steps`).
+    let values = egui_plot::AxisHints::new_y().label_spacing(14.0..=16.0);
     Plot::new(id)
         .custom_x_axes(vec![spaced])
+        .custom_y_axes(vec![values])
         .x_axis_formatter(axis)
         .y_axis_formatter(axis)
         .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
-        .y_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
+        .y_grid_spacer(egui_plot::uniform_grid_spacer(value_steps))
         // Never taller than the dock leaves it (egui_plot's least is 64
         // points, which grew a short dock over the world).
         .min_size(egui::vec2(40.0, 16.0))
@@ -273,6 +276,38 @@ fn steps_of_one_five_ten(input: egui_plot::GridInput) -> [f64; 3] {
     [unit, 5.0 * unit, 10.0 * unit]
 }
 
+/// The least room between two numbers of a value axis (points): egui_plot
+/// leaves out a number closer to the next than its own height (a line of
+/// body text, 20.4 points).
+const VALUE_LABEL_POINTS: f32 = 21.0;
+/// egui_plot's `base_step_size` is the value of this many points (its
+/// least grid spacing).
+const BASE_STEP_POINTS: f64 = 8.0;
+
+/// The value axis's steps: the largest is numbered, so it is the smallest
+/// of 1, 2, 2.5 or 5 × 10ᵏ at least [`VALUE_LABEL_POINTS`] apart that has a
+/// mark in the plot's range; the others are a fifth and a tenth of it. A
+/// short plot of a constant total (27 points of frame at a projector's
+/// size) had no number at all: egui_plot's steps up by ten left the L of
+/// the π blocks (750 ± 41) its marks of 50 16 points apart, too close for a
+/// number, and none of 100 in range; 250 has 750.
+fn value_steps(input: egui_plot::GridInput) -> [f64; 3] {
+    let base = input.base_step_size.abs().max(f64::MIN_POSITIVE);
+    let least = base * f64::from(VALUE_LABEL_POINTS) / BASE_STEP_POINTS;
+    let (lo, hi) = input.bounds;
+    let nice =
+        |k: i32| [1.0, 2.0, 2.5, 5.0][k.rem_euclid(4) as usize] * 10f64.powi(k.div_euclid(4));
+    // The first of the sequence at least `least`...
+    let first = (0..)
+        .map(|k| 4 * least.log10().floor() as i32 + k)
+        .find(|&k| nice(k) >= least * (1.0 - 1e-12))
+        .unwrap_or(0);
+    // ... or a larger one, where its marks miss the range.
+    let marked = |k: i32| (lo / nice(k)).ceil() * nice(k) <= hi;
+    let label = nice((first..first + 16).find(|&k| marked(k)).unwrap_or(first));
+    [label / 10.0, label / 5.0, label]
+}
+
 /// A y range that shows a conserved total as a flat line, not its rounding
 /// noise magnified: at least ±5 % of the values' size (or ±0.01) around them.
 pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -290,7 +325,8 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::{
-        bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, x_axis,
+        bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, value_steps,
+        x_axis,
     };
     use crate::app::ui::widgets::headless;
     use egui_plot::{Bar, GridInput};
@@ -327,6 +363,67 @@ mod tests {
             })
             .filter(|text| text.ends_with(" s"))
             .collect()
+    }
+
+    /// The value axis's numbers of a plot `height` points high showing a
+    /// constant total `v` (padded as the Totals tab pads it).
+    fn value_numbers(height: f32, v: f64) -> Vec<String> {
+        let (lo, hi) = padded_range([v, v].into_iter());
+        let out = headless(egui::vec2(230.0, height), |ui| {
+            let plot = from_start(still_plot("value"), 0.0).include_x(3.0);
+            x_axis(plot, height, String::new(), "s")
+                .include_y(lo)
+                .include_y(hi)
+                .height(height)
+                .show(ui, |plot| {
+                    plot.line(egui_plot::Line::new(vec![[0.0, v], [3.0, v]]));
+                });
+        });
+        out.shapes
+            .iter()
+            .filter_map(|clipped| match &clipped.shape {
+                egui::Shape::Text(text) => Some(text.galley.text().to_string()),
+                _ => None,
+            })
+            .filter(|text| !text.is_empty() && !text.ends_with(" s"))
+            .collect()
+    }
+
+    /// A projector's Totals plots have 27 points of frame (46 with the
+    /// time axis): the L plot of the π blocks (750 kg·m²/s) had no number
+    /// on its axis. Its marks of 50 were 18 points apart, too close for
+    /// egui_plot's 20, and the next, 100, had none in its range.
+    #[test]
+    fn a_short_plot_of_a_constant_total_numbers_its_axis() {
+        for height in [44.0, 46.0, 50.0, 60.0, 80.0] {
+            for v in [-12.3, -7.7, 105.0, 0.37, 20.0, -150.0, 750.0, 2.45e6] {
+                let numbers = value_numbers(height, v);
+                assert!(!numbers.is_empty(), "{height} points, {v}: no number");
+            }
+        }
+    }
+
+    #[test]
+    fn the_numbered_value_step_is_far_enough_apart_and_has_a_mark_in_range() {
+        let steps = |base_step_size| {
+            value_steps(GridInput {
+                bounds: (0.0, 10.0),
+                base_step_size,
+            })
+        };
+        // The base step is 8 points: 21 points are 2.625 of it. On 0 to 10
+        // every step has a mark (0).
+        assert_eq!(steps(8.0), [2.5, 5.0, 25.0]);
+        assert_eq!(steps(3.0), [1.0, 2.0, 10.0]);
+        assert_eq!(steps(1.0), [0.5, 1.0, 5.0]);
+        let tiny = steps(0.0);
+        assert!(tiny.iter().all(|s| s.is_finite() && *s > 0.0), "{tiny:?}");
+        // No mark of 100, 200 (or 2.5 of it) between 710 and 790: 250 has 750.
+        let around_750 = value_steps(GridInput {
+            bounds: (710.0, 790.0),
+            base_step_size: 24.0,
+        });
+        assert_eq!(around_750, [25.0, 50.0, 250.0]);
     }
 
     #[test]

@@ -146,9 +146,18 @@ const SECTIONS: [Section; 7] = [
     Section::More,
 ];
 
-/// Play or pause, step, reset, undo, redo, slower, faster, presets, fit,
-/// help.
+/// Play or pause, step, reset, undo, redo, then slower, faster, presets,
+/// fit and help: in the drawer these five under "… more", a menu (in German
+/// at a projector's size the ten buttons took seven rows, two thirds of the
+/// drawer, and left the sections two hundred pixels).
 fn transport(ui: &mut Ui, cx: &mut Cx) {
+    let rest = [
+        (Command::Slower, "slower"),
+        (Command::Faster, "faster"),
+        (Command::TogglePresets, "presets"),
+        (Command::Fit, "fit"),
+        (Command::ToggleHelp, "help"),
+    ];
     ui.horizontal_wrapped(|ui| {
         let play = if cx.model.clock.paused {
             format!("▶ {}", tr!("play"))
@@ -160,11 +169,20 @@ fn transport(ui: &mut Ui, cx: &mut Cx) {
         command_button(ui, cx, Command::Reset, Some("reset"));
         command_button(ui, cx, Command::Undo, Some("undo"));
         command_button(ui, cx, Command::Redo, Some("redo"));
-        command_button(ui, cx, Command::Slower, Some("slower"));
-        command_button(ui, cx, Command::Faster, Some("faster"));
-        command_button(ui, cx, Command::TogglePresets, Some("presets"));
-        command_button(ui, cx, Command::Fit, Some("fit"));
-        command_button(ui, cx, Command::ToggleHelp, Some("help"));
+        if !cx.drawer {
+            for (command, name) in rest {
+                command_button(ui, cx, command, Some(name));
+            }
+            return;
+        }
+        let menu = ui.menu_button(tr!("top-bar-more"), |ui| {
+            for (command, name) in rest {
+                if command_button(ui, cx, command, Some(name)).clicked() {
+                    ui.close_menu();
+                }
+            }
+        });
+        cx.note("transport_more", &menu.response);
     });
 }
 
