@@ -25,7 +25,7 @@ const SHORT_BAR_POINTS: f64 = 60.0;
 /// so a zoom does not change them.
 const BAR_ROOM: f32 = 230.0;
 const SHORT_BAR_ROOM: f32 = 160.0;
-const STACKED_BAR_ROOM: f32 = 100.0;
+const STACKED_BAR_ROOM: f32 = 84.0;
 
 /// The strip: the lines its caption wants, and whether the scale bar is
 /// short to give the caption room.
@@ -70,6 +70,16 @@ fn caption_lines(ui: &egui::Ui, caption: &str, width: f32) -> (u8, bool) {
     (rows.clamp(2, most) as u8, true)
 }
 
+/// What the scale bar may take beside a caption of `lines` lines, short or
+/// not (points).
+fn bar_room(lines: u8, short_bar: bool) -> f32 {
+    match (lines, short_bar) {
+        (1, false) => BAR_ROOM,
+        (1, true) => SHORT_BAR_ROOM,
+        _ => STACKED_BAR_ROOM,
+    }
+}
+
 impl View for Strip {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
@@ -96,6 +106,11 @@ impl View for Strip {
         } else {
             BAR_POINTS
         };
+        // The text's width is fixed by what the bar may take at most, not
+        // what it takes: a zoom changes the bar's length ("1 m", "10 m")
+        // and moved words from line to line.
+        let room = bar_room(self.lines, self.short_bar);
+        let text_width = (ui.available_width() - room).max(1.0);
         let metres = nice_length(longest * ppp / camera.scale);
         let bar = (metres * camera.scale / ppp) as f32;
         ui.horizontal_centered(|ui| {
@@ -144,7 +159,8 @@ impl View for Strip {
             // A message (the J's long report among them) may use the
             // second row a long caption gave the strip.
             let most = usize::from(self.lines);
-            let galley = caption_galley(ui, text.into(), ui.available_width(), most);
+            let width = text_width.min(ui.available_width());
+            let galley = caption_galley(ui, text.into(), width, most);
             let r = super::widgets::cut_label(ui, egui::Label::new(galley), None);
             cx.note(name, &r);
         });
@@ -237,11 +253,7 @@ mod tests {
                     egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
                         let width = ui.available_width();
                         let (lines, short) = caption_lines(ui, caption, width);
-                        let room = match (lines, short) {
-                            (1, false) => BAR_ROOM,
-                            (1, true) => SHORT_BAR_ROOM,
-                            _ => STACKED_BAR_ROOM,
-                        };
+                        let room = bar_room(lines, short);
                         let text = egui::WidgetText::from(caption);
                         let galley = caption_galley(ui, text, width - room, lines.into());
                         out.push((lang.code(), preset.path, lines, !galley.elided));
