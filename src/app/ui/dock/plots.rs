@@ -298,10 +298,10 @@ fn value_steps(input: egui_plot::GridInput) -> [f64; 3] {
     let nice =
         |k: i32| [1.0, 2.0, 2.5, 5.0][k.rem_euclid(4) as usize] * 10f64.powi(k.div_euclid(4));
     // The first of the sequence at least `least`...
-    let first = (0..)
-        .map(|k| 4 * least.log10().floor() as i32 + k)
+    let start = 4 * least.log10().floor().clamp(-300.0, 300.0) as i32;
+    let first = (start..start + 8)
         .find(|&k| nice(k) >= least * (1.0 - 1e-12))
-        .unwrap_or(0);
+        .unwrap_or(start);
     // ... or a larger one, where its marks miss the range.
     let marked = |k: i32| (lo / nice(k)).ceil() * nice(k) <= hi;
     let label = nice((first..first + 16).find(|&k| marked(k)).unwrap_or(first));
