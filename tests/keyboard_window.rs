@@ -201,25 +201,27 @@ fn while_a_control_has_the_keys_the_world_rests_and_esc_gives_them_back() {
 fn every_tab_stop_is_a_control_never_a_frame_round_others() {
     let x = Xvfb::start("stops");
     let projector = &["--paused", "--size", "1024x768", "--ui-scale", "2"][..];
-    for (args, click) in [
-        (&["--paused"][..], None),
-        (projector, None),
-        // The controls in their drawer, scrolled as Tab goes.
-        (projector, Some("drawer_toggle")),
+    for (args, clicks) in [
+        (&["--paused"][..], &[][..]),
+        (projector, &[]),
+        // The controls in their drawer, scrolled as Tab goes; none of the
+        // Collisions tab's under the drawer, whose ring could not be seen.
+        (projector, &["tab_collisions", "drawer_toggle"]),
         // The glancing hit with the Discs tab's table of fields open.
-        (&["--paused"][..], Some("tab_discs")),
+        (&["--paused"][..], &["tab_discs"]),
     ] {
         let app = Sandbox::start(&x, args);
         app.move_to([5.0, 400.0]);
-        let discs_tab = click == Some("tab_discs");
+        let discs_tab = clicks.contains(&"tab_discs");
         if discs_tab {
             app.xdo(&["key", "4"]);
         }
-        if let Some(name) = click {
+        for &name in clicks {
             let s = app.wait_frames(5);
             app.click(widget(&s, name, 0.5));
             app.move_to([5.0, 400.0]);
         }
+        let click = clicks.last();
         app.wait_frames(3);
         let mut seen: Vec<(Option<String>, Vec<i64>)> = Vec::new();
         for _ in 0..120 {
@@ -264,6 +266,14 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
                 inside.is_empty(),
                 "{name:?} at {r:?} holds {inside:?} ({args:?})"
             );
+            // Not under the drawer: the dump leaves out what a dialog
+            // covers, so a control named there is in sight.
+            if let (Some(n), true) = (&name, s["layout"]["drawer"].is_array()) {
+                assert!(
+                    widgets.contains_key(n),
+                    "{n} at {r:?} has the keys under the drawer"
+                );
+            }
             let key = (name, r.iter().map(|v| v.round() as i64).collect());
             if seen.first() == Some(&key) {
                 break;

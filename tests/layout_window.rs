@@ -460,6 +460,19 @@ fn projector_ledger(lang: &str) {
         s["panel_widgets"]["section_show"].is_array(),
         "the controls are in it"
     );
+    // J's report stops short of the drawer, which hid its end.
+    app.xdo(&["key", "j"]);
+    let s = app.wait_for("J's report beside the drawer", 30, |s| {
+        s["panel_widgets"]["message"].is_array()
+    });
+    let (said, drawer) = (
+        rect(&s["panel_widgets"]["message"]),
+        rect(&s["layout"]["drawer"]),
+    );
+    assert!(
+        said[0] + said[2] <= drawer[0] + 0.5,
+        "{lang}: the report {said:?} runs under the drawer {drawer:?}"
+    );
     // The buttons leave the sections most of the drawer: those after Redo
     // are under "… more" (in German the ten took seven rows, and the first
     // section began three quarters of the way down).
@@ -468,6 +481,16 @@ fn projector_ledger(lang: &str) {
         first[1] < 0.5 * window[1],
         "{lang}: the sections begin at {first:?}"
     );
+    // Esc closes the menu, not the drawer under it (it closed both).
+    app.click(widget(&s, "transport_more", 0.5));
+    app.wait_for("the other buttons", 30, |s| {
+        s["panel_widgets"]["help"].is_array()
+    });
+    app.xdo(&["key", "Escape"]);
+    let s = app.wait_for("the menu closed", 30, |s| {
+        !s["panel_widgets"]["help"].is_array()
+    });
+    assert_eq!(s["ui"]["drawer_open"], true, "{lang}: Esc on the menu");
     app.click(widget(&s, "transport_more", 0.5));
     let s = app.wait_for("the other buttons", 30, |s| {
         s["panel_widgets"]["help"].is_array()

@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 /// The window's default step (s), for scenes that set none.
 const WINDOW_DT: f64 = impulse::scene::DEFAULT_DT;
 
-/// Longest on-screen description, so that it fits one line on a projector.
+/// Longest description (English): two lines of the strip under the world
+/// hold it whole from 1024×768 up.
 const MAX_DESCRIPTION_CHARS: usize = 140;
 
 fn scenes_dir() -> PathBuf {

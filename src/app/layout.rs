@@ -9,7 +9,7 @@
 //! +------------------------- top bar (1 row) --------------------------+
 //! | world (the rest)                                  | side dock      |
 //! |                                                   | (docked, or a  |
-//! +---------- caption strip (1 row, or 2-3 lines) -----+  drawer that   |
+//! +----------- caption strip (1 row, or 2 lines) ------+  drawer that   |
 //! | tab content (what is granted; 0 if closed/folded) |  floats over   |
 //! +---------------- tab row (1 row) ------------------+  the world)    |
 //! +-------------------------------------------------------------------+
@@ -45,7 +45,7 @@
 //!
 //! What stays fixed: the top bar and tab row are one row each
 //! ([`row_px`]), a function of the scale alone; the caption strip is one
-//! row, or taller by a line or two while the scene's caption needs them
+//! row, or taller by a line while the scene's caption needs it
 //! ([`caption_px`] of [`Docks::caption_lines`], which changes with the scene
 //! or the window's width, not from frame to frame). Opening or closing a
 //! tab, or the drawer, never moves the world's top, left or width, nor the

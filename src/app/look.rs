@@ -183,6 +183,26 @@ pub fn apply(ctx: &egui::Context, pixels_per_point: f32, theme: Theme) {
     }
 }
 
+/// The widest a tooltip's text runs (points): egui's own 500, where the
+/// window has the room.
+const TOOLTIP_POINTS: f32 = 500.0;
+/// What a tooltip leaves of the window each side, its frame included
+/// (points).
+const TOOLTIP_MARGIN_POINTS: f32 = 16.0;
+
+/// Tooltips as wide as the window leaves, at most [`TOOLTIP_POINTS`]: a
+/// window 512 points wide (1024 px at size 2) clipped egui's 500 points of
+/// text plus its frame at the right edge. Once a frame: the window's width
+/// changes with no new style.
+pub fn fit_tooltips(ctx: &egui::Context) {
+    let frame = ctx.style().spacing.menu_margin.sum().x;
+    let room = ctx.screen_rect().width() - frame - 2.0 * TOOLTIP_MARGIN_POINTS;
+    let width = room.clamp(100.0, TOOLTIP_POINTS);
+    if (ctx.style().spacing.tooltip_width - width).abs() > 0.5 {
+        ctx.style_mut(|s| s.spacing.tooltip_width = width);
+    }
+}
+
 /// egui's 40 points a line, times egui-macroquad's divisor of 90.
 const X11_LINE_SCROLL_POINTS: f32 = 40.0 * 90.0;
 
@@ -202,6 +222,7 @@ mod tests {
     use super::*;
     use crate::app::model::next_scale;
     use crate::app::model::panels::UI_SCALES;
+    use crate::app::ui::tip::Tip;
 
     #[test]
     fn f2_cycles_the_three_scales() {
@@ -234,6 +255,51 @@ mod tests {
                     "{scale} {theme:?}"
                 );
             }
+        }
+    }
+
+    /// The third review's case: at 1024×768 at size 2 (512 points) a long
+    /// caption's tooltip was 1,026 px wide, its right edge clipped. A
+    /// tooltip shown at the window's right edge lies wholly inside it, from
+    /// a narrow window to a wide one.
+    #[test]
+    fn a_long_tooltip_lies_inside_the_window() {
+        let long = "a long caption that runs on ".repeat(12);
+        for width in [300.0, 512.0, 1280.0] {
+            let ctx = egui::Context::default();
+            apply(&ctx, 2.0, Theme::Dark);
+            let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(width, 400.0));
+            let mut tip = egui::Rect::NOTHING;
+            // The window is made narrower after a first tooltip.
+            for (k, w) in [1920.0, 1920.0, width, width].into_iter().enumerate() {
+                let input = egui::RawInput {
+                    time: Some(k as f64 * 0.1),
+                    screen_rect: Some(egui::Rect::from_min_size(
+                        egui::Pos2::ZERO,
+                        egui::vec2(w, 400.0),
+                    )),
+                    ..Default::default()
+                };
+                let _ = ctx.run(input, |ctx| {
+                    fit_tooltips(ctx);
+                    egui::CentralPanel::default().show(ctx, |ui| {
+                        ui.with_layout(egui::Layout::right_to_left(egui::Align::Max), |ui| {
+                            ui.label("caption").tip_now(long.as_str());
+                        });
+                    });
+                });
+                tip = ctx.memory(|m| {
+                    m.layer_ids()
+                        .filter(|l| l.order == egui::Order::Tooltip)
+                        .filter_map(|l| m.area_rect(l.id))
+                        .fold(egui::Rect::NOTHING, |a, b| a.union(b))
+                });
+            }
+            assert!(tip.width() > 50.0, "{width}: no tooltip {tip:?}");
+            assert!(
+                screen.contains_rect(tip),
+                "{width}: the tooltip {tip:?} leaves the window {screen:?}"
+            );
         }
     }
 

@@ -102,10 +102,7 @@ next-collision-wall = Scheibe { $disc } traf die { $wall ->
  } Wand bei t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; ihre kinetische Energie änderte sich um { $energy }
 next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
 next-collision-none = Kein Stoß innerhalb von { $limit }
-next-collision-more = { $others ->
-    [one] Im selben Augenblick 1 weiterer Stoß: Der Reiter Stöße führt ihn auf
-   *[other] Im selben Augenblick { $others } weitere Stöße: Der Reiter Stöße führt sie auf
-}
+next-collision-at-once = { $impacts } Stöße im selben Augenblick, alle im Reiter Stöße aufgeführt. { $first }
 rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort
 rewound-newest = Beim neuesten aufgezeichneten Augenblick, t = { $time } s; die Leertaste läuft von hier aus weiter
 nothing-recorded = Noch nichts aufgezeichnet

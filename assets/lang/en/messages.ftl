@@ -102,10 +102,7 @@ next-collision-wall = Disc { $disc } hit the { $wall ->
 } wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
 next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
 next-collision-none = No collision within { $limit }
-next-collision-more = { $others ->
-    [one] At the same moment, 1 more impact: the Collisions tab lists it
-   *[other] At the same moment, { $others } more impacts: the Collisions tab lists them
-}
+next-collision-at-once = { $impacts } impacts at the same moment, all listed in the Collisions tab. { $first }
 rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
 rewound-newest = At the newest recorded moment, t = { $time } s; Space runs on from here
 nothing-recorded = Nothing recorded yet

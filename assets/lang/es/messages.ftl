@@ -102,10 +102,7 @@ next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
 } en t = { $time }: la pared lo empujó con { $impulse }; su energía cinética cambió en { $energy }
 next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
 next-collision-none = Ningún choque en { $limit }
-next-collision-more = { $others ->
-    [one] En el mismo instante, 1 impacto más: la pestaña Choques lo muestra
-   *[other] En el mismo instante, { $others } impactos más: la pestaña Choques los muestra
-}
+next-collision-at-once = { $impacts } impactos en el mismo instante, todos en la pestaña Choques. { $first }
 rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí
 rewound-newest = En el momento grabado más reciente, t = { $time } s; Espacio sigue desde aquí
 nothing-recorded = Aún no hay nada grabado

@@ -102,10 +102,7 @@ next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
 } à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
 next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
 next-collision-none = Aucune collision en { $limit }
-next-collision-more = { $others ->
-    [one] Au même instant, 1 autre choc : l’onglet Collisions l’indique
-   *[other] Au même instant, { $others } autres chocs : l’onglet Collisions les indique
-}
+next-collision-at-once = { $impacts } chocs au même instant, tous indiqués dans l’onglet Collisions. { $first }
 rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
 rewound-newest = Au dernier instant enregistré, t = { $time } s ; Espace reprend à partir d'ici
 nothing-recorded = Rien d'enregistré pour l'instant

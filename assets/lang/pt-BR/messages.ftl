@@ -102,10 +102,7 @@ next-collision-wall = O disco { $disc } bateu na parede { $wall ->
     } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
 next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
 next-collision-none = Nenhuma colisão em { $limit }
-next-collision-more = { $others ->
-    [one] No mesmo instante, mais 1 impacto: a aba Colisões o mostra
-   *[other] No mesmo instante, mais { $others } impactos: a aba Colisões os mostra
-}
+next-collision-at-once = { $impacts } impactos no mesmo instante, todos listados na aba Colisões. { $first }
 rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
 rewound-newest = No momento gravado mais recente, t = { $time } s; Espaço continua daqui
 nothing-recorded = Nada gravado ainda

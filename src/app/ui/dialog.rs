@@ -12,7 +12,7 @@
 //! and a scroll area notes its own parts in the frame's list of Tab stops,
 //! for [`pass_over_containers`] to move the keyboard on from them.
 
-use super::{Cx, Marks};
+use super::{marks::Stop, Cx, Marks};
 use crate::app::ui::tip::Tip;
 
 /// Where a box goes.
@@ -340,7 +340,8 @@ fn focus_is_new(ctx: &egui::Context) -> bool {
 }
 
 /// Where Tab brought the keyboard to a container's part (noted with
-/// [`Marks::pass_over`]), moves it on to the next control the frame noted,
+/// [`Marks::pass_over`]) or to a control a dialog covers
+/// ([`Marks::covered`]), moves it on to the next control the frame noted,
 /// or back to the one before where the last Tab was Shift+Tab (`back`;
 /// egui may hand the keyboard over a frame after the key). Returns what
 /// has the keyboard now. (Past the last control egui itself goes round to
@@ -348,14 +349,21 @@ fn focus_is_new(ctx: &egui::Context) -> bool {
 pub fn pass_over_containers(ctx: &egui::Context, marks: &Marks, back: bool) -> Option<egui::Id> {
     let focused = ctx.memory(|m| m.focused())?;
     let stops = &marks.stops;
-    let Some(at) = stops.iter().position(|s| s.id == focused && s.pass) else {
+    // A container's part, or a control under a dialog (the drawer).
+    let passed = |s: &Stop| {
+        s.pass
+            || ctx
+                .read_response(s.id)
+                .is_some_and(|r| marks.covered(s.layer, r.rect.center()))
+    };
+    let Some(at) = stops.iter().position(|s| s.id == focused && passed(s)) else {
         return Some(focused);
     };
     let n = stops.len();
     let next = (1..n)
         .map(|k| if back { (at + n - k) % n } else { (at + k) % n })
         .map(|k| stops[k])
-        .find(|s| !s.pass && ctx.memory(|m| m.allows_interaction(s.layer)));
+        .find(|s| !passed(s) && ctx.memory(|m| m.allows_interaction(s.layer)));
     ctx.memory_mut(|m| match next {
         Some(stop) => m.request_focus(stop.id),
         None => m.surrender_focus(focused),

@@ -12,6 +12,9 @@ pub struct Marks {
     pub widgets: BTreeMap<String, [f32; 4]>,
     /// A text field has the keyboard.
     pub text_focus: bool,
+    /// A menu is open: its keys are its own (Esc closes it, and nothing
+    /// under it).
+    pub menu_open: bool,
     /// A text field was left with Enter.
     pub left_with_enter: bool,
     /// The named widget that has the keyboard, if one does.
@@ -79,27 +82,38 @@ impl Marks {
     /// lists what a person can see. (egui's own test of what is on top also
     /// counts a dialog closed this frame, for one frame more.)
     pub fn leave_out_covered(&mut self) {
-        let (covers, layers, ppp) = (&self.covers, &self.layers, self.ppp);
-        self.widgets.retain(|name, r| {
-            let Some(layer) = layers.get(name) else {
-                return true;
-            };
-            // A menu opened over a dialog (the drawer's "… more") is in
-            // front of it: a layer in front that is no dialog is a popup.
-            let dialog = covers.iter().any(|(l, _)| l == layer);
-            if layer.order >= egui::Order::Foreground && !dialog {
-                return true;
-            }
-            let centre = egui::pos2(r[0] + 0.5 * r[2], r[1] + 0.5 * r[3]) / ppp;
-            // Under its own dialog, only the dialogs shown after it cover it.
-            let above = covers
-                .iter()
-                .position(|(l, _)| l == layer)
-                .map_or(0, |k| k + 1);
-            !covers[above..]
-                .iter()
-                .any(|(l, rect)| l != layer && rect.contains(centre))
-        });
+        let widgets = std::mem::take(&mut self.widgets);
+        self.widgets = widgets
+            .into_iter()
+            .filter(|(name, r)| {
+                let Some(&layer) = self.layers.get(name) else {
+                    return true;
+                };
+                let centre = egui::pos2(r[0] + 0.5 * r[2], r[1] + 0.5 * r[3]) / self.ppp;
+                !self.covered(layer, centre)
+            })
+            .collect();
+    }
+
+    /// Whether a dialog shown this frame over `layer` covers `point`
+    /// (points): the drawer over the Collisions tab's controls. Tab passes
+    /// over such a control, whose focus ring could not be seen.
+    pub fn covered(&self, layer: egui::LayerId, point: egui::Pos2) -> bool {
+        let covers = &self.covers;
+        // A menu opened over a dialog (the drawer's "… more") is in
+        // front of it: a layer in front that is no dialog is a popup.
+        let dialog = covers.iter().any(|(l, _)| *l == layer);
+        if layer.order >= egui::Order::Foreground && !dialog {
+            return false;
+        }
+        // Under its own dialog, only the dialogs shown after it cover it.
+        let above = covers
+            .iter()
+            .position(|(l, _)| *l == layer)
+            .map_or(0, |k| k + 1);
+        covers[above..]
+            .iter()
+            .any(|(l, rect)| *l != layer && rect.contains(point))
     }
 
     /// Records a widget's rectangle (egui points) under `name`, in pixels.

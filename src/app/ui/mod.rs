@@ -30,7 +30,7 @@ mod popups;
 mod side;
 mod start;
 mod strip;
-mod tip;
+pub(crate) mod tip;
 mod top_bar;
 mod typing;
 pub mod widgets;
@@ -55,6 +55,9 @@ pub struct Cx<'a> {
     pub marks: &'a mut Marks,
     /// The side dock is a drawer: the top bar carries its button.
     pub drawer: bool,
+    /// Where the drawer is while it is open (points): the strip's text
+    /// stops short of it.
+    pub open_drawer: Option<egui::Rect>,
     /// The keys act on the panels (a control has the keyboard), not on the
     /// world: the strip says how to give them back.
     pub keys_in_panels: bool,
@@ -95,6 +98,8 @@ pub struct Layout {
     pub panels: Vec<[f32; 4]>,
     /// The side dock: "docked", "drawer" or "hidden".
     pub side: String,
+    /// The drawer's rectangle, while it is open over the world.
+    pub drawer: Option<[f32; 4]>,
     /// The open tab had no room and folded to the tab row.
     pub tab_folded: bool,
     /// The smallest font size drawn, in physical pixels.
@@ -192,6 +197,7 @@ impl Panels {
             look::apply(ctx, wanted_ppp, p.theme);
             self.applied = Some((p.scale, p.theme));
         }
+        look::fit_tooltips(ctx);
         let ppp = px_per_point(ctx);
         typing::drop_characters_typed_with_ctrl(ctx);
         let saving = typing::enter_before_saving(ctx);
@@ -224,6 +230,7 @@ impl Panels {
             out,
             marks: &mut self.marks,
             drawer: matches!(rects.side_dock, SideDock::Drawer { .. }),
+            open_drawer: rects.drawer.map(points),
             keys_in_panels: self.typing || self.panel_keyboard,
         };
         let mut panels = Vec::new();
@@ -340,8 +347,9 @@ impl Panels {
             .and_then(|id| ctx.read_response(id))
             .map(|r| to_px(r.rect, ppp));
         // egui lets go of a control at the start of the frame whose key
-        // (Esc, Tab, Enter) left it: that key belongs to the control.
-        let has_focus = focused.is_some() || self.marks.text_focus;
+        // (Esc, Tab, Enter) left it: that key belongs to the control. So
+        // does the Esc that closed a menu.
+        let has_focus = focused.is_some() || self.marks.text_focus || self.marks.menu_open;
         self.typing = has_focus || self.trail.had_focus;
         self.trail.had_focus = has_focus;
         self.layout = Layout {
@@ -354,6 +362,7 @@ impl Panels {
                 SideDock::Hidden => "hidden",
             }
             .to_string(),
+            drawer: rects.drawer.map(|r| r.as_array()),
             tab_folded: rects.tab_folded,
             min_text_px: look::min_text_points(ctx) * ppp,
             ui_scale: p.scale,

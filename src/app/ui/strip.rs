@@ -1,12 +1,14 @@
 //! The strip under the world: a scale bar of a round number of metres on
 //! the left, then what the scene shows (its caption), or, for a few
 //! seconds, the latest message (opened, saved, an error). It is one row
-//! high, or holds two lines while the scene's caption needs them
-//! (a caption's answer comes at its end: "…the light one flies off at 20/11
-//! of it"); the scale bar is shorter where the caption needs the room, its
-//! length under it beside more than one line. The lines
-//! follow the caption and the window's width alone, so a message or a zoom
-//! never moves the world. What they cannot hold is cut, whole on hover.
+//! high, or holds two lines while the scene's caption needs them; the
+//! scale bar is shorter where the caption needs the room, its length under
+//! it beside more than one line. The lines follow the caption and the
+//! window's width alone, so a message or a zoom never moves the world.
+//! What they cannot hold is cut, whole on hover: so every caption says its
+//! answer first ("The heavy disc keeps 9/11 of its speed…"), then the
+//! set-up, and a projector's narrow strip cuts the set-up. The text stops
+//! short of the drawer open over the strip's end.
 
 use super::{Cx, View};
 use crate::app::lang::tr;
@@ -32,6 +34,9 @@ const STACKED_BAR_ROOM: f32 = 84.0;
 pub struct Strip {
     lines: u8,
     short_bar: bool,
+    /// The caption and the width (points) `lines` and `short_bar` were
+    /// measured for: they are measured again only when these change.
+    measured: Option<(String, f32)>,
 }
 
 impl Default for Strip {
@@ -39,6 +44,7 @@ impl Default for Strip {
         Strip {
             lines: 1,
             short_bar: false,
+            measured: None,
         }
     }
 }
@@ -93,9 +99,14 @@ impl View for Strip {
                 d
             }
         });
-        let (lines, short_bar) = caption
-            .as_deref()
-            .map_or((1, false), |c| caption_lines(ui, c, ui.available_width()));
+        let width = ui.available_width();
+        let measuring = (caption.clone().unwrap_or_default(), width);
+        let (lines, short_bar) = match (&self.measured, caption.as_deref()) {
+            (Some(was), _) if *was == measuring => (self.lines, self.short_bar),
+            (_, Some(c)) => caption_lines(ui, c, width),
+            (_, None) => (1, false),
+        };
+        self.measured = Some(measuring);
         if (lines, short_bar) != (self.lines, self.short_bar) {
             (self.lines, self.short_bar) = (lines, short_bar);
             ui.ctx()
@@ -159,7 +170,16 @@ impl View for Strip {
             // A message (the J's long report among them) may use the
             // second row a long caption gave the strip.
             let most = usize::from(self.lines);
-            let width = text_width.min(ui.available_width());
+            let mut width = text_width.min(ui.available_width());
+            // The drawer open over the strip's right end hides what runs
+            // under it: the text stops short of it, cut there (whole on
+            // hover), in the same lines.
+            let strip = ui.max_rect();
+            let over = cx.open_drawer.filter(|d| d.intersects(strip));
+            if let Some(drawer) = over {
+                let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
+                width = width.min(left.max(1.0));
+            }
             let galley = caption_galley(ui, text.into(), width, most);
             let r = super::widgets::cut_label(ui, egui::Label::new(galley), None);
             cx.note(name, &r);
@@ -220,10 +240,22 @@ mod tests {
     use crate::app::lang::Lang;
     use crate::app::layout::{layout, Docks};
 
-    /// Every preset's caption in every language, in the strip of a window
-    /// of `size` at scale 1 with the side dock docked, as the window lays
-    /// it out: (language, preset, lines given, whole).
-    fn captions_at(size: (f32, f32)) -> Vec<(&'static str, &'static str, u8, bool)> {
+    /// A caption in the strip of a window of `size` (px) at `scale`, with
+    /// the side dock docked where it fits, as the window lays it out.
+    struct Laid {
+        lang: &'static str,
+        scene: &'static str,
+        caption: String,
+        lines: u8,
+        whole: bool,
+        /// The text on screen, without the "…" of a cut.
+        shown: String,
+    }
+
+    /// Every preset's caption (and the default scene's and the π blocks'
+    /// other counts', opened from the lesson) in every language, laid out in
+    /// the strip.
+    fn captions_at(size: (f32, f32), scale: f32) -> Vec<Laid> {
         let docks = Docks {
             shown: true,
             side: true,
@@ -232,12 +264,18 @@ mod tests {
             tab_height: None,
             caption_lines: MAX_CAPTION_LINES,
         };
-        let strip = layout(size, 1.0, docks).caption;
+        let strip = layout(size, scale, docks).caption;
         let ctx = egui::Context::default();
-        crate::app::look::apply(&ctx, 1.0, crate::app::model::panels::Theme::Dark);
+        crate::app::look::apply(&ctx, scale, crate::app::model::panels::Theme::Dark);
+        use impulse::catalogue::{DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000};
+        let others = [DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000];
+        let scenes = crate::app::model::scenes::PRESETS
+            .iter()
+            .map(|p| (p.path, p.text))
+            .chain(others.iter().map(|f| (f.path, f.text)));
         let mut out = Vec::new();
-        for preset in crate::app::model::scenes::PRESETS {
-            let scene = impulse::Scene::parse(preset.text, preset.path).unwrap();
+        for (path, text) in scenes {
+            let scene = impulse::Scene::parse(text, path).unwrap();
             for lang in Lang::SHIPPED {
                 let Some(caption) = scene.description_in(lang.code()) else {
                     continue;
@@ -245,7 +283,7 @@ mod tests {
                 let input = egui::RawInput {
                     screen_rect: Some(egui::Rect::from_min_size(
                         egui::Pos2::ZERO,
-                        egui::vec2(strip.w, 600.0),
+                        egui::vec2(strip.w, 600.0) / scale,
                     )),
                     ..Default::default()
                 };
@@ -256,12 +294,61 @@ mod tests {
                         let room = bar_room(lines, short);
                         let text = egui::WidgetText::from(caption);
                         let galley = caption_galley(ui, text, width - room, lines.into());
-                        out.push((lang.code(), preset.path, lines, !galley.elided));
+                        let shown: String = galley
+                            .rows
+                            .iter()
+                            .flat_map(|row| row.glyphs.iter().map(|g| g.chr))
+                            .collect();
+                        let shown = match galley.elided {
+                            true => shown.trim_end_matches('…').to_owned(),
+                            false => shown,
+                        };
+                        out.push(Laid {
+                            lang: lang.code(),
+                            scene: path,
+                            caption: caption.to_owned(),
+                            lines,
+                            whole: !galley.elided,
+                            shown,
+                        });
                     });
                 });
             }
         }
         out
+    }
+
+    /// A caption's answer: its first sentence, up to the first full stop
+    /// (or "…") that a capital or a digit follows, or all of it.
+    fn answer(caption: &str) -> &str {
+        let ends = caption
+            .char_indices()
+            .filter(|&(_, c)| c == '.' || c == '…');
+        for (at, stop) in ends {
+            let rest = &caption[at + stop.len_utf8()..];
+            let mut next = rest.chars();
+            if next.next() == Some(' ')
+                && next
+                    .next()
+                    .is_some_and(|c| c.is_uppercase() || c.is_ascii_digit())
+            {
+                return &caption[..at + stop.len_utf8()];
+            }
+        }
+        caption
+    }
+
+    #[test]
+    fn a_captions_answer_is_its_first_sentence() {
+        assert_eq!(
+            answer("Count every hit: 31, as in π = 3.1… A disc 100× heavier."),
+            "Count every hit: 31, as in π = 3.1…"
+        );
+        assert_eq!(
+            answer("Restitution 0.5. Then 150 discs."),
+            "Restitution 0.5."
+        );
+        assert_eq!(answer("One sentence, 0.5 m. "), "One sentence, 0.5 m. ");
     }
 
     /// The review's case: at 1280×800 "Heavy hits light" was cut before
@@ -272,22 +359,48 @@ mod tests {
     #[test]
     fn captions_are_whole_in_the_strip_from_a_laptop_up() {
         for size in [(1024.0, 768.0), (1280.0, 800.0), (1920.0, 1080.0)] {
-            let all = captions_at(size);
+            let all = captions_at(size, 1.0);
             assert!(all.len() > 40, "{} captions", all.len());
-            for (lang, preset, lines, whole) in all {
+            for c in all {
+                let (lang, scene) = (c.lang, c.scene);
                 assert!(
-                    (1..=2).contains(&lines),
-                    "{size:?} {lang} {preset}: {lines}"
+                    (1..=2).contains(&c.lines),
+                    "{size:?} {lang} {scene}: {}",
+                    c.lines
                 );
                 if lang == "en" || size.0 >= 1280.0 {
-                    assert!(whole, "{size:?} {lang} {preset}: cut");
+                    assert!(c.whole, "{size:?} {lang} {scene}: cut at {:?}", c.shown);
                 }
             }
         }
-        let heavy = captions_at((1280.0, 800.0))
+        let heavy = captions_at((1280.0, 800.0), 1.0)
             .into_iter()
-            .find(|c| c.0 == "en" && c.1.contains("heavy-hits-light"));
-        assert_eq!(heavy.map(|c| (c.2, c.3)), Some((2, true)));
+            .find(|c| c.lang == "en" && c.scene.contains("heavy-hits-light"));
+        assert_eq!(heavy.map(|c| (c.lines, c.whole)), Some((2, true)));
+    }
+
+    /// The third review's case: at 1024×768 at size 2 (a projector) most
+    /// captions were cut before their answer, which came at the end; the
+    /// German π blocks never showed "31". Every caption now says its
+    /// answer first, and that is whole on screen there, in every language.
+    #[test]
+    fn a_captions_answer_is_in_sight_on_a_projector() {
+        let all = captions_at((1024.0, 768.0), 2.0);
+        assert!(all.len() > 40, "{} captions", all.len());
+        let squeezed = |t: &str| t.split_whitespace().collect::<String>();
+        let cut: Vec<String> = all
+            .iter()
+            .filter(|c| !squeezed(&c.shown).starts_with(&squeezed(answer(&c.caption))))
+            .map(|c| format!("{} {}: {:?}", c.lang, c.scene, c.shown))
+            .collect();
+        assert!(cut.is_empty(), "answers cut:\n{}", cut.join("\n"));
+        let pi = all
+            .iter()
+            .find(|c| c.lang == "de" && c.scene.ends_with("preset-7-pi-blocks.toml"));
+        assert!(
+            pi.is_some_and(|c| c.shown.contains("31")),
+            "the German π blocks"
+        );
     }
 
     #[test]

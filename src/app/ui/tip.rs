@@ -40,18 +40,28 @@ impl Tip for Response {
             return self.on_hover_text(text);
         }
         if held_for_the_delay(&self) {
-            stand_in(&self).show_tooltip_text(text);
+            show_text(&stand_in(&self), text);
         }
         self
     }
 
     fn tip_now(&self, text: impl Into<WidgetText>) {
         if finger(&self.ctx) {
-            stand_in(self).show_tooltip_text(text);
+            show_text(&stand_in(self), text);
         } else {
-            self.show_tooltip_text(text);
+            show_text(self, text);
         }
     }
+}
+
+/// `text` in a tooltip now, as wide as the style's tooltip width at most
+/// (as egui's `on_hover_text` makes it; its `show_tooltip_text` keeps the
+/// width the tooltip first had, wider than a window made narrower since).
+fn show_text(r: &Response, text: impl Into<WidgetText>) {
+    r.show_tooltip_ui(|ui| {
+        ui.set_max_width(ui.spacing().tooltip_width);
+        ui.label(text);
+    });
 }
 
 /// Whether the finger down on `r` has been held there for the tooltip's

@@ -315,6 +315,8 @@ impl TopBar {
                         optional,
                         more,
                         spacing,
+                        more_width,
+                        fixed,
                     };
                     items(ui, cx, words);
                 },
@@ -327,12 +329,16 @@ impl TopBar {
 }
 
 /// What the line says: the essential items, the others while they fit,
-/// "… more" for the rest, and the room between items (points).
+/// "… more" for the rest, and the room between items (points); with the
+/// widths [`TopBar::line`] measured: "… more" and the room after it, and
+/// the time and the state with theirs.
 struct Words {
     essential: [Item; 3],
     optional: Vec<Item>,
     more: RichText,
     spacing: f32,
+    more_width: f32,
+    fixed: f32,
 }
 
 /// `text` in one line of body text.
@@ -354,9 +360,9 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
         optional,
         more,
         spacing,
+        more_width,
+        fixed,
     } = words;
-    let more_width = galley(ui, &more).size().x + spacing;
-    let fixed = galley(ui, &time.text).size().x + galley(ui, &state.text).size().x + 2.0 * spacing;
     // What the name and the other items may take, "… more" kept room for.
     let free = ui.available_width() - more_width - fixed;
     let full_name = galley(ui, &name.text).size().x;

@@ -355,14 +355,19 @@ mod tests {
                 .height(60.0)
                 .show(ui, |_| {});
         });
+        drawn_text(&out)
+            .filter(|text| text.ends_with(" s"))
+            .collect()
+    }
+
+    /// The text a frame drew.
+    fn drawn_text(out: &egui::FullOutput) -> impl Iterator<Item = String> + '_ {
         out.shapes
             .iter()
             .filter_map(|clipped| match &clipped.shape {
                 egui::Shape::Text(text) => Some(text.galley.text().to_string()),
                 _ => None,
             })
-            .filter(|text| text.ends_with(" s"))
-            .collect()
     }
 
     /// The value axis's numbers of a plot `height` points high showing a
@@ -379,12 +384,7 @@ mod tests {
                     plot.line(egui_plot::Line::new(vec![[0.0, v], [3.0, v]]));
                 });
         });
-        out.shapes
-            .iter()
-            .filter_map(|clipped| match &clipped.shape {
-                egui::Shape::Text(text) => Some(text.galley.text().to_string()),
-                _ => None,
-            })
+        drawn_text(&out)
             .filter(|text| !text.is_empty() && !text.ends_with(" s"))
             .collect()
     }

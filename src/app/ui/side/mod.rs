@@ -175,13 +175,18 @@ fn transport(ui: &mut Ui, cx: &mut Cx) {
             }
             return;
         }
+        // The menu's contents are laid out while it is open (egui's answer
+        // says so only as it closes).
+        let mut open = false;
         let menu = ui.menu_button(tr!("top-bar-more"), |ui| {
+            open = true;
             for (command, name) in rest {
                 if command_button(ui, cx, command, Some(name)).clicked() {
                     ui.close_menu();
                 }
             }
         });
+        cx.marks.menu_open |= open;
         cx.note("transport_more", &menu.response);
     });
 }
