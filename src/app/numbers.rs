@@ -148,7 +148,7 @@ pub fn adaptive(v: f64, min_decimals: usize) -> String {
 pub fn field(v: f64) -> String {
     if v.is_finite() && v.abs() >= POWER_FROM {
         // 2.5×10⁹, the mantissa without trailing zeros; [`parse`] reads it.
-        let text = quantity(v, 6).replace('−', "-");
+        let text = quantity(v, 6);
         let (mantissa, power) = text.split_once('×').unwrap_or((&text, ""));
         let point = if decimal_comma() { ',' } else { '.' };
         let mantissa = if mantissa.contains(point) {
@@ -158,13 +158,13 @@ pub fn field(v: f64) -> String {
         };
         return format!("{mantissa}×{power}");
     }
-    let text = plain(v, 6).replace('−', "-");
+    let text = plain(v, 6);
     let point = if decimal_comma() { ',' } else { '.' };
     if !text.contains(point) {
         return text;
     }
     let trimmed = text.trim_end_matches('0').trim_end_matches(point);
-    if trimmed == "-0" || trimmed.is_empty() {
+    if trimmed == "−0" || trimmed.is_empty() {
         "0".into()
     } else {
         trimmed.to_string()
@@ -248,13 +248,17 @@ mod tests {
     fn fields_read_back_and_have_no_e_notation() {
         assert_eq!(field(1.0), "1");
         assert_eq!(field(0.1 + 0.2), "0.3");
-        assert_eq!(field(-2.345678), "-2.345678");
+        // The minus sign of every other number on screen (it was "-1.000"
+        // in the Discs table beside "−1.083" in the ledger); "-" typed over
+        // it reads the same.
+        assert_eq!(field(-2.345678), "−2.345678");
+        assert_eq!(parse("-2.345678"), Some(-2.345678));
         assert_eq!(field(-1e-9), "0");
         assert_eq!(field(999_999.0), "999999");
         // A million and more with a power of ten, as the readouts write it
         // (2500000000 was cut to "250000000" in a table's cell).
         assert_eq!(field(2.5e9), "2.5×10⁹");
-        assert_eq!(field(-1e12), "-1×10¹²");
+        assert_eq!(field(-1e12), "−1×10¹²");
         for v in [1.0, 0.3, -2.5, 0.001, 2.5e9, 1e12, -1.234567e7, 1e6] {
             assert_eq!(parse(&field(v)), Some(v), "{}", field(v));
         }

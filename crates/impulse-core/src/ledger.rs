@@ -48,6 +48,13 @@ pub struct Collision {
 }
 
 impl Collision {
+    /// The two discs, the lower number first, as a person names the pair
+    /// ("discs 0 and 1"), whichever way round the search met them.
+    pub fn discs_in_order(&self) -> [usize; 2] {
+        let [a, b] = self.discs;
+        [a.min(b), a.max(b)]
+    }
+
     /// Momentum of disc `k` (0 or 1) before and after.
     pub fn momentum(&self, k: usize) -> (DVec2, DVec2) {
         (

@@ -142,10 +142,11 @@ impl Sandbox {
         let said = match found {
             Some(impulse::ledger::Impact::Pair(c)) => {
                 let (dp, dke) = c.total_change();
+                let [a, b] = c.discs_in_order();
                 tr!(
                     "next-collision-pair",
-                    a = c.discs[0],
-                    b = c.discs[1],
+                    a = a,
+                    b = b,
                     time = with_unit(c.time, 4, "s"),
                     momentum = vector(dp, 3, "kg·m/s"),
                     energy = with_unit(dke, 3, "J")
@@ -413,6 +414,37 @@ mod tests {
                 "{method}: {said}"
             );
         }
+    }
+
+    /// J names a pair lowest disc first, as the table numbers them: in the
+    /// pile and the gas (the search meets pairs either way round) it said
+    /// "discs 1 and 0".
+    #[test]
+    fn j_names_a_pair_lowest_disc_first() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut pairs = 0;
+        for preset in [
+            "preset-0-pile.toml",
+            "preset-8-gas.toml",
+            "preset-6-cradle.toml",
+        ] {
+            let mut s = sandbox_in(dir.path(), preset);
+            for _ in 0..40 {
+                s.apply(Command::NextCollision);
+                let said = s.message().unwrap_or_default().to_owned();
+                let Some(rest) = said.split("Collision of discs ").nth(1) else {
+                    continue;
+                };
+                let numbers: Vec<usize> = rest
+                    .split([' ', ','])
+                    .filter_map(|w| w.parse().ok())
+                    .take(2)
+                    .collect();
+                assert!(numbers[0] < numbers[1], "{preset}: {said}");
+                pairs += 1;
+            }
+        }
+        assert!(pairs > 20, "{pairs} pairs");
     }
 
     /// A scene running slower than asked says so, and with many discs

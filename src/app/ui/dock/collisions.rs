@@ -27,10 +27,13 @@ const DOT_ROOM: f32 = 18.0;
 /// width, wrapping, however wide the numbers.
 const NAMES_AT_LEAST: f32 = 0.3;
 
-/// "discs 1 and 0" or "disc 0 and the left wall".
+/// "discs 0 and 1" or "disc 0 and the left wall".
 fn who(impact: &Impact) -> String {
     match impact {
-        Impact::Pair(c) => tr!("ledger-pair", a = c.discs[0], b = c.discs[1]),
+        Impact::Pair(c) => {
+            let [a, b] = c.discs_in_order();
+            tr!("ledger-pair", a = a, b = b)
+        }
         Impact::Wall(w) => tr!("ledger-wall", disc = w.disc, wall = w.wall.name()),
     }
 }

@@ -269,7 +269,7 @@ impl View for DiscsTable {
                                         let mine = editing
                                             .as_ref()
                                             .is_some_and(|e| e.disc == i && e.field == f);
-                                        let mut shown = quantity(value, 3).replace('−', "-");
+                                        let mut shown = quantity(value, 3);
                                         let text = if mine { &mut edit_text } else { &mut shown };
                                         let bad = mine && note.as_ref().is_some_and(|n| n.error);
                                         let mut edit = egui::TextEdit::singleline(text)
