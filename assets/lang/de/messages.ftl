@@ -93,18 +93,18 @@ separated-lowered = exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt, was die Energie um { $energy } verringert hat
-next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
+next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
 next-collision-wall = Scheibe { $disc } traf die { $wall ->
     [left] linke
     [right] rechte
     [bottom] untere
    *[top] obere
- } Wand bei t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; ihre kinetische Energie änderte sich um { $energy }
-next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
+ } Wand bei t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; ihre kinetische Energie änderte sich um { $energy }
+next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
 next-collision-none = Kein Stoß innerhalb von { $limit }
 next-collision-at-once = { $impacts } Stöße im selben Augenblick, alle im Reiter Stöße aufgeführt. { $first }
-rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort
-rewound-newest = Beim neuesten aufgezeichneten Augenblick, t = { $time } s; die Leertaste läuft von hier aus weiter
+rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort
+rewound-newest = Beim neuesten aufgezeichneten Augenblick, t = { $time } s; die Leertaste läuft von hier aus weiter
 nothing-recorded = Noch nichts aufgezeichnet
 exported-downloaded = Bilanz, Scheiben, Stöße und Wandstöße als CSV-Dateien heruntergeladen
 exported = Bilanz, Scheiben, Stöße und Wandstöße nach { $folder }/ exportiert

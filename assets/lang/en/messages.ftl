@@ -93,18 +93,18 @@ separated-lowered = exact needs discs apart: it separated { $pairs ->
     [one] 1 overlapping pair
    *[other] { $pairs } overlapping pairs
 } of discs, which lowered the energy by { $energy }
-next-collision-pair = Collision of discs { $a } and { $b } at t = { $time }: their total momentum changed by { $momentum }, their kinetic energy by { $energy }
+next-collision-pair = Collision of discs { $a } and { $b } at t = { $time }: their total momentum changed by { $momentum }, their kinetic energy by { $energy }
 next-collision-wall = Disc { $disc } hit the { $wall ->
     [left] left
     [right] right
     [bottom] bottom
    *[top] top
-} wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
-next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
+} wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
+next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
 next-collision-none = No collision within { $limit }
 next-collision-at-once = { $impacts } impacts at the same moment, all listed in the Collisions tab. { $first }
-rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
-rewound-newest = At the newest recorded moment, t = { $time } s; Space runs on from here
+rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here
+rewound-newest = At the newest recorded moment, t = { $time } s; Space runs on from here
 nothing-recorded = Nothing recorded yet
 exported-downloaded = Downloaded the totals, discs, collisions and wall impacts as CSV files
 exported = Exported totals, discs, collisions and wall impacts to { $folder }/

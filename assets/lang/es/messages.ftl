@@ -93,18 +93,18 @@ separated-lowered = exact necesita los discos separados: separó { $pairs ->
     [one] 1 par de discos solapados
    *[other] { $pairs } pares de discos solapados
 }, lo que redujo la energía en { $energy }
-next-collision-pair = Choque de los discos { $a } y { $b } en t = { $time }: su cantidad de movimiento total cambió en { $momentum } y su energía cinética en { $energy }
+next-collision-pair = Choque de los discos { $a } y { $b } en t = { $time }: su cantidad de movimiento total cambió en { $momentum } y su energía cinética en { $energy }
 next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
     [left] izquierda
     [right] derecha
     [bottom] inferior
    *[top] superior
-} en t = { $time }: la pared lo empujó con { $impulse }; su energía cinética cambió en { $energy }
-next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
+} en t = { $time }: la pared lo empujó con { $impulse }; su energía cinética cambió en { $energy }
+next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
 next-collision-none = Ningún choque en { $limit }
 next-collision-at-once = { $impacts } impactos en el mismo instante, todos en la pestaña Choques. { $first }
-rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí
-rewound-newest = En el momento grabado más reciente, t = { $time } s; Espacio sigue desde aquí
+rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí
+rewound-newest = En el momento grabado más reciente, t = { $time } s; Espacio sigue desde aquí
 nothing-recorded = Aún no hay nada grabado
 exported-downloaded = Se descargaron los totales, discos, choques e impactos en paredes como archivos CSV
 exported = Se exportaron los totales, discos, choques e impactos en paredes a { $folder }/

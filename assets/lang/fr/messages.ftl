@@ -93,18 +93,18 @@ separated-lowered = exact exige des disques séparés : { $pairs ->
     [one] { $pairs } paire de disques qui se chevauchaient a été séparée
    *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
 }, ce qui a diminué l'énergie de { $energy }
-next-collision-pair = Collision des disques { $a } et { $b } à t = { $time } : leur quantité de mouvement totale a varié de { $momentum }, leur énergie cinétique de { $energy }
+next-collision-pair = Collision des disques { $a } et { $b } à t = { $time } : leur quantité de mouvement totale a varié de { $momentum }, leur énergie cinétique de { $energy }
 next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
     [left] de gauche
     [right] de droite
     [bottom] du bas
    *[top] du haut
-} à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
-next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
+} à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
+next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
 next-collision-none = Aucune collision en { $limit }
 next-collision-at-once = { $impacts } chocs au même instant, tous indiqués dans l’onglet Collisions. { $first }
-rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
-rewound-newest = Au dernier instant enregistré, t = { $time } s ; Espace reprend à partir d'ici
+rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici
+rewound-newest = Au dernier instant enregistré, t = { $time } s ; Espace reprend à partir d'ici
 nothing-recorded = Rien d'enregistré pour l'instant
 exported-downloaded = Totaux, disques, collisions et chocs contre les murs téléchargés en fichiers CSV
 exported = Totaux, disques, collisions et chocs contre les murs exportés dans { $folder }/

@@ -93,18 +93,18 @@ separated-lowered = exact precisa dos discos separados: separou { $pairs ->
     [one] { $pairs } par de discos sobrepostos
    *[other] { $pairs } pares de discos sobrepostos
 }, o que diminuiu a energia em { $energy }
-next-collision-pair = Colisão dos discos { $a } e { $b } em t = { $time }: a quantidade de movimento total deles variou { $momentum }, e a energia cinética, { $energy }
+next-collision-pair = Colisão dos discos { $a } e { $b } em t = { $time }: a quantidade de movimento total deles variou { $momentum }, e a energia cinética, { $energy }
 next-collision-wall = O disco { $disc } bateu na parede { $wall ->
     [left] esquerda
     [right] direita
     [bottom] inferior
    *[top] superior
-    } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
-next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
+    } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
+next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
 next-collision-none = Nenhuma colisão em { $limit }
 next-collision-at-once = { $impacts } impactos no mesmo instante, todos listados na aba Colisões. { $first }
-rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
-rewound-newest = No momento gravado mais recente, t = { $time } s; Espaço continua daqui
+rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui
+rewound-newest = No momento gravado mais recente, t = { $time } s; Espaço continua daqui
 nothing-recorded = Nada gravado ainda
 exported-downloaded = Totais, discos, colisões e impactos nas paredes baixados como arquivos CSV
 exported = Totais, discos, colisões e impactos nas paredes exportados para { $folder }/

@@ -340,8 +340,8 @@ fn focus_is_new(ctx: &egui::Context) -> bool {
 }
 
 /// Where Tab brought the keyboard to a container's part (noted with
-/// [`Marks::pass_over`]) or to a control a dialog covers
-/// ([`Marks::covered`]), moves it on to the next control the frame noted,
+/// [`Marks::pass_over`]) or to a control a dialog covers in part
+/// ([`Marks::covered_over`]), moves it on to the next control the frame noted,
 /// or back to the one before where the last Tab was Shift+Tab (`back`;
 /// egui may hand the keyboard over a frame after the key). Returns what
 /// has the keyboard now. (Past the last control egui itself goes round to
@@ -354,7 +354,7 @@ pub fn pass_over_containers(ctx: &egui::Context, marks: &Marks, back: bool) -> O
         s.pass
             || ctx
                 .read_response(s.id)
-                .is_some_and(|r| marks.covered(s.layer, r.rect.center()))
+                .is_some_and(|r| marks.covered_over(s.layer, r.rect))
     };
     let Some(at) = stops.iter().position(|s| s.id == focused && passed(s)) else {
         return Some(focused);

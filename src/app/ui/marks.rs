@@ -99,6 +99,13 @@ impl Marks {
     /// (points): the drawer over the Collisions tab's controls. Tab passes
     /// over such a control, whose focus ring could not be seen.
     pub fn covered(&self, layer: egui::LayerId, point: egui::Pos2) -> bool {
+        self.covered_over(layer, egui::Rect::from_min_max(point, point))
+    }
+
+    /// Whether a dialog shown this frame over `layer` covers any of `rect`
+    /// (points): Tab passes over a control partly under the drawer (a
+    /// list's ring was drawn across it).
+    pub fn covered_over(&self, layer: egui::LayerId, rect: egui::Rect) -> bool {
         let covers = &self.covers;
         // A menu opened over a dialog (the drawer's "… more") is in
         // front of it: a layer in front that is no dialog is a popup.
@@ -113,7 +120,7 @@ impl Marks {
             .map_or(0, |k| k + 1);
         covers[above..]
             .iter()
-            .any(|(l, rect)| *l != layer && rect.contains(point))
+            .any(|(l, cover)| *l != layer && cover.intersects(rect))
     }
 
     /// Records a widget's rectangle (egui points) under `name`, in pixels.

@@ -166,7 +166,12 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     let ke = tr!("symbol-ke");
     match impact {
         Impact::Pair(c) => {
-            let discs = [0, 1];
+            // Lowest disc first, as the heading names them.
+            let discs = if c.discs[0] <= c.discs[1] {
+                [0, 1]
+            } else {
+                [1, 0]
+            };
             for k in discs {
                 rows.push(row(
                     c.discs[k],
