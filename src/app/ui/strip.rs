@@ -100,13 +100,19 @@ impl View for Strip {
             }
         });
         let width = ui.available_width();
-        let measuring = (caption.clone().unwrap_or_default(), width);
-        let (lines, short_bar) = match (&self.measured, caption.as_deref()) {
-            (Some(was), _) if *was == measuring => (self.lines, self.short_bar),
-            (_, Some(c)) => caption_lines(ui, c, width),
-            (_, None) => (1, false),
+        let text = caption.as_deref().unwrap_or_default();
+        let same = self
+            .measured
+            .as_ref()
+            .is_some_and(|(was, w)| was == text && *w == width);
+        let (lines, short_bar) = match caption.as_deref() {
+            _ if same => (self.lines, self.short_bar),
+            Some(c) => caption_lines(ui, c, width),
+            None => (1, false),
         };
-        self.measured = Some(measuring);
+        if !same {
+            self.measured = Some((text.to_owned(), width));
+        }
         if (lines, short_bar) != (self.lines, self.short_bar) {
             (self.lines, self.short_bar) = (lines, short_bar);
             ui.ctx()
