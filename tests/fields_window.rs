@@ -88,6 +88,8 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
     app.wait_frames(2);
     app.xdo(&["key", "ctrl+s"]);
     app.wait_for("the mass applied", 60, |s| mass(s) == 2.0);
+    let s = app.wait_frames(2);
+    in_sight(&s, "discs_mass_1");
     let saved = saved_scenes(out.path());
     assert_eq!(saved.len(), 1, "one scene saved: {saved:?}");
     let scene = impulse::Scene::load(&saved[0])
@@ -95,6 +97,22 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
         .build("saved")
         .unwrap();
     assert_eq!(scene.particles[1].mass, 2.0, "the file has the mass typed");
+    // Another, with Enter: its answer is in the strip, and the row edited
+    // stays in sight (a line above the table in this short tab had pushed
+    // it out).
+    tab_to(&app, "discs_mass_1", 30);
+    app.xdo(&["type", "3"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_for("the mass applied", 60, |s| mass(s) == 3.0);
+    assert!(
+        s["ui"]["message"]
+            .as_str()
+            .is_some_and(|n| n.contains("mass = 3")),
+        "{}",
+        s["ui"]
+    );
+    let s = app.wait_frames(3);
+    in_sight(&s, "discs_mass_1");
     app.quit();
 }
 

@@ -591,7 +591,18 @@ fn at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column() 
     app.move_to([500.0, table[1] - 60.0]);
     app.wait_frames(2);
     app.xdo(&["click", "--repeat", "12", "--delay", "40", "7"]);
-    app.wait_for("the table scrolled", 60, |s| start(s) < 1024.0 - 100.0);
+    let s = app.wait_for("the table scrolled", 60, |s| start(s) < 1024.0 - 100.0);
+    // Each row still says whose it is: the discs' numbers stay at the
+    // table's left edge (they had scrolled out with their column).
+    let area = tab_content(&s);
+    for disc in 0..2 {
+        let name = format!("discs_number_{disc}");
+        let r = rect(&s["panel_widgets"][name.as_str()]);
+        assert!(
+            r[0] >= area[0] - 0.5 && r[0] + r[2] <= area[0] + 120.0 && r[2] > 5.0,
+            "{name} {r:?} is not at the left of the tab {area:?}"
+        );
+    }
     app.quit();
 }
 

@@ -151,7 +151,12 @@ impl Sandbox {
         };
         match from {
             EditPlace::Fields => self.messages.fields = Some(note),
-            EditPlace::Table => self.messages.table = Some(note),
+            // Also in the strip, and said: in a projector's short tab the
+            // line above the table would take the row edited out of sight.
+            EditPlace::Table => {
+                self.toast(note.text.clone());
+                self.messages.table = Some(note);
+            }
         }
     }
 
@@ -292,7 +297,7 @@ mod tests {
 
     /// What the Discs table takes, a scene file takes: every edit it accepts
     /// leaves a scene that saves and opens again; numbers past a scene file's
-    /// ranges are refused, saying the range.
+    /// ranges are refused, saying the range. Each answer is in the strip too.
     #[test]
     fn an_edit_the_table_takes_saves_a_scene_that_opens_again() {
         let dir = tempfile::tempdir().unwrap();
@@ -306,7 +311,10 @@ mod tests {
                     text: fields,
                     from: EditPlace::Table,
                 });
-                s.messages.table.clone().unwrap()
+                let note = s.messages.table.clone().unwrap();
+                // Also in the strip, where a projector's short tab has it.
+                assert_eq!(s.message(), Some(note.text.as_str()));
+                note
             };
             for (k, text, range) in [
                 (0, "1e13", "10¹² kg"),

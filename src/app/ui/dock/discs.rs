@@ -2,13 +2,15 @@
 //! kinetic energy in a table (like PhET's "more data"; when spin is shown
 //! also its spin ω, rotational KE and angular momentum L), with the mass and
 //! the velocity editable in place. An edit is sent to the model, which
-//! checks it before it touches the disc; a bad one keeps the disc as it was
-//! and the answer shows above the table, where it is seen without
-//! scrolling.
+//! checks it before it touches the disc; a bad one keeps the disc as it was.
+//! The answer shows in the strip above the dock and, where the tab has room
+//! for it, on a line above the table; a refused cell stays open in red with
+//! the answer as its tooltip.
 
 use super::super::dialog::{into_sight, just_focused};
 use super::super::widgets::{select_all_on_focus, show_note};
 use super::super::{Cx, Stop, View};
+use super::disc_column::{FirstCell, FirstColumn};
 use crate::app::lang::tr;
 use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
@@ -79,9 +81,13 @@ impl View for DiscsTable {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
         let note = model.messages.table.clone();
-        if let Some(sent) = self.sent.take() {
+        // The row just edited, kept in sight: its answer takes a line above
+        // the table, which a projector's tab had given to the rows.
+        let answered = self.sent.take().map(|sent| {
+            let disc = sent.disc;
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
-        }
+            disc
+        });
         let row_height = ui.spacing().interact_size.y + 2.0;
         // How to edit, on a line above the table where there is room for it
         // and three rows (or every disc) besides; in a short tab (a
@@ -92,11 +98,13 @@ impl View for DiscsTable {
         let header = if spin_shown(&model.world) { 2.0 } else { 1.0 } * row_height;
         let needed = line + header + rows * (row_height + ui.spacing().item_spacing.y);
         let hint_line = ui.available_height() >= needed || model.world.particles.is_empty();
-        if hint_line || note.is_some() {
+        // The answer to an edit goes on that line too; in a short tab it is
+        // in the strip above (the model shows every answer there) and in
+        // the refused cell's tooltip: a line of its own here took the row
+        // edited out of sight.
+        if hint_line {
             ui.horizontal_wrapped(|ui| {
-                if hint_line {
-                    ui.label(tr!("table-line"));
-                }
+                ui.label(tr!("table-line"));
                 if let Some(note) = &note {
                     let r = show_note(ui, note);
                     cx.note("table_note", &r);
@@ -112,6 +120,8 @@ impl View for DiscsTable {
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
         let mut cells = Vec::new();
+        // Where each disc's number is in the table.
+        let mut numbers = Vec::new();
         // The table's controls in the order made, for Tab (see `dialog`).
         let mut stops = Vec::new();
         let particles = &model.world.particles;
@@ -172,6 +182,7 @@ impl View for DiscsTable {
         // last field (v_y) to its last column: |v|, |p| and the energy
         // hold no control Tab could reach.
         let mut reveal: Option<egui::Rect> = None;
+        let mut first = FirstColumn::default();
         if sideways {
             ui.spacing_mut().scroll = sideways_bar;
         }
@@ -180,7 +191,11 @@ impl View for DiscsTable {
             .enable_scrolling(sideways)
             .show(ui, |ui| {
                 ui.spacing_mut().scroll = scroll;
-                TableBuilder::new(ui)
+                let mut table = TableBuilder::new(ui);
+                if let Some(disc) = answered {
+                    table = table.scroll_to_row(disc, None);
+                }
+                table
                     .id_salt("discs_table")
                     .min_scrolled_height(two_rows.min(rows_height))
                     .max_scroll_height(rows_height)
@@ -197,12 +212,21 @@ impl View for DiscsTable {
                             } else {
                                 h.to_string()
                             };
+                            let mut in_sight = egui::Rect::NOTHING;
                             let (_, r) = header.col(|ui| {
-                                let r = ui.strong(h);
+                                in_sight = ui.clip_rect();
+                                let r = ui.strong(&h);
                                 if let Some(how) = &how_to_edit {
                                     r.tip(how);
                                 }
                             });
+                            if k == 0 {
+                                let cell = FirstCell {
+                                    rect: r.rect,
+                                    in_sight,
+                                };
+                                first.heading = Some((cell, h));
+                            }
                             if k == last && spin_columns == 0 {
                                 cx.note("discs_last_column", &r);
                             }
@@ -221,18 +245,18 @@ impl View for DiscsTable {
                             let i = row.index();
                             let p = &particles[i];
                             row.set_selected(selected == Some(i));
-                            row.col(|ui| {
-                                let c = p.color;
+                            let c = p.color;
+                            let color = Color32::from_rgb(c.r, c.g, c.b);
+                            let mut in_sight = egui::Rect::NOTHING;
+                            let (_, cell) = row.col(|ui| {
+                                in_sight = ui.clip_rect();
                                 let (rect, _) = ui.allocate_exact_size(
                                     egui::vec2(14.0, 14.0),
                                     egui::Sense::hover(),
                                 );
-                                ui.painter().circle_filled(
-                                    rect.center(),
-                                    7.0,
-                                    Color32::from_rgb(c.r, c.g, c.b),
-                                );
+                                ui.painter().circle_filled(rect.center(), 7.0, color);
                                 let r = ui.selectable_label(selected == Some(i), format!("{i}"));
+                                numbers.push((i, r.rect));
                                 stops.push(Stop::control(&r));
                                 if just_focused(&r) {
                                     reveal = Some(r.rect);
@@ -241,6 +265,11 @@ impl View for DiscsTable {
                                     select = Some(i);
                                 }
                             });
+                            let cell = FirstCell {
+                                rect: cell.rect,
+                                in_sight,
+                            };
+                            first.rows.push((cell, i, color));
                             let values = [
                                 p.mass,
                                 p.pos.x,
@@ -277,7 +306,10 @@ impl View for DiscsTable {
                                         if bad {
                                             edit = edit.text_color(Color32::from_rgb(220, 40, 30));
                                         }
-                                        let r = ui.add(edit);
+                                        let mut r = ui.add(edit);
+                                        if let Some(note) = note.as_ref().filter(|_| bad) {
+                                            r = r.tip(note.text.as_str());
+                                        }
                                         select_all_on_focus(ui, &r, text);
                                         focused |= r.has_focus();
                                         let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
@@ -331,6 +363,12 @@ impl View for DiscsTable {
                             body.rows(row_height, particles.len(), add_row);
                         }
                     });
+                for (i, rect) in numbers.drain(..) {
+                    cx.marks.note(format!("discs_number_{i}"), rect);
+                }
+                if let Some(i) = first.keep_in_sight(ui, selected, cx) {
+                    select = Some(i);
+                }
                 if let Some(rect) = reveal {
                     let none = egui::style::ScrollAnimation::none();
                     ui.scroll_to_rect_animation(rect, None, none);

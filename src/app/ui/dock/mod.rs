@@ -9,6 +9,7 @@
 //! page too).
 
 mod collisions;
+mod disc_column;
 pub mod discs;
 pub mod edge;
 mod momenta;
