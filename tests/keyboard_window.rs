@@ -364,9 +364,10 @@ fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
     assert_eq!(focus(&s), None, "Esc gives the keys back");
     app.quit();
 
-    // The ledger at the same scale: the newest collision's table over the
-    // list of the last ones, in a scroll area round both. Tab reaches
-    // each, shows it, and the keys scroll it alone.
+    // The ledger at the same scale: the newest collision's table, the
+    // count with Next collision and the list of the last ones, one page
+    // in one scroll area. Tab reaches the page and shows it, the keys
+    // scroll it, and Tab on reaches the button and shows it.
     let app = Sandbox::start(&x, &projector);
     app.move_to([5.0, 400.0]);
     app.xdo(&["key", "u"]);
@@ -375,43 +376,58 @@ fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
     std::thread::sleep(std::time::Duration::from_secs(3));
     app.xdo(&["key", "space"]);
     app.wait_for("the pause", 120, |s| s["paused"] == true);
-    // The newest a collision between discs: its table is the taller.
     app.xdo(&["key", "j"]);
     let s = app.wait_frames(5);
-    // How far each list is scrolled.
-    let lists = |s: &Value| {
-        let lists = s["ui"]["lists"].as_object().unwrap();
-        lists
-            .iter()
-            .map(|(name, l)| (name.clone(), l["offset"].clone()))
-            .collect::<Vec<_>>()
-    };
-    let before = lists(&s);
-    let (_, max) = list_scroll(&s, "scroll_ledger_list");
+    // One list to read: the newest impact's rows, and the list, in it
+    // (each in an area of its own had scrolled alone, the list in the two
+    // rows left under the count).
+    let lists: Vec<String> = s["ui"]["lists"]
+        .as_object()
+        .unwrap()
+        .keys()
+        .cloned()
+        .collect();
+    assert_eq!(lists, ["scroll_ledger_stacked"], "{}", s["ui"]);
+    let (_, max) = list_scroll(&s, "scroll_ledger_stacked");
     assert!(max > 0.0, "{}", s["ui"]);
-    tab_to(&app, "scroll_ledger_list", 60);
+    tab_to(&app, "scroll_ledger_stacked", 60);
     // Shown within a few frames (egui's scrolling lands a frame later).
     let s = app.wait_frames(3);
-    let r: Vec<f64> = s["ui"]["focus_rect"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|v| v.as_f64().unwrap())
-        .collect();
-    let window = &s["layout"]["window"];
-    assert!(
-        r[1] >= 0.0 && r[1] + r[3] <= window[1].as_f64().unwrap() + 1.0,
-        "the list is out of sight: {r:?}"
-    );
-    assert_eq!(lists(&s), before, "reaching the list scrolled another");
+    let window = s["layout"]["window"][1].as_f64().unwrap();
+    let shown = |s: &Value| {
+        let r: Vec<f64> = s["ui"]["focus_rect"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
+        let tab = tab_content(s);
+        assert!(
+            r[1] >= tab[1] - 0.5 && r[1] + r[3] <= window + 1.0,
+            "{:?} is out of sight: {r:?}",
+            focus(s)
+        );
+    };
+    shown(&s);
     app.xdo(&["key", "Down"]);
     let s = app.wait_frames(3);
-    assert!(list_scroll(&s, "scroll_ledger_list").0 > 0.0, "{}", s["ui"]);
-    let table = |l: Vec<(String, Value)>| l.into_iter().find(|(n, _)| n == "scroll_ledger_detail");
-    assert_eq!(
-        table(lists(&s)),
-        table(before),
-        "Down scrolled the table too"
+    assert!(
+        list_scroll(&s, "scroll_ledger_stacked").0 > 0.0,
+        "{}",
+        s["ui"]
+    );
+    app.xdo(&["key", "End"]);
+    let s = app.wait_frames(3);
+    let (end, max) = list_scroll(&s, "scroll_ledger_stacked");
+    assert!((end - max).abs() < 1.0, "End: {end} of {max}");
+    tab_to(&app, "next_collision_in_tab", 3);
+    let s = app.wait_frames(3);
+    shown(&s);
+    let button = rect(&s["panel_widgets"]["next_collision_in_tab"]);
+    let tab = tab_content(&s);
+    assert!(
+        button[1] >= tab[1] - 0.5 && button[1] + button[3] <= tab[1] + tab[3] + 0.5,
+        "Next collision {button:?} is outside the tab {tab:?}"
     );
     app.quit();
 }

@@ -432,7 +432,16 @@ fn projector_ledger(lang: &str) {
     if s["panel_widgets"]["top_bar_more"].is_array() {
         bar.push("top_bar_more");
     }
-    for name in row.iter().chain(&bar).chain(&["ledger_count"]) {
+    // The count with its Next collision, under the newest impact's rows
+    // in the tab's page: the page scrolls far enough to show it whole.
+    let count = rect(&s["panel_widgets"]["ledger_count"]);
+    let below = count[1] + count[3] - (tab[1] + tab[3]);
+    let page = &s["ui"]["lists"]["scroll_ledger_stacked"]["max"][1];
+    assert!(
+        below <= 0.5 || page.as_f64().is_some_and(|max| max >= below - 0.5),
+        "{lang}: the count {count:?} is {below} px below the tab, the page scrolls {page}"
+    );
+    for name in row.iter().chain(&bar) {
         let r = rect(&s["panel_widgets"][*name]);
         assert!(
             r[0] >= -0.5 && r[0] + r[2] <= window[0] + 0.5 && r[1] + r[3] <= window[1] + 0.5,

@@ -205,6 +205,31 @@ pub fn scroll<R>(
     salt: &str,
     add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
 ) -> R {
+    scroll_area(ui, cx, area, salt, false, add)
+}
+
+/// A [`scroll`] area read as a page: a Tab stop to read whenever it is
+/// taller or wider than its place, with controls in it or not. (A tab's
+/// text and tables with a button among them: the rows after the button
+/// are reached by reading, as no control shows them.)
+pub fn page<R>(
+    ui: &mut egui::Ui,
+    cx: &mut Cx,
+    area: egui::ScrollArea,
+    salt: &str,
+    add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
+) -> R {
+    scroll_area(ui, cx, area, salt, true, add)
+}
+
+fn scroll_area<R>(
+    ui: &mut egui::Ui,
+    cx: &mut Cx,
+    area: egui::ScrollArea,
+    salt: &str,
+    read_past_controls: bool,
+    add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
+) -> R {
     // egui's id for it, as `ScrollArea::show` makes it from the salt.
     let id = ui.make_persistent_id(egui::Id::new(salt));
     let content = id.with("area");
@@ -223,7 +248,7 @@ pub fn scroll<R>(
     let has_controls = cx.marks.stops[at + 1..].iter().any(|s| !s.pass);
     let view = out.inner_rect.size();
     let max = (out.content_size - view).max(egui::Vec2::ZERO);
-    if !has_controls && (max.x > 0.5 || max.y > 0.5) {
+    if (read_past_controls || !has_controls) && (max.x > 0.5 || max.y > 0.5) {
         cx.marks.stops[at].pass = false;
         let name = format!("scroll_{salt}");
         if reading {
@@ -308,10 +333,22 @@ fn reveal_focus(ui: &egui::Ui, marks: &Marks, first: usize) {
 
 /// Scrolls the control that has just got the keyboard into sight; called
 /// inside its scroll area (a table's own, where [`scroll`] is not used).
+/// Once for each time it gets the keyboard: egui's `gained_focus` and
+/// [`note_focus`] may both say so, a frame apart, and the second time, with
+/// the rectangle of before the scroll, had scrolled as far again (Tab from
+/// the ledger's page to its button put the button above the tab).
 pub fn into_sight(r: &egui::Response) {
-    if just_focused(r) {
+    let shown = revealed_id();
+    if just_focused(r) && r.ctx.data(|d| d.get_temp::<egui::Id>(shown)) != Some(r.id) {
+        r.ctx.data_mut(|d| d.insert_temp(shown, r.id));
         r.scroll_to_me_animation(None, egui::style::ScrollAnimation::none());
     }
+}
+
+/// The id under which [`into_sight`] keeps the control it last showed,
+/// while that control keeps the keyboard.
+fn revealed_id() -> egui::Id {
+    egui::Id::new("dialog_revealed")
 }
 
 /// Whether the control has just got the keyboard: this frame, or between
@@ -331,7 +368,12 @@ fn focus_moved_id() -> egui::Id {
 /// passed on to between frames ([`pass_over_containers`]).
 pub fn note_focus(ctx: &egui::Context, last: &mut Option<egui::Id>) {
     let now = ctx.memory(|m| m.focused());
-    ctx.data_mut(|d| d.insert_temp(focus_moved_id(), now != *last));
+    ctx.data_mut(|d| {
+        d.insert_temp(focus_moved_id(), now != *last);
+        if d.get_temp::<egui::Id>(revealed_id()) != now {
+            d.remove::<egui::Id>(revealed_id());
+        }
+    });
     *last = now;
 }
 

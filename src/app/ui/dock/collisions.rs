@@ -3,7 +3,7 @@
 //! newest before and after, disc by disc. Side by side where the dock is
 //! wide, one under the other where it is narrow; nothing overlaps.
 
-use super::super::dialog::scroll;
+use super::super::dialog::{page, scroll};
 use super::super::widgets::command_button;
 use super::super::{Cx, View};
 use crate::app::lang::tr;
@@ -60,25 +60,31 @@ impl View for Collisions {
             // momentum, was cut off.
             ui.columns(2, |columns| {
                 count(&mut columns[0], cx);
-                list(&mut columns[0], cx, &recent);
-                detail(&mut columns[1], cx, newest);
+                columns[0].strong(tr!("ledger-last", count = recent.len()));
+                let area = egui::ScrollArea::both().auto_shrink([false, true]);
+                scroll(&mut columns[0], cx, area, "ledger_list", |ui, _| {
+                    list(ui, &recent)
+                });
+                let area = egui::ScrollArea::both().auto_shrink([false, true]);
+                scroll(&mut columns[1], cx, area, "ledger_detail", |ui, cx| {
+                    detail(ui, cx, newest)
+                });
             });
         } else {
             // The newest impact first, and the count with its key to the
             // next under it: at a projector the tab holds four rows, and
             // under the count the two discs' total momentum was out of sight.
-            scroll(
-                ui,
-                cx,
-                egui::ScrollArea::vertical(),
-                "ledger_stacked",
-                |ui, cx| {
-                    detail(ui, cx, newest);
-                    count(ui, cx);
-                    ui.separator();
-                    list(ui, cx, &recent);
-                },
-            );
+            // One page, scrolled as one: in areas of their own the wheel
+            // scrolled the newest impact's rows to their end before the
+            // page, and the list had the two rows left under the count.
+            let area = egui::ScrollArea::both().auto_shrink([false, true]);
+            page(ui, cx, area, "ledger_stacked", |ui, cx| {
+                detail(ui, cx, newest);
+                count(ui, cx);
+                ui.separator();
+                ui.strong(tr!("ledger-last", count = recent.len()));
+                list(ui, &recent);
+            });
         }
     }
 }
@@ -98,37 +104,33 @@ fn count(ui: &mut egui::Ui, cx: &mut Cx) {
 }
 
 /// The kept impacts, newest first.
-fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
-    ui.strong(tr!("ledger-last", count = recent.len()));
-    let area = egui::ScrollArea::both().auto_shrink([false, true]);
-    scroll(ui, cx, area, "ledger_list", |ui, _| {
-        egui::Grid::new("ledger")
-            .striped(true)
-            .num_columns(4)
-            .spacing([18.0, 4.0])
-            .show(ui, |ui| {
-                for (h, hover) in [
-                    ("t (s)".to_string(), tr!("ledger-time-hover")),
-                    (tr!("ledger-what"), tr!("ledger-what-hover")),
-                    ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
-                    (
-                        format!("Δ{} (J)", tr!("symbol-ke")),
-                        tr!("ledger-dke-hover"),
-                    ),
-                ] {
-                    ui.strong(h).tip(hover);
-                }
+fn list(ui: &mut egui::Ui, recent: &[Impact]) {
+    egui::Grid::new("ledger")
+        .striped(true)
+        .num_columns(4)
+        .spacing([18.0, 4.0])
+        .show(ui, |ui| {
+            for (h, hover) in [
+                ("t (s)".to_string(), tr!("ledger-time-hover")),
+                (tr!("ledger-what"), tr!("ledger-what-hover")),
+                ("Δp (kg·m/s)".to_string(), tr!("ledger-dp-hover")),
+                (
+                    format!("Δ{} (J)", tr!("symbol-ke")),
+                    tr!("ledger-dke-hover"),
+                ),
+            ] {
+                ui.strong(h).tip(hover);
+            }
+            ui.end_row();
+            for impact in recent {
+                let (dp, dke) = impact.total_change();
+                ui.label(plain(impact.time(), 3));
+                ui.label(who(impact));
+                ui.label(vector(dp, 3, ""));
+                ui.label(plain(dke, 3));
                 ui.end_row();
-                for impact in recent {
-                    let (dp, dke) = impact.total_change();
-                    ui.label(plain(impact.time(), 3));
-                    ui.label(who(impact));
-                    ui.label(vector(dp, 3, ""));
-                    ui.label(plain(dke, 3));
-                    ui.end_row();
-                }
-            });
-    });
+            }
+        });
 }
 
 /// The newest impact, before and after: each quantity for one disc and the
@@ -259,59 +261,56 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     } else {
         heading
     };
-    let area = egui::ScrollArea::both().auto_shrink([false, true]);
-    scroll(ui, cx, area, "ledger_detail", |ui, cx| {
-        // Rows as tall as their text, not as a button: at a projector the
-        // heading and three rows (the discs' momenta and their total) fit.
-        let line = ui.text_style_height(&egui::TextStyle::Body);
-        let r = egui::Grid::new("ledger_newest")
-            .striped(true)
-            .num_columns(3)
-            .min_row_height(line)
-            .spacing([spacing, 4.0])
-            .max_col_width(names.max(numbers))
-            .show(ui, |ui| {
-                ui.add(egui::Label::new(egui::RichText::new(heading).strong()).wrap());
-                ui.strong(before);
-                ui.strong(after);
-                ui.end_row();
-                for (what, before, after, total, dot) in rows {
-                    let strong = |text: String| egui::RichText::new(text).strong();
-                    let (what, before, after) = if total.is_some() {
-                        (strong(what), strong(before), strong(after))
-                    } else {
-                        (what.into(), before.into(), after.into())
-                    };
-                    // The disc's colour before its name, as in the Discs
-                    // tab: a student matches rows to discs by it. (A dot
-                    // painted in room left before the text: the font has
-                    // no "●".)
-                    let what: egui::WidgetText = match dot {
-                        Some(_) => {
-                            let mut job = egui::text::LayoutJob::default();
-                            let font = egui::TextStyle::Body.resolve(ui.style());
-                            let format = egui::TextFormat::simple(font, ui.visuals().text_color());
-                            job.append(what.text(), DOT_ROOM, format);
-                            job.into()
-                        }
-                        None => what.into(),
-                    };
-                    let r = ui.add(egui::Label::new(what).wrap());
-                    if let Some(c) = dot {
-                        let centre = r.rect.left_top() + egui::vec2(0.4 * DOT_ROOM, 0.5 * line);
-                        ui.painter().circle_filled(centre, 0.3 * DOT_ROOM, c);
+    // Rows as tall as their text, not as a button: at a projector the
+    // heading and three rows (the discs' momenta and their total) fit.
+    let line = ui.text_style_height(&egui::TextStyle::Body);
+    let r = egui::Grid::new("ledger_newest")
+        .striped(true)
+        .num_columns(3)
+        .min_row_height(line)
+        .spacing([spacing, 4.0])
+        .max_col_width(names.max(numbers))
+        .show(ui, |ui| {
+            ui.add(egui::Label::new(egui::RichText::new(heading).strong()).wrap());
+            ui.strong(before);
+            ui.strong(after);
+            ui.end_row();
+            for (what, before, after, total, dot) in rows {
+                let strong = |text: String| egui::RichText::new(text).strong();
+                let (what, before, after) = if total.is_some() {
+                    (strong(what), strong(before), strong(after))
+                } else {
+                    (what.into(), before.into(), after.into())
+                };
+                // The disc's colour before its name, as in the Discs
+                // tab: a student matches rows to discs by it. (A dot
+                // painted in room left before the text: the font has
+                // no "●".)
+                let what: egui::WidgetText = match dot {
+                    Some(_) => {
+                        let mut job = egui::text::LayoutJob::default();
+                        let font = egui::TextStyle::Body.resolve(ui.style());
+                        let format = egui::TextFormat::simple(font, ui.visuals().text_color());
+                        job.append(what.text(), DOT_ROOM, format);
+                        job.into()
                     }
-                    if let Some(name) = total {
-                        cx.note(name, &r);
-                    }
-                    ui.label(before);
-                    ui.label(after);
-                    ui.end_row();
+                    None => what.into(),
+                };
+                let r = ui.add(egui::Label::new(what).wrap());
+                if let Some(c) = dot {
+                    let centre = r.rect.left_top() + egui::vec2(0.4 * DOT_ROOM, 0.5 * line);
+                    ui.painter().circle_filled(centre, 0.3 * DOT_ROOM, c);
                 }
-            })
-            .response
-            .tip(tr!("ledger-detail-hover"));
-        // Its whole width (the dump shows whether any is cut off).
-        cx.note("ledger_newest", &r);
-    });
+                if let Some(name) = total {
+                    cx.note(name, &r);
+                }
+                ui.label(before);
+                ui.label(after);
+                ui.end_row();
+            }
+        })
+        .response
+        .tip(tr!("ledger-detail-hover"));
+    // Its whole width (the dump shows whether any is cut off).
+    cx.note("ledger_newest", &r);
 }

@@ -120,7 +120,8 @@ impl View for DiscsTable {
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
         let mut cells = Vec::new();
-        // Where each disc's number is in the table.
+        // Where each disc's number is in the table, and whether it has the
+        // keyboard.
         let mut numbers = Vec::new();
         // The table's controls in the order made, for Tab (see `dialog`).
         let mut stops = Vec::new();
@@ -256,7 +257,7 @@ impl View for DiscsTable {
                                 );
                                 ui.painter().circle_filled(rect.center(), 7.0, color);
                                 let r = ui.selectable_label(selected == Some(i), format!("{i}"));
-                                numbers.push((i, r.rect));
+                                numbers.push((i, r.rect, r.has_focus()));
                                 stops.push(Stop::control(&r));
                                 if just_focused(&r) {
                                     reveal = Some(r.rect);
@@ -363,8 +364,12 @@ impl View for DiscsTable {
                             body.rows(row_height, particles.len(), add_row);
                         }
                     });
-                for (i, rect) in numbers.drain(..) {
-                    cx.marks.note(format!("discs_number_{i}"), rect);
+                for (i, rect, has_focus) in numbers.drain(..) {
+                    let name = format!("discs_number_{i}");
+                    if has_focus {
+                        cx.marks.focused = Some(name.clone());
+                    }
+                    cx.marks.note(name, rect);
                 }
                 if let Some(i) = first.keep_in_sight(ui, selected, cx) {
                     select = Some(i);
