@@ -459,12 +459,27 @@ fn projector_ledger(lang: &str) {
     // The scale bar measures what is on screen, not kilometres.
     let view = View::of(&s);
     assert!(view.scale > 10.0, "{} px per metre", view.scale);
-    // The drawer opens over the world, like a popup; the world stays put.
+    // The drawer opens over the world, like a popup; the world stays put,
+    // and the box, fitted, moves into what the drawer leaves in sight (it
+    // had hidden the box's right half, in Glancing the disc hit).
     let world = rect(&s["layout"]["world"]);
+    let size = [
+        s["size"][0].as_f64().unwrap(),
+        s["size"][1].as_f64().unwrap(),
+    ];
+    let right_edge = |s: &Value| View::of(s).to_screen(size)[0];
+    let closed = View::of(&s);
     app.click(widget(&s, "drawer_toggle", 0.5));
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["drawer_open"], true);
     assert_eq!(rect(&s["layout"]["world"]), world);
+    let drawer = rect(&s["layout"]["drawer"]);
+    assert!(
+        right_edge(&s) <= drawer[0] + 0.5,
+        "{lang}: the box ends at {} under the drawer from {}",
+        right_edge(&s),
+        drawer[0]
+    );
     assert!(
         s["panel_widgets"]["section_show"].is_array(),
         "the controls are in it"
@@ -518,6 +533,12 @@ fn projector_ledger(lang: &str) {
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["drawer_open"], false, "Esc closes it");
+    let open = View::of(&s);
+    assert_eq!(
+        (open.center, open.scale),
+        (closed.center, closed.scale),
+        "{lang}: the view as it was before the drawer"
+    );
     // L (show or hide the controls) opens and shuts the drawer here; it
     // does not hide the drawer's button, and the controls with it.
     for open in [true, false] {

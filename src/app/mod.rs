@@ -274,7 +274,9 @@ impl App {
             let mouse = DVec2::new(mx as f64, my as f64);
             let mut commands = self.panels.pass(&self.model, mouse);
             if let Some(rects) = &self.panels.rects {
-                self.model.place_world(rects.world.as_array());
+                let world = rects.world;
+                let covered = rects.drawer.map_or(0.0, |d| world.x + world.w - d.x);
+                self.model.place_world(world.as_array(), covered);
             }
             if self.frame == 0 {
                 self.model.fit_camera();

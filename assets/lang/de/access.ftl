@@ -70,7 +70,9 @@ describe-totals = { $state ->
    *[running] Läuft, t = { $time }
  }; Gesamtimpuls { $momentum }, kinetische Energie { $energy }.
 tab-words = In Worten
-words-line = Was geschieht, in Worten, das Neueste zuerst (ein Screenreader liest im Browser dasselbe vor).
+# On the desktop; in the browser, where a screen reader reads the page.
+words-line = Was geschieht, in Worten, das Neueste zuerst.
+words-line-web = Was geschieht, in Worten, das Neueste zuerst (ein Screenreader liest dasselbe vor).
 words-none = Noch nichts gesagt.
 label-describe = Szene beschreiben
 mirror-title = Impulse: Bedienelemente für Tastatur und Screenreader

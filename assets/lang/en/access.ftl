@@ -67,7 +67,9 @@ describe-totals = { $state ->
    *[running] Running
 } at t = { $time }; total momentum { $momentum }, kinetic energy { $energy }.
 tab-words = In words
-words-line = What happens, in words, newest first (a screen reader reads the same in the browser).
+# On the desktop; in the browser, where a screen reader reads the page.
+words-line = What happens, in words, newest first.
+words-line-web = What happens, in words, newest first (a screen reader reads the same).
 words-none = Nothing said yet.
 label-describe = Describe the scene
 mirror-title = Impulse: controls for the keyboard and screen readers

@@ -70,7 +70,9 @@ describe-totals = { $state ->
    *[running] En marcha
  } en t = { $time }; cantidad de movimiento total { $momentum }, energía cinética { $energy }.
 tab-words = Narración
-words-line = Lo que ocurre, contado en palabras, lo más reciente primero (en el navegador, un lector de pantalla lee lo mismo).
+# On the desktop; in the browser, where a screen reader reads the page.
+words-line = Lo que ocurre, contado en palabras, lo más reciente primero.
+words-line-web = Lo que ocurre, contado en palabras, lo más reciente primero (un lector de pantalla lee lo mismo).
 words-none = Todavía no se ha dicho nada.
 label-describe = Describir la escena
 mirror-title = Impulse: controles para el teclado y los lectores de pantalla

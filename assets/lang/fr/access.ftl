@@ -70,7 +70,9 @@ describe-totals = { $state ->
    *[running] En cours
  } à t = { $time } ; quantité de mouvement totale { $momentum }, énergie cinétique { $energy }.
 tab-words = Récit
-words-line = Ce qui se passe, raconté avec des mots, le plus récent en premier (dans le navigateur, un lecteur d'écran lit la même chose).
+# On the desktop; in the browser, where a screen reader reads the page.
+words-line = Ce qui se passe, raconté avec des mots, le plus récent en premier.
+words-line-web = Ce qui se passe, raconté avec des mots, le plus récent en premier (un lecteur d'écran lit la même chose).
 words-none = Rien n'a encore été dit.
 label-describe = Décrire la scène
 mirror-title = Impulse : commandes pour le clavier et les lecteurs d'écran

@@ -70,7 +70,9 @@ describe-totals = { $state ->
    *[running] Rodando
  } em t = { $time }; quantidade de movimento total { $momentum }, energia cinética { $energy }.
 tab-words = Narração
-words-line = O que acontece, em palavras, do mais recente ao mais antigo (um leitor de tela lê o mesmo no navegador).
+# On the desktop; in the browser, where a screen reader reads the page.
+words-line = O que acontece, em palavras, do mais recente ao mais antigo.
+words-line-web = O que acontece, em palavras, do mais recente ao mais antigo (um leitor de tela lê o mesmo).
 words-none = Nada foi dito ainda.
 label-describe = Descrever a cena
 mirror-title = Impulse: controles para teclado e leitores de tela

@@ -44,12 +44,23 @@ impl Camera {
 
     /// Shows the world rectangle `lo`–`hi` whole, centred.
     pub fn fit_rect(&mut self, lo: DVec2, hi: DVec2, margin: f64) {
-        let room = (self.viewport - DVec2::splat(2.0 * margin)).max(DVec2::ONE);
+        self.fit_rect_beside(lo, hi, margin, 0.0);
+    }
+
+    /// Shows the world rectangle `lo`–`hi` whole, centred in what is left
+    /// of the viewport when `covered` pixels at its right are under
+    /// something (a drawer open over the world).
+    pub fn fit_rect_beside(&mut self, lo: DVec2, hi: DVec2, margin: f64, covered: f64) {
+        let covered = covered.clamp(0.0, (self.viewport.x - 1.0).max(0.0));
+        let clear = self.viewport - DVec2::new(covered, 0.0);
+        let room = (clear - DVec2::splat(2.0 * margin)).max(DVec2::ONE);
         let size = (hi - lo).max(DVec2::splat(1e-9));
         self.scale = (room / size)
             .min_element()
             .clamp(SCALE_LIMITS.0, SCALE_LIMITS.1);
-        self.center = 0.5 * (lo + hi);
+        // The box's middle at the clear part's middle, half the covered
+        // width left of the viewport's.
+        self.center = 0.5 * (lo + hi) + DVec2::new(0.5 * covered / self.scale, 0.0);
     }
 
     /// Moves the world's rectangle to `origin` with size `size` (px),
@@ -211,5 +222,23 @@ mod tests {
         let s0 = c.world_to_screen(w);
         c.pan_pixels(DVec2::new(30.0, -12.0));
         assert!((c.world_to_screen(w) - (s0 + DVec2::new(30.0, -12.0))).length() < 1e-9);
+    }
+
+    /// Beside a drawer over its right part, the box is fitted whole into
+    /// the rest, centred there; with nothing over it, as before.
+    #[test]
+    fn a_box_fitted_beside_a_drawer_lies_wholly_left_of_it() {
+        let mut c = Camera::fitting(DVec2::new(20.0, 10.0), DVec2::new(1000.0, 400.0), 24.0);
+        let plain = c;
+        c.fit_rect_beside(DVec2::ZERO, DVec2::new(20.0, 10.0), 24.0, 420.0);
+        let (left, right) = (
+            c.world_to_screen(DVec2::ZERO),
+            c.world_to_screen(DVec2::new(20.0, 10.0)),
+        );
+        assert!((left.x - 24.0).abs() < 1e-9, "{left}");
+        assert!((right.x - (1000.0 - 420.0 - 24.0)).abs() < 1e-9, "{right}");
+        assert!(right.y >= 24.0 - 1e-9 && left.y <= 400.0 - 24.0 + 1e-9);
+        c.fit_rect_beside(DVec2::ZERO, DVec2::new(20.0, 10.0), 24.0, 0.0);
+        assert_eq!(c, plain);
     }
 }

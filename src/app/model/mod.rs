@@ -111,6 +111,9 @@ pub struct WorldView {
     /// The view shows the whole box: it is fitted again when the world's
     /// rectangle changes (until the user zooms or pans).
     pub fitted: bool,
+    /// Pixels at the right of the world's rectangle under the drawer, when
+    /// open: a fitted view fits the box in the rest.
+    pub covered: f64,
 }
 
 /// The disc a launch makes, and whether its size follows its mass.
@@ -273,6 +276,7 @@ impl Sandbox {
             view: WorldView {
                 camera: Camera::fitting(size, DVec2::new(1280.0, 800.0), 30.0),
                 fitted: true,
+                covered: 0.0,
             },
             selected: None,
             pointer: pointer::Pointer::default(),

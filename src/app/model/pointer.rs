@@ -135,7 +135,8 @@ impl Sandbox {
                 hi = hi.max(p.pos + DVec2::splat(p.radius));
             }
         }
-        self.view.camera.fit_rect(lo, hi, margin);
+        let covered = self.view.covered;
+        self.view.camera.fit_rect_beside(lo, hi, margin, covered);
         self.view.fitted = true;
     }
 
@@ -145,14 +146,19 @@ impl Sandbox {
         self.world.laws.boundary == impulse::Boundary::Box && !self.world.laws.walls.all()
     }
 
-    /// Gives the camera the world's rectangle [x, y, w, h] (window px); a
-    /// view that was fitted stays fitted when it changes.
-    pub fn place_world(&mut self, [x, y, w, h]: [f32; 4]) {
+    /// Gives the camera the world's rectangle [x, y, w, h] (window px),
+    /// with `covered` px at its right under the open drawer; a view that
+    /// was fitted stays fitted when either changes, in what is in sight
+    /// (the drawer had hidden the right half of the box, and in Glancing
+    /// the disc hit).
+    pub fn place_world(&mut self, [x, y, w, h]: [f32; 4], covered: f32) {
         let origin = DVec2::new(f64::from(x), f64::from(y));
         let size = DVec2::new(f64::from(w), f64::from(h)).max(DVec2::ONE);
+        let covered = f64::from(covered).max(0.0);
         let camera = &mut self.view.camera;
-        if origin != camera.origin || size != camera.viewport {
+        if origin != camera.origin || size != camera.viewport || covered != self.view.covered {
             camera.set_rect(origin, size);
+            self.view.covered = covered;
             if self.view.fitted {
                 self.fit_camera();
             }

@@ -40,7 +40,7 @@ pub(super) fn sandbox_with(
 /// off.
 pub(super) fn sandbox_in(dir: &std::path::Path, file: &str) -> Sandbox {
     let mut s = sandbox_with(dir, file, true, 0.0);
-    s.place_world([0.0, 0.0, 1000.0, 700.0]);
+    s.place_world([0.0, 0.0, 1000.0, 700.0], 0.0);
     s.fit_camera();
     s
 }

@@ -19,7 +19,14 @@ impl View for Words {
         // explanation on hover where it is cut.
         ui.horizontal(|ui| {
             command_button(ui, cx, Command::Describe, Some("describe"));
-            one_line(ui, tr!("words-line"), None);
+            // The page's live region is the browser's: the desktop window
+            // does not say it speaks to a screen reader.
+            let line = if cfg!(target_arch = "wasm32") {
+                tr!("words-line-web")
+            } else {
+                tr!("words-line")
+            };
+            one_line(ui, line, None);
         });
         let area = egui::ScrollArea::vertical().auto_shrink([false, true]);
         scroll(ui, cx, area, "words", |ui, cx| {
