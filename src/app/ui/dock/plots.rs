@@ -168,7 +168,13 @@ pub fn y_unit(plot: Plot<'static>, height: f32, unit: &'static str) -> Plot<'sta
     if height >= ROOMY_PLOT {
         return plot.y_axis_label(unit);
     }
-    plot.y_axis_formatter(move |mark, _| format!("{} {unit}", tick(mark)))
+    plot.y_axis_formatter(move |mark, _| beside_frame(format!("{} {unit}", tick(mark))))
+}
+
+/// A value axis's number with a space after it: egui_plot sets it flush
+/// against the plot's frame ("−200" touched it).
+fn beside_frame(number: String) -> String {
+    number + "\u{a0}"
 }
 
 /// An axis's number, with as many decimals as its step needs and the
@@ -247,7 +253,7 @@ pub fn still_plot(id: &str) -> Plot<'static> {
         .custom_x_axes(vec![spaced])
         .custom_y_axes(vec![values])
         .x_axis_formatter(axis)
-        .y_axis_formatter(axis)
+        .y_axis_formatter(|mark, _| beside_frame(tick(mark)))
         .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
         .y_grid_spacer(egui_plot::uniform_grid_spacer(value_steps))
         // Never taller than the dock leaves it (egui_plot's least is 64
@@ -387,6 +393,62 @@ mod tests {
         drawn_text(&out)
             .filter(|text| !text.is_empty() && !text.ends_with(" s"))
             .collect()
+    }
+
+    /// The value axis's numbers stand clear of the plot's frame (egui_plot
+    /// set them flush against it: "−200" touched it).
+    #[test]
+    fn a_value_axis_number_stands_clear_of_the_frame() {
+        for v in [-200.0, 3.0, 750.0, -0.37] {
+            let (lo, hi) = padded_range([v, v].into_iter());
+            let out = headless(egui::vec2(230.0, 80.0), |ui| {
+                let plot = from_start(still_plot("value"), 0.0).include_x(3.0);
+                x_axis(plot, 80.0, String::new(), "s")
+                    .include_y(lo)
+                    .include_y(hi)
+                    .height(80.0)
+                    .show(ui, |plot| {
+                        plot.line(egui_plot::Line::new(vec![[0.0, v], [3.0, v]]));
+                    });
+            });
+            // The frame: the rectangle drawn inside the window.
+            let frame = out
+                .shapes
+                .iter()
+                .filter_map(|c| match &c.shape {
+                    egui::Shape::Rect(r) if r.rect.width() < 230.0 => Some(r.rect),
+                    _ => None,
+                })
+                .next()
+                .expect("a frame");
+            let mut numbers = 0;
+            for c in &out.shapes {
+                let egui::Shape::Text(t) = &c.shape else {
+                    continue;
+                };
+                let text = t.galley.text();
+                if text.trim().is_empty() || text.ends_with(" s") {
+                    continue;
+                }
+                // Where the last letter's ink ends.
+                let ink = t
+                    .galley
+                    .rows
+                    .iter()
+                    .flat_map(|row| row.glyphs.iter())
+                    .filter(|g| !g.chr.is_whitespace() && g.chr != '\u{a0}')
+                    .map(|g| g.pos.x + g.advance_width)
+                    .fold(f32::MIN, f32::max);
+                let right = t.pos.x + ink;
+                assert!(
+                    right <= frame.left() - 3.0,
+                    "{v}: \"{text}\" ends at {right}, the frame starts at {}",
+                    frame.left()
+                );
+                numbers += 1;
+            }
+            assert!(numbers > 0, "{v}: no number");
+        }
     }
 
     /// A projector's Totals plots have 27 points of frame (46 with the
