@@ -328,11 +328,50 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// What a plot's height holds besides its frame (points): the time axis's
+/// numbers and the margins, 21 points measured, taken as 24 so that a
+/// frame reckoned smaller than it is asks for marks no closer than egui
+/// numbers (reckoned larger, a mark 21.7 points from the next was left
+/// unnumbered).
+const TIME_AXIS_POINTS: f32 = 24.0;
+
+/// `padded_range`'s range widened, where it must be, to hold a numbered
+/// mark of [`value_steps`] in a plot `height` points high (with its time
+/// axis): a constant total between two marks had no number at all (the L
+/// of the glancing hit, −13.25 kg·m²/s, between −14 and −12 in a
+/// projector's 27 points of frame). The line then lies off the middle.
+pub fn numbered_range((mut lo, mut hi): (f64, f64), height: f32) -> (f64, f64) {
+    let frame = f64::from((height - TIME_AXIS_POINTS).max(8.0));
+    for _ in 0..4 {
+        let span = hi - lo;
+        if !(span > 0.0 && span.is_finite()) {
+            break;
+        }
+        let base = span * BASE_STEP_POINTS / frame;
+        let label = value_steps(egui_plot::GridInput {
+            bounds: (lo, hi),
+            base_step_size: base,
+        })[2];
+        let below = (hi / label).floor() * label;
+        if below >= lo {
+            break;
+        }
+        // The nearer mark, and a little room past it.
+        let above = (lo / label).ceil() * label;
+        if lo - below < above - hi {
+            lo = below - 0.05 * span;
+        } else {
+            hi = above + 0.05 * span;
+        }
+    }
+    (lo, hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::{
-        bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, value_steps,
-        x_axis,
+        bar_hover, from_start, numbered_range, padded_range, steps_of_one_five_ten, still_plot,
+        tick, value_steps, x_axis,
     };
     use crate::app::ui::widgets::headless;
     use egui_plot::{Bar, GridInput};
@@ -379,7 +418,7 @@ mod tests {
     /// The value axis's numbers of a plot `height` points high showing a
     /// constant total `v` (padded as the Totals tab pads it).
     fn value_numbers(height: f32, v: f64) -> Vec<String> {
-        let (lo, hi) = padded_range([v, v].into_iter());
+        let (lo, hi) = numbered_range(padded_range([v, v].into_iter()), height);
         let out = headless(egui::vec2(230.0, height), |ui| {
             let plot = from_start(still_plot("value"), 0.0).include_x(3.0);
             x_axis(plot, height, String::new(), "s")
@@ -454,11 +493,15 @@ mod tests {
     /// A projector's Totals plots have 27 points of frame (46 with the
     /// time axis): the L plot of the π blocks (750 kg·m²/s) had no number
     /// on its axis. Its marks of 50 were 18 points apart, too close for
-    /// egui_plot's 20, and the next, 100, had none in its range.
+    /// egui_plot's 20, and the next, 100, had none in its range. The
+    /// glancing hit's L, −13.25, lay between marks of 2 (its range is
+    /// widened to −12 now).
     #[test]
     fn a_short_plot_of_a_constant_total_numbers_its_axis() {
         for height in [44.0, 46.0, 50.0, 60.0, 80.0] {
-            for v in [-12.3, -7.7, 105.0, 0.37, 20.0, -150.0, 750.0, 2.45e6] {
+            for v in [
+                -12.3, -7.7, 105.0, 0.37, 20.0, -150.0, 750.0, 2.45e6, -13.25, -0.75, 0.0, 33.3,
+            ] {
                 let numbers = value_numbers(height, v);
                 assert!(!numbers.is_empty(), "{height} points, {v}: no number");
             }

@@ -96,7 +96,7 @@ impl View for Totals {
             series(|s| s.energy()),
         ];
         plot_columns(ui, 3, |columns| {
-            let (lo, hi) = padded_range(px.iter().chain(&py).map(|p| p[1]));
+            let (lo, hi) = numbered_range(padded_range(px.iter().chain(&py).map(|p| p[1])), height);
             let plot = from_start(still_plot("momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
@@ -137,7 +137,7 @@ impl View for Totals {
                     );
                 });
             cx.note("momentum_plot", &shown.response);
-            let (lo, hi) = padded_range(l.iter().map(|p| p[1]));
+            let (lo, hi) = numbered_range(padded_range(l.iter().map(|p| p[1])), height);
             let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
@@ -160,7 +160,8 @@ impl View for Totals {
                 });
             cx.note("angular_momentum_plot", &shown.response);
             let plotted = &energy_series[..energies.len()];
-            let (lo, hi) = padded_range(plotted.iter().flatten().map(|p| p[1]));
+            let (lo, hi) =
+                numbered_range(padded_range(plotted.iter().flatten().map(|p| p[1])), height);
             let plot = from_start(still_plot("energy_plot"), start).height(height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
