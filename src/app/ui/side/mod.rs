@@ -64,6 +64,10 @@ impl View for SideDock {
         let focus = cx.model.panels.focus;
         let fields = &mut self.fields;
         let path = &mut self.path;
+        // Room beside the controls for the scroll handle shown at rest: at
+        // text size 1 the value fields ran under it.
+        let bar = &mut ui.spacing_mut().scroll;
+        bar.floating_allocated_width = bar.floating_width + bar.bar_outer_margin + 2.0;
         scroll(
             ui,
             cx,
