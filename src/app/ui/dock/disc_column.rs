@@ -62,7 +62,7 @@ impl FirstColumn {
             painter.vline(rect.right() - 0.5, rect.y_range(), line);
         }
         let mut clicked = None;
-        for (k, (cell, disc, color)) in self.rows.iter().enumerate() {
+        for (cell, disc, color) in &self.rows {
             if !scrolled(cell) {
                 continue;
             }
@@ -72,10 +72,11 @@ impl FirstColumn {
             }
             let chosen = selected == Some(*disc);
             // The row's own background, as the table paints it: every
-            // other row striped, the chosen one marked.
+            // other row striped (rows are in the discs' order, and a long
+            // table lays out only those in sight), the chosen one marked.
             let fill = if chosen {
                 visuals.selection.bg_fill
-            } else if k % 2 == 0 {
+            } else if disc % 2 == 0 {
                 visuals.faint_bg_color
             } else {
                 Color32::TRANSPARENT

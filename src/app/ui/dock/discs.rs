@@ -81,8 +81,8 @@ impl View for DiscsTable {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
         let note = model.messages.table.clone();
-        // The row just edited, kept in sight: its answer takes a line above
-        // the table, which a projector's tab had given to the rows.
+        // The row just edited, kept in sight as its answer comes (which
+        // may take a line above the table).
         let answered = self.sent.take().map(|sent| {
             let disc = sent.disc;
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
