@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the README's screenshots with the real program under Xvfb, aiming
+# Makes the screenshots of the README and docs/guide.md with the real program under Xvfb, aiming
 # the mouse through the state dump (widget rectangles, the camera).
 # Needs: xvfb xdotool libgl1-mesa-dri (see README). Usage: scripts/screenshots.sh
 set -euo pipefail
