@@ -92,7 +92,9 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
     app.click(widget(&s, "top_bar_more", 0.5));
     app.move_to([500.0, 200.0]);
     // The click may reach the window a frame after the pointer moved on.
-    app.wait_for("the hidden values on a click", 30, |s| s["ui"]["tooltips"] == 1);
+    app.wait_for("the hidden values on a click", 30, |s| {
+        s["ui"]["tooltips"] == 1
+    });
     for _ in 0..5 {
         let s = app.wait_frames(1);
         assert_eq!(s["ui"]["tooltips"], 1, "the hidden values after a click");

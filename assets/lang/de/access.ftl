@@ -14,6 +14,7 @@ help-select-next = die nächste / die vorige Scheibe auswählen
 keys-launch-centre = Enter
 help-launch-centre = eine neue, ruhende Scheibe in der Mitte der Ansicht, gleich ausgewählt
 keys-in-panels = Die Tasten wirken auf die Bedienelemente: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
+keys-in-panels-short = Esc: Tasten zurück an die Welt
 
 ## Ton
 keys-sound = F8

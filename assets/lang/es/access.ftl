@@ -14,6 +14,7 @@ help-select-next = seleccionar el disco siguiente / el anterior
 keys-launch-centre = Intro
 help-launch-centre = un disco nuevo en reposo en el centro de la vista, ya seleccionado
 keys-in-panels = Las teclas actúan sobre los controles: Esc o un clic en el mundo las devuelven al mundo.
+keys-in-panels-short = Esc: las teclas vuelven al mundo
 
 ## Sonido
 keys-sound = F8

@@ -14,6 +14,7 @@ help-select-next = seleciona o disco seguinte / o anterior
 keys-launch-centre = Enter
 help-launch-centre = um disco novo em repouso no centro da vista, já selecionado
 keys-in-panels = As teclas agem nos controles: Esc ou um clique no mundo as devolve ao mundo.
+keys-in-panels-short = Esc: as teclas voltam ao mundo
 
 ## Som
 keys-sound = F8

@@ -155,8 +155,21 @@ impl View for Strip {
             ui.separator();
             // In the rows the caption wants, whatever it says: a longer
             // text is cut with "…", the whole of it on hover.
+            // A message (the J's long report among them) may use the
+            // second row a long caption gave the strip.
+            let most = usize::from(self.lines);
+            let mut width = text_width.min(ui.available_width());
+            // The drawer open over the strip's right end hides what runs
+            // under it: the text stops short of it, cut there (whole on
+            // hover), in the same lines.
+            let strip = ui.max_rect();
+            let over = cx.open_drawer.filter(|d| d.intersects(strip));
+            if let Some(drawer) = over {
+                let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
+                width = width.min(left.max(1.0));
+            }
             let caption = if cx.keys_in_panels {
-                Some(tr!("keys-in-panels"))
+                Some(keys_in_panels(ui, width, most))
             } else {
                 caption
             };
@@ -173,21 +186,8 @@ impl View for Strip {
                 (None, None, Some(caption)) => (RichText::new(caption), "caption"),
                 (None, None, None) => (RichText::new(tr!("caption-none")), "caption"),
             };
-            // A message (the J's long report among them) may use the
-            // second row a long caption gave the strip.
-            let most = usize::from(self.lines);
-            let mut width = text_width.min(ui.available_width());
-            // The drawer open over the strip's right end hides what runs
-            // under it: the text stops short of it, cut there (whole on
-            // hover), in the same lines.
-            let strip = ui.max_rect();
-            let over = cx.open_drawer.filter(|d| d.intersects(strip));
-            if let Some(drawer) = over {
-                let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
-                width = width.min(left.max(1.0));
-            }
-            let galley = caption_galley(ui, text.into(), width, most);
-            let r = super::widgets::cut_label(ui, egui::Label::new(galley), None);
+            let (galley, whole) = caption_shown(ui, text.into(), width, most);
+            let r = super::widgets::cut_label(ui, egui::Label::new(galley), whole);
             cx.note(name, &r);
         });
     }
@@ -213,6 +213,77 @@ fn caption_galley(
         overflow_character: Some('…'),
     };
     ui.fonts(|f| f.layout_job(job))
+}
+
+/// The hint that the keys act on the controls: in full where the strip's
+/// `rows` of `width` points hold it, else its short form (how to give them
+/// back).
+fn keys_in_panels(ui: &egui::Ui, width: f32, rows: usize) -> String {
+    let full = tr!("keys-in-panels");
+    match caption_galley(ui, full.as_str().into(), width, rows).elided {
+        true => tr!("keys-in-panels-short"),
+        false => full,
+    }
+}
+
+/// [`caption_galley`] as the strip shows it, with the whole text for the
+/// tooltip where it was cut. A cut right after a full stop gives the stop
+/// up to the "…" ("each other…", not "each other.…").
+fn caption_shown(
+    ui: &egui::Ui,
+    text: egui::WidgetText,
+    width: f32,
+    max_rows: usize,
+) -> (std::sync::Arc<egui::Galley>, Option<String>) {
+    let galley = caption_galley(ui, text, width, max_rows);
+    if !galley.elided {
+        return (galley, None);
+    }
+    let whole = galley.text().to_owned();
+    let shown = on_screen(&galley);
+    let Some(kept) = shown
+        .strip_suffix('…')
+        .map(str::trim_end)
+        .and_then(|s| s.strip_suffix('.'))
+    else {
+        return (galley, Some(whole));
+    };
+    // The rows drop the spaces they break at: find the end of what is kept
+    // in the whole text by its letters.
+    let mut letters = kept.chars().filter(|c| !c.is_whitespace()).count();
+    let end = whole
+        .char_indices()
+        .find(|&(_, c)| {
+            if !c.is_whitespace() {
+                if letters == 0 {
+                    return true;
+                }
+                letters -= 1;
+            }
+            false
+        })
+        .map_or(whole.len(), |(at, _)| at);
+    let mut job = (*galley.job).clone();
+    job.text = format!("{}…", whole[..end].trim_end());
+    let len = job.text.len();
+    for section in &mut job.sections {
+        section.byte_range = section.byte_range.start.min(len)..section.byte_range.end.min(len);
+    }
+    job.sections.retain(|s| !s.byte_range.is_empty());
+    if let Some(last) = job.sections.last_mut() {
+        last.byte_range.end = len;
+    }
+    (ui.fonts(|f| f.layout_job(job)), Some(whole))
+}
+
+/// The characters `galley` shows, with its "…" if cut (without the spaces
+/// its rows break at).
+fn on_screen(galley: &egui::Galley) -> String {
+    galley
+        .rows
+        .iter()
+        .flat_map(|row| row.glyphs.iter().map(|g| g.chr))
+        .collect()
 }
 
 /// The largest 1, 2 or 5 × 10^k not above `at_most` (0 when not positive).
@@ -241,184 +312,4 @@ pub fn format_metres(m: f64) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::app::lang::Lang;
-    use crate::app::layout::{layout, Docks};
-
-    /// A caption in the strip of a window of `size` (px) at `scale`, with
-    /// the side dock docked where it fits, as the window lays it out.
-    struct Laid {
-        lang: &'static str,
-        scene: &'static str,
-        caption: String,
-        lines: u8,
-        whole: bool,
-        /// The text on screen, without the "…" of a cut.
-        shown: String,
-    }
-
-    /// Every preset's caption (and the default scene's and the π blocks'
-    /// other counts', opened from the lesson) in every language, laid out in
-    /// the strip.
-    fn captions_at(size: (f32, f32), scale: f32) -> Vec<Laid> {
-        let docks = Docks {
-            shown: true,
-            side: true,
-            tab_open: true,
-            drawer_open: false,
-            tab_height: None,
-            caption_lines: MAX_CAPTION_LINES,
-        };
-        let strip = layout(size, scale, docks).caption;
-        let ctx = egui::Context::default();
-        crate::app::look::apply(&ctx, scale, crate::app::model::panels::Theme::Dark);
-        use impulse::catalogue::{DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000};
-        let others = [DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000];
-        let scenes = crate::app::model::scenes::PRESETS
-            .iter()
-            .map(|p| (p.path, p.text))
-            .chain(others.iter().map(|f| (f.path, f.text)));
-        let mut out = Vec::new();
-        for (path, text) in scenes {
-            let scene = impulse::Scene::parse(text, path).unwrap();
-            for lang in Lang::SHIPPED {
-                let Some(caption) = scene.description_in(lang.code()) else {
-                    continue;
-                };
-                let input = egui::RawInput {
-                    screen_rect: Some(egui::Rect::from_min_size(
-                        egui::Pos2::ZERO,
-                        egui::vec2(strip.w, 600.0) / scale,
-                    )),
-                    ..Default::default()
-                };
-                let _ = ctx.run(input, |ctx| {
-                    egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
-                        let width = ui.available_width();
-                        let (lines, short) = caption_lines(ui, caption, width);
-                        let room = bar_room(lines, short);
-                        let text = egui::WidgetText::from(caption);
-                        let galley = caption_galley(ui, text, width - room, lines.into());
-                        let shown: String = galley
-                            .rows
-                            .iter()
-                            .flat_map(|row| row.glyphs.iter().map(|g| g.chr))
-                            .collect();
-                        let shown = match galley.elided {
-                            true => shown.trim_end_matches('…').to_owned(),
-                            false => shown,
-                        };
-                        out.push(Laid {
-                            lang: lang.code(),
-                            scene: path,
-                            caption: caption.to_owned(),
-                            lines,
-                            whole: !galley.elided,
-                            shown,
-                        });
-                    });
-                });
-            }
-        }
-        out
-    }
-
-    /// A caption's answer: its first sentence, up to the first full stop
-    /// (or "…") that a capital or a digit follows, or all of it.
-    fn answer(caption: &str) -> &str {
-        let ends = caption
-            .char_indices()
-            .filter(|&(_, c)| c == '.' || c == '…');
-        for (at, stop) in ends {
-            let rest = &caption[at + stop.len_utf8()..];
-            let mut next = rest.chars();
-            if next.next() == Some(' ')
-                && next
-                    .next()
-                    .is_some_and(|c| c.is_uppercase() || c.is_ascii_digit())
-            {
-                return &caption[..at + stop.len_utf8()];
-            }
-        }
-        caption
-    }
-
-    #[test]
-    fn a_captions_answer_is_its_first_sentence() {
-        assert_eq!(
-            answer("Count every hit: 31, as in π = 3.1… A disc 100× heavier."),
-            "Count every hit: 31, as in π = 3.1…"
-        );
-        assert_eq!(
-            answer("Restitution 0.5. Then 150 discs."),
-            "Restitution 0.5."
-        );
-        assert_eq!(answer("One sentence, 0.5 m. "), "One sentence, 0.5 m. ");
-    }
-
-    /// The review's case: at 1280×800 "Heavy hits light" was cut before
-    /// its answer ("…the light one flies off at …"). Every caption in
-    /// English is whole from 1024×768 up at scale 1, and in every language
-    /// from 1280×800 (at 1024×768 eight in the other languages are cut, whole on
-    /// hover); no caption takes more than two lines.
-    #[test]
-    fn captions_are_whole_in_the_strip_from_a_laptop_up() {
-        for size in [(1024.0, 768.0), (1280.0, 800.0), (1920.0, 1080.0)] {
-            let all = captions_at(size, 1.0);
-            assert!(all.len() > 40, "{} captions", all.len());
-            for c in all {
-                let (lang, scene) = (c.lang, c.scene);
-                assert!(
-                    (1..=2).contains(&c.lines),
-                    "{size:?} {lang} {scene}: {}",
-                    c.lines
-                );
-                if lang == "en" || size.0 >= 1280.0 {
-                    assert!(c.whole, "{size:?} {lang} {scene}: cut at {:?}", c.shown);
-                }
-            }
-        }
-        let heavy = captions_at((1280.0, 800.0), 1.0)
-            .into_iter()
-            .find(|c| c.lang == "en" && c.scene.contains("heavy-hits-light"));
-        assert_eq!(heavy.map(|c| (c.lines, c.whole)), Some((2, true)));
-    }
-
-    /// The third review's case: at 1024×768 at size 2 (a projector) most
-    /// captions were cut before their answer, which came at the end; the
-    /// German π blocks never showed "31". Every caption now says its
-    /// answer first, and that is whole on screen there, in every language.
-    #[test]
-    fn a_captions_answer_is_in_sight_on_a_projector() {
-        let all = captions_at((1024.0, 768.0), 2.0);
-        assert!(all.len() > 40, "{} captions", all.len());
-        let squeezed = |t: &str| t.split_whitespace().collect::<String>();
-        let cut: Vec<String> = all
-            .iter()
-            .filter(|c| !squeezed(&c.shown).starts_with(&squeezed(answer(&c.caption))))
-            .map(|c| format!("{} {}: {:?}", c.lang, c.scene, c.shown))
-            .collect();
-        assert!(cut.is_empty(), "answers cut:\n{}", cut.join("\n"));
-        let pi = all
-            .iter()
-            .find(|c| c.lang == "de" && c.scene.ends_with("preset-7-pi-blocks.toml"));
-        assert!(
-            pi.is_some_and(|c| c.shown.contains("31")),
-            "the German π blocks"
-        );
-    }
-
-    #[test]
-    fn scale_bar_lengths_are_round() {
-        assert_eq!(nice_length(1.0), 1.0);
-        assert_eq!(nice_length(1.9), 1.0);
-        assert_eq!(nice_length(2.5), 2.0);
-        assert_eq!(nice_length(7.0), 5.0);
-        assert!((nice_length(0.07) - 0.05).abs() < 1e-15);
-        assert_eq!(nice_length(0.0), 0.0);
-        assert_eq!(format_metres(0.05), "5 cm");
-        assert_eq!(format_metres(2000.0), "2 km");
-        assert_eq!(format_metres(0.0005), "0.500 mm");
-    }
-}
+mod tests;
