@@ -370,7 +370,10 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     // The other items that fit beside the name at that width, in order (the
     // last may use the room kept for "… more")...
     let galleys: Vec<_> = optional.iter().map(|item| galley(ui, &item.text)).collect();
-    let (mut room, mut used, mut shown) = (free - name_width - spacing, 0.0, 0);
+    // (`free` has the room between items: `fixed` the two after the name
+    // and the time, `more_width` the one before "… more", each item's its
+    // own before it.)
+    let (mut room, mut used, mut shown) = (free - name_width, 0.0, 0);
     for (k, g) in galleys.iter().enumerate() {
         let last = k + 1 == galleys.len();
         let need = g.size().x + spacing - if last { more_width } else { 0.0 };
@@ -383,7 +386,7 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     }
     // ... and the room they leave goes back to the name, so that it is cut
     // only where the line is really full.
-    let name_width = full_name.min((free - used - spacing).max(name_width));
+    let name_width = full_name.min((free - used).max(name_width));
     ui.spacing_mut().item_spacing.x = spacing;
     ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
     let height = ui.available_height();
