@@ -550,7 +550,17 @@ fn on_the_start_screen_tab_reaches_the_tiles_first_and_enter_opens_one() {
     let x = Xvfb::start("start keys");
     // A projector's scale in a small window: the tiles scroll.
     let app = Sandbox::start_plain(&x, &["--size", "1024x768", "--ui-scale", "2"]);
-    app.wait_for("the start screen", 60, |s| s["ui"]["start_open"] == true);
+    let s = app.wait_for("the start screen", 60, |s| {
+        s["ui"]["start_open"] == true && s["panel_widgets"]["start_screen"].is_array()
+    });
+    // The tiles lie below the top bar, which stays whole behind them (their
+    // box had cut through its line of words), and inside the window.
+    let bar = rect(&s["layout"]["panels"][0]);
+    let tiles = rect(&s["panel_widgets"]["start_screen"]);
+    assert!(
+        tiles[1] >= bar[1] + bar[3] - 0.5 && tiles[1] + tiles[3] <= 768.5,
+        "the tiles {tiles:?}, the top bar {bar:?}"
+    );
     // The first press is on the first tile, and the walk goes round the
     // start screen alone: its tiles and its language list, then the first
     // tile again (nothing behind it).

@@ -19,6 +19,8 @@ use crate::app::ui::tip::Tip;
 pub enum Place {
     /// In the middle of the window.
     Centre,
+    /// In the middle of this part of the window (points).
+    CentreOf(egui::Rect),
     /// With its top left corner here (points).
     At(egui::Pos2),
 }
@@ -118,6 +120,10 @@ impl Dialog {
             .constrain(true);
         let area = match self.place {
             Place::Centre => area.anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO),
+            Place::CentreOf(part) => area.anchor(
+                egui::Align2::CENTER_CENTER,
+                part.center() - ctx.screen_rect().center(),
+            ),
             Place::At(pos) => area.fixed_pos(pos),
         };
         let mut close = false;

@@ -237,7 +237,8 @@ impl Panels {
         // The start screen first: egui's Tab walks the controls in the
         // order they are made, so its tiles come before the panels behind
         // it (it is drawn over them all the same).
-        self.start.show(ctx, &mut cx);
+        self.start
+            .show(ctx, &mut cx, points(rects.top_bar).bottom());
         egui::TopBottomPanel::top("top_bar")
             .exact_height(points(rects.top_bar).height())
             .show(ctx, |ui| self.top_bar.ui(ui, &mut cx));

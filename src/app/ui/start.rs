@@ -3,7 +3,7 @@
 //! scale (three tiles a row where wide, two or one where narrow, scrolling
 //! where short); Esc keeps the scene that is open.
 
-use super::dialog::{scroll, Dialog};
+use super::dialog::{scroll, Dialog, Place};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::start::Tile;
@@ -19,16 +19,20 @@ const TILE_WIDTH: f32 = 210.0;
 const PICTURE_HEIGHT: f32 = 56.0;
 
 impl StartScreen {
-    pub fn show(&mut self, ctx: &egui::Context, cx: &mut Cx) {
+    /// The tiles over the window below the top bar, which ends at `below`
+    /// (points): the bar stays whole behind them, not cut through a line.
+    pub fn show(&mut self, ctx: &egui::Context, cx: &mut Cx, below: f32) {
         if !cx.model.panels.start_open || cx.model.recovery.offered.is_some() {
             return;
         }
-        let screen = ctx.screen_rect();
+        let mut part = ctx.screen_rect();
+        part.min.y = below.clamp(part.min.y, part.max.y - 100.0);
         let size = egui::vec2(
-            (screen.width() - 32.0).clamp(100.0, 1100.0),
-            (screen.height() - 40.0).max(80.0),
+            (part.width() - 32.0).clamp(100.0, 1100.0),
+            (part.height() - 24.0).max(80.0),
         );
         let dialog = Dialog::new("start_screen", Some(tr!("start-title")))
+            .place(Place::CentreOf(part))
             .width_and_max_height(size)
             .modal(ctx);
         let shown = dialog.show(ctx, cx, |ui, cx| {
