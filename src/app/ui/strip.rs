@@ -168,8 +168,13 @@ impl View for Strip {
                 let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
                 width = width.min(left.max(1.0));
             }
+            // The short hint has the full one on hover.
+            let mut full_hint = None;
             let caption = if cx.keys_in_panels {
-                Some(keys_in_panels(ui, width, most))
+                let hint = keys_in_panels(ui, width, most);
+                let full = tr!("keys-in-panels");
+                full_hint = (hint != full).then_some(full);
+                Some(hint)
             } else {
                 caption
             };
@@ -187,7 +192,11 @@ impl View for Strip {
                 (None, None, None) => (RichText::new(tr!("caption-none")), "caption"),
             };
             let (galley, whole) = caption_shown(ui, text.into(), width, most);
-            let r = super::widgets::cut_label(ui, egui::Label::new(galley), whole);
+            let more = match name {
+                "caption" => full_hint.or(whole),
+                _ => whole,
+            };
+            let r = super::widgets::cut_label(ui, egui::Label::new(galley), more);
             cx.note(name, &r);
         });
     }
