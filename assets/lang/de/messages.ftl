@@ -12,7 +12,7 @@ count-line-walls = Stöße: { $pairs } zwischen Scheiben · { $walls } mit Wänd
 pi-result = { $count } Stöße: π ≈ { $pi }
 
 ## Was ein Verfahren nicht versprechen kann
-warning-verlet = verlet: Stöße verlieren Energie; die Stoßzahl e = { $restitution } wird nicht eingehalten
+warning-verlet = verlet: Stöße verlieren Energie; die Stoßzahl e = { $restitution } wird nicht eingehalten
 warning-seed = seed: schnelle Scheiben können durcheinander hindurchfliegen
 warning-substeps = schnelle Scheiben können durcheinander hindurchfliegen: Die schnellste legt in einem kleinen Schritt { $radii }-mal ihren Radius zurück ({ $substeps ->
     [one] 1 Teilschritt
@@ -63,7 +63,7 @@ edit-aim = Geschwindigkeit festlegen
 no-room = Hier ist kein Platz für eine neue Scheibe
 
 ## Mit einer Taste geänderte Einstellungen
-law-restitution = Stoßzahl e
+law-restitution = Stoßzahl e
 law-wall-restitution = Stoßzahl der Wände
 law-roughness = Rauigkeit β
 law-wall-roughness = Rauigkeit der Wände β

@@ -12,7 +12,7 @@ count-line-walls = collisions: { $pairs } between discs · { $walls } with walls
 pi-result = { $count } collisions: π ≈ { $pi }
 
 ## What a method cannot promise
-warning-verlet = verlet: collisions lose energy; the restitution e = { $restitution } is not honoured
+warning-verlet = verlet: collisions lose energy; the restitution e = { $restitution } is not honoured
 warning-seed = seed: fast discs can pass through each other
 warning-substeps = fast discs can pass through each other: the fastest moves { $radii }× its radius in one small step ({ $substeps ->
     [one] 1 substep

@@ -12,7 +12,7 @@ count-line-walls = choques: { $pairs } entre discos · { $walls } con paredes
 pi-result = { $count } choques: π ≈ { $pi }
 
 ## Lo que un método no puede prometer
-warning-verlet = verlet: los choques pierden energía; no se respeta la restitución e = { $restitution }
+warning-verlet = verlet: los choques pierden energía; no se respeta la restitución e = { $restitution }
 warning-seed = seed: los discos rápidos pueden atravesarse
 warning-substeps = los discos rápidos pueden atravesarse: el más rápido avanza { $radii }× su radio en un paso pequeño ({ $substeps ->
     [one] 1 subpaso

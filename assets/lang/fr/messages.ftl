@@ -12,7 +12,7 @@ count-line-walls = collisions : { $pairs } entre disques · { $walls } avec les
 pi-result = { $count } collisions : π ≈ { $pi }
 
 ## Ce qu'une méthode ne peut pas promettre
-warning-verlet = verlet : les collisions perdent de l'énergie ; le coefficient de restitution e = { $restitution } n'est pas respecté
+warning-verlet = verlet : les collisions perdent de l'énergie ; le coefficient de restitution e = { $restitution } n'est pas respecté
 warning-seed = seed : des disques rapides peuvent se traverser
 warning-substeps = des disques rapides peuvent se traverser : le plus rapide parcourt { $radii }× son rayon en un petit pas ({ $substeps ->
     [one] { $substeps } sous-pas

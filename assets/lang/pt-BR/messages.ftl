@@ -12,7 +12,7 @@ count-line-walls = colisões: { $pairs } entre discos · { $walls } com paredes
 pi-result = { $count } colisões: π ≈ { $pi }
 
 ## O que um método não pode prometer
-warning-verlet = verlet: as colisões perdem energia; o coeficiente de restituição e = { $restitution } não é respeitado
+warning-verlet = verlet: as colisões perdem energia; o coeficiente de restituição e = { $restitution } não é respeitado
 warning-seed = seed: discos rápidos podem atravessar uns aos outros
 warning-substeps = discos rápidos podem atravessar uns aos outros: o mais rápido anda { $radii }× o seu raio num passo pequeno ({ $substeps ->
     [one] 1 subpasso
