@@ -184,6 +184,9 @@ pub struct UiDump {
     pub tooltips: usize,
     /// Where a tooltip showing is: [x, y, w, h] in pixels.
     pub tooltip: Option<[f32; 4]>,
+    /// Named labels cut short for want of room ("scene_name", "caption",
+    /// "message"): whole on hover.
+    pub cut: Vec<String>,
 }
 
 /// Who has the keyboard.
@@ -362,6 +365,7 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
                 },
                 tooltips: panels.marks.tooltips,
                 tooltip: panels.marks.tooltip_rect,
+                cut: panels.marks.cut.iter().cloned().collect(),
             },
         },
         realtime: RealtimeDump {

@@ -3,7 +3,7 @@
 //! the lists to read and how far they are scrolled.
 
 use serde::Serialize;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// What the views noted this frame.
 #[derive(Default)]
@@ -41,6 +41,8 @@ pub struct Marks {
     /// The dialogs shown this frame, bottom first: their layers and
     /// rectangles (points).
     pub covers: Vec<(egui::LayerId, egui::Rect)>,
+    /// Named labels cut short for want of room (whole on hover).
+    pub cut: BTreeSet<String>,
 }
 
 /// How far a list to read is scrolled (pixels).

@@ -192,6 +192,9 @@ impl View for Strip {
                 (None, None, None) => (RichText::new(tr!("caption-none")), "caption"),
             };
             let (galley, whole) = caption_shown(ui, text.into(), width, most);
+            if whole.is_some() {
+                cx.marks.cut.insert(name.into());
+            }
             let more = match name {
                 "caption" => full_hint.or(whole),
                 _ => whole,

@@ -394,6 +394,9 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
         super::widgets::one_line(ui, name.text, None)
     });
     cx.note("scene_name", &r);
+    if name_width + 0.5 < full_name {
+        cx.marks.cut.insert("scene_name".into());
+    }
     let said = [time, state].into_iter().map(|item| (item, None));
     let others = optional
         .into_iter()
