@@ -34,6 +34,9 @@ pub struct Narration {
     seen: u64,
     /// When an impact was last said (window time).
     impact_said_at: Option<f64>,
+    /// Impacts came while the last one said was too recent: the newest is
+    /// said once the gap is over.
+    impact_waiting: bool,
     /// The π blocks' count was said.
     pi_said: bool,
 }
@@ -58,10 +61,12 @@ pub fn impact_words(impact: &Impact) -> String {
         Impact::Pair(c) => {
             let (a0, a1) = c.momentum(0);
             let (b0, b1) = c.momentum(1);
+            // Lowest number first, as J and the ledger name a pair.
+            let [a, b] = c.discs_in_order();
             tr!(
                 "said-pair",
-                a = c.discs[0],
-                b = c.discs[1],
+                a = a,
+                b = b,
                 before = with_unit((a0 + b0).length(), 2, "kg·m/s"),
                 after = with_unit((a1 + b1).length(), 2, "kg·m/s")
             )
@@ -143,11 +148,14 @@ impl Sandbox {
         let recorded = self.world.ledger.recorded_impacts();
         let narration = &mut self.messages.narration;
         if recorded < narration.seen {
-            // A new scene, a reset, a rewind: counted afresh.
+            // A new scene, a reset, a rewind: counted afresh, and its first
+            // impact said at once, however recently the last scene's was.
             narration.seen = recorded;
             narration.pi_said = false;
+            narration.impact_said_at = None;
+            narration.impact_waiting = false;
         }
-        let new = recorded > narration.seen;
+        let new = recorded > narration.seen || narration.impact_waiting;
         narration.seen = recorded;
         if let (Some(result), false) = (pi_result(&self.world), narration.pi_said) {
             narration.pi_said = true;
@@ -157,6 +165,8 @@ impl Sandbox {
         let quiet = narration
             .impact_said_at
             .is_none_or(|t| now - t >= IMPACT_GAP);
+        // Paused (J stopped at an impact), the strip's report says it.
+        narration.impact_waiting = new && !quiet && !self.clock.paused;
         if new && quiet && !self.clock.paused {
             let newest = self.world.ledger.impacts().next_back().map(impact_words);
             if let Some(words) = newest {
@@ -304,6 +314,49 @@ mod tests {
         assert_eq!(pi, [&"31 collisions: π ≈ 3.1".to_string()]);
     }
 
+    /// The fifth look's case: a gas had just said an
+    /// impact when the glancing hit opened, whose one impact came 1.8 s
+    /// later, inside the gap: it was never said. A new scene's first impact
+    /// is said at once, and an impact inside the gap once the gap is over.
+    #[test]
+    fn a_new_scenes_first_impact_is_said_however_recent_the_last_scenes_was() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-8-gas.toml");
+        s.apply(Command::TogglePause);
+        let mut t = 0.0;
+        let mut frame = |s: &mut Sandbox| {
+            t += 1.0 / 60.0;
+            s.begin_frame(t);
+            s.tick(1.0 / 60.0, 1.0);
+            s.take_announcements()
+        };
+        let mut said = false;
+        for _ in 0..(20 * 60) {
+            if frame(&mut s).iter().any(|l| l.starts_with("Disc ")) {
+                said = true;
+                break;
+            }
+        }
+        assert!(said, "the gas says an impact");
+        s.apply(Command::OpenPreset(3));
+        assert_eq!(s.scene_name(), "Glancing collision");
+        if s.clock.paused {
+            s.apply(Command::TogglePause);
+        }
+        let mut lines = Vec::new();
+        for _ in 0..(3 * 60) {
+            lines.extend(frame(&mut s));
+        }
+        assert!(
+            s.world.total_pair_collisions == 1,
+            "the glancing hit happened"
+        );
+        assert!(
+            lines.iter().any(|l| l.starts_with("Disc 0 hit disc 1")),
+            "{lines:?}"
+        );
+    }
+
     #[test]
     fn a_pair_is_said_with_its_momentum_before_and_after() {
         let dir = tempfile::tempdir().unwrap();
@@ -321,7 +374,8 @@ mod tests {
             words,
             format!(
                 "Disc {} hit disc {}: momentum before {p}, after {p}",
-                c.discs[0], c.discs[1]
+                c.discs_in_order()[0],
+                c.discs_in_order()[1]
             )
         );
         // Stamped with the simulation's t (the window's clock stands still here).
