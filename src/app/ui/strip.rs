@@ -154,9 +154,9 @@ impl View for Strip {
             }
             ui.separator();
             // In the rows the caption wants, whatever it says: a longer
-            // text is cut with "…", the whole of it on hover.
-            // A message (the J's long report among them) may use the
-            // second row a long caption gave the strip.
+            // text is cut with "…", the whole of it on hover. A message (the
+            // J's long report among them) may use the second row a long
+            // caption gave the strip.
             let most = usize::from(self.lines);
             let mut width = text_width.min(ui.available_width());
             // The drawer open over the strip's right end hides what runs
