@@ -36,9 +36,36 @@ fn replace(path: &Path, bytes: &[u8], sync: bool) -> std::io::Result<()> {
         })
 }
 
+/// A file written, as the window names it to the person: from the root of
+/// the file system, since a folder named from the working directory
+/// ("impulse-out/…") says nothing to someone who started the program from
+/// a menu. In the browser, the download's own name.
+pub fn shown(path: &Path) -> String {
+    match cfg!(target_arch = "wasm32") {
+        true => path.display().to_string(),
+        false => std::path::absolute(path)
+            .unwrap_or_else(|_| path.to_path_buf())
+            .display()
+            .to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_file_is_named_from_the_root() {
+        let shown = shown(Path::new("impulse-out/glancing-collision.toml"));
+        assert!(Path::new(&shown).is_absolute(), "{shown}");
+        assert!(
+            shown.ends_with(&format!(
+                "impulse-out{}glancing-collision.toml",
+                std::path::MAIN_SEPARATOR
+            )),
+            "{shown}"
+        );
+    }
 
     #[test]
     fn a_failed_write_leaves_the_old_file_and_no_temporary() {

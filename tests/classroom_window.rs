@@ -296,6 +296,15 @@ fn j_stops_at_the_next_collision_comma_rewinds_space_resumes_and_x_exports() {
         .unwrap_or_else(|e| panic!("{}: {e}", png.display()))
         .to_rgb8();
     assert_eq!(shot.dimensions(), (1280, 800));
+    // And says where, in words of the window's language (they were English
+    // whatever the language), the file named from the root.
+    let said = app.wait_frames(1);
+    assert_eq!(
+        said["ui"]["message"],
+        format!("Screenshot saved: {}", png.display()),
+        "{}",
+        said["ui"]
+    );
 
     // Space resumes from the rewound moment and time runs on.
     app.xdo(&["key", "space"]);

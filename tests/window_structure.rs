@@ -14,7 +14,7 @@ const LAYERS: &[&[&str]] = &[
     &["drawing", "idle", "audio"],
     &["ui"],
     &["input", "page"],
-    &["dump", "options"],
+    &["dump", "screenshot", "options"],
     &["mod"],
 ];
 

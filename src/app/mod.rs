@@ -22,6 +22,7 @@ pub mod model;
 pub mod numbers;
 mod options;
 mod page;
+mod screenshot;
 mod ui;
 
 use frame_stats::ms_since;
@@ -320,7 +321,7 @@ impl App {
             self.painter.draw(&self.model, mouse);
             egui_macroquad::draw();
             // The whole frame, panels included, read back before it is shown.
-            let capture = wanted.then(dump::screen_image);
+            let capture = wanted.then(screenshot::screen_image);
             let draw_ms = ms_since(draw_start, impulse::clock::Instant::now());
             self.frame += 1;
             self.write_dump();
@@ -328,10 +329,10 @@ impl App {
             let present_start = impulse::clock::Instant::now();
             if let Some(image) = capture {
                 if let (true, Some(path)) = (closing, &self.options.screenshot) {
-                    dump::save_screenshot(path, &image);
+                    screenshot::save_screenshot(path, &image);
                 }
                 if let Some(path) = requested {
-                    dump::save_screenshot_key(&mut self.model, &image, &path);
+                    screenshot::save_screenshot_key(&mut self.model, &image, &path);
                 }
             }
             if !closing {

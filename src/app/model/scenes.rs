@@ -302,7 +302,7 @@ impl Sandbox {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
                 self.open.unsaved = false;
-                let file = path.display().to_string();
+                let file = crate::files::shown(&path);
                 let said = if cfg!(target_arch = "wasm32") {
                     tr!("scene-downloaded", file = file.as_str())
                 } else {

@@ -282,7 +282,7 @@ impl Sandbox {
                     files.len(),
                     dir.display()
                 );
-                self.toast(tr!("exported", folder = dir.display().to_string()));
+                self.toast(tr!("exported", folder = crate::files::shown(&dir)));
             }
             Err(e) => self.report(tr!(
                 "not-exported",
