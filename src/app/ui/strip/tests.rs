@@ -16,21 +16,36 @@ struct Laid {
     shown: String,
 }
 
-/// Every preset's caption (and the default scene's and the π blocks'
-/// other counts', opened from the lesson) in every language, laid out in
-/// the strip.
-fn captions_at(size: (f32, f32), scale: f32) -> Vec<Laid> {
+/// A context at `scale` and the input of a window as wide as the strip of
+/// one of `size` (px) with `caption_lines`, the side dock docked where it
+/// fits, as the window lays it out.
+fn strip_in(size: (f32, f32), scale: f32, caption_lines: u8) -> (egui::Context, egui::RawInput) {
     let docks = Docks {
         shown: true,
         side: true,
         tab_open: true,
         drawer_open: false,
         tab_height: None,
-        caption_lines: MAX_CAPTION_LINES,
+        caption_lines,
     };
     let strip = layout(size, scale, docks).caption;
     let ctx = egui::Context::default();
     crate::app::look::apply(&ctx, scale, crate::app::model::panels::Theme::Dark);
+    let input = egui::RawInput {
+        screen_rect: Some(egui::Rect::from_min_size(
+            egui::Pos2::ZERO,
+            egui::vec2(strip.w, 600.0) / scale,
+        )),
+        ..Default::default()
+    };
+    (ctx, input)
+}
+
+/// Every preset's caption (and the default scene's and the π blocks'
+/// other counts', opened from the lesson) in every language, laid out in
+/// the strip.
+fn captions_at(size: (f32, f32), scale: f32) -> Vec<Laid> {
+    let (ctx, input) = strip_in(size, scale, MAX_CAPTION_LINES);
     use impulse::catalogue::{DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000};
     let others = [DEFAULT, PI_BLOCKS_1, PI_BLOCKS_10000, PI_BLOCKS_1000000];
     let scenes = crate::app::model::scenes::PRESETS
@@ -44,14 +59,7 @@ fn captions_at(size: (f32, f32), scale: f32) -> Vec<Laid> {
             let Some(caption) = scene.description_in(lang.code()) else {
                 continue;
             };
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(strip.w, 600.0) / scale,
-                )),
-                ..Default::default()
-            };
-            let _ = ctx.run(input, |ctx| {
+            let _ = ctx.run(input.clone(), |ctx| {
                 egui::TopBottomPanel::bottom("strip").show(ctx, |ui| {
                     let width = ui.available_width();
                     let (lines, short) = caption_lines(ui, caption, width);
@@ -209,27 +217,10 @@ fn scale_bar_lengths_are_round() {
 /// on a wide screen.
 #[test]
 fn the_keys_in_panels_hint_is_whole_in_one_line() {
-    let docks = Docks {
-        shown: true,
-        side: true,
-        tab_open: true,
-        drawer_open: false,
-        tab_height: None,
-        caption_lines: 1,
-    };
     for (size, scale, full) in [((1024.0, 768.0), 2.0, false), ((1920.0, 1080.0), 1.0, true)] {
-        let strip = layout(size, scale, docks).caption;
-        let ctx = egui::Context::default();
-        crate::app::look::apply(&ctx, scale, crate::app::model::panels::Theme::Dark);
+        let (ctx, input) = strip_in(size, scale, 1);
         for lang in Lang::SHIPPED {
             crate::app::lang::set_language(lang);
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(strip.w, 600.0) / scale,
-                )),
-                ..Default::default()
-            };
             // The first frame lays the panel out before it knows its width.
             for frame in 0..2 {
                 let _ = ctx.run(input.clone(), |ctx| {
