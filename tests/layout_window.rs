@@ -58,10 +58,6 @@ fn main() -> std::process::ExitCode {
             "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
             tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world,
         ),
-        (
-            "the_scene_name_gets_the_room_the_top_bar_leaves",
-            the_scene_name_gets_the_room_the_top_bar_leaves,
-        ),
     ])
 }
 
@@ -146,9 +142,6 @@ fn check_layout(s: &Value, what: &str, scale: f64, window: [f64; 2]) {
         "{what}"
     );
 }
-
-/// The scenes the sweep opens: the digit keys, then Ctrl+N.
-const PRESET_KEYS: [&str; 11] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "ctrl+n"];
 
 fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset() {
     let x = Xvfb::start("layout");
@@ -684,58 +677,4 @@ fn tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world() {
         );
         app.quit();
     }
-}
-
-/// The top bar took the room between two items off the scene's name twice:
-/// at 1024×768 at size 2 the French glancing hit read "Choc obli…", with
-/// room to spare before the buttons. Its name is whole now; a longer one is
-/// still cut, and says so in the dump (whole on hover). On a wide window no
-/// preset's name is cut.
-fn the_scene_name_gets_the_room_the_top_bar_leaves() {
-    let x = Xvfb::start("top bar name");
-    let cut = |s: &Value| {
-        s["ui"]["cut"]
-            .as_array()
-            .expect("the dump lists what is cut")
-            .iter()
-            .any(|c| c == "scene_name")
-    };
-    let app = Sandbox::start(
-        &x,
-        &[
-            "--paused",
-            "--size",
-            "1024x768",
-            "--ui-scale",
-            "2",
-            "--lang",
-            "fr",
-        ],
-    );
-    app.move_to([500.0, 200.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_for("the glancing hit", 60, |s| {
-        s["scene_name"] == "Glancing collision"
-    });
-    let s = app.wait_frames(3);
-    // (The dump names scenes in English.)
-    assert!(!cut(&s), "Choc oblique: cut");
-    app.xdo(&["key", "1"]);
-    app.wait_for("the head-on hit", 60, |s| {
-        s["scene_name"] == "Head-on, equal masses"
-    });
-    let s = app.wait_frames(3);
-    assert!(
-        cut(&s),
-        "Choc frontal, masses égales: not cut at 1024×768, size 2"
-    );
-    app.quit();
-    let app = Sandbox::start(&x, &["--paused", "--size", "1920x1080"]);
-    app.move_to([500.0, 200.0]);
-    for key in PRESET_KEYS {
-        app.xdo(&["key", key]);
-        let s = app.wait_frames(3);
-        assert!(!cut(&s), "{}: cut at 1920×1080", s["scene_name"]);
-    }
-    app.quit();
 }

@@ -531,3 +531,6 @@ pub fn saved_scenes(dir: &Path) -> Vec<PathBuf> {
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect()
 }
+
+/// The scenes the sweep opens: the digit keys, then Ctrl+N.
+pub const PRESET_KEYS: [&str; 11] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "ctrl+n"];
