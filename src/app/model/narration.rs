@@ -314,9 +314,9 @@ mod tests {
         assert_eq!(pi, [&"31 collisions: π ≈ 3.1".to_string()]);
     }
 
-    /// The fifth look's case: a gas had just said an
-    /// impact when the glancing hit opened, whose one impact came 1.8 s
-    /// later, inside the gap: it was never said. A new scene's first impact
+    /// Seen in the In words tab: a gas had just said an impact when the
+    /// glancing hit opened, whose one impact came 1.8 s later, inside the
+    /// gap: it was never said. A new scene's first impact
     /// is said at once, and an impact inside the gap once the gap is over.
     #[test]
     fn a_new_scenes_first_impact_is_said_however_recent_the_last_scenes_was() {
