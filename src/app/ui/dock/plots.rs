@@ -187,8 +187,18 @@ fn tick(mark: egui_plot::GridMark) -> String {
         let digits = v.abs().log10().floor() - step.log10().floor();
         return quantity(v, digits.clamp(0.0, 3.0) as usize);
     }
-    let decimals = (-step.log10()).ceil().clamp(0.0, 6.0) as usize;
-    plain(v, decimals)
+    plain(v, decimals_of(step))
+}
+
+/// The decimals that write every multiple of `step` exactly: 1 for 0.5,
+/// 2 for 0.25 (from the step's power of ten alone, a mark of 0.25 read
+/// "−0.8" at −0.75), at most 6.
+fn decimals_of(step: f64) -> usize {
+    let exact = |d: i32| {
+        let scaled = step.abs() * 10f64.powi(d);
+        (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
+    };
+    (0..=6).find(|&d| exact(d)).unwrap_or(6) as usize
 }
 
 /// A plot's series named in their colours on one line above it, after a
@@ -335,36 +345,124 @@ pub fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 /// unnumbered).
 const TIME_AXIS_POINTS: f32 = 24.0;
 
-/// `padded_range`'s range widened, where it must be, to hold a numbered
-/// mark of [`value_steps`] in a plot `height` points high (with its time
-/// axis): a constant total between two marks had no number at all (the L
-/// of the glancing hit, −13.25 kg·m²/s, between −14 and −12 in a
-/// projector's 27 points of frame). The line then lies off the middle.
-pub fn numbered_range((mut lo, mut hi): (f64, f64), height: f32) -> (f64, f64) {
+/// A value axis for a plot `height` points high (with its time axis) of
+/// `series` (points of time and value): [`padded_range`]'s range, numbered
+/// by [`value_steps`]. Where every series is flat (conserved totals), each
+/// line is numbered with its own value instead, to four figures, level
+/// with it; where none of the numbered marks falls in the range (a short
+/// plot), the middle of the range is. The glancing hit's L, −13.25
+/// kg·m²/s, had no number between −14 and −12 in a projector's 27 points
+/// of frame; widened to reach −14, the range left the line off the middle,
+/// read against a number it was not; its KE, 3.125 J, was read against a
+/// "3.0" under it, and its p_x had no number at all.
+pub fn value_axis(plot: Plot<'static>, series: &[&[[f64; 2]]], height: f32) -> Plot<'static> {
+    let extent = |points: &[[f64; 2]]| {
+        points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[1]), hi.max(p[1]))
+            })
+    };
+    let extents: Vec<(f64, f64)> = series
+        .iter()
+        .map(|s| extent(s))
+        .filter(|(lo, hi)| lo.is_finite() && hi.is_finite())
+        .collect();
+    let range = padded_range(extents.iter().flat_map(|&(lo, hi)| [lo, hi]));
+    let ((lo, hi), own) = own_marks(range, height, &extents);
+    let plot = plot.include_y(lo).include_y(hi);
+    if own.is_empty() {
+        return plot;
+    }
+    let values: Vec<f64> = own.iter().map(|(v, _)| *v).collect();
+    plot.y_grid_spacer(move |input| {
+        let span = input.bounds.1 - input.bounds.0;
+        let mut marks = egui_plot::uniform_grid_spacer(value_steps)(input);
+        marks.retain(|m| m.step_size < 0.5 * span && !values.contains(&m.value));
+        let own = values.iter().map(|&value| egui_plot::GridMark {
+            value,
+            step_size: span,
+        });
+        marks.extend(own);
+        marks
+    })
+    // The other marks are grid lines without numbers, which would crowd
+    // the lines' own.
+    .y_axis_formatter(move |mark, _| {
+        own.iter()
+            .find(|(v, _)| *v == mark.value)
+            .map_or_else(String::new, |(_, label)| beside_frame(label.clone()))
+    })
+}
+
+/// [`value_axis`]'s range and marks of its own, on `range` of a plot
+/// `height` points high, its series spanning `extents`: each series' value
+/// where all are flat (within a hundredth of the range) and their numbers
+/// do not crowd each other, the range then widened to hold the numbers of
+/// the top and bottom lines (at a projector's size the top one was cut
+/// off); else the middle, where the range has no numbered mark of
+/// [`value_steps`]; else none. Each is rounded to a hundredth of the range
+/// (so it sits on its line to within a point) and written without
+/// trailing zeros.
+#[allow(clippy::type_complexity)]
+fn own_marks(
+    (lo, hi): (f64, f64),
+    height: f32,
+    extents: &[(f64, f64)],
+) -> ((f64, f64), Vec<(f64, String)>) {
+    let span = hi - lo;
+    if !(span > 0.0 && span.is_finite()) {
+        return ((lo, hi), Vec::new());
+    }
     let frame = f64::from((height - TIME_AXIS_POINTS).max(8.0));
-    for _ in 0..4 {
-        let span = hi - lo;
-        if !(span > 0.0 && span.is_finite()) {
-            break;
-        }
-        let base = span * BASE_STEP_POINTS / frame;
-        let label = value_steps(egui_plot::GridInput {
-            bounds: (lo, hi),
-            base_step_size: base,
-        })[2];
-        let below = (hi / label).floor() * label;
-        if below >= lo {
-            break;
-        }
-        // The nearer mark, and a little room past it.
-        let above = (lo / label).ceil() * label;
-        if lo - below < above - hi {
-            lo = below - 0.05 * span;
+    let mark = |v: f64, span: f64| {
+        let step = 10f64.powf((span / 100.0).log10().floor());
+        let decimals = decimals_of(step);
+        let value = (v / step).round() * step;
+        let text = plain(value, decimals);
+        let text = if decimals > 0 {
+            let trimmed = text.trim_end_matches('0');
+            trimmed.trim_end_matches(['.', ',']).to_string()
         } else {
-            hi = above + 0.05 * span;
+            text
+        };
+        (value, text)
+    };
+    let flat = extents.iter().all(|(a, b)| b - a <= 0.01 * span);
+    if flat && !extents.is_empty() {
+        let mut values: Vec<f64> = extents.iter().map(|(a, b)| 0.5 * (a + b)).collect();
+        values.sort_by(f64::total_cmp);
+        values.dedup_by(|a, b| (*a - *b).abs() <= 0.01 * span);
+        let (least, most) = (values[0], values[values.len() - 1]);
+        // Half a number's height past the outer lines, as a share of the
+        // frame: a margin m on both sides of their spread d has
+        // m = half · (d + 2m).
+        let half = 0.5 * f64::from(VALUE_LABEL_POINTS) / frame;
+        let (wide_lo, wide_hi) = if half < 0.5 && most > least {
+            let margin = half * (most - least) / (1.0 - 2.0 * half);
+            (lo.min(least - margin), hi.max(most + margin))
+        } else {
+            (lo, hi)
+        };
+        let wide = wide_hi - wide_lo;
+        let apart = values
+            .windows(2)
+            .all(|w| (w[1] - w[0]) / wide * frame >= f64::from(VALUE_LABEL_POINTS));
+        // Where two lines' numbers do not fit (a projector's 27 points of
+        // frame hold one), the axis's own numbers.
+        if apart && (values.len() == 1 || half < 0.5) {
+            let marks = values.into_iter().map(|v| mark(v, wide)).collect();
+            return ((wide_lo, wide_hi), marks);
         }
     }
-    (lo, hi)
+    let label = value_steps(egui_plot::GridInput {
+        bounds: (lo, hi),
+        base_step_size: span * BASE_STEP_POINTS / frame,
+    })[2];
+    if (hi / label).floor() * label >= lo {
+        return ((lo, hi), Vec::new());
+    }
+    ((lo, hi), vec![mark(0.5 * (lo + hi), span)])
 }
 
 #[cfg(test)]

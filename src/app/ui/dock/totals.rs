@@ -96,8 +96,8 @@ impl View for Totals {
             series(|s| s.energy()),
         ];
         plot_columns(ui, 3, |columns| {
-            let (lo, hi) = numbered_range(padded_range(px.iter().chain(&py).map(|p| p[1])), height);
             let plot = from_start(still_plot("momentum_plot"), start).height(height);
+            let plot = value_axis(plot, &[&px, &py], height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
@@ -105,8 +105,6 @@ impl View for Totals {
             let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 // Too low for a rotated label: the line above gives the units.
                 .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
-                .include_y(lo)
-                .include_y(hi)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
                 })
@@ -137,16 +135,14 @@ impl View for Totals {
                     );
                 });
             cx.note("momentum_plot", &shown.response);
-            let (lo, hi) = numbered_range(padded_range(l.iter().map(|p| p[1])), height);
             let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
+            let plot = value_axis(plot, &[&l], height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
             };
             let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
-                .include_y(lo)
-                .include_y(hi)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} kg·m²/s", plain(v.x, 2), plain(v.y, 3))
                 })
@@ -160,9 +156,9 @@ impl View for Totals {
                 });
             cx.note("angular_momentum_plot", &shown.response);
             let plotted = &energy_series[..energies.len()];
-            let (lo, hi) =
-                numbered_range(padded_range(plotted.iter().flatten().map(|p| p[1])), height);
             let plot = from_start(still_plot("energy_plot"), start).height(height);
+            let series: Vec<&[[f64; 2]]> = plotted.iter().map(Vec::as_slice).collect();
+            let plot = value_axis(plot, &series, height);
             let plot = match legend(Corner::RightBottom) {
                 Some(l) => plot.legend(l),
                 None => plot,
@@ -173,8 +169,6 @@ impl View for Totals {
                     (false, true) => tr!("axis-energy"),
                     (false, false) => format!("{} (J)", tr!("symbol-ke")),
                 })
-                .include_y(lo)
-                .include_y(hi)
                 .label_formatter(|name, v| {
                     format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
                 })

@@ -1,6 +1,6 @@
 //! The plots' axes and ranges, laid out by egui without a window.
 use super::{
-    bar_hover, from_start, numbered_range, padded_range, steps_of_one_five_ten, still_plot, tick,
+    bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, value_axis,
     value_steps, x_axis,
 };
 use crate::app::ui::widgets::headless;
@@ -45,23 +45,102 @@ fn drawn_text(out: &egui::FullOutput) -> impl Iterator<Item = String> + '_ {
         })
 }
 
-/// The value axis's numbers of a plot `height` points high showing a
-/// constant total `v` (padded as the Totals tab pads it).
-fn value_numbers(height: f32, v: f64) -> Vec<String> {
-    let (lo, hi) = numbered_range(padded_range([v, v].into_iter()), height);
+/// The value axis's numbers of a plot `height` points high showing
+/// constant totals `values` (its axis as the Totals tab makes it), each
+/// with the height of its middle; the heights of the lines; the frame.
+fn plotted_numbers(height: f32, values: &[f64]) -> (Vec<(String, f32)>, Vec<f32>, egui::Rect) {
+    let series: Vec<Vec<[f64; 2]>> = values.iter().map(|&v| vec![[0.0, v], [3.0, v]]).collect();
     let out = headless(egui::vec2(230.0, height), |ui| {
         let plot = from_start(still_plot("value"), 0.0).include_x(3.0);
+        let slices: Vec<&[[f64; 2]]> = series.iter().map(Vec::as_slice).collect();
+        let plot = value_axis(plot, &slices, height);
         x_axis(plot, height, String::new(), "s")
-            .include_y(lo)
-            .include_y(hi)
             .height(height)
             .show(ui, |plot| {
-                plot.line(egui_plot::Line::new(vec![[0.0, v], [3.0, v]]));
+                for points in &series {
+                    plot.line(egui_plot::Line::new(points.clone()));
+                }
             });
     });
-    drawn_text(&out)
-        .filter(|text| !text.is_empty() && !text.ends_with(" s"))
-        .collect()
+    let lines = out
+        .shapes
+        .iter()
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Path(p) if p.points.len() == 2 && p.points[0].y == p.points[1].y => {
+                Some(p.points[0].y)
+            }
+            _ => None,
+        })
+        .collect();
+    let frame = out
+        .shapes
+        .iter()
+        .find_map(|c| match &c.shape {
+            egui::Shape::Rect(r) if r.rect.width() < 230.0 => Some(r.rect),
+            _ => None,
+        })
+        .expect("a frame");
+    let numbers = out
+        .shapes
+        .iter()
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Text(t) => Some(t),
+            _ => None,
+        })
+        .map(|t| {
+            (
+                t.galley.text().trim().to_string(),
+                t.pos.x,
+                t.pos.y + 0.5 * t.galley.size().y,
+            )
+        })
+        // Left of the frame and beside it: the value axis's, not the
+        // time axis's under it.
+        .filter(|(text, x, middle)| {
+            !text.is_empty() && *x < frame.left() && *middle <= frame.bottom()
+        })
+        .map(|(text, _, middle)| (text, middle))
+        .collect();
+    (numbers, lines, frame)
+}
+
+/// [`plotted_numbers`] of one constant total `v`: each number with how far
+/// its middle is from the line (points), and how far the line is from the
+/// middle of the frame.
+fn value_numbers(height: f32, v: f64) -> (Vec<(String, f32)>, f32) {
+    let (numbers, lines, frame) = plotted_numbers(height, &[v]);
+    let line = lines[0];
+    let numbers = numbers
+        .into_iter()
+        .map(|(t, y)| (t, (y - line).abs()))
+        .collect();
+    (numbers, (line - frame.center().y).abs())
+}
+
+/// Two conserved totals in one plot (the head-on hit's p_x and p_y): each
+/// line numbered with its own value, level with it, where the plot has
+/// room for two numbers (a projector's 27 points of frame hold one).
+#[test]
+fn two_constant_totals_are_numbered_each_with_its_value() {
+    for height in [70.0, 120.0, 300.0] {
+        let (numbers, lines, frame) = plotted_numbers(height, &[2.5, 0.0]);
+        let texts: Vec<_> = numbers.iter().map(|(t, _)| t.as_str()).collect();
+        assert_eq!(texts.len(), 2, "{height} points: {texts:?}");
+        for (text, line) in [("2.5", lines[0]), ("0", lines[1])] {
+            let (_, y) = numbers.iter().find(|(t, _)| t == text).expect(text);
+            assert!(
+                (y - line).abs() < 1.0,
+                "{height} points: {text} at {y}, its line at {line}"
+            );
+            // The whole number beside the frame (at the top, a projector's
+            // "2" was cut off).
+            let half = 10.0;
+            assert!(
+                y - half >= frame.top() - 1.0 && y + half <= frame.bottom() + 1.0,
+                "{height} points: {text} at {y}, the frame {frame:?}"
+            );
+        }
+    }
 }
 
 /// The value axis's numbers stand clear of the plot's frame (egui_plot
@@ -124,16 +203,58 @@ fn a_value_axis_number_stands_clear_of_the_frame() {
 /// time axis): the L plot of the π blocks (750 kg·m²/s) had no number
 /// on its axis. Its marks of 50 were 18 points apart, too close for
 /// egui_plot's 20, and the next, 100, had none in its range. The
-/// glancing hit's L, −13.25, lay between marks of 2 (its range is
-/// widened to −12 now).
+/// glancing hit's L, −13.25, lay between marks of 2; its range was then
+/// widened to −14, which left the line off the middle, read against a
+/// number it was not. Now a constant total stays in the middle, and a
+/// number stands beside it: a mark of the axis, or the line's own value.
 #[test]
-fn a_short_plot_of_a_constant_total_numbers_its_axis() {
+fn a_short_plot_of_a_constant_total_numbers_its_line_in_the_middle() {
     for height in [44.0, 46.0, 50.0, 60.0, 80.0] {
         for v in [
             -12.3, -7.7, 105.0, 0.37, 20.0, -150.0, 750.0, 2.45e6, -13.25, -0.75, 0.0, 33.3,
         ] {
-            let numbers = value_numbers(height, v);
+            let (numbers, off_middle) = value_numbers(height, v);
             assert!(!numbers.is_empty(), "{height} points, {v}: no number");
+            assert!(
+                off_middle < 1.0,
+                "{height} points, {v}: the line is {off_middle} points off the middle"
+            );
+            // A number level with the line is its value, to a hundredth
+            // of the range (which is ±5 % of the value, or ±0.01).
+            let span = 2.0 * (0.05 * v.abs()).max(0.01);
+            for (text, off) in &numbers {
+                if *off < 1.5 {
+                    let read: f64 = text
+                        .replace('−', "-")
+                        .replace(',', ".")
+                        .parse()
+                        .unwrap_or(f64::NAN);
+                    assert!(
+                        (read - v).abs() <= 0.01 * span,
+                        "{height} points, {v}: \"{text}\" beside the line"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A conserved total is numbered with its own value, level with its line
+/// and alone: the glancing hit's L between two marks of a projector's
+/// plot, its KE read against a "3.0" under the line, the π blocks' L.
+#[test]
+fn a_constant_total_is_numbered_with_its_own_value() {
+    for (v, text) in [
+        (-13.25, "−13.25"),
+        (3.125, "3.125"),
+        (750.0, "750"),
+        (0.0, "0"),
+    ] {
+        for height in [50.0, 120.0, 200.0] {
+            let (numbers, _) = value_numbers(height, v);
+            let texts: Vec<_> = numbers.iter().map(|(t, _)| t.as_str()).collect();
+            assert_eq!(texts, [text], "{height} points");
+            assert!(numbers[0].1 < 1.0, "{height} points: {numbers:?}");
         }
     }
 }
