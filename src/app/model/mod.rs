@@ -480,4 +480,4 @@ impl Sandbox {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -7,7 +7,7 @@ use impulse::Scene;
 
 /// A sandbox on the preset whose file is `file`, its recovery folder
 /// `dir` with autosave every `autosave` seconds (0: off).
-pub(super) fn sandbox_with(
+pub(crate) fn sandbox_with(
     dir: &std::path::Path,
     file: &str,
     paused: bool,

@@ -24,12 +24,20 @@ impl View for Momenta {
     fn ui(&mut self, ui: &mut egui::Ui, cx: &mut Cx) {
         let model = cx.model;
         let ps = &model.world.particles;
-        if ps.is_empty() || ps.len() > DIAGRAM_MAX_DISCS {
-            ui.label(if ps.is_empty() {
-                tr!("momenta-no-discs")
-            } else {
-                tr!("momenta-too-many")
-            });
+        if ps.is_empty() {
+            ui.label(tr!("momenta-no-discs"));
+            return;
+        }
+        if ps.len() > DIAGRAM_MAX_DISCS {
+            // The total here: the top bar, which this once pointed to,
+            // keeps it behind "… more" on a projector.
+            let total = ps.iter().map(|p| p.momentum()).sum::<glam::DVec2>();
+            ui.label(tr!(
+                "momenta-too-many",
+                total = vector(total, 3, "kg·m/s"),
+                count = ps.len(),
+                most = DIAGRAM_MAX_DISCS
+            ));
             return;
         }
         let mut at = glam::DVec2::ZERO;
@@ -116,5 +124,52 @@ impl View for Momenta {
                 }
             });
         cx.note("momenta_plot", &plot.response);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Momenta;
+    use crate::app::model::tests::sandbox_with;
+    use crate::app::numbers::vector;
+    use crate::app::ui::widgets::headless;
+    use crate::app::ui::{Cx, Marks, View};
+
+    /// A gas too large for the diagram: the tab gives its total momentum.
+    /// It pointed to the top bar, which on a projector keeps the total
+    /// behind "… more".
+    #[test]
+    fn a_gas_too_large_for_the_diagram_gets_its_total_in_the_tab() {
+        let dir = tempfile::tempdir().unwrap();
+        let model = sandbox_with(dir.path(), "preset-8-gas.toml", true, 0.0);
+        let n = model.world.particles.len();
+        assert!(n > super::DIAGRAM_MAX_DISCS, "{n} discs");
+        let total = model.world.particles.iter().map(|p| p.momentum()).sum();
+        let (mut out, mut marks) = (Vec::new(), Marks::default());
+        let shown = headless(egui::vec2(600.0, 200.0), |ui| {
+            let mut cx = Cx {
+                model: &model,
+                out: &mut out,
+                marks: &mut marks,
+                drawer: false,
+                open_drawer: None,
+                keys_in_panels: false,
+            };
+            Momenta.ui(ui, &mut cx);
+        });
+        let text: String = shown
+            .shapes
+            .iter()
+            .filter_map(|c| match &c.shape {
+                egui::Shape::Text(t) => Some(t.galley.text().to_string()),
+                _ => None,
+            })
+            .collect();
+        let total = vector(total, 3, "kg·m/s");
+        assert!(text.contains(&total), "{text:?} without {total}");
+        assert!(
+            text.contains(&n.to_string()) && !text.contains("top bar"),
+            "{text:?}"
+        );
     }
 }
