@@ -264,7 +264,7 @@ pub fn still_plot(id: &str) -> Plot<'static> {
         .custom_y_axes(vec![values])
         .x_axis_formatter(axis)
         .y_axis_formatter(|mark, _| beside_frame(tick(mark)))
-        .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_five_ten))
+        .x_grid_spacer(egui_plot::uniform_grid_spacer(steps_of_one_two_or_five_ten))
         .y_grid_spacer(egui_plot::uniform_grid_spacer(value_steps))
         // Never taller than the dock leaves it (egui_plot's least is 64
         // points, which grew a short dock over the world).
@@ -283,13 +283,19 @@ pub fn from_start(plot: Plot<'static>, start: f64) -> Plot<'static> {
     plot.include_x(start).include_x(start + 1.0)
 }
 
-/// The grid's steps: the smallest power of ten the plot has room for, and
-/// five and ten of it. egui_plot's own steps go up by tens, so that a plot
-/// of 0 to 9 s, too narrow to number every second, numbered only 0 s.
-fn steps_of_one_five_ten(input: egui_plot::GridInput) -> [f64; 3] {
+/// The grid's steps: the smallest power of ten the plot has room for, the
+/// smallest of two or five of it far enough apart to be numbered, and ten
+/// of it. egui_plot's own steps go up by tens, so that a plot of 0 to 9 s,
+/// too narrow to number every second, numbered only 0 s; and with five
+/// always, a projector's plot of the first 4.7 s still did.
+fn steps_of_one_two_or_five_ten(input: egui_plot::GridInput) -> [f64; 3] {
     let least = input.base_step_size.abs().max(f64::MIN_POSITIVE);
     let unit = 10f64.powf(least.log10().ceil());
-    [unit, 5.0 * unit, 10.0 * unit]
+    // The time axis numbers marks from 40 points apart (`still_plot`),
+    // five of egui_plot's least grid spacing.
+    let numbered = least * 40.0 / BASE_STEP_POINTS;
+    let middle = if 2.0 * unit >= numbered { 2.0 } else { 5.0 };
+    [unit, middle * unit, 10.0 * unit]
 }
 
 /// The least room between two numbers of a value axis (points): egui_plot

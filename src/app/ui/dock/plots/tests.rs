@@ -1,22 +1,26 @@
 //! The plots' axes and ranges, laid out by egui without a window.
 use super::{
-    bar_hover, from_start, padded_range, steps_of_one_five_ten, still_plot, tick, value_axis,
-    value_steps, x_axis,
+    bar_hover, from_start, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
+    value_axis, value_steps, x_axis,
 };
 use crate::app::ui::widgets::headless;
 use egui_plot::{Bar, GridInput};
 
 #[test]
-fn the_grid_steps_are_a_power_of_ten_then_five_and_ten_of_it() {
+fn the_grid_steps_are_a_power_of_ten_then_two_or_five_and_ten_of_it() {
     let steps = |base_step_size| {
-        steps_of_one_five_ten(GridInput {
+        steps_of_one_two_or_five_ten(GridInput {
             bounds: (0.0, 10.0),
             base_step_size,
         })
     };
-    assert_eq!(steps(0.3), [1.0, 5.0, 10.0]);
+    // Two of the unit where its marks are 40 points apart (5 base steps),
+    // else five.
+    assert_eq!(steps(0.3), [1.0, 2.0, 10.0]);
+    assert_eq!(steps(0.5), [1.0, 5.0, 10.0]);
     assert_eq!(steps(1.0), [1.0, 5.0, 10.0]);
-    assert_eq!(steps(1.5), [10.0, 50.0, 100.0]);
+    assert_eq!(steps(1.5), [10.0, 20.0, 100.0]);
+    assert_eq!(steps(5.0), [10.0, 50.0, 100.0]);
     let tiny = steps(0.0);
     assert!(tiny.iter().all(|s| s.is_finite() && *s > 0.0), "{tiny:?}");
 }
@@ -320,6 +324,18 @@ fn a_short_time_axis_numbers_every_five_seconds() {
     // And never so close that they run into each other.
     let numbers = time_numbers(60.0, 9.0);
     assert!(!numbers.contains(&"1 s".to_string()), "{numbers:?}");
+}
+
+/// The first seconds of a projector's plot (a frame 118 points wide):
+/// numbered every two seconds (with steps of five, "0 s" stood alone until
+/// 5 s).
+#[test]
+fn a_short_time_axis_numbers_every_two_seconds_where_they_fit() {
+    let numbers = time_numbers(150.0, 4.7);
+    assert!(
+        numbers.contains(&"2 s".to_string()) && numbers.contains(&"4 s".to_string()),
+        "{numbers:?}"
+    );
 }
 
 #[test]
