@@ -108,7 +108,7 @@ impl BottomDock {
                 .show_ui(&mut strip, |ui| {
                     for (tab, _) in &self.tabs {
                         if ui.selectable_label(*tab == chosen, tab.title()).clicked() {
-                            cx.send(Command::ShowTab(*tab));
+                            cx.send(Command::ChooseTab(*tab));
                         }
                     }
                 })
@@ -117,7 +117,7 @@ impl BottomDock {
             let tabs: Vec<_> = self.tabs.iter().map(|(t, _)| *t).collect();
             let at = tabs.iter().position(|t| *t == chosen);
             if let Some(k) = super::widgets::arrow_choice(&r, at, tabs.len()) {
-                cx.send(Command::ShowTab(tabs[k]));
+                cx.send(Command::ChooseTab(tabs[k]));
             }
         }
         for (tab, _) in self.tabs.iter().filter(|_| wanted <= row_rect.width()) {
