@@ -61,6 +61,18 @@ pub fn law_name(law: Law) -> String {
     }
 }
 
+/// The totals the Totals tab plots: momentum, angular momentum, energies.
+fn totals_of(world: &impulse::World) -> [f64; 5] {
+    let m = world.metrics();
+    [
+        m.momentum.x,
+        m.momentum.y,
+        m.angular_momentum,
+        m.kinetic_energy,
+        m.rotational_energy,
+    ]
+}
+
 impl Sandbox {
     /// Carries out `command`. A command that may change the scene is
     /// remembered for undo only if it did; while a modal question waits,
@@ -76,10 +88,18 @@ impl Sandbox {
         let merge = self.undo.would_merge(kind, now);
         let before = (!merge).then(|| self.moment());
         let print = self.fingerprint();
+        let totals = totals_of(&self.world);
         let voids_caption = command.voids_caption();
         self.carry_out(command);
         if self.fingerprint() == print {
             return;
+        }
+        // A total moved by the person (a disc launched, flung, removed or
+        // edited) is no change the physics made: the Totals tab starts
+        // afresh from it. A launch had read "Δp (6.000, 1.500) kg·m/s"
+        // with nothing to say a disc had come.
+        if totals_of(&self.world) != totals {
+            self.record.totals.clear();
         }
         match before {
             Some(moment) => self.undo.remember(move || moment, kind, now),

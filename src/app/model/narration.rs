@@ -42,6 +42,12 @@ pub struct Narration {
 }
 
 impl Narration {
+    /// Forgets the lines said (a new scene, a reset, a cleared box); what
+    /// the page's live region has not yet read stays to be read.
+    pub fn start_afresh(&mut self) {
+        self.said.clear();
+    }
+
     fn say(&mut self, t: f64, text: String) {
         if self.said.back().is_some_and(|(_, last)| *last == text) {
             return;
@@ -136,6 +142,14 @@ impl Sandbox {
         self.messages.narration.say(t, text);
     }
 
+    /// Says `text` of something that happened at the simulation's time
+    /// `t`: an impact is stamped with its own instant, as the ledger and J
+    /// give it (stamped with the frame's, the head-on hit at 2.400 s read
+    /// "t = 2.42 s").
+    fn announce_at(&mut self, t: f64, text: String) {
+        self.messages.narration.say(t, text);
+    }
+
     /// The lines not yet handed to the page's live region.
     pub fn take_announcements(&mut self) -> Vec<String> {
         std::mem::take(&mut self.messages.narration.unread)
@@ -168,10 +182,10 @@ impl Sandbox {
         // Paused (J stopped at an impact), the strip's report says it.
         narration.impact_waiting = new && !quiet && !self.clock.paused;
         if new && quiet && !self.clock.paused {
-            let newest = self.world.ledger.impacts().next_back().map(impact_words);
-            if let Some(words) = newest {
+            let newest = self.world.ledger.impacts().next_back();
+            if let Some((t, words)) = newest.map(|i| (i.time(), impact_words(i))) {
                 self.messages.narration.impact_said_at = Some(now);
-                self.announce(words);
+                self.announce_at(t, words);
             }
         }
     }
@@ -355,6 +369,71 @@ mod tests {
             lines.iter().any(|l| l.starts_with("Disc 0 hit disc 1")),
             "{lines:?}"
         );
+    }
+
+    /// Seen in the In words tab (a review): after the sandbox's gas, the
+    /// head-on hit's list went on with "Disc 23 hit the right wall" at
+    /// 4.14 s under its own 2.42 s, and its impact read "t = 2.42 s" where
+    /// the ledger and J give 2.400 s. A new scene starts the list afresh,
+    /// and an impact is stamped with its own instant.
+    #[test]
+    fn a_new_scene_starts_the_list_afresh_and_an_impact_has_its_own_time() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-8-gas.toml");
+        s.apply(Command::TogglePause);
+        let mut t = 0.0;
+        // Frames of 0.07 s: none ends at the impact's 2.400 s.
+        let mut frame = |s: &mut Sandbox| {
+            t += 0.07;
+            s.begin_frame(t);
+            s.tick(0.07, 1.0);
+        };
+        let said = |s: &Sandbox| {
+            s.messages
+                .narration
+                .said
+                .iter()
+                .any(|(_, l)| l.starts_with("Disc "))
+        };
+        for _ in 0..300 {
+            if said(&s) {
+                break;
+            }
+            frame(&mut s);
+        }
+        assert!(said(&s), "the gas says an impact");
+        s.apply(Command::OpenPreset(0));
+        assert_eq!(s.scene_name(), "Head-on, equal masses");
+        let lines: Vec<_> = s
+            .messages
+            .narration
+            .said
+            .iter()
+            .map(|(_, l)| l.clone())
+            .collect();
+        assert_eq!(lines, ["Opened Head-on, equal masses"]);
+        if s.clock.paused {
+            s.apply(Command::TogglePause);
+        }
+        for _ in 0..60 {
+            frame(&mut s);
+        }
+        let impact = s
+            .world
+            .ledger
+            .impacts()
+            .next()
+            .expect("the head-on hit")
+            .time();
+        let stamped: Vec<f64> = s
+            .messages
+            .narration
+            .said
+            .iter()
+            .filter(|(_, l)| l.starts_with("Disc "))
+            .map(|(t, _)| *t)
+            .collect();
+        assert_eq!(stamped, [impact], "{:?}", s.messages.narration.said);
     }
 
     #[test]

@@ -103,6 +103,9 @@ impl Sandbox {
             self.undo.remember(|| before, what, self.session.now);
             self.open.edited = true;
             self.open.unsaved = true;
+            // The totals the person changed: the Totals tab starts afresh
+            // (as for the edits of `apply`).
+            self.record.totals.clear();
         }
         match released {
             Released::Launched(i) => self.selected = Some(i),

@@ -473,22 +473,4 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
     }
 }
 
-/// A second click on the tab in sight folds the dock; choosing that tab
-/// from the tab menu (the row's narrow form) shows it and never folds it:
-/// it had, and the Collisions chosen from the menu vanished.
-#[test]
-fn a_tab_chosen_from_the_menu_is_shown_and_a_second_click_on_a_tab_folds_it() {
-    let dir = tempfile::tempdir().unwrap();
-    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
-    s.apply(Command::ClickTab(DockTab::Collisions));
-    assert!(s.panels.dock_expanded && s.panels.tab == DockTab::Collisions);
-    s.apply(Command::ChooseTab(DockTab::Collisions));
-    assert!(s.panels.dock_expanded && s.panels.tab == DockTab::Collisions);
-    s.apply(Command::ClickTab(DockTab::Collisions));
-    assert!(!s.panels.dock_expanded, "a second click folds the dock");
-    s.apply(Command::ChooseTab(DockTab::Collisions));
-    assert!(s.panels.dock_expanded, "the menu unfolds it");
-    s.apply(Command::ToggleDocks);
-    s.apply(Command::ChooseTab(DockTab::Speeds));
-    assert!(s.panels.docks_open && s.panels.dock_expanded && s.panels.tab == DockTab::Speeds);
-}
+mod tabs_and_totals;

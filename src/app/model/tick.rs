@@ -123,6 +123,10 @@ impl Sandbox {
         self.record.history.clear();
         self.record.totals.clear();
         self.world.ledger.clear();
+        // In words too: the last scene's lines, with their times from
+        // another run, read as this one's ("Disc 23 hit the right wall" in
+        // a scene of two discs, 4.14 s under 2.42 s).
+        self.messages.narration.start_afresh();
     }
 
     /// Runs to the next impact, between discs or on a wall, and pauses at

@@ -356,7 +356,7 @@ const TIME_AXIS_POINTS: f32 = 24.0;
 /// by [`value_steps`]. Where every series is flat (conserved totals), each
 /// line is numbered with its own value instead, to four figures, level
 /// with it; where none of the numbered marks falls in the range (a short
-/// plot), the middle of the range is. The glancing hit's L, −13.25
+/// plot), the range is widened to hold one. The glancing hit's L, −13.25
 /// kg·m²/s, had no number between −14 and −12 in a projector's 27 points
 /// of frame; widened to reach −14, the range left the line off the middle,
 /// read against a number it was not; its KE, 3.125 J, was read against a
@@ -406,8 +406,8 @@ pub fn value_axis(plot: Plot<'static>, series: &[&[[f64; 2]]], height: f32) -> P
 /// where all are flat (within a hundredth of the range) and their numbers
 /// do not crowd each other, the range then widened to hold the numbers of
 /// the top and bottom lines (at a projector's size the top one was cut
-/// off); else the middle, where the range has no numbered mark of
-/// [`value_steps`]; else none. Each is rounded to a hundredth of the range
+/// off); else none, the range widened to hold a numbered mark of
+/// [`value_steps`]. Each is rounded to a hundredth of the range
 /// (so it sits on its line to within a point) and written without
 /// trailing zeros.
 #[allow(clippy::type_complexity)]
@@ -461,14 +461,39 @@ fn own_marks(
             return ((wide_lo, wide_hi), marks);
         }
     }
-    let label = value_steps(egui_plot::GridInput {
-        bounds: (lo, hi),
-        base_step_size: span * BASE_STEP_POINTS / frame,
-    })[2];
-    if (hi / label).floor() * label >= lo {
-        return ((lo, hi), Vec::new());
+    // Lines that move: the axis's numbers (one in the middle of the range
+    // instead, a KE going from 3 to 22 J read "12.7", as if a value).
+    (numbered_range((lo, hi), height), Vec::new())
+}
+
+/// A range widened, where it must be, to hold a numbered mark of
+/// [`value_steps`] in a plot `height` points high (with its time axis):
+/// a short plot's range can fall between two marks and have no number.
+fn numbered_range((mut lo, mut hi): (f64, f64), height: f32) -> (f64, f64) {
+    let frame = f64::from((height - TIME_AXIS_POINTS).max(8.0));
+    for _ in 0..4 {
+        let span = hi - lo;
+        if !(span > 0.0 && span.is_finite()) {
+            break;
+        }
+        let base = span * BASE_STEP_POINTS / frame;
+        let label = value_steps(egui_plot::GridInput {
+            bounds: (lo, hi),
+            base_step_size: base,
+        })[2];
+        let below = (hi / label).floor() * label;
+        if below >= lo {
+            break;
+        }
+        // The nearer mark, and a little room past it.
+        let above = (lo / label).ceil() * label;
+        if lo - below < above - hi {
+            lo = below - 0.05 * span;
+        } else {
+            hi = above + 0.05 * span;
+        }
     }
-    ((lo, hi), vec![mark(0.5 * (lo + hi), span)])
+    (lo, hi)
 }
 
 #[cfg(test)]
