@@ -101,27 +101,29 @@ fn picture(p: &egui::Painter, rect: egui::Rect, tile: Tile, ink: Color32) {
     let line = Stroke::new(2.0, ink);
     let arrow = |from: Pos2, to: Pos2| p.arrow(from, to - from, line);
     match tile {
+        // The lessons' discs as their scenes have them: the orange one
+        // moving, the blue one at rest (the pictures had them the other
+        // way round, both moving in the head-on one).
         Tile::HeadOn => {
             p.line_segment(
                 [rect.left_center(), rect.right_center()],
                 Stroke::new(1.0, ink),
             );
-            p.circle_filled(c - egui::vec2(h * 0.9, 0.0), h * 0.22, blue);
-            p.circle_filled(c + egui::vec2(h * 0.9, 0.0), h * 0.22, orange);
+            p.circle_filled(c - egui::vec2(h * 0.9, 0.0), h * 0.22, orange);
+            p.circle_filled(c + egui::vec2(h * 0.9, 0.0), h * 0.22, blue);
             arrow(c - egui::vec2(h * 0.9, 0.0), c - egui::vec2(h * 0.25, 0.0));
-            arrow(c + egui::vec2(h * 0.9, 0.0), c + egui::vec2(h * 0.45, 0.0));
         }
         Tile::Glancing => {
-            let a = c + egui::vec2(-h * 0.9, h * 0.12);
-            let b = c + egui::vec2(h * 0.2, -h * 0.12);
-            p.circle_filled(a, h * 0.2, blue);
-            p.circle_filled(b, h * 0.2, orange);
+            // Screen y grows downwards: the moving disc runs a little above.
+            let a = c + egui::vec2(-h * 0.9, -h * 0.12);
+            let b = c + egui::vec2(h * 0.2, h * 0.12);
+            p.circle_filled(a, h * 0.2, orange);
+            p.circle_filled(b, h * 0.2, blue);
             arrow(a, a + egui::vec2(h * 0.7, 0.0));
-            arrow(b, b + egui::vec2(h * 0.5, -h * 0.3));
         }
         Tile::Inelastic => {
-            p.circle_filled(c - egui::vec2(h * 0.19, 0.0), h * 0.2, blue);
-            p.circle_filled(c + egui::vec2(h * 0.19, 0.0), h * 0.2, orange);
+            p.circle_filled(c - egui::vec2(h * 0.19, 0.0), h * 0.2, orange);
+            p.circle_filled(c + egui::vec2(h * 0.19, 0.0), h * 0.2, blue);
             arrow(c + egui::vec2(h * 0.4, 0.0), c + egui::vec2(h * 0.9, 0.0));
         }
         Tile::PiBlocks => {
