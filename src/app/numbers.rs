@@ -150,24 +150,26 @@ pub fn field(v: f64) -> String {
         // 2.5×10⁹, the mantissa without trailing zeros; [`parse`] reads it.
         let text = quantity(v, 6);
         let (mantissa, power) = text.split_once('×').unwrap_or((&text, ""));
-        let point = if decimal_comma() { ',' } else { '.' };
-        let mantissa = if mantissa.contains(point) {
-            mantissa.trim_end_matches('0').trim_end_matches(point)
-        } else {
-            mantissa
-        };
-        return format!("{mantissa}×{power}");
+        return format!("{}×{power}", trimmed(mantissa));
     }
     let text = plain(v, 6);
-    let point = if decimal_comma() { ',' } else { '.' };
-    if !text.contains(point) {
-        return text;
-    }
-    let trimmed = text.trim_end_matches('0').trim_end_matches(point);
+    let trimmed = trimmed(&text);
     if trimmed == "−0" || trimmed.is_empty() {
         "0".into()
     } else {
         trimmed.to_string()
+    }
+}
+
+/// A number written by [`plain`] without the zeros after its decimal
+/// separator, nor the separator left alone: "2.50" is "2.5", "3.00" "3",
+/// "300" stays.
+pub fn trimmed(text: &str) -> &str {
+    let point = if decimal_comma() { ',' } else { '.' };
+    if text.contains(point) {
+        text.trim_end_matches('0').trim_end_matches(point)
+    } else {
+        text
     }
 }
 

@@ -138,8 +138,7 @@ fn motion_words(v: DVec2) -> String {
 impl Sandbox {
     /// Says `text` to a person who cannot see the screen.
     pub fn announce(&mut self, text: String) {
-        let t = self.world.time;
-        self.messages.narration.say(t, text);
+        self.announce_at(self.world.time, text);
     }
 
     /// Says `text` of something that happened at the simulation's time
@@ -296,6 +295,15 @@ mod tests {
         assert_eq!(place_words(DVec2::new(4.5, 4.5), size), "in the middle");
     }
 
+    /// One frame of `dt` seconds of the window's clock `t`, running the
+    /// sandbox: the lines said for the page's live region.
+    fn frame(s: &mut Sandbox, t: &mut f64, dt: f64) -> Vec<String> {
+        *t += dt;
+        s.begin_frame(*t);
+        s.tick(dt, 1.0);
+        s.take_announcements()
+    }
+
     #[test]
     fn impacts_are_said_at_most_every_gap_and_the_pi_count_once() {
         let dir = tempfile::tempdir().unwrap();
@@ -304,10 +312,7 @@ mod tests {
         let mut said_at = Vec::new();
         let mut t = 0.0;
         for _ in 0..(40 * 60) {
-            t += 1.0 / 60.0;
-            s.begin_frame(t);
-            s.tick(1.0 / 60.0, 1.0);
-            for line in s.take_announcements() {
+            for line in frame(&mut s, &mut t, 1.0 / 60.0) {
                 said_at.push((t, line));
             }
         }
@@ -338,12 +343,7 @@ mod tests {
         let mut s = sandbox_in(dir.path(), "preset-8-gas.toml");
         s.apply(Command::TogglePause);
         let mut t = 0.0;
-        let mut frame = |s: &mut Sandbox| {
-            t += 1.0 / 60.0;
-            s.begin_frame(t);
-            s.tick(1.0 / 60.0, 1.0);
-            s.take_announcements()
-        };
+        let mut frame = |s: &mut Sandbox| frame(s, &mut t, 1.0 / 60.0);
         let mut said = false;
         for _ in 0..(20 * 60) {
             if frame(&mut s).iter().any(|l| l.starts_with("Disc ")) {
@@ -384,9 +384,7 @@ mod tests {
         let mut t = 0.0;
         // Frames of 0.07 s: none ends at the impact's 2.400 s.
         let mut frame = |s: &mut Sandbox| {
-            t += 0.07;
-            s.begin_frame(t);
-            s.tick(0.07, 1.0);
+            frame(s, &mut t, 0.07);
         };
         let said = |s: &Sandbox| {
             s.messages

@@ -5,7 +5,7 @@
 
 use crate::app::lang::tr;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
-use crate::app::numbers::{plain, quantity};
+use crate::app::numbers::{plain, quantity, trimmed};
 use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
 use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoints};
@@ -410,12 +410,7 @@ pub fn value_axis(plot: Plot<'static>, series: &[&[[f64; 2]]], height: f32) -> P
 /// [`value_steps`]. Each is rounded to a hundredth of the range
 /// (so it sits on its line to within a point) and written without
 /// trailing zeros.
-#[allow(clippy::type_complexity)]
-fn own_marks(
-    (lo, hi): (f64, f64),
-    height: f32,
-    extents: &[(f64, f64)],
-) -> ((f64, f64), Vec<(f64, String)>) {
+fn own_marks((lo, hi): (f64, f64), height: f32, extents: &[(f64, f64)]) -> ((f64, f64), OwnMarks) {
     let span = hi - lo;
     if !(span > 0.0 && span.is_finite()) {
         return ((lo, hi), Vec::new());
@@ -423,48 +418,42 @@ fn own_marks(
     let frame = f64::from((height - TIME_AXIS_POINTS).max(8.0));
     let mark = |v: f64, span: f64| {
         let step = 10f64.powf((span / 100.0).log10().floor());
-        let decimals = decimals_of(step);
         let value = (v / step).round() * step;
-        let text = plain(value, decimals);
-        let text = if decimals > 0 {
-            let trimmed = text.trim_end_matches('0');
-            trimmed.trim_end_matches(['.', ',']).to_string()
-        } else {
-            text
-        };
-        (value, text)
+        (value, trimmed(&plain(value, decimals_of(step))).to_string())
     };
     let flat = extents.iter().all(|(a, b)| b - a <= 0.01 * span);
     if flat && !extents.is_empty() {
         let mut values: Vec<f64> = extents.iter().map(|(a, b)| 0.5 * (a + b)).collect();
         values.sort_by(f64::total_cmp);
         values.dedup_by(|a, b| (*a - *b).abs() <= 0.01 * span);
-        let (least, most) = (values[0], values[values.len() - 1]);
+        if let [one] = values[..] {
+            return ((lo, hi), vec![mark(one, span)]);
+        }
         // Half a number's height past the outer lines, as a share of the
         // frame: a margin m on both sides of their spread d has
-        // m = half · (d + 2m).
+        // m = half · (d + 2m). Where two lines' numbers do not fit (a
+        // projector's 27 points of frame hold one), the axis's own numbers.
         let half = 0.5 * f64::from(VALUE_LABEL_POINTS) / frame;
-        let (wide_lo, wide_hi) = if half < 0.5 && most > least {
+        if half < 0.5 {
+            let (least, most) = (values[0], values[values.len() - 1]);
             let margin = half * (most - least) / (1.0 - 2.0 * half);
-            (lo.min(least - margin), hi.max(most + margin))
-        } else {
-            (lo, hi)
-        };
-        let wide = wide_hi - wide_lo;
-        let apart = values
-            .windows(2)
-            .all(|w| (w[1] - w[0]) / wide * frame >= f64::from(VALUE_LABEL_POINTS));
-        // Where two lines' numbers do not fit (a projector's 27 points of
-        // frame hold one), the axis's own numbers.
-        if apart && (values.len() == 1 || half < 0.5) {
-            let marks = values.into_iter().map(|v| mark(v, wide)).collect();
-            return ((wide_lo, wide_hi), marks);
+            let (lo, hi) = (lo.min(least - margin), hi.max(most + margin));
+            let apart = values
+                .windows(2)
+                .all(|w| (w[1] - w[0]) / (hi - lo) * frame >= f64::from(VALUE_LABEL_POINTS));
+            if apart {
+                let marks = values.into_iter().map(|v| mark(v, hi - lo)).collect();
+                return ((lo, hi), marks);
+            }
         }
     }
     // Lines that move: the axis's numbers (one in the middle of the range
     // instead, a KE going from 3 to 22 J read "12.7", as if a value).
     (numbered_range((lo, hi), height), Vec::new())
 }
+
+/// Marks of [`own_marks`]: each value and its number.
+type OwnMarks = Vec<(f64, String)>;
 
 /// A range widened, where it must be, to hold a numbered mark of
 /// [`value_steps`] in a plot `height` points high (with its time axis):

@@ -49,6 +49,18 @@ fn drawn_text(out: &egui::FullOutput) -> impl Iterator<Item = String> + '_ {
         })
 }
 
+/// A plot's frame, the rectangle drawn inside the 230-point-wide room
+/// the tests give it.
+fn frame_of(out: &egui::FullOutput) -> egui::Rect {
+    out.shapes
+        .iter()
+        .find_map(|c| match &c.shape {
+            egui::Shape::Rect(r) if r.rect.width() < 230.0 => Some(r.rect),
+            _ => None,
+        })
+        .expect("a frame")
+}
+
 /// The value axis's numbers of a plot `height` points high showing
 /// constant totals `values` (its axis as the Totals tab makes it), each
 /// with the height of its middle; the heights of the lines; the frame.
@@ -76,14 +88,7 @@ fn plotted_numbers(height: f32, values: &[f64]) -> (Vec<(String, f32)>, Vec<f32>
             _ => None,
         })
         .collect();
-    let frame = out
-        .shapes
-        .iter()
-        .find_map(|c| match &c.shape {
-            egui::Shape::Rect(r) if r.rect.width() < 230.0 => Some(r.rect),
-            _ => None,
-        })
-        .expect("a frame");
+    let frame = frame_of(&out);
     let numbers = out
         .shapes
         .iter()
@@ -163,16 +168,7 @@ fn a_value_axis_number_stands_clear_of_the_frame() {
                     plot.line(egui_plot::Line::new(vec![[0.0, v], [3.0, v]]));
                 });
         });
-        // The frame: the rectangle drawn inside the window.
-        let frame = out
-            .shapes
-            .iter()
-            .filter_map(|c| match &c.shape {
-                egui::Shape::Rect(r) if r.rect.width() < 230.0 => Some(r.rect),
-                _ => None,
-            })
-            .next()
-            .expect("a frame");
+        let frame = frame_of(&out);
         let mut numbers = 0;
         for c in &out.shapes {
             let egui::Shape::Text(t) = &c.shape else {
