@@ -6,6 +6,10 @@
 //! a vector's components are then separated by "; "). Fields read numbers
 //! with either separator ([`parse`]). Files, the dump and the command line
 //! keep the decimal point and do not come here.
+//!
+//! Discs are counted from 1 wherever a person reads their number
+//! ([`disc_number`]): the tables, the messages, the narration and the CSV
+//! files. The world's list, the dump and the command line count from 0.
 
 use crate::app::lang::{decimal_comma, tr};
 use glam::DVec2;
@@ -159,6 +163,12 @@ pub fn field(v: f64) -> String {
     } else {
         trimmed.to_string()
     }
+}
+
+/// The number a person reads for the disc at `index` of the world's list:
+/// the first disc is disc 1.
+pub fn disc_number(index: usize) -> usize {
+    index + 1
 }
 
 /// A number written by [`plain`] without the zeros after its decimal

@@ -5,7 +5,7 @@
 use super::command::EditPlace;
 use super::{Note, Sandbox};
 use crate::app::lang::{text as words, tr};
-use crate::app::numbers::{field, plain};
+use crate::app::numbers::{disc_number, field, plain};
 use impulse::scene::limits;
 use impulse::Particle;
 
@@ -126,7 +126,7 @@ impl Sandbox {
                 edit.apply(p);
                 self.record.totals.clear();
                 Note::ok(match from {
-                    EditPlace::Fields => tr!("edit-applied", disc = disc),
+                    EditPlace::Fields => tr!("edit-applied", disc = disc_number(disc)),
                     EditPlace::Table => {
                         let what = [
                             (edit.mass, FIELDS[0], "kg"),
@@ -140,13 +140,17 @@ impl Sandbox {
                                 v.map(|v| format!("{} = {} {unit}", words(name, &[]), field(v)))
                             })
                             .collect();
-                        tr!("edit-applied-table", disc = disc, values = said.join("; "))
+                        tr!(
+                            "edit-applied-table",
+                            disc = disc_number(disc),
+                            values = said.join("; ")
+                        )
                     }
                 })
             }
             Err(e) => Note::error(match from {
                 EditPlace::Fields => e,
-                EditPlace::Table => tr!("edit-refused-table", disc = disc, error = e),
+                EditPlace::Table => tr!("edit-refused-table", disc = disc_number(disc), error = e),
             }),
         };
         match from {
@@ -186,7 +190,7 @@ impl Sandbox {
                 "edit-mass-overlaps",
                 mass = plain(m, 3),
                 size = size.as_str(),
-                disc = j
+                disc = disc_number(j)
             ));
         }
         if !w.laws.boundary.admits(w.laws.walls, w.laws.size, p.pos, r) {

@@ -1,8 +1,10 @@
 //! Data out for lab reports: the totals' time series, every disc's values
 //! and the collision ledger as CSV files, written atomically into the
-//! output folder the window names.
+//! output folder the window names. Discs are numbered from 1, as the
+//! window numbers them.
 
 use super::totals::Sample;
+use crate::app::numbers::disc_number;
 use crate::files::write_atomically;
 use impulse::ledger::Ledger;
 use impulse::World;
@@ -39,7 +41,8 @@ pub fn particles_csv(world: &World) -> String {
         let m = p.momentum();
         let _ = writeln!(
             out,
-            "{k},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            disc_number(k),
             p.pos.x,
             p.pos.y,
             p.vel.x,
@@ -73,7 +76,11 @@ pub fn ledger_csv(ledger: &Ledger) -> String {
         let _ = write!(
             out,
             "{},{},{},{},{}",
-            c.time, c.discs[0], c.discs[1], c.normal.x, c.normal.y
+            c.time,
+            disc_number(c.discs[0]),
+            disc_number(c.discs[1]),
+            c.normal.x,
+            c.normal.y
         );
         let mut drke = 0.0;
         for k in 0..2 {
@@ -111,7 +118,7 @@ pub fn wall_hits_csv(ledger: &Ledger) -> String {
             out,
             "{},{},{},{},{},{},{},{},{},{e0},{e1},{},{},{},{}",
             w.time,
-            w.disc,
+            disc_number(w.disc),
             w.wall.name(),
             n.x,
             n.y,
@@ -181,7 +188,8 @@ mod tests {
         });
         let csv = wall_hits_csv(&ledger);
         let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
-        assert_eq!(&row[..3], ["2", "3", "left"]);
+        // Disc 3 of the list is the person's disc 4, as in the window.
+        assert_eq!(&row[..3], ["2", "4", "left"]);
         // The push is m·(v′ − v) = 2 · (3, 0).
         assert_eq!(&row[row.len() - 2..], ["6", "0"]);
         assert_eq!(csv.lines().count(), 2);
@@ -208,7 +216,7 @@ mod tests {
         let header = lines[0].split(',').count();
         let row: Vec<&str> = lines[1].split(',').collect();
         assert_eq!(row.len(), header);
-        assert_eq!(&row[..3], ["1.5", "0", "1"]);
+        assert_eq!(&row[..3], ["1.5", "1", "2"], "discs counted from 1");
         assert_eq!(
             &row[row.len() - 3..],
             ["0", "0", "0"],

@@ -5,7 +5,7 @@
 
 use super::Sandbox;
 use crate::app::lang::tr;
-use crate::app::numbers::{vector, with_unit};
+use crate::app::numbers::{disc_number, vector, with_unit};
 use glam::DVec2;
 use impulse::{Color, Particle};
 
@@ -37,7 +37,7 @@ impl Sandbox {
         let p = &self.world.particles[next];
         self.toast(tr!(
             "selected-disc-said",
-            disc = next,
+            disc = disc_number(next),
             discs = n,
             mass = with_unit(p.mass, 3, "kg"),
             velocity = vector(p.vel, 2, "m/s")
@@ -57,7 +57,11 @@ impl Sandbox {
         p.vel = ((p.vel + dv) / AIM_STEP).round() * AIM_STEP;
         let v = p.vel;
         self.record.totals.clear();
-        self.toast(tr!("aimed", disc = i, velocity = vector(v, 2, "m/s")));
+        self.toast(tr!(
+            "aimed",
+            disc = disc_number(i),
+            velocity = vector(v, 2, "m/s")
+        ));
     }
 
     /// A new disc at rest at the centre of the view (or the nearest free
@@ -79,7 +83,7 @@ impl Sandbox {
         ));
         let i = self.world.particles.len() - 1;
         self.selected = Some(i);
-        self.toast(tr!("launched-at-centre", disc = i));
+        self.toast(tr!("launched-at-centre", disc = disc_number(i)));
     }
 }
 

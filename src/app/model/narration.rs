@@ -8,7 +8,7 @@
 use super::lesson::pi_result;
 use super::Sandbox;
 use crate::app::lang::tr;
-use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::numbers::{disc_number, plain, vector, with_unit};
 use glam::DVec2;
 use impulse::ledger::Impact;
 use std::collections::VecDeque;
@@ -71,15 +71,15 @@ pub fn impact_words(impact: &Impact) -> String {
             let [a, b] = c.discs_in_order();
             tr!(
                 "said-pair",
-                a = a,
-                b = b,
+                a = disc_number(a),
+                b = disc_number(b),
                 before = with_unit((a0 + b0).length(), 2, "kg·m/s"),
                 after = with_unit((a1 + b1).length(), 2, "kg·m/s")
             )
         }
         Impact::Wall(w) => tr!(
             "said-wall",
-            disc = w.disc,
+            disc = disc_number(w.disc),
             wall = w.wall.name(),
             before = with_unit(w.before.length(), 2, "m/s"),
             after = with_unit(w.after.length(), 2, "m/s")
@@ -220,7 +220,7 @@ impl Sandbox {
         for (i, p) in w.particles.iter().enumerate().take(DESCRIBED_DISCS) {
             lines.push(tr!(
                 "describe-disc",
-                disc = i,
+                disc = disc_number(i),
                 mass = with_unit(p.mass, 3, "kg"),
                 place = place_words(p.pos, size),
                 motion = motion_words(p.vel)
@@ -265,9 +265,11 @@ mod tests {
         let text = s.describe();
         let n = s.world.particles.len();
         assert!(text.contains(&format!("{n} discs")), "{text}");
-        for i in 0..n {
-            assert!(text.contains(&format!("Disc {i}, ")), "{text}");
+        // Counted from 1, as the tables and the ledger count them.
+        for number in 1..=n {
+            assert!(text.contains(&format!("Disc {number}, ")), "{text}");
         }
+        assert!(!text.contains("Disc 0"), "{text}");
         assert!(text.contains("metre box"), "{text}");
         let moving = s
             .world
@@ -366,7 +368,7 @@ mod tests {
             "the glancing hit happened"
         );
         assert!(
-            lines.iter().any(|l| l.starts_with("Disc 0 hit disc 1")),
+            lines.iter().any(|l| l.starts_with("Disc 1 hit disc 2")),
             "{lines:?}"
         );
     }
@@ -451,8 +453,8 @@ mod tests {
             words,
             format!(
                 "Disc {} hit disc {}: momentum before {p}, after {p}",
-                c.discs_in_order()[0],
-                c.discs_in_order()[1]
+                c.discs_in_order()[0] + 1,
+                c.discs_in_order()[1] + 1
             )
         );
         // Stamped with the simulation's t (the window's clock stands still here).

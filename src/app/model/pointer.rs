@@ -114,7 +114,7 @@ impl Sandbox {
                 let velocity = crate::app::numbers::vector(v, 2, "m/s");
                 self.toast(crate::app::lang::tr!(
                     "aimed",
-                    disc = i,
+                    disc = crate::app::numbers::disc_number(i),
                     velocity = velocity
                 ));
             }

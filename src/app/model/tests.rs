@@ -473,4 +473,5 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
     }
 }
 
+mod numbering;
 mod tabs_and_totals;

@@ -5,7 +5,7 @@
 use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
 use super::{scenes, totals, DockTab, Sandbox};
 use crate::app::lang::tr;
-use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::numbers::{disc_number, plain, vector, with_unit};
 
 /// How often (s of simulated time) a run to the next collision records the
 /// totals, trails and rewind history on its way: as often as a frame at 60
@@ -124,7 +124,7 @@ impl Sandbox {
         self.record.totals.clear();
         self.world.ledger.clear();
         // In words too: the last scene's lines, with their times from
-        // another run, read as this one's ("Disc 23 hit the right wall" in
+        // another run, read as this one's ("Disc 24 hit the right wall" in
         // a scene of two discs, 4.14 s under 2.42 s).
         self.messages.narration.start_afresh();
     }
@@ -149,8 +149,8 @@ impl Sandbox {
                 let [a, b] = c.discs_in_order();
                 tr!(
                     "next-collision-pair",
-                    a = a,
-                    b = b,
+                    a = disc_number(a),
+                    b = disc_number(b),
                     time = with_unit(c.time, 4, "s"),
                     momentum = vector(dp, 3, "kg·m/s"),
                     energy = with_unit(dke, 3, "J")
@@ -160,7 +160,7 @@ impl Sandbox {
                 let (_, dke) = w.total_change();
                 tr!(
                     "next-collision-wall",
-                    disc = w.disc,
+                    disc = disc_number(w.disc),
                     wall = w.wall.name(),
                     time = with_unit(w.time, 4, "s"),
                     impulse = vector(w.wall_impulse(), 3, "kg·m/s"),
@@ -422,7 +422,7 @@ mod tests {
 
     /// J names a pair lowest disc first, as the table numbers them: in the
     /// pile and the gas (the search meets pairs either way round) it said
-    /// "discs 1 and 0".
+    /// "discs 2 and 1".
     #[test]
     fn j_names_a_pair_lowest_disc_first() {
         let dir = tempfile::tempdir().unwrap();

@@ -9,7 +9,7 @@ use super::super::{Cx, View};
 use crate::app::lang::tr;
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
-use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::numbers::{disc_number, plain, vector, with_unit};
 use crate::app::ui::tip::Tip;
 use glam::DVec2;
 use impulse::ledger::Impact;
@@ -27,14 +27,18 @@ const DOT_ROOM: f32 = 18.0;
 /// width, wrapping, however wide the numbers.
 const NAMES_AT_LEAST: f32 = 0.3;
 
-/// "discs 0 and 1" or "disc 0 and the left wall".
+/// "discs 1 and 2" or "disc 1 and the left wall".
 fn who(impact: &Impact) -> String {
     match impact {
         Impact::Pair(c) => {
             let [a, b] = c.discs_in_order();
-            tr!("ledger-pair", a = a, b = b)
+            tr!("ledger-pair", a = disc_number(a), b = disc_number(b))
         }
-        Impact::Wall(w) => tr!("ledger-wall", disc = w.disc, wall = w.wall.name()),
+        Impact::Wall(w) => tr!(
+            "ledger-wall",
+            disc = disc_number(w.disc),
+            wall = w.wall.name()
+        ),
     }
 }
 
@@ -177,7 +181,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             for k in discs {
                 rows.push(row(
                     c.discs[k],
-                    tr!("ledger-disc-p", disc = c.discs[k]),
+                    tr!("ledger-disc-p", disc = disc_number(c.discs[k])),
                     pair_of(c.momentum(k)),
                 ));
             }
@@ -191,7 +195,11 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
                 None,
             ));
             for k in discs {
-                let name = tr!("ledger-disc-ke", disc = c.discs[k], ke = ke.as_str());
+                let name = tr!(
+                    "ledger-disc-ke",
+                    disc = disc_number(c.discs[k]),
+                    ke = ke.as_str()
+                );
                 rows.push(row(c.discs[k], name, plain_pair(c.kinetic_energy(k))));
             }
             let (e0, e1) = (c.kinetic_energy(0), c.kinetic_energy(1));
@@ -203,7 +211,11 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
                 (tr!("ledger-across-impact"), across),
             ] {
                 for k in discs {
-                    let name = tr!("ledger-disc-v", disc = c.discs[k], part = part.as_str());
+                    let name = tr!(
+                        "ledger-disc-v",
+                        disc = disc_number(c.discs[k]),
+                        part = part.as_str()
+                    );
                     rows.push(row(c.discs[k], name, plain_pair(of(c.components(k)))));
                 }
             }
@@ -212,16 +224,16 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
             let d = w.disc;
             rows.push(row(
                 d,
-                tr!("ledger-disc-p", disc = d),
+                tr!("ledger-disc-p", disc = disc_number(d)),
                 pair_of(w.momentum()),
             ));
-            let name = tr!("ledger-disc-ke", disc = d, ke = ke.as_str());
+            let name = tr!("ledger-disc-ke", disc = disc_number(d), ke = ke.as_str());
             rows.push(row(d, name, plain_pair(w.kinetic_energy())));
             for (part, of) in [
                 (tr!("ledger-away-from-wall"), along),
                 (tr!("ledger-along-wall"), across),
             ] {
-                let name = tr!("ledger-disc-v", disc = d, part = part.as_str());
+                let name = tr!("ledger-disc-v", disc = disc_number(d), part = part.as_str());
                 rows.push(row(d, name, plain_pair(of(w.components()))));
             }
             let push = vector(w.wall_impulse(), 3, "");

@@ -8,6 +8,7 @@
 //! number it stands for does (it selects the disc).
 
 use super::super::Cx;
+use crate::app::numbers::disc_number;
 use egui::{Color32, Rect};
 
 /// A cell of the first column as the table laid it out: where it is (in
@@ -95,7 +96,7 @@ impl FirstColumn {
             let number = painter.text(
                 dot + egui::vec2(7.0 + gap, 0.0),
                 egui::Align2::LEFT_CENTER,
-                disc.to_string(),
+                disc_number(*disc).to_string(),
                 font.clone(),
                 text,
             );

@@ -5,7 +5,7 @@ use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::totals::DIAGRAM_MAX_DISCS;
-use crate::app::numbers::vector;
+use crate::app::numbers::{disc_number, vector};
 use crate::app::ui::widgets::one_line;
 use egui::Color32;
 use egui_plot::{Arrows, Line, PlotPoints, Points};
@@ -111,7 +111,7 @@ impl View for Momenta {
                         Line::new(PlotPoints::from(vec![[a.x, a.y], [b.x, b.y]]))
                             .color(color)
                             .width(2.5)
-                            .name(tr!("disc-numbered", disc = k)),
+                            .name(tr!("disc-numbered", disc = disc_number(k))),
                     );
                     plot.arrows(
                         Arrows::new(vec![[a.x, a.y]], vec![[b.x, b.y]])
@@ -119,7 +119,7 @@ impl View for Momenta {
                             // across the whole plot for a long one.
                             .tip_length(ARROW_HEAD_POINTS)
                             .color(color)
-                            .name(tr!("disc-numbered", disc = k)),
+                            .name(tr!("disc-numbered", disc = disc_number(k))),
                     );
                 }
             });

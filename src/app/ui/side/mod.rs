@@ -81,7 +81,10 @@ impl View for SideDock {
                     command_button(ui, cx, Command::ShowAllControls, Some("all_controls"));
                 }
                 let title = match cx.model.selected_disc() {
-                    Some(i) => tr!("selected-disc-numbered", disc = i),
+                    Some(i) => tr!(
+                        "selected-disc-numbered",
+                        disc = crate::app::numbers::disc_number(i)
+                    ),
                     None => tr!("section-selected-disc"),
                 };
                 for s in SECTIONS {
