@@ -56,7 +56,8 @@ impl Sandbox {
         // Whole tenths, so that steps add up to round numbers.
         p.vel = ((p.vel + dv) / AIM_STEP).round() * AIM_STEP;
         let v = p.vel;
-        self.record.totals.clear();
+        // The Totals tab starts afresh in `apply`, where the aim moved a
+        // total.
         self.toast(tr!(
             "aimed",
             disc = disc_number(i),

@@ -77,4 +77,16 @@ fn an_edit_that_moves_a_total_starts_the_totals_afresh_and_a_law_does_not() {
         let drift = s.record.totals.drift().expect("a drift");
         assert!(drift.0 < 1e-9 && drift.1.abs() < 1e-9, "{what}: {drift:?}");
     }
+    // Aimed with the arrows (paused): a new velocity starts the record
+    // afresh; an aim that rounds to the same velocity changes nothing and
+    // keeps it.
+    s.apply(Command::TogglePause);
+    s.apply(Command::Select(Some(0)));
+    s.apply(Command::AimSelected(glam::DVec2::new(0.0, 0.01)));
+    assert!(
+        began(&s).is_some(),
+        "an aim that moved nothing keeps the record"
+    );
+    s.apply(Command::AimSelected(glam::DVec2::new(0.0, 0.1)));
+    assert!(began(&s).is_none(), "an aim starts the record afresh");
 }
