@@ -99,7 +99,7 @@ impl Sandbox {
         // afresh from it. A launch had read "Δp (6.000, 1.500) kg·m/s"
         // with nothing to say a disc had come.
         if totals_of(&self.world) != totals {
-            self.record.totals.clear();
+            self.record.totals.restart(&self.world);
         }
         match before {
             Some(moment) => self.undo.remember(move || moment, kind, now),

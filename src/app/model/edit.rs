@@ -124,7 +124,7 @@ impl Sandbox {
             Ok(edit) => {
                 let p = &mut self.world.particles[disc];
                 edit.apply(p);
-                self.record.totals.clear();
+                self.record.totals.restart(&self.world);
                 Note::ok(match from {
                     EditPlace::Fields => tr!("edit-applied", disc = disc_number(disc)),
                     EditPlace::Table => {

@@ -105,7 +105,7 @@ impl Sandbox {
             self.open.unsaved = true;
             // The totals the person changed: the Totals tab starts afresh
             // (as for the edits of `apply`).
-            self.record.totals.clear();
+            self.record.totals.restart(&self.world);
         }
         match released {
             Released::Launched(i) => self.selected = Some(i),

@@ -413,7 +413,7 @@ impl Sandbox {
             self.record.totals.push(&self.world, &now);
         } else {
             self.record.history.clear();
-            self.record.totals.clear();
+            self.record.totals.restart(&self.world);
         }
         // "Applied to disc 2" no longer holds; the toast says what undo did.
         self.messages.fields = None;

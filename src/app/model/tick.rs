@@ -121,7 +121,7 @@ impl Sandbox {
     /// rewind must never bring back discs of another scene.
     pub(super) fn forget_past(&mut self) {
         self.record.history.clear();
-        self.record.totals.clear();
+        self.record.totals.restart(&self.world);
         self.world.ledger.clear();
         // In words too: the last scene's lines, with their times from
         // another run, read as this one's ("Disc 24 hit the right wall" in

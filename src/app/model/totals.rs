@@ -110,7 +110,15 @@ impl Totals {
         }
     }
 
-    /// Starts afresh (a new scene, an edit, a rewind).
+    /// Starts afresh from `world` as it is now (a new scene, the person's
+    /// edit): the change is then counted from this instant ("since t =
+    /// 0.00 s" for a scene just opened, not from the first frame's step).
+    pub fn restart(&mut self, world: &World) {
+        self.clear();
+        self.push(world, &world.metrics());
+    }
+
+    /// Forgets every sample (a rewind to another run).
     pub fn clear(&mut self) {
         self.samples.clear();
         self.walls.clear();

@@ -82,11 +82,38 @@ fn an_edit_that_moves_a_total_starts_the_totals_afresh_and_a_law_does_not() {
     // keeps it.
     s.apply(Command::TogglePause);
     s.apply(Command::Select(Some(0)));
+    run(&mut s, 5);
+    let kept = began(&s);
     s.apply(Command::AimSelected(glam::DVec2::new(0.0, 0.01)));
-    assert!(
-        began(&s).is_some(),
+    assert_eq!(
+        began(&s),
+        kept,
         "an aim that moved nothing keeps the record"
     );
+    s.world.time += 1.0; // as if the class had watched a while, paused
     s.apply(Command::AimSelected(glam::DVec2::new(0.0, 0.1)));
-    assert!(began(&s).is_none(), "an aim starts the record afresh");
+    assert_eq!(
+        began(&s),
+        Some(s.world.time),
+        "an aim starts the record afresh"
+    );
+}
+
+/// A scene opened running counts its change from t = 0, the instant it
+/// opened, not from the end of its first frame ("since t = 0.02 s").
+#[test]
+fn a_scene_opened_running_counts_its_totals_from_its_start() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+    if s.clock.paused {
+        s.apply(Command::TogglePause);
+    }
+    s.apply(Command::OpenPreset(1));
+    assert!(!s.clock.paused);
+    for _ in 0..3 {
+        later(&mut s, 1.0 / 60.0);
+        s.tick(1.0 / 60.0, 1.0);
+    }
+    assert!(s.world.time > 0.04, "{}", s.world.time);
+    assert_eq!(s.record.totals.first().map(|f| f.time), Some(0.0));
 }
