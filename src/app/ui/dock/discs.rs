@@ -15,7 +15,7 @@ use crate::app::lang::tr;
 use crate::app::model::command::EditPlace;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::Command;
-use crate::app::numbers::quantity;
+use crate::app::numbers::{disc_number, quantity};
 use crate::app::ui::tip::Tip;
 use egui::Color32;
 use egui_extras::{Column, TableBuilder};
@@ -256,7 +256,10 @@ impl View for DiscsTable {
                                     egui::Sense::hover(),
                                 );
                                 ui.painter().circle_filled(rect.center(), 7.0, color);
-                                let r = ui.selectable_label(selected == Some(i), format!("{i}"));
+                                let r = ui.selectable_label(
+                                    selected == Some(i),
+                                    disc_number(i).to_string(),
+                                );
                                 numbers.push((i, r.rect, r.has_focus()));
                                 stops.push(Stop::control(&r));
                                 if just_focused(&r) {
@@ -414,5 +417,47 @@ impl View for DiscsTable {
             self.editing = None;
             self.sent = Some(cell);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DiscsTable;
+    use crate::app::model::tests::sandbox_with;
+    use crate::app::ui::widgets::headless;
+    use crate::app::ui::{Cx, Marks, View};
+
+    /// The table numbers its rows from 1, as the messages, the ledger and
+    /// the column kept in sight when it scrolls do: it showed 0 and 1 where
+    /// the strip said "Disc 1: mass = 3 kg" of the first row.
+    #[test]
+    fn the_rows_are_numbered_from_one() {
+        let dir = tempfile::tempdir().unwrap();
+        let model = sandbox_with(dir.path(), "preset-1-head-on.toml", true, 0.0);
+        assert_eq!(model.world.particles.len(), 2);
+        let (mut out, mut marks) = (Vec::new(), Marks::default());
+        let mut table = DiscsTable::default();
+        let shown = headless(egui::vec2(900.0, 300.0), |ui| {
+            let mut cx = Cx {
+                model: &model,
+                out: &mut out,
+                marks: &mut marks,
+                drawer: false,
+                open_drawer: None,
+                keys_in_panels: false,
+            };
+            table.ui(ui, &mut cx);
+        });
+        let texts: Vec<String> = shown
+            .shapes
+            .iter()
+            .filter_map(|c| match &c.shape {
+                egui::Shape::Text(t) => Some(t.galley.text().to_string()),
+                _ => None,
+            })
+            .collect();
+        let count = |number: &str| texts.iter().filter(|t| *t == number).count();
+        assert!(count("1") >= 1 && count("2") >= 1, "{texts:?}");
+        assert_eq!(count("0"), 0, "{texts:?}");
     }
 }
