@@ -217,18 +217,21 @@ impl Input {
         if panels.typing {
             return; // the keys went into a text field (Ctrl+Z too: its own undo)
         }
-        if panels.panel_keyboard && !ctrl {
-            // After Enter in a field the keyboard stays with the panel until
-            // a click in the world or Esc.
-            if is_key_pressed(KeyCode::Escape) {
-                panels.panel_keyboard = false;
-            }
+        // After Enter in a field the keyboard stays with the panel until a
+        // click in the world or Esc, all but the run's own keys: Space and J
+        // act on the clock (a teacher who set a mass presses Space next),
+        // and what would type on (a digit opening a preset, Backspace
+        // deleting the selected disc, Enter launching one) waits.
+        let after_field = panels.panel_keyboard && !ctrl;
+        if after_field && is_key_pressed(KeyCode::Escape) {
+            panels.panel_keyboard = false;
             return;
         }
         for key in all_keys() {
             let codes = key_codes(key);
             if codes.iter().any(|&k| is_key_pressed(k)) {
-                if let Some(c) = command_for(key, ctrl, shift, Trigger::Press) {
+                let command = command_for(key, ctrl, shift, Trigger::Press);
+                if let Some(c) = command.filter(|c| !after_field || c.runs_the_clock()) {
                     // The browser's tab is closed by the browser, never by the page.
                     let browsers = cfg!(target_arch = "wasm32") && c == Command::Quit;
                     let aim = matches!(c, Command::AimSelected(_));
@@ -237,7 +240,7 @@ impl Input {
                     }
                 }
             }
-            if !ctrl && codes.iter().any(|&k| is_key_down(k)) {
+            if !ctrl && !after_field && codes.iter().any(|&k| is_key_down(k)) {
                 if let Some(c) = command_for(key, false, shift, Trigger::Hold) {
                     // While the arrows aim, they do not pan.
                     if !(aims && matches!(c, Command::Pan(_))) {

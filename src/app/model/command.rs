@@ -186,6 +186,17 @@ pub enum Command {
 }
 
 impl Command {
+    /// Whether the command only runs, pauses or steps the clock: the keys
+    /// that still act after Enter has left a field, while the others wait
+    /// for Esc or a click in the world (a digit typed on would open a
+    /// preset).
+    pub fn runs_the_clock(&self) -> bool {
+        matches!(
+            self,
+            Command::TogglePause | Command::Step | Command::NextCollision
+        )
+    }
+
     /// The kind of change to the scene this command may make, as undo names
     /// it; `None` for commands that never change the scene. Whether it did
     /// is seen after it ran: only then is the scene remembered.
