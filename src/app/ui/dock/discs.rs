@@ -119,6 +119,8 @@ impl View for DiscsTable {
         let mut commit: Option<CellEdit> = None;
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
+        // Enter left a cell, whether or not it changed anything.
+        let mut left_with_enter = false;
         let mut cells = Vec::new();
         // Where each disc's number is in the table, and whether it has the
         // keyboard.
@@ -332,6 +334,8 @@ impl View for DiscsTable {
                                             });
                                         }
                                         if r.lost_focus() {
+                                            left_with_enter |=
+                                                ui.input(|inp| inp.key_pressed(egui::Key::Enter));
                                             if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
                                                 cancel = true;
                                             } else if mine || r.changed() {
@@ -403,10 +407,12 @@ impl View for DiscsTable {
         if cancel {
             self.editing = None;
         }
+        // Enter leaves the cell, changed or not; the keyboard stays with the
+        // panel (a click elsewhere gives it back to the world): Enter in a
+        // cell reached by Tab and left as it was had given the keys to the
+        // world, and a 2 typed next opened a preset.
+        cx.marks.left_with_enter |= left_with_enter;
         if let Some(cell) = commit {
-            // Enter leaves the cell; the keyboard stays with the panel (a
-            // click elsewhere gives it back to the world).
-            cx.marks.left_with_enter |= ui.input(|i| i.key_pressed(egui::Key::Enter));
             let mut text: [Option<String>; 4] = Default::default();
             text[cell.field] = Some(cell.text.clone());
             cx.send(Command::EditDisc {
