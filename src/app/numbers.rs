@@ -165,6 +165,12 @@ pub fn field(v: f64) -> String {
     }
 }
 
+/// Whether `v` reads as zero with `decimals` decimals ("0.000"): a
+/// change that small is said as none.
+pub fn reads_as_zero(v: f64, decimals: usize) -> bool {
+    plain(v, decimals) == plain(0.0, decimals)
+}
+
 /// The number a person reads for the disc at `index` of the world's list:
 /// the first disc is disc 1.
 pub fn disc_number(index: usize) -> usize {

@@ -96,13 +96,24 @@ separated-lowered = exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt, was die Energie um { $energy } verringert hat
-next-collision-pair = Stoß der Scheiben { $a } und { $b } bei t = { $time }: ihr Gesamtimpuls änderte sich um { $momentum }, ihre kinetische Energie um { $energy }
+next-collision-pair = Scheiben { $a } und { $b }, t = { $time }: { $momentum_kept ->
+    [yes] Gesamtimpuls unverändert
+   *[no] Gesamtimpuls um { $momentum } geändert
+}, { $energy_change ->
+    [same] kinetische Energie unverändert
+    [less] kinetische Energie um { $energy } kleiner
+   *[more] kinetische Energie um { $energy } größer
+}
 next-collision-wall = Scheibe { $disc } traf die { $wall ->
     [left] linke
     [right] rechte
     [bottom] untere
    *[top] obere
- } Wand bei t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; ihre kinetische Energie änderte sich um { $energy }
+ } Wand, t = { $time }: Die Wand gab ihr einen Kraftstoß von { $impulse }; { $energy_change ->
+    [same] ihre kinetische Energie unverändert
+    [less] ihre kinetische Energie um { $energy } kleiner
+   *[more] ihre kinetische Energie um { $energy } größer
+}
 next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
 next-collision-none = Kein Stoß innerhalb von { $limit }
 next-collision-at-once = { $impacts } Stöße im selben Augenblick, alle im Reiter Stöße aufgeführt. { $first }

@@ -96,13 +96,24 @@ separated-lowered = exact needs discs apart: it separated { $pairs ->
     [one] 1 overlapping pair
    *[other] { $pairs } overlapping pairs
 } of discs, which lowered the energy by { $energy }
-next-collision-pair = Collision of discs { $a } and { $b } at t = { $time }: their total momentum changed by { $momentum }, their kinetic energy by { $energy }
+next-collision-pair = Discs { $a } and { $b }, t = { $time }: { $momentum_kept ->
+    [yes] total momentum unchanged
+   *[no] total momentum changed by { $momentum }
+}, { $energy_change ->
+    [same] kinetic energy unchanged
+    [less] kinetic energy { $energy } less
+   *[more] kinetic energy { $energy } more
+}
 next-collision-wall = Disc { $disc } hit the { $wall ->
     [left] left
     [right] right
     [bottom] bottom
    *[top] top
-} wall at t = { $time }: the wall pushed it with { $impulse }; its kinetic energy changed by { $energy }
+} wall, t = { $time }: the wall pushed it with { $impulse }; { $energy_change ->
+    [same] its kinetic energy unchanged
+    [less] its kinetic energy { $energy } less
+   *[more] its kinetic energy { $energy } more
+}
 next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
 next-collision-none = No collision within { $limit }
 next-collision-at-once = { $impacts } impacts at the same moment, all listed in the Collisions tab. { $first }

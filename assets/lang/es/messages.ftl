@@ -96,13 +96,24 @@ separated-lowered = exact necesita los discos separados: separó { $pairs ->
     [one] 1 par de discos solapados
    *[other] { $pairs } pares de discos solapados
 }, lo que redujo la energía en { $energy }
-next-collision-pair = Choque de los discos { $a } y { $b } en t = { $time }: su cantidad de movimiento total cambió en { $momentum } y su energía cinética en { $energy }
+next-collision-pair = Discos { $a } y { $b }, t = { $time }: { $momentum_kept ->
+    [yes] la cantidad de movimiento total no cambió
+   *[no] la cantidad de movimiento total cambió en { $momentum }
+}, { $energy_change ->
+    [same] la energía cinética no cambió
+    [less] la energía cinética bajó { $energy }
+   *[more] la energía cinética subió { $energy }
+}
 next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
     [left] izquierda
     [right] derecha
     [bottom] inferior
    *[top] superior
-} en t = { $time }: la pared lo empujó con { $impulse }; su energía cinética cambió en { $energy }
+}, t = { $time }: la pared lo empujó con { $impulse }; { $energy_change ->
+    [same] su energía cinética no cambió
+    [less] su energía cinética bajó { $energy }
+   *[more] su energía cinética subió { $energy }
+}
 next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
 next-collision-none = Ningún choque en { $limit }
 next-collision-at-once = { $impacts } impactos en el mismo instante, todos en la pestaña Choques. { $first }

@@ -96,13 +96,24 @@ separated-lowered = exact exige des disques séparés : { $pairs ->
     [one] { $pairs } paire de disques qui se chevauchaient a été séparée
    *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
 }, ce qui a diminué l'énergie de { $energy }
-next-collision-pair = Collision des disques { $a } et { $b } à t = { $time } : leur quantité de mouvement totale a varié de { $momentum }, leur énergie cinétique de { $energy }
+next-collision-pair = Disques { $a } et { $b }, t = { $time } : { $momentum_kept ->
+    [yes] quantité de mouvement totale inchangée
+   *[no] quantité de mouvement totale modifiée de { $momentum }
+}, { $energy_change ->
+    [same] énergie cinétique inchangée
+    [less] énergie cinétique en baisse de { $energy }
+   *[more] énergie cinétique en hausse de { $energy }
+}
 next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
     [left] de gauche
     [right] de droite
     [bottom] du bas
    *[top] du haut
-} à t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; son énergie cinétique a varié de { $energy }
+}, t = { $time } : la poussée du mur a changé sa quantité de mouvement de { $impulse } ; { $energy_change ->
+    [same] son énergie cinétique est inchangée
+    [less] son énergie cinétique est en baisse de { $energy }
+   *[more] son énergie cinétique est en hausse de { $energy }
+}
 next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
 next-collision-none = Aucune collision en { $limit }
 next-collision-at-once = { $impacts } chocs au même instant, tous indiqués dans l’onglet Collisions. { $first }

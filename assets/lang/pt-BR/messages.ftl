@@ -96,13 +96,24 @@ separated-lowered = exact precisa dos discos separados: separou { $pairs ->
     [one] { $pairs } par de discos sobrepostos
    *[other] { $pairs } pares de discos sobrepostos
 }, o que diminuiu a energia em { $energy }
-next-collision-pair = Colisão dos discos { $a } e { $b } em t = { $time }: a quantidade de movimento total deles variou { $momentum }, e a energia cinética, { $energy }
+next-collision-pair = Discos { $a } e { $b }, t = { $time }: { $momentum_kept ->
+    [yes] quantidade de movimento total inalterada
+   *[no] a quantidade de movimento total variou { $momentum }
+}, { $energy_change ->
+    [same] energia cinética inalterada
+    [less] energia cinética { $energy } menor
+   *[more] energia cinética { $energy } maior
+}
 next-collision-wall = O disco { $disc } bateu na parede { $wall ->
     [left] esquerda
     [right] direita
     [bottom] inferior
    *[top] superior
-    } em t = { $time }: a parede aplicou nele um impulso de { $impulse }; a energia cinética dele variou { $energy }
+    }, t = { $time }: a parede aplicou nele um impulso de { $impulse }; { $energy_change ->
+    [same] a energia cinética dele ficou inalterada
+    [less] a energia cinética dele ficou { $energy } menor
+   *[more] a energia cinética dele ficou { $energy } maior
+}
 next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
 next-collision-none = Nenhuma colisão em { $limit }
 next-collision-at-once = { $impacts } impactos no mesmo instante, todos listados na aba Colisões. { $first }

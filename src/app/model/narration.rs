@@ -465,6 +465,6 @@ mod tests {
         assert!(s
             .take_announcements()
             .iter()
-            .any(|l| l.starts_with("Collision of discs")));
+            .any(|l| l.starts_with("Discs 1 and 2,")));
     }
 }

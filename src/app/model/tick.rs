@@ -5,12 +5,25 @@
 use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
 use super::{scenes, totals, DockTab, Sandbox};
 use crate::app::lang::tr;
-use crate::app::numbers::{disc_number, plain, vector, with_unit};
+use crate::app::numbers::{disc_number, plain, reads_as_zero, vector, with_unit};
 
 /// How often (s of simulated time) a run to the next collision records the
 /// totals, trails and rewind history on its way: as often as a frame at 60
 /// frames a second would.
 const RECORD_EVERY: f64 = 1.0 / 60.0;
+
+/// How an impact changed the kinetic energy, as the messages select on it:
+/// "same" where the change reads as 0.000 J, else "less" or "more" (the
+/// amount is given apart, without its sign).
+fn change_word(change: f64) -> &'static str {
+    if reads_as_zero(change, 3) {
+        "same"
+    } else if change < 0.0 {
+        "less"
+    } else {
+        "more"
+    }
+}
 
 impl Sandbox {
     /// One frame of `frame_seconds` of real time: runs the steps the clock
@@ -151,9 +164,15 @@ impl Sandbox {
                     "next-collision-pair",
                     a = disc_number(a),
                     b = disc_number(b),
-                    time = with_unit(c.time, 4, "s"),
+                    time = with_unit(c.time, 3, "s"),
+                    momentum_kept = if reads_as_zero(dp.x, 3) && reads_as_zero(dp.y, 3) {
+                        "yes"
+                    } else {
+                        "no"
+                    },
                     momentum = vector(dp, 3, "kg·m/s"),
-                    energy = with_unit(dke, 3, "J")
+                    energy_change = change_word(dke),
+                    energy = with_unit(dke.abs(), 3, "J")
                 )
             }
             Some(impulse::ledger::Impact::Wall(w)) => {
@@ -162,9 +181,10 @@ impl Sandbox {
                     "next-collision-wall",
                     disc = disc_number(w.disc),
                     wall = w.wall.name(),
-                    time = with_unit(w.time, 4, "s"),
+                    time = with_unit(w.time, 3, "s"),
                     impulse = vector(w.wall_impulse(), 3, "kg·m/s"),
-                    energy = with_unit(dke, 3, "J")
+                    energy_change = change_word(dke),
+                    energy = with_unit(dke.abs(), 3, "J")
                 )
             }
             None if unrecorded => tr!(
@@ -436,7 +456,7 @@ mod tests {
             for _ in 0..40 {
                 s.apply(Command::NextCollision);
                 let said = s.message().unwrap_or_default().to_owned();
-                let Some(rest) = said.split("Collision of discs ").nth(1) else {
+                let Some(rest) = said.split("Discs ").nth(1) else {
                     continue;
                 };
                 let numbers: Vec<usize> = rest
@@ -449,6 +469,51 @@ mod tests {
             }
         }
         assert!(pairs > 20, "{pairs} pairs");
+    }
+
+    /// J says in words whether the totals changed: an elastic head-on hit
+    /// keeps both, a perfectly inelastic one of equal masses (m, v) keeps
+    /// the momentum and loses half the energy, m·v²/4. The message had
+    /// "changed by (0.000, 0.000) kg·m/s" and the energy cut off at a
+    /// projector's size.
+    #[test]
+    fn j_says_in_words_what_the_impact_kept_and_lost() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        s.apply(Command::NextCollision);
+        let said = s.message().unwrap_or_default().to_owned();
+        assert!(
+            said.starts_with("Discs 1 and 2, t\u{a0}=\u{a0}2.400 s: ")
+                && said.ends_with("total momentum unchanged, kinetic energy unchanged"),
+            "{said}"
+        );
+        let mut s = sandbox_in(dir.path(), "preset-5-inelastic.toml");
+        let p = &s.world.particles[0];
+        let lost = p.mass * p.vel.length_squared() / 4.0;
+        s.apply(Command::NextCollision);
+        let said = s.message().unwrap_or_default().to_owned();
+        let less = format!("kinetic energy {} less", super::with_unit(lost, 3, "J"));
+        assert!(
+            said.contains("total momentum unchanged") && said.ends_with(&less),
+            "{said} (expected {less})"
+        );
+        // Every language picks its words and gives the amount lost.
+        for lang in crate::app::lang::Lang::SHIPPED {
+            crate::app::lang::set_language(lang);
+            let mut s = sandbox_in(dir.path(), "preset-5-inelastic.toml");
+            s.apply(Command::NextCollision);
+            let said = s.message().unwrap_or_default().to_owned();
+            let amount = super::with_unit(lost, 3, "J");
+            assert!(
+                said.ends_with(&amount) || said.contains(&format!("{amount} ")),
+                "{lang:?}: {said}"
+            );
+            assert!(
+                !said.contains('{') && !said.contains("energy_change"),
+                "{lang:?}: {said}"
+            );
+        }
+        crate::app::lang::set_language(crate::app::lang::Lang::En);
     }
 
     /// A scene running slower than asked says so, and with many discs
