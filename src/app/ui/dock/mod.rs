@@ -81,26 +81,31 @@ impl BottomDock {
             ("🔼", crate::app::lang::tr!("dock-show"))
         };
         // Where the tabs' names do not all fit on the row (long words, a
-        // projector's scale), the row offers them as one list instead.
-        let spacing = strip.spacing().item_spacing.x;
-        let width = |text: &str| {
-            let padding = strip.spacing().button_padding.x * 2.0;
-            let galley = egui::WidgetText::from(RichText::new(text).strong()).into_galley(
-                &strip,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Button,
-            );
-            galley.size().x + padding
+        // projector's scale), they first close up (less room between and
+        // around them), and only then does the row offer them as one list.
+        let wanted_at = |strip: &egui::Ui, spacing: f32, padding: f32| {
+            self.tabs
+                .iter()
+                .map(|(t, _)| name_width(strip, &t.title()) + padding)
+                .sum::<f32>()
+                + name_width(strip, toggle_label)
+                + padding
+                + spacing * self.tabs.len() as f32
+                + 2.0
         };
-        let wanted: f32 = self
-            .tabs
-            .iter()
-            .map(|(t, _)| width(&t.title()))
-            .sum::<f32>()
-            + width(toggle_label)
-            + spacing * self.tabs.len() as f32
-            + 2.0;
+        let (spacing, padding) = (
+            strip.spacing().item_spacing.x,
+            strip.spacing().button_padding.x,
+        );
+        if wanted_at(&strip, spacing, 2.0 * padding) > row_rect.width() {
+            strip.spacing_mut().item_spacing.x = 0.4 * spacing;
+            strip.spacing_mut().button_padding.x = 0.5 * padding;
+        }
+        let wanted = wanted_at(
+            &strip,
+            strip.spacing().item_spacing.x,
+            2.0 * strip.spacing().button_padding.x,
+        );
         if wanted > row_rect.width() {
             let chosen = model.panels.tab;
             let r = egui::ComboBox::from_id_salt("tab_menu")
@@ -142,4 +147,17 @@ impl BottomDock {
         });
         ui.allocate_rect(full, egui::Sense::hover());
     }
+}
+
+/// The width of a tab's name on the row, in bold button text (points).
+fn name_width(ui: &egui::Ui, text: &str) -> f32 {
+    egui::WidgetText::from(RichText::new(text).strong())
+        .into_galley(
+            ui,
+            Some(egui::TextWrapMode::Extend),
+            f32::INFINITY,
+            egui::TextStyle::Button,
+        )
+        .size()
+        .x
 }
