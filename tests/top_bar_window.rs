@@ -8,10 +8,66 @@ use harness::*;
 use serde_json::Value;
 
 fn main() -> std::process::ExitCode {
-    harness::run(vec![(
-        "the_scene_name_gets_the_room_the_top_bar_leaves",
-        the_scene_name_gets_the_room_the_top_bar_leaves,
-    )])
+    harness::run(vec![
+        (
+            "the_scene_name_gets_the_room_the_top_bar_leaves",
+            the_scene_name_gets_the_room_the_top_bar_leaves,
+        ),
+        (
+            "the_pi_blocks_count_is_always_in_the_top_bar",
+            the_pi_blocks_count_is_always_in_the_top_bar,
+        ),
+    ])
+}
+
+/// In the π blocks the count is the lesson, yet at a projector's size the
+/// top bar kept it under "… more" until the end. It is always shown now,
+/// after the state, which takes its sign alone to make room; the name, the
+/// count, "… more" and the buttons stay apart and inside the window.
+fn the_pi_blocks_count_is_always_in_the_top_bar() {
+    let x = Xvfb::start("pi count");
+    let app = Sandbox::start(&x, &["--size", "1024x768", "--ui-scale", "2"]);
+    app.move_to([500.0, 200.0]);
+    app.xdo(&["key", "7"]);
+    let s = app.wait_for("a first collision of the π blocks", 600, |s| {
+        s["scene_name"] == "Blocks that count π" && s["pair_collisions"].as_u64() >= Some(1)
+    });
+    let row = [
+        "scene_name",
+        "run_state",
+        "pi_count",
+        "top_bar_more",
+        "drawer_toggle",
+        "sound",
+        "start",
+    ];
+    let rects: Vec<[f64; 4]> = row
+        .iter()
+        .map(|name| {
+            assert!(s["panel_widgets"][*name].is_array(), "{name} not shown");
+            rect(&s["panel_widgets"][*name])
+        })
+        .collect();
+    for (k, r) in rects.iter().enumerate() {
+        assert!(r[0] >= -0.5 && r[0] + r[2] <= 1024.5, "{}: {r:?}", row[k]);
+    }
+    // Left to right in this order, none over the next (the buttons are laid
+    // out from the right end).
+    for k in 0..4 {
+        let (a, b) = (rects[k], rects[k + 1]);
+        assert!(
+            a[0] + a[2] <= b[0] + 0.5,
+            "{} {a:?} runs into {} {b:?}",
+            row[k],
+            row[k + 1]
+        );
+    }
+    assert!(
+        rects[0][2] >= 60.0,
+        "the name keeps some room: {:?}",
+        rects[0]
+    );
+    app.quit();
 }
 
 /// The top bar took the room between two items off the scene's name twice:

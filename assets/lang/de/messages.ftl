@@ -10,6 +10,10 @@ discs-count = { $count ->
 count-line = Stöße: { $pairs } zwischen Scheiben
 count-line-walls = Stöße: { $pairs } zwischen Scheiben · { $walls } mit Wänden
 pi-result = { $count } Stöße: π ≈ { $pi }
+pi-count = { $count ->
+    [one] 1 Stoß
+   *[other] { $count } Stöße
+}
 
 ## Was ein Verfahren nicht versprechen kann
 warning-verlet = verlet: Stöße verlieren Energie; die Stoßzahl e = { $restitution } wird nicht eingehalten

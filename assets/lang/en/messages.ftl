@@ -10,6 +10,10 @@ discs-count = { $count ->
 count-line = collisions: { $pairs } between discs
 count-line-walls = collisions: { $pairs } between discs · { $walls } with walls
 pi-result = { $count } collisions: π ≈ { $pi }
+pi-count = { $count ->
+    [one] 1 collision
+   *[other] { $count } collisions
+}
 
 ## What a method cannot promise
 warning-verlet = verlet: collisions lose energy; the restitution e = { $restitution } is not honoured

@@ -10,6 +10,10 @@ discs-count = { $count ->
 count-line = choques: { $pairs } entre discos
 count-line-walls = choques: { $pairs } entre discos · { $walls } con paredes
 pi-result = { $count } choques: π ≈ { $pi }
+pi-count = { $count ->
+    [one] 1 choque
+   *[other] { $count } choques
+}
 
 ## Lo que un método no puede prometer
 warning-verlet = verlet: los choques pierden energía; no se respeta la restitución e = { $restitution }

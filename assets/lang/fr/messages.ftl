@@ -10,6 +10,10 @@ discs-count = { $count ->
 count-line = collisions : { $pairs } entre disques
 count-line-walls = collisions : { $pairs } entre disques · { $walls } avec les murs
 pi-result = { $count } collisions : π ≈ { $pi }
+pi-count = { $count ->
+    [one] 1 collision
+   *[other] { $count } collisions
+}
 
 ## Ce qu'une méthode ne peut pas promettre
 warning-verlet = verlet : les collisions perdent de l'énergie ; le coefficient de restitution e = { $restitution } n'est pas respecté

@@ -10,6 +10,10 @@ discs-count = { $count ->
 count-line = colisões: { $pairs } entre discos
 count-line-walls = colisões: { $pairs } entre discos · { $walls } com paredes
 pi-result = { $count } colisões: π ≈ { $pi }
+pi-count = { $count ->
+    [one] 1 colisão
+   *[other] { $count } colisões
+}
 
 ## O que um método não pode prometer
 warning-verlet = verlet: as colisões perdem energia; o coeficiente de restituição e = { $restitution } não é respeitado
