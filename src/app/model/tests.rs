@@ -473,5 +473,6 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
     }
 }
 
+mod next_collision;
 mod numbering;
 mod tabs_and_totals;
