@@ -478,11 +478,11 @@ fn switching_an_impulse_pile_to_exact_says_what_it_separated() {
         s["plan"]["method"] == "exact"
             && s["ui"]["message"]
                 .as_str()
-                .is_some_and(|m| m.starts_with("exact"))
+                .is_some_and(|m| m.starts_with("The exact method"))
     });
     let message = s["ui"]["message"].as_str().unwrap();
     assert!(
-        message.starts_with("exact needs discs apart: it separated ")
+        message.starts_with("The exact method needs discs apart: it separated ")
             && message.contains(" overlapping pairs of discs"),
         "{message}"
     );

@@ -88,15 +88,15 @@ com-view-off = Schwerpunktsystem aus: Geschwindigkeiten vom Kasten aus gesehen
 com-view-on = Schwerpunktsystem: Die Ansicht bewegt sich mit dem Schwerpunkt, mit { $velocity }; nochmals Z zum Verlassen
 
 ## Zeit: nächster Stoß, Zurückspulen, Export
-separated = exact braucht getrennte Scheiben: Es hat { $pairs ->
+separated = Das Verfahren exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt
-separated-raised = exact braucht getrennte Scheiben: Es hat { $pairs ->
+separated-raised = Das Verfahren exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt, was die Energie um { $energy } erhöht hat
-separated-lowered = exact braucht getrennte Scheiben: Es hat { $pairs ->
+separated-lowered = Das Verfahren exact braucht getrennte Scheiben: Es hat { $pairs ->
     [one] 1 überlappendes Scheibenpaar
    *[other] { $pairs } überlappende Scheibenpaare
 } getrennt, was die Energie um { $energy } verringert hat

@@ -88,15 +88,15 @@ com-view-off = Centre-of-mass view off: velocities as seen from the box
 com-view-on = Centre-of-mass view: moving with the centre of mass at { $velocity }; Z again to leave
 
 ## Time: next collision, rewind, export
-separated = exact needs discs apart: it separated { $pairs ->
+separated = The exact method needs discs apart: it separated { $pairs ->
     [one] 1 overlapping pair
    *[other] { $pairs } overlapping pairs
 } of discs
-separated-raised = exact needs discs apart: it separated { $pairs ->
+separated-raised = The exact method needs discs apart: it separated { $pairs ->
     [one] 1 overlapping pair
    *[other] { $pairs } overlapping pairs
 } of discs, which raised the energy by { $energy }
-separated-lowered = exact needs discs apart: it separated { $pairs ->
+separated-lowered = The exact method needs discs apart: it separated { $pairs ->
     [one] 1 overlapping pair
    *[other] { $pairs } overlapping pairs
 } of discs, which lowered the energy by { $energy }

@@ -88,15 +88,15 @@ com-view-off = Vista del centro de masas desactivada: velocidades vistas desde l
 com-view-on = Vista del centro de masas: moviéndose con el centro de masas a { $velocity }; Z otra vez para salir
 
 ## Tiempo: siguiente choque, rebobinar, exportar
-separated = exact necesita los discos separados: separó { $pairs ->
+separated = El método exact necesita los discos separados: separó { $pairs ->
     [one] 1 par de discos solapados
    *[other] { $pairs } pares de discos solapados
 }
-separated-raised = exact necesita los discos separados: separó { $pairs ->
+separated-raised = El método exact necesita los discos separados: separó { $pairs ->
     [one] 1 par de discos solapados
    *[other] { $pairs } pares de discos solapados
 }, lo que aumentó la energía en { $energy }
-separated-lowered = exact necesita los discos separados: separó { $pairs ->
+separated-lowered = El método exact necesita los discos separados: separó { $pairs ->
     [one] 1 par de discos solapados
    *[other] { $pairs } pares de discos solapados
 }, lo que redujo la energía en { $energy }

@@ -88,15 +88,15 @@ com-view-off = Vue du centre de masse désactivée : vitesses vues depuis la bo
 com-view-on = Vue du centre de masse : la vue suit le centre de masse, qui se déplace à { $velocity } ; Z à nouveau pour en sortir
 
 ## Le temps : collision suivante, retour en arrière, export
-separated = exact exige des disques séparés : { $pairs ->
+separated = La méthode exact exige des disques séparés : { $pairs ->
     [one] { $pairs } paire de disques qui se chevauchaient a été séparée
    *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
 }
-separated-raised = exact exige des disques séparés : { $pairs ->
+separated-raised = La méthode exact exige des disques séparés : { $pairs ->
     [one] { $pairs } paire de disques qui se chevauchaient a été séparée
    *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
 }, ce qui a augmenté l'énergie de { $energy }
-separated-lowered = exact exige des disques séparés : { $pairs ->
+separated-lowered = La méthode exact exige des disques séparés : { $pairs ->
     [one] { $pairs } paire de disques qui se chevauchaient a été séparée
    *[other] { $pairs } paires de disques qui se chevauchaient ont été séparées
 }, ce qui a diminué l'énergie de { $energy }

@@ -88,15 +88,15 @@ com-view-off = Vista do centro de massa desligada: velocidades vistas a partir d
 com-view-on = Vista do centro de massa: acompanhando o centro de massa a { $velocity }; Z de novo para sair
 
 ## Tempo: próxima colisão, voltar, exportar
-separated = exact precisa dos discos separados: separou { $pairs ->
+separated = O método exact precisa dos discos separados: separou { $pairs ->
     [one] { $pairs } par de discos sobrepostos
    *[other] { $pairs } pares de discos sobrepostos
 }
-separated-raised = exact precisa dos discos separados: separou { $pairs ->
+separated-raised = O método exact precisa dos discos separados: separou { $pairs ->
     [one] { $pairs } par de discos sobrepostos
    *[other] { $pairs } pares de discos sobrepostos
 }, o que aumentou a energia em { $energy }
-separated-lowered = exact precisa dos discos separados: separou { $pairs ->
+separated-lowered = O método exact precisa dos discos separados: separou { $pairs ->
     [one] { $pairs } par de discos sobrepostos
    *[other] { $pairs } pares de discos sobrepostos
 }, o que diminuiu a energia em { $energy }
