@@ -156,6 +156,9 @@ impl Sandbox {
         self.panels.docks_open = true;
         self.panels.dock_expanded = true;
         self.panels.tab = DockTab::Collisions;
+        // The drawer (a small window's controls) floats over the ledger J
+        // opens, whose result it would hide: it closes (≡ opens it again).
+        self.panels.drawer_open = false;
         let said = match found {
             Some(impulse::ledger::Impact::Pair(c)) => {
                 let (dp, dke) = c.total_change();

@@ -66,12 +66,15 @@ fn j_names_a_pair_lowest_disc_first() {
 /// keeps both, a perfectly inelastic one of equal masses (m, v) keeps
 /// the momentum and loses half the energy, m·v²/4. The message had
 /// "changed by (0.000, 0.000) kg·m/s" and the energy cut off at a
-/// projector's size.
+/// projector's size. The drawer, open over the ledger J shows, closes.
 #[test]
 fn j_says_in_words_what_the_impact_kept_and_lost() {
     let dir = tempfile::tempdir().unwrap();
     let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::ToggleDrawer);
+    assert!(s.panels.drawer_open);
     s.apply(Command::NextCollision);
+    assert!(!s.panels.drawer_open, "the drawer hid the ledger J opens");
     let said = s.message().unwrap_or_default().to_owned();
     assert!(
         said.starts_with("Discs 1 and 2, t\u{a0}=\u{a0}2.400 s: ")
