@@ -119,6 +119,10 @@ next-collision-wall = Scheibe { $disc } traf die { $wall ->
    *[more] ihre kinetische Energie um { $energy } größer
 }
 next-collision-verlet = Scheiben sind bei t = { $time } zusammengestoßen; verlet schiebt Positionen auseinander und hat daher kein Vorher und Nachher eines einzelnen Stoßes zu zeigen: Der Reiter Stöße hat dafür keine Zeile
+stepped = { $steps ->
+    [one] Ein Schritt
+   *[other] { $steps } Schritte
+} von { $dt }: t = { $time }
 next-collision-none = Kein Stoß innerhalb von { $limit }
 next-collision-at-once = { $impacts } Stöße im selben Augenblick, alle im Reiter Stöße aufgeführt. { $first }
 rewound-to = Zurückgespult auf t = { $time } s (aufgezeichnet: { $oldest } bis { $newest } s); die Leertaste setzt von hier aus fort

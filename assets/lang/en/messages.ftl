@@ -119,6 +119,10 @@ next-collision-wall = Disc { $disc } hit the { $wall ->
    *[more] its kinetic energy { $energy } more
 }
 next-collision-verlet = Discs collided at t = { $time }; verlet moves positions apart, so it has no before and after of one collision to show: the ledger has no row for it
+stepped = { $steps ->
+    [one] One step
+   *[other] { $steps } steps
+} of { $dt }: t = { $time }
 next-collision-none = No collision within { $limit }
 next-collision-at-once = { $impacts } impacts at the same moment, all listed in the Collisions tab. { $first }
 rewound-to = Rewound to t = { $time } s (recorded: { $oldest } to { $newest } s); Space resumes from here

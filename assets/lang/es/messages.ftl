@@ -119,6 +119,10 @@ next-collision-wall = El disco { $disc } chocó con la pared { $wall ->
    *[more] su energía cinética subió { $energy }
 }
 next-collision-verlet = Los discos chocaron en t = { $time }; verlet separa las posiciones, así que no tiene un antes y un después de un choque que mostrar: el registro no tiene fila para él
+stepped = { $steps ->
+    [one] Un paso
+   *[other] { $steps } pasos
+} de { $dt }: t = { $time }
 next-collision-none = Ningún choque en { $limit }
 next-collision-at-once = { $impacts } impactos en el mismo instante, todos en la pestaña Choques. { $first }
 rewound-to = Rebobinado a t = { $time } s (grabado: de { $oldest } a { $newest } s); Espacio reanuda desde aquí

@@ -119,6 +119,10 @@ next-collision-wall = Le disque { $disc } a heurté le mur { $wall ->
    *[more] son énergie cinétique est en hausse de { $energy }
 }
 next-collision-verlet = Des disques se sont heurtés à t = { $time } ; verlet écarte les positions, il n'y a donc pas d'avant et d'après d'une collision à montrer : le registre n'a pas de ligne pour elle
+stepped = { $steps ->
+    [one] Un pas
+   *[other] { $steps } pas
+} de { $dt } : t = { $time }
 next-collision-none = Aucune collision en { $limit }
 next-collision-at-once = { $impacts } chocs au même instant, tous indiqués dans l’onglet Collisions. { $first }
 rewound-to = Retour à t = { $time } s (enregistré : de { $oldest } à { $newest } s) ; Espace reprend à partir d'ici

@@ -119,6 +119,10 @@ next-collision-wall = O disco { $disc } bateu na parede { $wall ->
    *[more] a energia cinética dele ficou { $energy } maior
 }
 next-collision-verlet = Discos colidiram em t = { $time }; o verlet afasta as posições, então não tem um antes e depois de uma colisão para mostrar: o registro não tem linha para ela
+stepped = { $steps ->
+    [one] Um passo
+   *[other] { $steps } passos
+} de { $dt }: t = { $time }
 next-collision-none = Nenhuma colisão em { $limit }
 next-collision-at-once = { $impacts } impactos no mesmo instante, todos listados na aba Colisões. { $first }
 rewound-to = Voltou para t = { $time } s (gravado: { $oldest } a { $newest } s); Espaço continua daqui

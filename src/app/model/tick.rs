@@ -68,6 +68,16 @@ impl Sandbox {
             }
             steps += 1;
         }
+        if !running && steps > 0 {
+            // N, paused: a step of 1/240 s does not show in the top bar's
+            // hundredths, so the strip says where it went.
+            self.toast(tr!(
+                "stepped",
+                steps = steps,
+                dt = with_unit(self.clock.dt, 4, "s"),
+                time = with_unit(self.world.time, 4, "s")
+            ));
+        }
         self.steps.steps_last_frame = steps;
         self.steps.steps_dropped = due - steps;
         self.after_steps(steps);

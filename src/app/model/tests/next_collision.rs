@@ -1,4 +1,5 @@
-//! J, the run to the next impact: what it stops at and what it says.
+//! The commands that move time while paused: J, the run to the next
+//! impact (what it stops at and what it says), and N, one step.
 
 use super::*;
 use crate::app::numbers::with_unit;
@@ -108,4 +109,29 @@ fn j_says_in_words_what_the_impact_kept_and_lost() {
         );
     }
     crate::app::lang::set_language(crate::app::lang::Lang::En);
+}
+
+/// N, paused, steps 1/240 s: the top bar's "t = 0.00 s" did not move, and
+/// nothing said the step was made. The strip says how far and to when.
+#[test]
+fn a_step_says_how_far_it_went() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    if !s.clock.paused {
+        s.apply(Command::TogglePause);
+    }
+    s.apply(Command::Step);
+    later(&mut s, 1.0 / 60.0);
+    s.tick(1.0 / 60.0, 1.0);
+    let dt = s.clock.dt;
+    assert!(
+        (s.world.time - dt).abs() < 1e-12,
+        "{} after one step of {dt}",
+        s.world.time
+    );
+    let step = with_unit(dt, 4, "s");
+    assert_eq!(
+        s.message(),
+        Some(format!("One step of {step}: t\u{a0}=\u{a0}{step}").as_str())
+    );
 }
