@@ -23,6 +23,7 @@ it; and a screenshot is saved for a person to look at (second argument).
 
 import json
 import math
+import re
 import sys
 import time
 
@@ -510,7 +511,8 @@ try:
     d.execute_script("arguments[0].focus()", canvas)
     wait_frames(d, 3)
     ActionChains(d).send_keys("j").perform()
-    text = wait_said(d, lambda t: "Collision of discs" in t, "the collision")
+    said_pair = re.compile(r"Discs \d+ and \d+, t")
+    text = wait_said(d, lambda t: said_pair.search(t) is not None, "the collision")
     check(True, f"after J the live region says it: {text[:80]!r}…")
     # Spanish, through the mirror's language list.
     mirror_choose(d, "mirror-languages", 1)
@@ -527,7 +529,9 @@ try:
     wait_frames(d, 3)
     mirror_button(d, next_es)
     pair_es = ftl_value("es", "messages.ftl", "next-collision-pair")
-    text = wait_said(d, lambda t: pair_es in t, f"the collision in Spanish ({pair_es!r})")
+    said_pair_es = re.compile(re.escape(pair_es) + r" \d+ y \d+, t")
+    text = wait_said(d, lambda t: said_pair_es.search(t) is not None,
+                     f"the collision in Spanish ({pair_es!r} …)")
     check(True, f"and the live region says the collision in Spanish: {text[:80]!r}…")
     # No keyboard trap: from the world, Shift+Tab reaches the mirror.
     mirror_choose(d, "mirror-languages", 0)
