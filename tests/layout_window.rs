@@ -488,10 +488,24 @@ fn projector_ledger(lang: &str) {
         s["panel_widgets"]["section_show"].is_array(),
         "the controls are in it"
     );
-    // J's report stops short of the drawer, which hid its end.
+    // J closes the drawer, which hid the ledger it opens and its report's
+    // end; the report is whole in the window.
     app.xdo(&["key", "j"]);
-    let s = app.wait_for("J's report beside the drawer", 30, |s| {
+    let s = app.wait_for("J's report", 30, |s| {
         s["panel_widgets"]["message"].is_array()
+    });
+    assert_eq!(s["ui"]["drawer_open"], false, "{lang}: J closes the drawer");
+    let said = rect(&s["panel_widgets"]["message"]);
+    assert!(
+        said[0] + said[2] <= window[0] + 0.5,
+        "{lang}: the report {said:?}"
+    );
+    // With the drawer open again, a report stops short of it (N's here).
+    app.click(widget(&s, "drawer_toggle", 0.5));
+    app.wait_for("the drawer again", 30, |s| s["ui"]["drawer_open"] == true);
+    app.xdo(&["key", "n"]);
+    let s = app.wait_for("N's report beside the drawer", 30, |s| {
+        s["panel_widgets"]["message"].is_array() && s["ui"]["drawer_open"] == true
     });
     let (said, drawer) = (
         rect(&s["panel_widgets"]["message"]),

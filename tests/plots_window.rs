@@ -62,17 +62,37 @@ fn at_the_projector_scale_the_plots_fill_their_tab_and_a_cut_line_shows_one_tool
             "{plot} {frame:?} inside the tab {area:?}"
         );
     }
-    // The line over the histogram, J's report under the world (on its two
+    // J's report, in words now, is whole on the strip's two lines here (its
+    // energy had been cut off); it gives way to the caption after 4 s.
+    let cut = |s: &Value, name: &str| {
+        s["ui"]["cut"]
+            .as_array()
+            .is_some_and(|c| c.iter().any(|n| n == name))
+    };
+    let s = app.state();
+    assert!(s["panel_widgets"]["message"].is_array(), "J's report");
+    assert!(
+        !cut(&s, "message"),
+        "J's report cut: {}",
+        s["ui"]["message"]
+    );
+    let s = app.wait_for("the caption back", 600, |s| {
+        s["panel_widgets"]["caption"].is_array()
+    });
+    // The line over the histogram, the caption under the world (on its two
     // lines) and the scene's name are cut at this size (Portuguese): one
     // tooltip each.
-    let s = app.state();
+    assert!(
+        cut(&s, "caption"),
+        "the caption is whole: no tooltip to test"
+    );
     let line = tab_content(&s);
     for (what, at) in [
         (
             "the line over the plot",
             [line[0] + 0.5 * line[2], line[1] + 12.0],
         ),
-        ("J's report", {
+        ("the caption", {
             let strip = caption_strip(&s);
             [strip[0] + 0.5 * strip[2], strip[1] + 0.5 * strip[3]]
         }),
