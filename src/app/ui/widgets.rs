@@ -79,22 +79,25 @@ pub fn labelled_button(
     r
 }
 
+/// How wide `text` is on one line in a button's text style (points).
+pub fn button_text_width(ui: &Ui, text: impl Into<egui::WidgetText>) -> f32 {
+    text.into()
+        .into_galley(
+            ui,
+            Some(egui::TextWrapMode::Extend),
+            f32::INFINITY,
+            egui::TextStyle::Button,
+        )
+        .size()
+        .x
+}
+
 /// A combo box named `label` (its egui id from `salt`), showing
 /// `selected`: the name beside it where both fit the dock's width, else on
 /// a line of its own above it (long words: German, a projector's scale),
 /// so nothing is cut at the edge.
 pub fn combo(ui: &mut Ui, salt: &str, label: &str, selected: &str) -> ComboBox {
-    let width = |text: &str| {
-        egui::WidgetText::from(text)
-            .into_galley(
-                ui,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Button,
-            )
-            .size()
-            .x
-    };
+    let width = |text: &str| button_text_width(ui, text);
     let button = ui
         .spacing()
         .combo_width
@@ -411,6 +414,36 @@ pub fn angular_momentum_tip(tip: String, world: &impulse::World) -> String {
     } else {
         tip
     }
+}
+
+/// The texts `view` draws for `model` in a headless ui `size` points
+/// large ([`headless`]), in the order drawn.
+#[cfg(test)]
+pub fn texts_drawn(
+    model: &crate::app::model::Sandbox,
+    size: egui::Vec2,
+    view: &mut dyn super::View,
+) -> Vec<String> {
+    let (mut out, mut marks) = (Vec::new(), super::Marks::default());
+    let shown = headless(size, |ui| {
+        let mut cx = super::Cx {
+            model,
+            out: &mut out,
+            marks: &mut marks,
+            drawer: false,
+            open_drawer: None,
+            keys_in_panels: false,
+        };
+        view.ui(ui, &mut cx);
+    });
+    shown
+        .shapes
+        .iter()
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Text(t) => Some(t.galley.text().to_string()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Runs `add` in a ui `size` points large, in an egui without a window and

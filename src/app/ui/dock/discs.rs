@@ -430,8 +430,7 @@ impl View for DiscsTable {
 mod tests {
     use super::DiscsTable;
     use crate::app::model::tests::sandbox_with;
-    use crate::app::ui::widgets::headless;
-    use crate::app::ui::{Cx, Marks, View};
+    use crate::app::ui::widgets::texts_drawn;
 
     /// The table numbers its rows from 1, as the messages, the ledger and
     /// the column kept in sight when it scrolls do: it showed 0 and 1 where
@@ -441,27 +440,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let model = sandbox_with(dir.path(), "preset-1-head-on.toml", true, 0.0);
         assert_eq!(model.world.particles.len(), 2);
-        let (mut out, mut marks) = (Vec::new(), Marks::default());
         let mut table = DiscsTable::default();
-        let shown = headless(egui::vec2(900.0, 300.0), |ui| {
-            let mut cx = Cx {
-                model: &model,
-                out: &mut out,
-                marks: &mut marks,
-                drawer: false,
-                open_drawer: None,
-                keys_in_panels: false,
-            };
-            table.ui(ui, &mut cx);
-        });
-        let texts: Vec<String> = shown
-            .shapes
-            .iter()
-            .filter_map(|c| match &c.shape {
-                egui::Shape::Text(t) => Some(t.galley.text().to_string()),
-                _ => None,
-            })
-            .collect();
+        let texts = texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
         let count = |number: &str| texts.iter().filter(|t| *t == number).count();
         assert!(count("1") >= 1 && count("2") >= 1, "{texts:?}");
         assert_eq!(count("0"), 0, "{texts:?}");

@@ -21,6 +21,7 @@ mod words;
 use super::{Cx, View};
 use crate::app::model::{Command, DockTab};
 use crate::app::ui::tip::Tip;
+use crate::app::ui::widgets::button_text_width;
 use egui::RichText;
 
 /// Every tab, in the row's order: its key in the model and its view.
@@ -86,9 +87,9 @@ impl BottomDock {
         let wanted_at = |strip: &egui::Ui, spacing: f32, padding: f32| {
             self.tabs
                 .iter()
-                .map(|(t, _)| name_width(strip, &t.title()) + padding)
+                .map(|(t, _)| button_text_width(strip, RichText::new(t.title()).strong()) + padding)
                 .sum::<f32>()
-                + name_width(strip, toggle_label)
+                + button_text_width(strip, RichText::new(toggle_label).strong())
                 + padding
                 + spacing * self.tabs.len() as f32
                 + 2.0
@@ -147,17 +148,4 @@ impl BottomDock {
         });
         ui.allocate_rect(full, egui::Sense::hover());
     }
-}
-
-/// The width of a tab's name on the row, in bold button text (points).
-fn name_width(ui: &egui::Ui, text: &str) -> f32 {
-    egui::WidgetText::from(RichText::new(text).strong())
-        .into_galley(
-            ui,
-            Some(egui::TextWrapMode::Extend),
-            f32::INFINITY,
-            egui::TextStyle::Button,
-        )
-        .size()
-        .x
 }

@@ -132,8 +132,7 @@ mod tests {
     use super::Momenta;
     use crate::app::model::tests::sandbox_with;
     use crate::app::numbers::vector;
-    use crate::app::ui::widgets::headless;
-    use crate::app::ui::{Cx, Marks, View};
+    use crate::app::ui::widgets::texts_drawn;
 
     /// A gas too large for the diagram: the tab gives its total momentum.
     /// It pointed to the top bar, which on a projector keeps the total
@@ -145,26 +144,7 @@ mod tests {
         let n = model.world.particles.len();
         assert!(n > super::DIAGRAM_MAX_DISCS, "{n} discs");
         let total = model.world.particles.iter().map(|p| p.momentum()).sum();
-        let (mut out, mut marks) = (Vec::new(), Marks::default());
-        let shown = headless(egui::vec2(600.0, 200.0), |ui| {
-            let mut cx = Cx {
-                model: &model,
-                out: &mut out,
-                marks: &mut marks,
-                drawer: false,
-                open_drawer: None,
-                keys_in_panels: false,
-            };
-            Momenta.ui(ui, &mut cx);
-        });
-        let text: String = shown
-            .shapes
-            .iter()
-            .filter_map(|c| match &c.shape {
-                egui::Shape::Text(t) => Some(t.galley.text().to_string()),
-                _ => None,
-            })
-            .collect();
+        let text: String = texts_drawn(&model, egui::vec2(600.0, 200.0), &mut Momenta).concat();
         let total = vector(total, 3, "kg·m/s");
         assert!(text.contains(&total), "{text:?} without {total}");
         assert!(
