@@ -15,6 +15,7 @@ keys-launch-centre = Intro
 help-launch-centre = un disco nuevo en reposo en el centro de la vista, ya seleccionado
 keys-in-panels = Las teclas actúan sobre los controles: Esc o un clic en el mundo las devuelven al mundo.
 keys-in-panels-short = Esc: las teclas vuelven al mundo
+keys-after-field = Espacio, N y J actúan sobre la simulación; las demás teclas esperan: Esc o un clic en el mundo las devuelven al mundo.
 
 ## Sonido
 keys-sound = F8

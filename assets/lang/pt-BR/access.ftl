@@ -15,6 +15,7 @@ keys-launch-centre = Enter
 help-launch-centre = um disco novo em repouso no centro da vista, já selecionado
 keys-in-panels = As teclas agem nos controles: Esc ou um clique no mundo as devolve ao mundo.
 keys-in-panels-short = Esc: as teclas voltam ao mundo
+keys-after-field = Espaço, N e J agem na simulação; as outras teclas esperam: Esc ou um clique no mundo as devolve ao mundo.
 
 ## Som
 keys-sound = F8

@@ -58,9 +58,20 @@ pub struct Cx<'a> {
     /// Where the drawer is while it is open (points): the strip's text
     /// stops short of it.
     pub open_drawer: Option<egui::Rect>,
-    /// The keys act on the panels (a control has the keyboard), not on the
-    /// world: the strip says how to give them back.
-    pub keys_in_panels: bool,
+    /// Where the keys go: the strip says how to give them back.
+    pub keys: Keys,
+}
+
+/// Where the keys go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Keys {
+    /// To the world: its shortcuts.
+    World,
+    /// To a control that has the keyboard.
+    Controls,
+    /// To the panels after Enter applied a field, all but the clock's
+    /// (Space, N, J), which act on the simulation.
+    AfterField,
 }
 
 impl Cx<'_> {
@@ -231,7 +242,13 @@ impl Panels {
             marks: &mut self.marks,
             drawer: matches!(rects.side_dock, SideDock::Drawer { .. }),
             open_drawer: rects.drawer.map(points),
-            keys_in_panels: self.typing || self.panel_keyboard,
+            keys: if self.typing {
+                Keys::Controls
+            } else if self.panel_keyboard {
+                Keys::AfterField
+            } else {
+                Keys::World
+            },
         };
         let mut panels = Vec::new();
         // The start screen first: egui's Tab walks the controls in the

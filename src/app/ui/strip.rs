@@ -10,7 +10,7 @@
 //! set-up, and a projector's narrow strip cuts the set-up. The text stops
 //! short of the drawer open over the strip's end.
 
-use super::{Cx, View};
+use super::{Cx, Keys, View};
 use crate::app::lang::tr;
 use crate::app::layout::MAX_CAPTION_LINES;
 use crate::app::model::lesson::pi_result;
@@ -170,13 +170,13 @@ impl View for Strip {
             }
             // The short hint has the full one on hover.
             let mut full_hint = None;
-            let caption = if cx.keys_in_panels {
-                let hint = keys_in_panels(ui, width, most);
-                let full = tr!("keys-in-panels");
+            let caption = if cx.keys == Keys::World {
+                caption
+            } else {
+                let hint = keys_in_panels(ui, width, most, cx.keys);
+                let full = tr!(full_hint_id(cx.keys));
                 full_hint = (hint != full).then_some(full);
                 Some(hint)
-            } else {
-                caption
             };
             let (text, name) = match (result, model.message(), caption) {
                 (Some(result), _, _) => (RichText::new(result).strong(), "pi_result"),
@@ -227,11 +227,20 @@ fn caption_galley(
     ui.fonts(|f| f.layout_job(job))
 }
 
+/// The message of the hint in full: the keys with a control, or with the
+/// panels after Enter but the clock's.
+fn full_hint_id(keys: Keys) -> &'static str {
+    match keys {
+        Keys::AfterField => "keys-after-field",
+        Keys::World | Keys::Controls => "keys-in-panels",
+    }
+}
+
 /// The hint that the keys act on the controls: in full where the strip's
 /// `rows` of `width` points hold it, else its short form (how to give them
 /// back).
-fn keys_in_panels(ui: &egui::Ui, width: f32, rows: usize) -> String {
-    let full = tr!("keys-in-panels");
+fn keys_in_panels(ui: &egui::Ui, width: f32, rows: usize, keys: Keys) -> String {
+    let full = tr!(full_hint_id(keys));
     match caption_galley(ui, full.as_str().into(), width, rows).elided {
         true => tr!("keys-in-panels-short"),
         false => full,

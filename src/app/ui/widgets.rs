@@ -432,7 +432,7 @@ pub fn texts_drawn(
             marks: &mut marks,
             drawer: false,
             open_drawer: None,
-            keys_in_panels: false,
+            keys: super::Keys::World,
         };
         view.ui(ui, &mut cx);
     });

@@ -229,14 +229,16 @@ fn the_keys_in_panels_hint_is_whole_in_one_line() {
                             return;
                         }
                         let width = ui.available_width() - BAR_ROOM;
-                        let hint = keys_in_panels(ui, width, 1);
-                        let galley = caption_galley(ui, hint.as_str().into(), width, 1);
-                        assert!(!galley.elided, "{size:?} {lang:?}: {hint}");
-                        assert_eq!(
-                            hint == tr!("keys-in-panels"),
-                            full,
-                            "{size:?} {lang:?}: {hint}"
-                        );
+                        for keys in [Keys::Controls, Keys::AfterField] {
+                            let hint = keys_in_panels(ui, width, 1, keys);
+                            let galley = caption_galley(ui, hint.as_str().into(), width, 1);
+                            assert!(!galley.elided, "{size:?} {lang:?}: {hint}");
+                            assert_eq!(
+                                hint == tr!(full_hint_id(keys)),
+                                full,
+                                "{size:?} {lang:?}: {hint}"
+                            );
+                        }
                     });
                 });
             }
