@@ -1,6 +1,7 @@
 //! What the window tests share: a private Xvfb, the `impulse` binary on it
 //! with a state dump, xdotool to drive it, and the camera maths to aim at
-//! world points, and the `main` of every window test binary ([`run`]:
+//! world points, the layout's common checks ([`check_layout`]), and the
+//! `main` of every window test binary ([`run`]:
 //! each `tests/*window.rs` has `harness = false`). Each binary uses a part
 //! of it, hence the `dead_code` allowance.
 #![allow(dead_code)]
@@ -534,3 +535,85 @@ pub fn saved_scenes(dir: &Path) -> Vec<PathBuf> {
 
 /// The scenes the sweep opens: the digit keys, then Ctrl+N.
 pub const PRESET_KEYS: [&str; 11] = ["1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "ctrl+n"];
+
+/// Whether two rectangles share any area (touching edges do not count).
+pub fn overlap(a: [f64; 4], b: [f64; 4]) -> bool {
+    let e = 0.5; // half a pixel: egui rounds panel edges
+    a[0] + e < b[0] + b[2]
+        && b[0] + e < a[0] + a[2]
+        && a[1] + e < b[1] + b[3]
+        && b[1] + e < a[1] + a[3]
+}
+
+/// Checks one frame's layout; `what` names it in messages.
+pub fn check_layout(s: &Value, what: &str, scale: f64, window: [f64; 2]) {
+    let layout = &s["layout"];
+    assert_eq!(layout["ui_scale"].as_f64(), Some(scale), "{what}: {layout}");
+    let size = [
+        layout["window"][0].as_f64().unwrap(),
+        layout["window"][1].as_f64().unwrap(),
+    ];
+    assert!(
+        (size[0] - window[0]).abs() < 1.0 && (size[1] - window[1]).abs() < 1.0,
+        "{what}: {size:?}"
+    );
+    let world = rect(&layout["world"]);
+    assert!(
+        world[2] > 100.0 && world[3] > 100.0,
+        "{what}: a world to see: {world:?}"
+    );
+    let panels = layout["panels"].as_array().unwrap();
+    assert!(
+        panels.len() >= 2,
+        "{what}: at least the top bar and the strip: {layout}"
+    );
+    for p in panels {
+        let p = rect(p);
+        assert!(
+            !overlap(p, world),
+            "{what}: panel {p:?} covers the world {world:?}"
+        );
+        assert!(
+            p[0] >= -0.5
+                && p[1] >= -0.5
+                && p[0] + p[2] <= window[0] + 0.5
+                && p[1] + p[3] <= window[1] + 0.5,
+            "{what}: {p:?} leaves the window"
+        );
+    }
+    let min_text = layout["min_text_px"].as_f64().unwrap();
+    let floor = if scale >= 2.0 { 24.0 } else { 14.0 };
+    assert!(
+        min_text >= floor,
+        "{what}: smallest text {min_text} px < {floor}"
+    );
+    // The world's guarantees (layout.rs): from 1024×768 up at scales 1–2,
+    // at least 40 % of the window and 240 px each way; at scale 2.5 the
+    // full width and 240 px of height.
+    let share = world[2] * world[3] / (window[0] * window[1]);
+    if window[0] >= 1024.0 && window[1] >= 768.0 && scale <= 2.0 {
+        assert!(
+            share >= 0.4 - 1e-3 && world[2] >= 240.0 && world[3] >= 240.0,
+            "{what}: the world has {share:.2} of the window, {world:?}"
+        );
+    }
+    if window[0] == 1024.0 && window[1] == 768.0 && scale == 1.0 {
+        assert!(
+            share >= 0.5,
+            "{what}: the world has {share:.2} of the window"
+        );
+    }
+    // The camera draws into that rectangle.
+    let view = View::of(s);
+    assert_eq!(
+        [
+            view.origin[0],
+            view.origin[1],
+            view.viewport[0],
+            view.viewport[1]
+        ]
+        .map(|v| v.round()),
+        world.map(|v| v.round()),
+        "{what}"
+    );
+}
