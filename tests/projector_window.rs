@@ -2,7 +2,8 @@
 //! 2. After J the ledger opens beside a world that keeps its room, the
 //! controls become a drawer, and in every shipped language and the
 //! pseudo-language the top bar, the tab row and the ledger are inside the
-//! window, none over another; the Discs table scrolls sideways to its last
+//! window, none over another; scrolled, the ledger keeps its before and
+//! after over its rows; the Discs table scrolls sideways to its last
 //! column.
 
 #[path = "window_harness/mod.rs"]
@@ -28,6 +29,10 @@ fn main() -> std::process::ExitCode {
         (
             "in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping",
             in_the_pseudo_language_at_the_projector_scale_nothing_is_cut_off_or_overlapping,
+        ),
+        (
+            "at_the_projector_scale_the_ledger_keeps_before_and_after_over_its_rows",
+            at_the_projector_scale_the_ledger_keeps_before_and_after_over_its_rows,
         ),
         (
             "at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column",
@@ -312,5 +317,38 @@ fn at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column() 
             "{name} {r:?} is not at the left of the tab {area:?}"
         );
     }
+    app.quit();
+}
+
+/// Scrolled to the discs' energies, the ledger's numbers stood under no
+/// "before" and "after" at a projector: its header now stays at the top of
+/// the page while the newest impact's rows are in sight under it.
+fn at_the_projector_scale_the_ledger_keeps_before_and_after_over_its_rows() {
+    let x = Xvfb::start("pinned");
+    let app = projector_at_impact(&x, "en");
+    let s = app.wait_frames(3);
+    assert!(
+        !s["panel_widgets"]["ledger_header_pinned"].is_array(),
+        "drawn again before the page is scrolled"
+    );
+    let page = rect(&s["panel_widgets"]["scroll_ledger_stacked"]);
+    let top = rect(&s["panel_widgets"]["ledger_newest"])[1];
+    app.move_to([page[0] + 0.5 * page[2], page[1] + 0.5 * page[3]]);
+    app.wait_frames(2);
+    app.xdo(&["click", "--repeat", "3", "--delay", "60", "5"]);
+    let s = app.wait_for("the page scrolled", 60, |s| {
+        rect(&s["panel_widgets"]["ledger_newest"])[1] < top - 40.0
+    });
+    let pinned = rect(&s["panel_widgets"]["ledger_header_pinned"]);
+    assert!(
+        (pinned[1] - page[1]).abs() <= 0.5 && pinned[3] > 20.0 && pinned[3] < 0.5 * page[3],
+        "the header {pinned:?} is not at the top of the page {page:?}"
+    );
+    // Under it, the rows still in sight.
+    let table = rect(&s["panel_widgets"]["ledger_newest"]);
+    assert!(
+        table[1] + table[3] > pinned[1] + pinned[3] + 20.0,
+        "no rows under the header: {table:?}"
+    );
     app.quit();
 }

@@ -6,6 +6,7 @@
 use super::super::dialog::{page, scroll};
 use super::super::widgets::command_button;
 use super::super::{Cx, View};
+use super::pinned_header::HeaderRow;
 use crate::app::lang::tr;
 use crate::app::model::lesson::{count_line, LEDGER_KEEP};
 use crate::app::model::Command;
@@ -66,8 +67,8 @@ impl View for Collisions {
                 count(&mut columns[0], cx);
                 columns[0].strong(tr!("ledger-last", count = recent.len()));
                 let area = egui::ScrollArea::both().auto_shrink([false, true]);
-                scroll(&mut columns[0], cx, area, "ledger_list", |ui, _| {
-                    list(ui, &recent)
+                scroll(&mut columns[0], cx, area, "ledger_list", |ui, cx| {
+                    list(ui, cx, &recent)
                 });
                 let area = egui::ScrollArea::both().auto_shrink([false, true]);
                 scroll(&mut columns[1], cx, area, "ledger_detail", |ui, cx| {
@@ -87,7 +88,7 @@ impl View for Collisions {
                 count(ui, cx);
                 ui.separator();
                 ui.strong(tr!("ledger-last", count = recent.len()));
-                list(ui, &recent);
+                list(ui, cx, &recent);
             });
         }
     }
@@ -108,8 +109,9 @@ fn count(ui: &mut egui::Ui, cx: &mut Cx) {
 }
 
 /// The kept impacts, newest first.
-fn list(ui: &mut egui::Ui, recent: &[Impact]) {
-    egui::Grid::new("ledger")
+fn list(ui: &mut egui::Ui, cx: &mut Cx, recent: &[Impact]) {
+    let mut header = HeaderRow::default();
+    let table = egui::Grid::new("ledger")
         .striped(true)
         .num_columns(4)
         .spacing([18.0, 4.0])
@@ -123,7 +125,8 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
                     tr!("ledger-dke-hover"),
                 ),
             ] {
-                ui.strong(h).tip(hover);
+                let r = ui.strong(h.as_str()).tip(hover);
+                header.add(&r, h);
             }
             ui.end_row();
             for impact in recent {
@@ -134,7 +137,9 @@ fn list(ui: &mut egui::Ui, recent: &[Impact]) {
                 ui.label(plain(dke, 3));
                 ui.end_row();
             }
-        });
+        })
+        .response;
+    header.keep_in_sight(ui, cx, "ledger_list_header_pinned", table.rect);
 }
 
 /// The newest impact, before and after: each quantity for one disc and the
@@ -276,6 +281,7 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
     // Rows as tall as their text, not as a button: at a projector the
     // heading and three rows (the discs' momenta and their total) fit.
     let line = ui.text_style_height(&egui::TextStyle::Body);
+    let mut header = HeaderRow::default();
     let r = egui::Grid::new("ledger_newest")
         .striped(true)
         .num_columns(3)
@@ -283,9 +289,12 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
         .spacing([spacing, 4.0])
         .max_col_width(names.max(numbers))
         .show(ui, |ui| {
-            ui.add(egui::Label::new(egui::RichText::new(heading).strong()).wrap());
-            ui.strong(before);
-            ui.strong(after);
+            let r = ui.add(egui::Label::new(egui::RichText::new(&heading).strong()).wrap());
+            header.add(&r, heading);
+            let r = ui.strong(&before);
+            header.add(&r, before);
+            let r = ui.strong(&after);
+            header.add(&r, after);
             ui.end_row();
             for (what, before, after, total, dot) in rows {
                 let strong = |text: String| egui::RichText::new(text).strong();
@@ -325,4 +334,5 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
         .tip(tr!("ledger-detail-hover"));
     // Its whole width (the dump shows whether any is cut off).
     cx.note("ledger_newest", &r);
+    header.keep_in_sight(ui, cx, "ledger_header_pinned", r.rect);
 }

@@ -13,6 +13,7 @@ mod disc_column;
 pub mod discs;
 pub mod edge;
 mod momenta;
+mod pinned_header;
 mod plots;
 mod speeds;
 mod totals;
