@@ -6,6 +6,7 @@ language-now = Sprache: { this-language }
 
 ## Die obere Leiste
 scene-untitled = Sandkasten
+scene-name-edited = { $name } (geändert)
 state-rewound = ZURÜCKGESPULT
 state-paused = PAUSIERT
 state-running = LÄUFT

@@ -363,6 +363,22 @@ mod tests {
     /// the discs or to a law they obey, not by the method; undo takes the
     /// change back with the note that reported it.
     #[test]
+    fn a_named_scene_edited_says_so_in_its_title_and_undo_takes_the_mark_away() {
+        use crate::app::model::command::Law;
+        use crate::app::model::tests::later;
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+        let name = s.scene_name();
+        assert_eq!(s.title(), name);
+        later(&mut s, 1.0);
+        s.apply(Command::SetLaw(Law::Restitution, 0.5));
+        assert_eq!(s.title(), format!("{name} (edited)"));
+        later(&mut s, 1.0);
+        s.apply(Command::Undo);
+        assert_eq!(s.title(), name);
+    }
+
+    #[test]
     fn a_law_changed_voids_the_caption_and_undo_takes_edits_with_their_notes() {
         use crate::app::model::command::Law;
         use crate::app::model::tests::later;

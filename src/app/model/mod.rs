@@ -328,6 +328,18 @@ impl Sandbox {
             .map_or_else(|| tr!("scene-untitled"), str::to_string)
     }
 
+    /// The name the top bar shows: the scene's, marked "(edited)" once its
+    /// discs or laws no longer hold its caption (as the caption says
+    /// "Before the edits"). The sandbox, made to be edited, is not marked.
+    pub fn title(&self) -> String {
+        let lang = crate::app::lang::language().code();
+        match self.open.scene.name_in(lang) {
+            Some(name) if self.open.edited => tr!("scene-name-edited", name = name),
+            Some(name) => name.to_string(),
+            None => tr!("scene-untitled"),
+        }
+    }
+
     /// The open scene's description (its caption) in the window's
     /// language, if it has one.
     pub fn scene_description(&self) -> Option<String> {

@@ -35,7 +35,7 @@ impl View for TopBar {
         } else {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
-        let name = model.scene_name();
+        let name = model.title();
         let method = model.method_in_use();
         let warnings = impulse::warnings::warnings(world, model.clock.dt);
         let stall = warnings
