@@ -333,10 +333,12 @@ impl Sandbox {
     /// "Before the edits"). The sandbox, made to be edited, is not marked.
     pub fn title(&self) -> String {
         let lang = crate::app::lang::language().code();
-        match self.open.scene.name_in(lang) {
-            Some(name) if self.open.edited => tr!("scene-name-edited", name = name),
-            Some(name) => name.to_string(),
-            None => tr!("scene-untitled"),
+        let named = self.open.scene.name_in(lang).is_some();
+        let name = self.scene_name();
+        if named && self.open.edited {
+            tr!("scene-name-edited", name = name)
+        } else {
+            name
         }
     }
 
