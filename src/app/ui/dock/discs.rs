@@ -119,8 +119,6 @@ impl View for DiscsTable {
         let mut commit: Option<CellEdit> = None;
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
-        // Enter left a cell, whether or not it changed anything.
-        let mut left_with_enter = false;
         let mut cells = Vec::new();
         // Where each disc's number is in the table, and whether it has the
         // keyboard.
@@ -132,7 +130,8 @@ impl View for DiscsTable {
         let mut edit_text = editing.as_ref().map(|e| e.text.clone()).unwrap_or_default();
         let selected = model.selected;
         let mut select = None;
-        let mut focused = false;
+        // The cells typed in, noted after the table as every text field is.
+        let mut fields: Vec<egui::Response> = Vec::new();
         let spin = spin_shown(&model.world);
         let spin_columns = if spin { 3 } else { 0 };
         let spin_headings = spin_headings();
@@ -317,7 +316,7 @@ impl View for DiscsTable {
                                             r = r.tip(note.text.as_str());
                                         }
                                         select_all_on_focus(ui, &r, text);
-                                        focused |= r.has_focus();
+                                        fields.push(r.clone());
                                         let name = ["discs_mass", "", "discs_vx", "discs_vy"][f];
                                         cells.push((format!("{name}_{i}"), r.rect, r.has_focus()));
                                         stops.push(Stop::control(&r));
@@ -334,8 +333,6 @@ impl View for DiscsTable {
                                             });
                                         }
                                         if r.lost_focus() {
-                                            left_with_enter |=
-                                                ui.input(|inp| inp.key_pressed(egui::Key::Enter));
                                             if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
                                                 cancel = true;
                                             } else if mine || r.changed() {
@@ -387,7 +384,13 @@ impl View for DiscsTable {
                 }
             });
         ui.spacing_mut().scroll = scroll;
-        cx.marks.text_focus |= focused;
+        // Enter leaves the cell, changed or not; the keyboard stays with the
+        // panel (a click elsewhere gives it back to the world): Enter in a
+        // cell reached by Tab and left as it was had given the keys to the
+        // world, and a 2 typed next opened a preset.
+        for r in &fields {
+            cx.marks.text_field(r);
+        }
         cx.marks.stops.extend(stops);
         for (name, rect, has_focus) in cells {
             if has_focus {
@@ -407,11 +410,6 @@ impl View for DiscsTable {
         if cancel {
             self.editing = None;
         }
-        // Enter leaves the cell, changed or not; the keyboard stays with the
-        // panel (a click elsewhere gives it back to the world): Enter in a
-        // cell reached by Tab and left as it was had given the keys to the
-        // world, and a 2 typed next opened a preset.
-        cx.marks.left_with_enter |= left_with_enter;
         if let Some(cell) = commit {
             let mut text: [Option<String>; 4] = Default::default();
             text[cell.field] = Some(cell.text.clone());
