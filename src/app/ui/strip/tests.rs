@@ -151,6 +151,8 @@ fn captions_are_whole_in_the_strip_from_a_laptop_up() {
 /// captions were cut before their answer, which came at the end; the
 /// German π blocks never showed "31". Every caption now says its
 /// answer first, and that is whole on screen there, in every language.
+/// (A fresh review found the head-on lesson's point, total momentum kept,
+/// after its first sentence and so cut: it is part of that sentence now.)
 #[test]
 fn a_captions_answer_is_in_sight_on_a_projector() {
     let all = captions_at((1024.0, 768.0), 2.0);
@@ -168,6 +170,14 @@ fn a_captions_answer_is_in_sight_on_a_projector() {
     assert!(
         pi.is_some_and(|c| c.shown.contains("31")),
         "the German π blocks"
+    );
+    // The head-on lesson's point, momentum kept, had come after the cut.
+    let head_on = all
+        .iter()
+        .find(|c| c.lang == "en" && c.scene.ends_with("preset-1-head-on.toml"));
+    assert!(
+        head_on.is_some_and(|c| c.shown.contains("total momentum stays the same")),
+        "the head-on lesson"
     );
 }
 
