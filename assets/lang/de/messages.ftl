@@ -32,6 +32,7 @@ scene-opened = Geöffnet: { $name }
 scene-opened-undo = Geöffnet: { $name }. { $undo } holt { $previous } zurück, so wie Sie es verlassen haben
 scene-kept = { $error } (die aktuelle Szene bleibt)
 scene-reset = Szene zurückgesetzt
+scene-reset-edits = Szene zurückgesetzt, wie sie geöffnet wurde, ohne Ihre Änderungen: { $undo } holt sie zurück
 scene-cannot-reset = Zurücksetzen nicht möglich: { $error }
 scene-cleared = Geleert: auf freier Fläche ziehen, um Scheiben abzuschießen
 scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben

@@ -32,6 +32,7 @@ scene-opened = Opened { $name }
 scene-opened-undo = Opened { $name }. { $undo } brings back { $previous } as you left it
 scene-kept = { $error } (kept the current scene)
 scene-reset = Scene reset
+scene-reset-edits = Scene reset to how it opened, without your edits: { $undo } brings them back
 scene-cannot-reset = Cannot reset: { $error }
 scene-cleared = Cleared: drag on empty space to launch discs
 scene-path-empty = Type the path of a scene file first

@@ -32,6 +32,7 @@ scene-opened = Se abrió { $name }
 scene-opened-undo = Se abrió { $name }. { $undo } recupera { $previous } tal como lo dejó
 scene-kept = { $error } (se mantiene la escena actual)
 scene-reset = Escena reiniciada
+scene-reset-edits = Escena reiniciada tal como se abrió, sin sus cambios: { $undo } los recupera
 scene-cannot-reset = No se puede reiniciar: { $error }
 scene-cleared = Discos quitados: arrastra sobre un espacio vacío para lanzar discos
 scene-path-empty = Escribe primero la ruta de un archivo de escena

@@ -32,6 +32,7 @@ scene-opened = Ouvert : { $name }
 scene-opened-undo = Ouvert : { $name }. { $undo } ramène { $previous } tel que vous l’avez laissé
 scene-kept = { $error } (la scène actuelle est conservée)
 scene-reset = Scène réinitialisée
+scene-reset-edits = Scène réinitialisée telle qu’elle a été ouverte, sans vos modifications : { $undo } les ramène
 scene-cannot-reset = Impossible de réinitialiser : { $error }
 scene-cleared = Disques effacés : glissez dans le vide pour en lancer
 scene-path-empty = Tapez d'abord le chemin d'un fichier de scène

@@ -32,6 +32,7 @@ scene-opened = Cena aberta: { $name }
 scene-opened-undo = Cena aberta: { $name }. { $undo } traz de volta { $previous } como você deixou
 scene-kept = { $error } (a cena atual foi mantida)
 scene-reset = Cena reiniciada
+scene-reset-edits = Cena reiniciada como foi aberta, sem as suas alterações: { $undo } as traz de volta
 scene-cannot-reset = Não foi possível reiniciar: { $error }
 scene-cleared = Cena limpa: arraste num espaço vazio para lançar discos
 scene-path-empty = Digite primeiro o caminho de um arquivo de cena

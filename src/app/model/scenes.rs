@@ -231,12 +231,23 @@ impl Sandbox {
     pub(super) fn reset_scene(&mut self) {
         match self.open.scene.build(&self.open.origin) {
             Ok(world) => {
+                // Edits made since it opened go: said, with the key that
+                // brings them back (a teacher who set 3 kg and pressed R
+                // saw the collision again at 1 kg, with no word why).
+                let edits_dropped = self.open.edited && !self.open.scene.edited;
                 self.open.edited = self.open.scene.edited;
                 self.world = world;
                 self.forget_past();
                 self.selected = None;
                 self.pointer.cancel();
-                self.toast(tr!("scene-reset"));
+                if edits_dropped {
+                    let undo = super::bindings::binding_of(&super::Command::Undo)
+                        .map(|b| b.keys())
+                        .unwrap_or_default();
+                    self.toast_for(tr!("scene-reset-edits", undo = undo), 8.0);
+                } else {
+                    self.toast(tr!("scene-reset"));
+                }
             }
             Err(e) => self.toast(tr!("scene-cannot-reset", error = e.to_string())),
         }
