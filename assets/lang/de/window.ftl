@@ -6,7 +6,7 @@ language-now = Sprache: { this-language }
 
 ## Die obere Leiste
 scene-untitled = Sandkasten
-scene-name-edited = { $name } (geändert)
+scene-edited-mark = (geändert)
 state-rewound = ZURÜCKGESPULT
 state-paused = PAUSIERT
 state-running = LÄUFT

@@ -6,7 +6,7 @@ language-now = Language: { this-language }
 
 ## The top bar
 scene-untitled = Sandbox
-scene-name-edited = { $name } (edited)
+scene-edited-mark = (edited)
 state-rewound = REWOUND
 state-paused = PAUSED
 state-running = RUNNING

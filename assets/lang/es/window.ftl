@@ -6,7 +6,7 @@ language-now = Idioma: { this-language }
 
 ## La barra superior
 scene-untitled = Experimento libre
-scene-name-edited = { $name } (con cambios)
+scene-edited-mark = (con cambios)
 state-rewound = REBOBINADO
 state-paused = EN PAUSA
 state-running = EN MARCHA

@@ -6,7 +6,7 @@ language-now = Langue : { this-language }
 
 ## La barre du haut
 scene-untitled = Bac à sable
-scene-name-edited = { $name } (version modifiée)
+scene-edited-mark = (modifiée)
 state-rewound = REMBOBINÉ
 state-paused = EN PAUSE
 state-running = EN COURS

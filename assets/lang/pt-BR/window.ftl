@@ -6,7 +6,7 @@ language-now = Idioma: { this-language }
 
 ## A barra de cima
 scene-untitled = Caixa livre
-scene-name-edited = { $name } (com alterações)
+scene-edited-mark = (com alterações)
 state-rewound = REBOBINADO
 state-paused = PAUSADO
 state-running = RODANDO

@@ -328,17 +328,21 @@ impl Sandbox {
             .map_or_else(|| tr!("scene-untitled"), str::to_string)
     }
 
-    /// The name the top bar shows: the scene's, marked "(edited)" once its
-    /// discs or laws no longer hold its caption (as the caption says
-    /// "Before the edits"). The sandbox, made to be edited, is not marked.
-    pub fn title(&self) -> String {
+    /// What follows the scene's name once its discs or laws no longer hold
+    /// its caption ("(edited)", as the caption says "Before the edits").
+    /// The sandbox, made to be edited, has none.
+    pub fn edited_mark(&self) -> Option<String> {
         let lang = crate::app::lang::language().code();
         let named = self.open.scene.name_in(lang).is_some();
-        let name = self.scene_name();
-        if named && self.open.edited {
-            tr!("scene-name-edited", name = name)
-        } else {
-            name
+        (named && self.open.edited).then(|| tr!("scene-edited-mark"))
+    }
+
+    /// The scene's name with its [`Sandbox::edited_mark`].
+    #[cfg(test)]
+    pub fn title(&self) -> String {
+        match self.edited_mark() {
+            Some(mark) => format!("{} {mark}", self.scene_name()),
+            None => self.scene_name(),
         }
     }
 

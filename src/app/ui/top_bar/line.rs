@@ -16,12 +16,14 @@ use std::sync::Arc;
 const NAME_AT_LEAST: f32 = 100.0;
 
 /// One item of the line: its text, what hovering it says, its name in the
-/// state dump, and a shorter text for a line too full for the name.
+/// state dump, a shorter text for a line too full for the name, and (the
+/// name's) an end kept whole where the text is cut.
 pub(super) struct Item {
     text: RichText,
     hover: Option<String>,
     name: Option<String>,
     short: Option<RichText>,
+    kept_end: Option<[RichText; 2]>,
 }
 
 impl Item {
@@ -31,7 +33,16 @@ impl Item {
             hover: None,
             name: None,
             short: None,
+            kept_end: None,
         }
+    }
+
+    /// Text after the item's own, kept where the item is cut, whole or, where
+    /// the item would keep less than [`NAME_AT_LEAST`], short: the scene's
+    /// name is cut before its "(edited)", or its "*" at a projector.
+    pub(super) fn kept_end(mut self, end: Option<[RichText; 2]>) -> Self {
+        self.kept_end = end;
+        self
     }
 
     pub(super) fn short(mut self, text: RichText) -> Self {
@@ -212,7 +223,15 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     let always: Vec<Item> = essential.collect();
     // What the name and the other items may take, "… more" kept room for.
     let free = ui.available_width() - more_width - fixed;
-    let full_name = galley(ui, &name.text).size().x;
+    // The name's own width, and its kept end's (whole and short) with the
+    // room before it.
+    let own = galley(ui, &name.text).size().x;
+    let gap = 0.3 * spacing;
+    let ends = name
+        .kept_end
+        .as_ref()
+        .map(|ends| ends.clone().map(|end| galley(ui, &end).size().x + gap));
+    let full_name = own + ends.map_or(0.0, |[whole, _]| whole);
     let name_width = full_name.min((0.6 * free).max(40.0));
     // The other items that fit beside the name at that width, in order (the
     // last may use the room kept for "… more")...
@@ -237,11 +256,45 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     ui.spacing_mut().item_spacing.x = spacing;
     ui.set_clip_rect(ui.max_rect().intersect(ui.clip_rect()));
     let height = ui.available_height();
-    let r = ui.add_sized([name_width, height], |ui: &mut egui::Ui| {
-        crate::app::ui::widgets::one_line(ui, name.text, None)
+    // The end whole where the name keeps its least room beside it (or is
+    // whole), else short.
+    let end = name.kept_end.zip(ends).map(|([whole, short], [w, s])| {
+        let hover = whole.text().to_string();
+        if name_width - w >= own.min(NAME_AT_LEAST) {
+            (whole, w, None)
+        } else {
+            (short, s, Some(hover))
+        }
     });
+    let end_width = end.as_ref().map_or(0.0, |(_, w, _)| *w);
+    if end.is_some() {
+        ui.spacing_mut().item_spacing.x = gap;
+    }
+    // Cut, the name says itself whole on hover, with its end.
+    let whole = match &end {
+        Some((_, _, Some(hover))) => Some(format!("{} {hover}", name.text.text())),
+        _ => None,
+    };
+    // Laid out from the left, as wide as its text: the end follows it.
+    let layout = egui::Layout::left_to_right(egui::Align::Center);
+    let r = ui
+        .allocate_ui_with_layout(egui::vec2(name_width - end_width, height), layout, |ui| {
+            crate::app::ui::widgets::one_line(ui, name.text, whole)
+        })
+        .inner;
+    ui.spacing_mut().item_spacing.x = spacing;
+    let r = match end {
+        Some((end, _, hover)) => {
+            let end = ui.add(egui::Label::new(end).extend());
+            r.union(match hover {
+                Some(h) => end.tip(h),
+                None => end,
+            })
+        }
+        None => r,
+    };
     cx.note("scene_name", &r);
-    if name_width + 0.5 < full_name {
+    if name_width - end_width + 0.5 < own {
         cx.marks.cut.insert("scene_name".into());
     }
     let always_shown = always.len();

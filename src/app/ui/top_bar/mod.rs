@@ -35,7 +35,8 @@ impl View for TopBar {
         } else {
             (Color32::from_rgb(0, 110, 30), Color32::from_rgb(170, 60, 0))
         };
-        let name = model.title();
+        let name = model.scene_name();
+        let mark = model.edited_mark();
         let method = model.method_in_use();
         let warnings = impulse::warnings::warnings(world, model.clock.dt);
         let stall = warnings
@@ -81,7 +82,8 @@ impl View for TopBar {
         let sign = sign.strong();
         // Always shown, in this order.
         let mut essential = vec![
-            Item::new(RichText::new(name).strong()),
+            Item::new(RichText::new(name).strong())
+                .kept_end(mark.map(|m| [RichText::new(m).strong(), RichText::new("*").strong()])),
             Item::new(format!("t = {}", with_unit(world.time, 2, "s"))),
             match stall {
                 Some(why) => Item::new(state.strong())
