@@ -15,6 +15,8 @@ keys-launch-centre = Enter
 help-launch-centre = eine neue, ruhende Scheibe in der Mitte der Ansicht, gleich ausgewählt
 keys-in-panels = Die Tasten wirken auf die Bedienelemente: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
 keys-in-panels-short = Esc: Tasten zurück an die Welt
+keys-tab-edge = Reiterhöhe: Pfeile eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die eigene. Esc: Tasten an die Welt.
+keys-tab-edge-short = Pfeile, Pos1, Ende: Reiterhöhe
 keys-after-field = Leertaste, N und J wirken auf die Simulation; die anderen Tasten warten: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
 
 ## Ton

@@ -15,6 +15,8 @@ keys-launch-centre = Enter
 help-launch-centre = a new disc at rest at the centre of the view, selected
 keys-in-panels = The keys act on the controls: Esc or a click in the world gives them back to the world.
 keys-in-panels-short = Esc: the keys back to the world
+keys-tab-edge = Tab height: arrows a row, Home tallest, End shortest, Enter its own. Esc: keys back to the world.
+keys-tab-edge-short = Arrows, Home, End: tab height
 keys-after-field = Space, N and J act on the simulation; the other keys wait: Esc or a click in the world gives them back to the world.
 
 ## Sound

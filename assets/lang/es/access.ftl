@@ -15,6 +15,8 @@ keys-launch-centre = Intro
 help-launch-centre = un disco nuevo en reposo en el centro de la vista, ya seleccionado
 keys-in-panels = Las teclas actúan sobre los controles: Esc o un clic en el mundo las devuelven al mundo.
 keys-in-panels-short = Esc: las teclas vuelven al mundo
+keys-tab-edge = Altura: flechas una fila, Inicio la más alta, Fin la más baja, Intro la suya. Esc: teclas al mundo.
+keys-tab-edge-short = Flechas, Inicio, Fin: altura
 keys-after-field = Espacio, N y J actúan sobre la simulación; las demás teclas esperan: Esc o un clic en el mundo las devuelven al mundo.
 
 ## Sonido

@@ -15,6 +15,8 @@ keys-launch-centre = Entrée
 help-launch-centre = un nouveau disque au repos au centre de la vue, sélectionné
 keys-in-panels = Les touches agissent sur les commandes : Échap ou un clic dans la simulation les rend à la simulation.
 keys-in-panels-short = Échap : touches à la simulation
+keys-tab-edge = Hauteur : flèches une ligne, Début le plus haut, Fin le plus bas, Entrée la sienne. Échap : touches à la simulation.
+keys-tab-edge-short = Flèches, Début, Fin : hauteur
 keys-after-field = Espace, N et J agissent sur la simulation ; les autres touches attendent : Échap ou un clic dans la simulation les rend à la simulation.
 
 ## Le son

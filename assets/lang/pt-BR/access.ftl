@@ -15,6 +15,8 @@ keys-launch-centre = Enter
 help-launch-centre = um disco novo em repouso no centro da vista, já selecionado
 keys-in-panels = As teclas agem nos controles: Esc ou um clique no mundo as devolve ao mundo.
 keys-in-panels-short = Esc: as teclas voltam ao mundo
+keys-tab-edge = Altura da aba: setas uma linha, Home a mais alta, End a mais baixa, Enter a dela. Esc: teclas ao mundo.
+keys-tab-edge-short = Setas, Home, End: altura da aba
 keys-after-field = Espaço, N e J agem na simulação; as outras teclas esperam: Esc ou um clique no mundo as devolve ao mundo.
 
 ## Som

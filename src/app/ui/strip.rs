@@ -232,6 +232,7 @@ fn caption_galley(
 fn full_hint_id(keys: Keys) -> &'static str {
     match keys {
         Keys::AfterField => "keys-after-field",
+        Keys::TabEdge => "keys-tab-edge",
         Keys::World | Keys::Controls => "keys-in-panels",
     }
 }
@@ -242,6 +243,7 @@ fn full_hint_id(keys: Keys) -> &'static str {
 fn keys_in_panels(ui: &egui::Ui, width: f32, rows: usize, keys: Keys) -> String {
     let full = tr!(full_hint_id(keys));
     match caption_galley(ui, full.as_str().into(), width, rows).elided {
+        true if keys == Keys::TabEdge => tr!("keys-tab-edge-short"),
         true => tr!("keys-in-panels-short"),
         false => full,
     }

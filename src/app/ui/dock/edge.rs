@@ -24,6 +24,11 @@ pub struct TabEdge {
     pub ppp: f32,
 }
 
+/// The edge's id: the strip says what its keys do while it has them.
+pub fn id() -> egui::Id {
+    egui::Id::new("tab_edge")
+}
+
 /// How far below the edge the pointer takes it, in points (above it is the
 /// caption strip, another panel).
 const GRIP_POINTS: f32 = 4.0;
@@ -37,7 +42,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
         egui::pos2(area.left(), top),
         egui::pos2(area.right(), area.top() + GRIP_POINTS),
     );
-    let id = ui.id().with("tab_edge");
+    let id = id();
     let r = ui.interact(grip, id, egui::Sense::click_and_drag());
     let r = r.tip(tr!("tab-edge-hover"));
     r.widget_info(|| {
@@ -54,13 +59,20 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
     }
     // Marked only while it can be moved, as egui marks a panel's edge: a
     // grip drawn always struck through the caption or the tab's first line.
+    // With the keyboard, a thicker line in the colour of focus, instead of
+    // the ring round other controls (round the edge it struck through the
+    // caption and the count under it); the strip says what the keys do.
     if live {
         let layer = egui::LayerId::new(egui::Order::Foreground, id.with("line"));
-        ui.ctx().layer_painter(layer).hline(
-            grip.x_range(),
-            top,
-            egui::Stroke::new(2.0, ui.visuals().strong_text_color()),
-        );
+        let stroke = if r.has_focus() {
+            crate::app::ui::marks_own_focus(ui.ctx(), id);
+            egui::Stroke::new(4.0, crate::app::ui::focus_color(cx.model.panels.theme))
+        } else {
+            egui::Stroke::new(2.0, ui.visuals().strong_text_color())
+        };
+        ui.ctx()
+            .layer_painter(layer)
+            .hline(grip.x_range(), top, stroke);
     }
     let set = |h: f32| Command::SetTabHeight(Some(h.clamp(edge.least, edge.most)));
     // A height set at once (a key, a double-click) is remembered for the

@@ -239,7 +239,7 @@ fn the_keys_in_panels_hint_is_whole_in_one_line() {
                             return;
                         }
                         let width = ui.available_width() - BAR_ROOM;
-                        for keys in [Keys::Controls, Keys::AfterField] {
+                        for keys in [Keys::Controls, Keys::AfterField, Keys::TabEdge] {
                             let hint = keys_in_panels(ui, width, 1, keys);
                             let galley = caption_galley(ui, hint.as_str().into(), width, 1);
                             assert!(!galley.elided, "{size:?} {lang:?}: {hint}");
