@@ -35,6 +35,10 @@ fn main() -> std::process::ExitCode {
             at_the_projector_scale_the_ledger_keeps_before_and_after_over_its_rows,
         ),
         (
+            "with_the_drawer_open_tab_goes_from_its_button_into_it",
+            with_the_drawer_open_tab_goes_from_its_button_into_it,
+        ),
+        (
             "at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column",
             at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column,
         ),
@@ -349,6 +353,38 @@ fn at_the_projector_scale_the_ledger_keeps_before_and_after_over_its_rows() {
     assert!(
         table[1] + table[3] > pinned[1] + pinned[3] + 20.0,
         "no rows under the header: {table:?}"
+    );
+    app.quit();
+}
+
+/// The drawer floats over the tabs: Tab from the top bar had gone first
+/// through the tabs it covers, half hidden, before reaching its controls.
+fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
+    let x = Xvfb::start("drawer_tab");
+    let app = projector_at_impact(&x, "en");
+    app.move_to([500.0, 200.0]);
+    tab_to(&app, "drawer_toggle", 40);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_for("the drawer", 30, |s| s["ui"]["drawer_open"] == true);
+    let drawer = rect(&s["layout"]["drawer"]);
+    // On past the top bar's other buttons, to the first stop under it.
+    let bar = rect(&s["panel_widgets"]["drawer_toggle"]);
+    let mut s = s;
+    for _ in 0..6 {
+        app.xdo(&["key", "Tab"]);
+        s = app.wait_frames(3);
+        if rect(&s["ui"]["focus_rect"])[1] > bar[1] + bar[3] {
+            break;
+        }
+    }
+    let at = rect(&s["ui"]["focus_rect"]);
+    assert!(
+        at[0] >= drawer[0] - 0.5
+            && at[1] >= drawer[1] - 0.5
+            && at[0] + at[2] <= drawer[0] + drawer[2] + 0.5
+            && at[1] + at[3] <= drawer[1] + drawer[3] + 0.5,
+        "after the drawer's button the keys went to {:?} at {at:?}, outside the drawer {drawer:?}",
+        focus(&s)
     );
     app.quit();
 }

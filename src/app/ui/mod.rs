@@ -264,6 +264,16 @@ impl Panels {
             .exact_height(points(rects.top_bar).height())
             .show(ctx, |ui| self.top_bar.ui(ui, &mut cx));
         panels.push(rects.top_bar.as_array());
+        // The drawer next, though it floats over the panels made after it:
+        // Tab goes from its button in the top bar into it, not first
+        // through the tabs it covers.
+        if let Some(drawer) = rects.drawer {
+            let r = points(drawer);
+            dialog::Dialog::new("drawer", None)
+                .place(dialog::Place::At(r.min))
+                .fixed_size(egui::vec2(r.width() - 16.0, r.height() - 48.0))
+                .show(ctx, &mut cx, |ui, cx| self.side.ui(ui, cx));
+        }
         if let Some(side) = rects.side {
             egui::SidePanel::right("controls")
                 .resizable(false)
@@ -297,13 +307,6 @@ impl Panels {
             .exact_height(points(rects.caption).height())
             .show(ctx, |ui| self.strip.ui(ui, &mut cx));
         panels.push(rects.caption.as_array());
-        if let Some(drawer) = rects.drawer {
-            let r = points(drawer);
-            dialog::Dialog::new("drawer", None)
-                .place(dialog::Place::At(r.min))
-                .fixed_size(egui::vec2(r.width() - 16.0, r.height() - 48.0))
-                .show(ctx, &mut cx, |ui, cx| self.side.ui(ui, cx));
-        }
         self.popups.show(ctx, &mut cx);
         self.marks.leave_out_covered();
         // A slider's value box typed into keeps the keyboard too.
