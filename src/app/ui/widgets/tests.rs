@@ -96,3 +96,75 @@ fn a_sign_typed_into_a_size_is_dropped_and_said() {
     assert_eq!(value, 20.0);
     assert!(said.is_some_and(|s| s.contains("−50 is outside")));
 }
+
+/// A slider with the keyboard (reached by Tab), after each of `keys` in
+/// turn: its value, from `start` on `range`.
+fn after_arrows(
+    start: f64,
+    range: std::ops::RangeInclusive<f64>,
+    reading: Reading,
+    keys: &[(Key, Modifiers)],
+) -> Vec<f64> {
+    let ctx = Context::default();
+    let mut value = start;
+    let mut pass = |events: Vec<Event>| {
+        let input = egui::RawInput {
+            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(400.0, 300.0))),
+            events,
+            ..Default::default()
+        };
+        let _ = ctx.run(input, |ctx| {
+            egui::CentralPanel::default().show(ctx, |ui| {
+                ui.set_width(300.0);
+                slider(ui, "Restitution", &mut value, range.clone(), reading);
+            });
+        });
+        value
+    };
+    let press = |key, modifiers| Event::Key {
+        key,
+        physical_key: None,
+        pressed: true,
+        repeat: false,
+        modifiers,
+    };
+    pass(vec![]);
+    pass(vec![press(Key::Tab, Modifiers::NONE)]);
+    pass(vec![]);
+    keys.iter()
+        .map(|&(key, modifiers)| pass(vec![press(key, modifiers)]))
+        .collect()
+}
+
+/// The review's "three presses took restitution from 1.00 to 0.95": egui
+/// moves a slider's knob a point a press. A press is now a twentieth of the
+/// range, on that grid; with Shift a hundredth.
+#[test]
+fn the_arrows_move_a_slider_a_twentieth_of_its_range_and_shift_a_hundredth() {
+    let left = (Key::ArrowLeft, Modifiers::NONE);
+    let right = (Key::ArrowRight, Modifiers::NONE);
+    let fine = (Key::ArrowLeft, Modifiers::SHIFT);
+    let values = after_arrows(
+        1.0,
+        0.0..=1.0,
+        Reading::new(2, ""),
+        &[left, left, left, fine, right, right],
+    );
+    let expected = [0.95, 0.90, 0.85, 0.84, 0.85, 0.90];
+    for (v, e) in values.iter().zip(expected) {
+        assert!((v - e).abs() < 1e-12, "{values:?}");
+    }
+    // At the end it stays; on a logarithmic track, by its decades.
+    let values = after_arrows(1.0, 0.0..=1.0, Reading::new(2, ""), &[right]);
+    assert_eq!(values, [1.0]);
+    let values = after_arrows(
+        1.0,
+        0.1..=10.0,
+        Reading::new(2, "").log(),
+        &[right, left, left],
+    );
+    let expected = [10f64.powf(0.1), 1.0, 10f64.powf(-0.1)];
+    for (v, e) in values.iter().zip(expected) {
+        assert!((v - e).abs() < 1e-9, "{values:?}");
+    }
+}
