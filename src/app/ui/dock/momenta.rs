@@ -91,7 +91,9 @@ impl View for Momenta {
             .include_x(hi.x)
             .include_y(lo.y)
             .include_y(hi.y)
-            .label_formatter(|_, v| vector(glam::DVec2::new(v.x, v.y), 3, "kg·m/s"))
+            .label_formatter(|name, v| {
+                on_a_line(name, || vector(glam::DVec2::new(v.x, v.y), 3, "kg·m/s"))
+            })
             .show(ui, |plot| {
                 plot.line(
                     Line::new(PlotPoints::from(vec![[0.0, 0.0], [at.x, at.y]]))

@@ -94,8 +94,10 @@ pub fn speed_plot(
             String::new()
         })
         .include_y(0.0)
-        .label_formatter(move |_, v| {
-            format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
+        .label_formatter(move |name, v| {
+            on_a_line(name, || {
+                format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
+            })
         })
         .show(ui, |plot| {
             let bin_width = h.bin_width;
@@ -250,6 +252,29 @@ pub fn plot_columns<R>(ui: &mut egui::Ui, n: usize, add: impl FnOnce(&mut [egui:
 /// A plot that holds still: no scrolling, dragging or zooming, which in a
 /// live plot would only lose the view (hover still reads values); nor a
 /// Tab stop, as it does nothing with the keyboard.
+/// `text` where the pointer is on a line (egui_plot names it), nothing away
+/// from the lines: there egui_plot gives the pointer's own place as if it
+/// were a value (a momentum at a time not yet run, at the plot's edge).
+pub fn on_a_line(name: &str, text: impl FnOnce() -> String) -> String {
+    if name.is_empty() {
+        String::new()
+    } else {
+        text()
+    }
+}
+
+/// A time plot's readout on a line ([`on_a_line`]): its name, the time and
+/// the value with `decimals` and `unit`.
+pub fn time_readout(name: &str, v: &egui_plot::PlotPoint, decimals: usize, unit: &str) -> String {
+    on_a_line(name, || {
+        format!(
+            "{name}\nt = {} s\n{} {unit}",
+            plain(v.x, 2),
+            plain(v.y, decimals)
+        )
+    })
+}
+
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
     let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| tick(mark);

@@ -7,7 +7,7 @@ use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
 use crate::app::model::totals::{RimHistogram, SpeedHistogram};
-use crate::app::numbers::{plain, with_unit};
+use crate::app::numbers::with_unit;
 use crate::app::ui::widgets::one_line;
 use egui_plot::{HLine, Line, LineStyle, PlotPoints};
 
@@ -83,9 +83,7 @@ impl View for Speeds {
                 .height(height)
                 .include_y(0.0)
                 .include_y(100.0)
-                .label_formatter(|name, v| {
-                    format!("{name}\nt = {} s\n{} %", plain(v.x, 2), plain(v.y, 1))
-                })
+                .label_formatter(|name, v| time_readout(name, v, 1, "%"))
                 .show(ui, |plot| {
                     plot.hline(
                         HLine::new(100.0 / 3.0)

@@ -7,7 +7,7 @@ use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
-use crate::app::numbers::{plain, vector, with_unit};
+use crate::app::numbers::{vector, with_unit};
 use crate::app::ui::tip::Tip;
 use egui::text::LayoutJob;
 use egui::{Align, FontSelection, RichText};
@@ -105,9 +105,7 @@ impl View for Totals {
             let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 // Too low for a rotated label: the line above gives the units.
                 .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
-                .label_formatter(|name, v| {
-                    format!("{name}\nt = {} s\n{} kg·m/s", plain(v.x, 2), plain(v.y, 3))
-                })
+                .label_formatter(|name, v| time_readout(name, v, 3, "kg·m/s"))
                 .show(&mut columns[0], |plot| {
                     // Where walls pushed: the only places the total moves.
                     for (k, &t) in walls.iter().enumerate() {
@@ -143,9 +141,7 @@ impl View for Totals {
             };
             let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
-                .label_formatter(|name, v| {
-                    format!("{name}\nt = {} s\n{} kg·m²/s", plain(v.x, 2), plain(v.y, 3))
-                })
+                .label_formatter(|name, v| time_readout(name, v, 3, "kg·m²/s"))
                 .show(&mut columns[1], |plot| {
                     plot.line(
                         Line::new(PlotPoints::from(l))
@@ -169,9 +165,7 @@ impl View for Totals {
                     (false, true) => tr!("axis-energy"),
                     (false, false) => format!("{} (J)", tr!("symbol-ke")),
                 })
-                .label_formatter(|name, v| {
-                    format!("{name}\nt = {} s\n{} J", plain(v.x, 2), plain(v.y, 3))
-                })
+                .label_formatter(|name, v| time_readout(name, v, 3, "J"))
                 .show(&mut columns[2], |plot| {
                     for ((name, _, color), points) in energies.iter().zip(plotted) {
                         plot.line(

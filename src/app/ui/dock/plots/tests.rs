@@ -1,7 +1,7 @@
 //! The plots' axes and ranges, laid out by egui without a window.
 use super::{
-    bar_hover, from_start, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
-    value_axis, value_steps, x_axis,
+    bar_hover, from_start, on_a_line, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
+    time_readout, value_axis, value_steps, x_axis,
 };
 use crate::app::ui::widgets::headless;
 use egui_plot::{Bar, GridInput};
@@ -342,4 +342,17 @@ fn a_conserved_total_gets_a_range_wider_than_its_noise() {
     assert_eq!(padded_range(std::iter::empty()), (-1.0, 1.0));
     let (lo, hi) = padded_range([0.0, 0.0].into_iter());
     assert!((lo + 0.01).abs() < 1e-12 && (hi - 0.01).abs() < 1e-12);
+}
+
+/// The review's "t = 0.8 / −142." with the pointer on an empty part of a
+/// paused plot: a readout only on a line, with its name.
+#[test]
+fn a_plot_reads_out_only_on_a_line() {
+    let at = egui_plot::PlotPoint::new(0.8, -142.0);
+    assert_eq!(time_readout("", &at, 3, "kg·m²/s"), "");
+    assert_eq!(
+        time_readout("L", &at, 3, "kg·m²/s"),
+        "L\nt = 0.80 s\n−142.000 kg·m²/s"
+    );
+    assert_eq!(on_a_line("", || "(1, 2)".into()), "");
 }
