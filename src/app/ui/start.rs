@@ -37,8 +37,13 @@ impl StartScreen {
             .modal(ctx);
         let shown = dialog.show(ctx, cx, |ui, cx| {
             scroll(ui, cx, egui::ScrollArea::vertical(), "tiles", |ui, cx| {
-                let per_row = ((ui.available_width() / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
-                let width = ui.available_width() / per_row as f32 - 12.0;
+                // Room kept for the scroll bar, which floats over the content
+                // (it lay over the right-hand tiles' edges).
+                let scroll = &ui.spacing().scroll;
+                let bar = scroll.bar_width + scroll.bar_inner_margin + scroll.bar_outer_margin;
+                let room = ui.available_width() - bar;
+                let per_row = ((room / (TILE_WIDTH + 12.0)) as usize).clamp(1, 3);
+                let width = room / per_row as f32 - 12.0;
                 for row in Tile::ALL.chunks(per_row) {
                     ui.horizontal(|ui| {
                         for &tile in row {
