@@ -110,7 +110,8 @@ show-com-view = Schwerpunktsystem
 show-com-view-hover = die Ansicht bewegt sich mit dem Schwerpunkt, und die Pfeile zeigen Geschwindigkeiten relativ zu ihm; das Experiment selbst ändert sich nicht
 
 ## Der Abschnitt Stöße
-restitution-label = Abprall zwischen Scheiben, Stoßzahl e (1: sie prallen voll zurück, 0: sie bewegen sich längs der Stoßlinie gemeinsam weiter)
+restitution-label = Abprall zwischen Scheiben, Stoßzahl e
+restitution-scale = 1: sie prallen voll zurück, 0: sie bewegen sich längs der Stoßlinie gemeinsam weiter
 restitution-hover = Wie viel ihrer Annäherungsgeschwindigkeit zwei Scheiben beim Auseinanderfliegen behalten, längs der Linie durch ihre Mittelpunkte: 1 alles, 0 nichts (die Bewegung quer dazu bleibt erhalten)
 wall-restitution-label = Abprall an den Wänden, Stoßzahl e
 wall-restitution-hover = Wie viel ihrer Geschwindigkeit auf eine Wand zu eine Scheibe behält, wenn sie sich wieder von ihr entfernt: 1 alles, 0 nichts

@@ -110,7 +110,8 @@ show-com-view = centre-of-mass view
 show-com-view-hover = the view moves with the centre of mass and arrows show velocities relative to it; the experiment is not changed
 
 ## The Collisions section
-restitution-label = Bounce between discs, restitution e (1: they bounce back fully, 0: they move on together along the line of impact)
+restitution-label = Bounce between discs, restitution e
+restitution-scale = 1: they bounce back fully, 0: they move on together along the line of impact
 restitution-hover = How much of their approach speed two discs keep, going apart, along the line through their centres: 1 all of it, 0 none (sideways motion is kept)
 wall-restitution-label = Bounce at the walls, restitution e
 wall-restitution-hover = How much of its speed into a wall a disc keeps, going away from it: 1 all of it, 0 none

@@ -110,7 +110,8 @@ show-com-view = vista del centro de masas
 show-com-view-hover = la vista se mueve con el centro de masas y las flechas muestran las velocidades relativas a él; el experimento no cambia
 
 ## La sección Choques
-restitution-label = Rebote entre discos, coeficiente de restitución e (1: rebotan del todo, 0: siguen juntos a lo largo de la línea de impacto)
+restitution-label = Rebote entre discos, coeficiente de restitución e
+restitution-scale = 1: rebotan del todo, 0: siguen juntos a lo largo de la línea de impacto
 restitution-hover = Qué parte de su rapidez de acercamiento conservan dos discos al separarse, a lo largo de la recta que une sus centros: 1 toda, 0 nada (el movimiento lateral se conserva)
 wall-restitution-label = Rebote en las paredes, coeficiente de restitución e
 wall-restitution-hover = Qué parte de su rapidez hacia una pared conserva un disco al alejarse de ella: 1 toda, 0 nada

@@ -110,7 +110,8 @@ show-com-view = vue du centre de masse
 show-com-view-hover = la vue se déplace avec le centre de masse et les vecteurs montrent les vitesses par rapport à lui (référentiel du centre de masse) ; l'expérience n'est pas modifiée
 
 ## La section Collisions
-restitution-label = Rebond entre disques, coefficient de restitution e (1 : ils rebondissent complètement, 0 : ils repartent ensemble le long de la ligne d'impact)
+restitution-label = Rebond entre disques, coefficient de restitution e
+restitution-scale = 1 : ils rebondissent complètement, 0 : ils repartent ensemble le long de la ligne d'impact
 restitution-hover = La part de leur vitesse d'approche que deux disques gardent en s'éloignant, le long de la droite qui joint leurs centres : 1 pour toute, 0 pour rien (le mouvement de côté est conservé)
 wall-restitution-label = Rebond sur les murs, coefficient de restitution e
 wall-restitution-hover = La part de sa vitesse vers un mur qu'un disque garde en s'en éloignant : 1 pour toute, 0 pour rien

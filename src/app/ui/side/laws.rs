@@ -49,16 +49,20 @@ fn coefficient(ui: &mut Ui, cx: &mut Cx, law: Law, (label, name, hover): (&str, 
 /// Restitution, gravity, edges, time scale; with rough discs (a scene
 /// whose discs spin) also roughness and friction, which it needs.
 pub fn laws(ui: &mut Ui, cx: &mut Cx) {
-    coefficient(
-        ui,
-        cx,
-        Law::Restitution,
-        (
-            &tr!("restitution-label"),
-            "restitution",
-            &tr!("restitution-hover"),
-        ),
+    // What 1 and 0 mean beside the name; in the drawer, on hover: at a
+    // projector's size the name took six lines there and pushed the slider
+    // under the drawer's edge.
+    let (name, scale, hover) = (
+        tr!("restitution-label"),
+        tr!("restitution-scale"),
+        tr!("restitution-hover"),
     );
+    let (label, hover) = if cx.drawer {
+        (name, format!("{scale}. {hover}"))
+    } else {
+        (format!("{name} ({scale})"), hover)
+    };
+    coefficient(ui, cx, Law::Restitution, (&label, "restitution", &hover));
     coefficient(
         ui,
         cx,
