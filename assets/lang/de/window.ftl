@@ -263,6 +263,7 @@ rim-speeds = Randgeschwindigkeiten |ω|·r
 rim-speeds-equal = Randgeschwindigkeiten bei gleicher Verteilung
 speeds-too-few = Zu wenige bewegte Scheiben für eine Verteilung: Vorlage 8 ausprobieren, ein Gas.
 speeds-line = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen. Kurve: wie sich ein Gas einpendelt (Maxwell–Boltzmann).
+speeds-line-few = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen. Die Kurve eines Gases (Maxwell–Boltzmann) erscheint ab { $n } Scheiben: Vorlage 8 ausprobieren.
 speeds-hover = { $line }
     Die Kurve zeigt, wo die Geschwindigkeiten landen, wenn Stöße die Energie zufällig verteilt haben, für Scheiben mit im Mittel so viel Energie: kT = Ekin/N = { $kt } (die Temperatur, als Energie pro Scheibe).
 speeds-rim-meaning = Balken: wie viele Scheiben sich mit welcher Geschwindigkeit bewegen (oder ihren Rand drehen). Kurven: wo sie sich einpendeln, wenn die Energie gleichmäßig verteilt ist, bei der Temperatur kT = Ekin/N = { $kt }: Maxwell–Boltzmann für die Geschwindigkeiten (durchgezogen) und für die Randgeschwindigkeiten (gestrichelt).

@@ -260,6 +260,7 @@ rim-speeds = rim speeds |ω|·r
 rim-speeds-equal = rim speeds, shared equally
 speeds-too-few = Too few moving discs for a distribution: try preset 8, a gas.
 speeds-line = Bars: how many discs move at each speed. Curve: how a gas settles (Maxwell–Boltzmann).
+speeds-line-few = Bars: how many discs move at each speed. A gas's curve (Maxwell–Boltzmann) shows from { $n } discs: try preset 8.
 speeds-hover = { $line }
     The curve is where the speeds end up once collisions have shared the energy out at random, for discs with this much energy each on average: kT = KE/N = { $kt } (the temperature, in energy per disc).
 speeds-rim-meaning = Bars: how many discs move (or turn their edge) at each speed. Curves: where they settle when the energy is shared equally, at the temperature kT = KE/N = { $kt }: Maxwell–Boltzmann for the speeds (solid), and for the rim speeds (dashed).

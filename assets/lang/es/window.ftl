@@ -263,6 +263,7 @@ rim-speeds = rapidez del borde |ω|·r
 rim-speeds-equal = rapidez del borde, reparto equitativo
 speeds-too-few = Muy pocos discos en movimiento para una distribución: prueba el ejemplo 8, un gas.
 speeds-line = Barras: cuántos discos se mueven con cada rapidez. Curva: cómo se reparte en un gas en equilibrio (Maxwell–Boltzmann).
+speeds-line-few = Barras: cuántos discos se mueven con cada rapidez. La curva de un gas (Maxwell–Boltzmann) aparece desde { $n } discos: prueba el ejemplo 8.
 speeds-hover = { $line }
     La curva muestra cómo quedan repartidas las rapideces cuando los choques ya han repartido la energía al azar, para discos con esta energía media cada uno: kT = Ec/N = { $kt } (la temperatura, en energía por disco).
 speeds-rim-meaning = Barras: cuántos discos se mueven (o mueven su borde al girar) con cada rapidez. Curvas: cómo se reparten cuando la energía está repartida por igual, a la temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para la rapidez (línea continua) y para la rapidez del borde (discontinua).

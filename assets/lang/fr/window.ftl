@@ -260,6 +260,7 @@ rim-speeds = vitesses du bord |ω|·r
 rim-speeds-equal = vitesses du bord, à parts égales
 speeds-too-few = Trop peu de disques en mouvement pour une distribution : essayez le préréglage 8, un gaz.
 speeds-line = Barres : combien de disques vont à chaque vitesse. Courbe : où se stabilise un gaz (Maxwell–Boltzmann).
+speeds-line-few = Barres : combien de disques vont à chaque vitesse. La courbe d'un gaz (Maxwell–Boltzmann) apparaît dès { $n } disques : essayez le préréglage 8.
 speeds-hover = { $line }
     La courbe montre où finissent les vitesses une fois que les collisions ont réparti l'énergie au hasard, pour des disques ayant chacun cette énergie en moyenne : kT = Ec/N = { $kt } (la température, en énergie par disque).
 speeds-rim-meaning = Barres : combien de disques se déplacent (ou font tourner leur bord) à chaque vitesse. Courbes : où ils se stabilisent quand l'énergie est partagée à parts égales, à la température kT = Ec/N = { $kt } : Maxwell–Boltzmann pour les vitesses (trait plein) et pour les vitesses du bord (pointillés).

@@ -260,6 +260,7 @@ rim-speeds = velocidades da borda |ω|·r
 rim-speeds-equal = velocidades da borda, divisão igual
 speeds-too-few = Poucos discos em movimento para uma distribuição: experimente o exemplo 8, um gás.
 speeds-line = Barras: quantos discos se movem com cada velocidade. Curva: como um gás se acomoda (Maxwell–Boltzmann).
+speeds-line-few = Barras: quantos discos se movem com cada velocidade. A curva de um gás (Maxwell–Boltzmann) aparece a partir de { $n } discos: experimente o exemplo 8.
 speeds-hover = { $line }
     A curva mostra onde as velocidades chegam depois que as colisões repartiram a energia ao acaso, para discos com esta energia cada um, em média: kT = Ec/N = { $kt } (a temperatura, em energia por disco).
 speeds-rim-meaning = Barras: quantos discos se movem (ou movem a borda, girando) com cada velocidade. Curvas: onde eles se acomodam quando a energia é repartida igualmente, à temperatura kT = Ec/N = { $kt }: Maxwell–Boltzmann para as velocidades (contínua) e para as velocidades da borda (tracejada).

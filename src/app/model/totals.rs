@@ -207,6 +207,19 @@ pub struct SpeedHistogram {
 /// Speed bins of the histogram.
 pub const BINS: usize = 20;
 
+/// Discs from which the Speeds tab draws Maxwell–Boltzmann: the law of a
+/// gas, not of two discs in a lesson (a review read the curve over a
+/// head-on hit's two bars as something they should follow).
+pub const GAS_AT_LEAST: usize = 20;
+
+impl SpeedHistogram {
+    /// Whether enough discs are counted for a gas's law to mean anything
+    /// ([`GAS_AT_LEAST`]).
+    pub fn is_a_gas(&self) -> bool {
+        self.discs >= GAS_AT_LEAST
+    }
+}
+
 /// The discs' rim speeds |ω|·r, on the speed histogram's bins, and where
 /// they settle when the energy is shared equally among the two ways of
 /// moving and the one of turning: ω is then normal with variance kT/I, so

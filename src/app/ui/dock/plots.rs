@@ -111,12 +111,15 @@ pub fn speed_plot(
                     .color(PX_COLOR)
                     .element_formatter(Box::new(hover)),
             );
-            plot.line(
-                Line::new(PlotPoints::from(law))
-                    .name(tr!("maxwell-boltzmann"))
-                    .color(PY_COLOR)
-                    .width(3.0),
-            );
+            // A gas's law only for a gas.
+            if h.is_a_gas() {
+                plot.line(
+                    Line::new(PlotPoints::from(law))
+                        .name(tr!("maxwell-boltzmann"))
+                        .color(PY_COLOR)
+                        .width(3.0),
+                );
+            }
             if let Some((bars, law)) = rim {
                 plot.bar_chart(
                     BarChart::new(bars)

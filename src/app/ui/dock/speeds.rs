@@ -6,7 +6,7 @@ use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
-use crate::app::model::totals::{RimHistogram, SpeedHistogram};
+use crate::app::model::totals::{RimHistogram, SpeedHistogram, GAS_AT_LEAST};
 use crate::app::numbers::with_unit;
 use crate::app::ui::widgets::one_line;
 use egui_plot::{HLine, Line, LineStyle, PlotPoints};
@@ -23,7 +23,11 @@ impl View for Speeds {
         };
         if !spin_shown(&model.world) {
             // One line, so the plot keeps its height; the whole on hover.
-            let line = tr!("speeds-line");
+            let line = if h.is_a_gas() {
+                tr!("speeds-line")
+            } else {
+                tr!("speeds-line-few", n = GAS_AT_LEAST)
+            };
             let more = tr!(
                 "speeds-hover",
                 line = line.clone(),

@@ -356,3 +356,44 @@ fn a_plot_reads_out_only_on_a_line() {
     );
     assert_eq!(on_a_line("", || "(1, 2)".into()), "");
 }
+
+/// The curve's points drawn by the Speeds plot of `n` discs, all moving
+/// at 1 m/s but one at rest (so the speeds spread).
+fn curve_points(n: usize) -> usize {
+    let mut world = impulse::World::new(glam::DVec2::new(100.0, 100.0));
+    for k in 0..n {
+        let vel = if k == 0 {
+            glam::DVec2::ZERO
+        } else {
+            glam::DVec2::X
+        };
+        world.particles.push(impulse::Particle::new(
+            glam::DVec2::new(2.0 + 3.0 * k as f64, 50.0),
+            vel,
+            1.0,
+            0.5,
+            impulse::Color::rgb(0, 0, 0),
+        ));
+    }
+    let h = crate::app::model::totals::SpeedHistogram::of(&world).expect("a histogram");
+    let out = headless(egui::vec2(400.0, 200.0), |ui| {
+        super::speed_plot(ui, &h, None, 180.0, false);
+    });
+    out.shapes
+        .iter()
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Path(p) if p.points.len() > 50 => Some(p.points.len()),
+            _ => None,
+        })
+        .sum()
+}
+
+/// Maxwell–Boltzmann over a head-on hit's two bars read as something they
+/// should follow: the curve is drawn from a gas's number of discs only.
+#[test]
+fn the_speeds_curve_is_drawn_for_a_gas_only() {
+    use crate::app::model::totals::GAS_AT_LEAST;
+    assert_eq!(curve_points(2), 0, "two discs");
+    assert_eq!(curve_points(GAS_AT_LEAST - 1), 0);
+    assert!(curve_points(GAS_AT_LEAST) > 50, "a gas");
+}
