@@ -337,15 +337,6 @@ impl Sandbox {
         (named && self.open.edited).then(|| tr!("scene-edited-mark"))
     }
 
-    /// The scene's name with its [`Sandbox::edited_mark`].
-    #[cfg(test)]
-    pub fn title(&self) -> String {
-        match self.edited_mark() {
-            Some(mark) => format!("{} {mark}", self.scene_name()),
-            None => self.scene_name(),
-        }
-    }
-
     /// The open scene's description (its caption) in the window's
     /// language, if it has one.
     pub fn scene_description(&self) -> Option<String> {

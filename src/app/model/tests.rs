@@ -475,4 +475,5 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
 
 mod next_collision;
 mod numbering;
+mod reset_and_title;
 mod tabs_and_totals;

@@ -65,8 +65,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx, area: egui::Rect, edge: TabEdge) {
     if live {
         let layer = egui::LayerId::new(egui::Order::Foreground, id.with("line"));
         let stroke = if r.has_focus() {
-            crate::app::ui::marks_own_focus(ui.ctx(), id);
-            egui::Stroke::new(4.0, crate::app::ui::focus_color(cx.model.panels.theme))
+            crate::app::ui::focus::marks_own_focus(ui.ctx(), id);
+            egui::Stroke::new(
+                4.0,
+                crate::app::ui::focus::focus_color(cx.model.panels.theme),
+            )
         } else {
             egui::Stroke::new(2.0, ui.visuals().strong_text_color())
         };

@@ -8,6 +8,9 @@ use crate::app::model::totals::{RimHistogram, SpeedHistogram};
 use crate::app::numbers::{plain, quantity, trimmed};
 use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
+mod readout;
+pub use readout::{on_a_line, time_readout};
+
 use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoints};
 
 /// Colours of the plotted totals (Okabe–Ito).
@@ -255,29 +258,6 @@ pub fn plot_columns<R>(ui: &mut egui::Ui, n: usize, add: impl FnOnce(&mut [egui:
 /// A plot that holds still: no scrolling, dragging or zooming, which in a
 /// live plot would only lose the view (hover still reads values); nor a
 /// Tab stop, as it does nothing with the keyboard.
-/// `text` where the pointer is on a line (egui_plot names it), nothing away
-/// from the lines: there egui_plot gives the pointer's own place as if it
-/// were a value (a momentum at a time not yet run, at the plot's edge).
-pub fn on_a_line(name: &str, text: impl FnOnce() -> String) -> String {
-    if name.is_empty() {
-        String::new()
-    } else {
-        text()
-    }
-}
-
-/// A time plot's readout on a line ([`on_a_line`]): its name, the time and
-/// the value with `decimals` and `unit`.
-pub fn time_readout(name: &str, v: &egui_plot::PlotPoint, decimals: usize, unit: &str) -> String {
-    on_a_line(name, || {
-        format!(
-            "{name}\nt = {} s\n{} {unit}",
-            plain(v.x, 2),
-            plain(v.y, decimals)
-        )
-    })
-}
-
 pub fn still_plot(id: &str) -> Plot<'static> {
     // The axes' numbers with the language's decimal separator.
     let axis = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| tick(mark);

@@ -1,0 +1,55 @@
+//! What a reset and the scene's title say about edits: a reset that drops
+//! them says so and undo brings them back; a named scene edited is marked
+//! in its title.
+
+use super::*;
+use crate::app::model::command::EditPlace;
+
+/// The scene's name as the top bar has room to give it whole.
+fn title(s: &Sandbox) -> String {
+    match s.edited_mark() {
+        Some(mark) => format!("{} {mark}", s.scene_name()),
+        None => s.scene_name(),
+    }
+}
+
+#[test]
+fn a_reset_that_drops_edits_says_so_and_undo_brings_them_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::Reset);
+    assert_eq!(s.message(), Some("Scene reset"), "nothing edited");
+    later(&mut s, 1.0);
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [Some("3".into()), None, None, None],
+        from: EditPlace::Table,
+    });
+    assert_eq!(s.world.particles[0].mass, 3.0);
+    later(&mut s, 1.0);
+    s.apply(Command::Reset);
+    assert_eq!(s.world.particles[0].mass, 1.0);
+    let said = s.message().unwrap_or_default().to_string();
+    assert!(
+        said.contains("without your edits") && said.contains("Ctrl+Z"),
+        "{said}"
+    );
+    later(&mut s, 1.0);
+    s.apply(Command::Undo);
+    assert_eq!(s.world.particles[0].mass, 3.0, "undo brings the edit back");
+}
+
+#[test]
+fn a_named_scene_edited_says_so_in_its_title_and_undo_takes_the_mark_away() {
+    use crate::app::model::command::Law;
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    let name = s.scene_name();
+    assert_eq!(title(&s), name);
+    later(&mut s, 1.0);
+    s.apply(Command::SetLaw(Law::Restitution, 0.5));
+    assert_eq!(title(&s), format!("{name} (edited)"));
+    later(&mut s, 1.0);
+    s.apply(Command::Undo);
+    assert_eq!(title(&s), name);
+}
