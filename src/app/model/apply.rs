@@ -194,7 +194,7 @@ impl Sandbox {
             OpenEmpty => self.open_preset_from_menu(scenes::PRESETS.len() - 1),
             OpenFile(path) => self.open_file(&path),
             OpenText { name, text } => self.open_text(&name, &text),
-            Reset => self.reset_scene(),
+            Reset => self.say_reset(),
             Clear => self.clear_discs(),
             Save => {
                 let _ = self.save_scene(); // said in the window and on the terminal
@@ -406,6 +406,22 @@ impl Sandbox {
             }
             Fullscreen => self.session.requests.fullscreen = true,
             Quit => self.session.requests.quit = true,
+        }
+    }
+
+    /// Resets the scene and says so; where that dropped edits, also which
+    /// key brings them back (a teacher who set 3 kg and pressed R saw the
+    /// collision again at 1 kg, with no word why).
+    fn say_reset(&mut self) {
+        match self.reset_scene() {
+            Some(true) => {
+                let undo = super::bindings::binding_of(&Command::Undo)
+                    .map(|b| b.keys())
+                    .unwrap_or_default();
+                self.toast_for(tr!("scene-reset-edits", undo = undo), 8.0);
+            }
+            Some(false) => self.toast(tr!("scene-reset")),
+            None => {}
         }
     }
 

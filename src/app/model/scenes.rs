@@ -227,29 +227,24 @@ impl Sandbox {
         }
     }
 
-    /// The scene as it opened, again.
-    pub(super) fn reset_scene(&mut self) {
+    /// The scene as it opened, again; `Some(true)` if that dropped edits
+    /// made since (`apply` says which), `None` if it could not be built
+    /// (said here).
+    pub(super) fn reset_scene(&mut self) -> Option<bool> {
         match self.open.scene.build(&self.open.origin) {
             Ok(world) => {
-                // Edits made since it opened go: said, with the key that
-                // brings them back (a teacher who set 3 kg and pressed R
-                // saw the collision again at 1 kg, with no word why).
                 let edits_dropped = self.open.edited && !self.open.scene.edited;
                 self.open.edited = self.open.scene.edited;
                 self.world = world;
                 self.forget_past();
                 self.selected = None;
                 self.pointer.cancel();
-                if edits_dropped {
-                    let undo = super::bindings::binding_of(&super::Command::Undo)
-                        .map(|b| b.keys())
-                        .unwrap_or_default();
-                    self.toast_for(tr!("scene-reset-edits", undo = undo), 8.0);
-                } else {
-                    self.toast(tr!("scene-reset"));
-                }
+                Some(edits_dropped)
             }
-            Err(e) => self.toast(tr!("scene-cannot-reset", error = e.to_string())),
+            Err(e) => {
+                self.toast(tr!("scene-cannot-reset", error = e.to_string()));
+                None
+            }
         }
     }
 
