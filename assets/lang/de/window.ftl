@@ -183,6 +183,7 @@ totals-kinetic-energy = kinetische Energie
 totals-momentum = Impuls
 totals-angular-momentum = Drehimpuls L
 totals-change = Änderung seit t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-line = Änderung seit t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
 totals-change-wrapping = Änderung seit t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } bleibt nicht erhalten, wenn Scheiben über den Rand springen
 totals-none = Noch keine Aufzeichnung: Simulation laufen lassen.
 totals-rotational-ke = Rotationsenergie

@@ -207,6 +207,21 @@ pub struct SpeedHistogram {
 /// Speed bins of the histogram.
 pub const BINS: usize = 20;
 
+/// Whether every disc lies and moves on one horizontal line, with nothing
+/// pulling it off (the head-on lessons, the cradle, the π blocks). There
+/// L about the origin is −y·p_x, the momentum's plot again: the Totals tab
+/// leaves it out rather than show a number a student cannot place.
+pub fn on_one_line(world: &World) -> bool {
+    let Some(first) = world.particles.first() else {
+        return false;
+    };
+    world.laws.gravity.y == 0.0
+        && world
+            .particles
+            .iter()
+            .all(|p| p.pos.y == first.pos.y && p.vel.y == 0.0 && p.spin == 0.0)
+}
+
 /// Discs from which the Speeds tab draws Maxwell–Boltzmann: the law of a
 /// gas, not of two discs in a lesson (a review read the curve over a
 /// head-on hit's two bars as something they should follow).

@@ -7,6 +7,7 @@ use super::super::{Cx, View};
 use super::plots::*;
 use crate::app::lang::tr;
 use crate::app::model::overlays::spin_shown;
+use crate::app::model::totals::on_one_line;
 use crate::app::numbers::{vector, with_unit};
 use crate::app::ui::tip::Tip;
 use egui::text::LayoutJob;
@@ -21,6 +22,8 @@ impl View for Totals {
         let model = cx.model;
         let samples: Vec<_> = model.record.totals.samples().copied().collect();
         let spin = spin_shown(&model.world);
+        // Discs on one line: no L, which there is −y·p_x again.
+        let line = on_one_line(&model.world);
         // A short dock (a laptop's browser) leaves the plots too low for a
         // legend box inside them, which then covered the line above: the
         // series are named in coloured words beside it instead (p in
@@ -42,6 +45,8 @@ impl View for Totals {
         let wrapping = model.world.laws.boundary == impulse::Boundary::Periodic;
         let change = if wrapping {
             "totals-change-wrapping" // says why instead of L's change
+        } else if line {
+            "totals-change-line"
         } else {
             "totals-change"
         };
@@ -71,10 +76,11 @@ impl View for Totals {
         let hover = angular_momentum_tip(tr!("totals-hover"), &model.world);
         if compact {
             let names = [("p_x", PX_COLOR), ("p_y", PY_COLOR), ("L", L_COLOR)];
+            let names = &names[..if line { 2 } else { 3 }];
             let short = energies
                 .iter()
                 .map(|(_, name, color)| (name.as_str(), *color));
-            change_and_names(ui, drift, names.into_iter().chain(short), hover);
+            change_and_names(ui, drift, names.iter().copied().chain(short), hover);
         } else {
             ui.label(drift).tip(hover);
         }
@@ -95,7 +101,7 @@ impl View for Totals {
             series(|s| s.rotational_energy),
             series(|s| s.energy()),
         ];
-        plot_columns(ui, 3, |columns| {
+        plot_columns(ui, if line { 2 } else { 3 }, |columns| {
             let plot = from_start(still_plot("momentum_plot"), start).height(height);
             let plot = value_axis(plot, &[&px, &py], height);
             let plot = match legend(Corner::RightBottom) {
@@ -133,24 +139,29 @@ impl View for Totals {
                     );
                 });
             cx.note("momentum_plot", &shown.response);
-            let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
-            let plot = value_axis(plot, &[&l], height);
-            let plot = match legend(Corner::RightBottom) {
-                Some(l) => plot.legend(l),
-                None => plot,
-            };
-            let shown = x_axis(plot, height, tr!("axis-time"), "s")
-                .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
-                .label_formatter(|name, v| time_readout(name, v, 3, "kg·m²/s"))
-                .show(&mut columns[1], |plot| {
-                    plot.line(
-                        Line::new(PlotPoints::from(l))
-                            .name("L")
-                            .color(L_COLOR)
-                            .width(2.5),
-                    );
-                });
-            cx.note("angular_momentum_plot", &shown.response);
+            // The energy in the last column: the third, or the second
+            // where there is no L.
+            let last = if line { 1 } else { 2 };
+            if !line {
+                let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
+                let plot = value_axis(plot, &[&l], height);
+                let plot = match legend(Corner::RightBottom) {
+                    Some(l) => plot.legend(l),
+                    None => plot,
+                };
+                let shown = x_axis(plot, height, tr!("axis-time"), "s")
+                    .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
+                    .label_formatter(|name, v| time_readout(name, v, 3, "kg·m²/s"))
+                    .show(&mut columns[1], |plot| {
+                        plot.line(
+                            Line::new(PlotPoints::from(l))
+                                .name("L")
+                                .color(L_COLOR)
+                                .width(2.5),
+                        );
+                    });
+                cx.note("angular_momentum_plot", &shown.response);
+            }
             let plotted = &energy_series[..energies.len()];
             let plot = from_start(still_plot("energy_plot"), start).height(height);
             let series: Vec<&[[f64; 2]]> = plotted.iter().map(Vec::as_slice).collect();
@@ -166,7 +177,7 @@ impl View for Totals {
                     (false, false) => format!("{} (J)", tr!("symbol-ke")),
                 })
                 .label_formatter(|name, v| time_readout(name, v, 3, "J"))
-                .show(&mut columns[2], |plot| {
+                .show(&mut columns[last], |plot| {
                     for ((name, _, color), points) in energies.iter().zip(plotted) {
                         plot.line(
                             Line::new(PlotPoints::from(points.clone()))
@@ -273,5 +284,35 @@ mod tests {
             "{}",
             tall.text()
         );
+    }
+
+    /// On one line L is −y·p_x, the momentum's plot again, as a number a
+    /// student cannot place: the head-on lesson's Totals leave it out (its
+    /// plot, its name, its change); the glancing hit keeps it.
+    #[test]
+    fn discs_on_one_line_get_no_angular_momentum_in_the_totals() {
+        use crate::app::model::tests::sandbox_with;
+        use crate::app::model::totals::on_one_line;
+        use crate::app::ui::widgets::texts_drawn;
+        let dir = tempfile::tempdir().unwrap();
+        let shown = |file: &str| {
+            let s = sandbox_with(dir.path(), file, true, 0.0);
+            let text = texts_drawn(&s, egui::vec2(900.0, 200.0), &mut super::Totals).join(" | ");
+            (on_one_line(&s.world), text)
+        };
+        let (line, text) = shown("preset-1-head-on.toml");
+        assert!(line, "the head-on discs");
+        let names_l = |t: &str| {
+            t.split(" | ")
+                .any(|w| w == "L" || w.starts_with("L (") || w.contains("ΔL"))
+        };
+        assert!(!names_l(&text), "{text}");
+        assert!(
+            text.contains("p_x") || text.contains("Δp") || text.contains("p ("),
+            "{text}"
+        );
+        let (line, text) = shown("preset-4-glancing.toml");
+        assert!(!line, "the glancing hit");
+        assert!(names_l(&text), "{text}");
     }
 }
