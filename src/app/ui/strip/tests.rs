@@ -164,19 +164,22 @@ fn a_captions_answer_is_in_sight_on_a_projector() {
         .map(|c| format!("{} {}: {:?}", c.lang, c.scene, c.shown))
         .collect();
     assert!(cut.is_empty(), "answers cut:\n{}", cut.join("\n"));
-    let pi = all
-        .iter()
-        .find(|c| c.lang == "de" && c.scene.ends_with("preset-7-pi-blocks.toml"));
+    let shows = |lang: &str, file: &str, text: &str| {
+        all.iter()
+            .find(|c| c.lang == lang && c.scene.ends_with(file))
+            .is_some_and(|c| c.shown.contains(text))
+    };
     assert!(
-        pi.is_some_and(|c| c.shown.contains("31")),
+        shows("de", "preset-7-pi-blocks.toml", "31"),
         "the German π blocks"
     );
     // The head-on lesson's point, momentum kept, had come after the cut.
-    let head_on = all
-        .iter()
-        .find(|c| c.lang == "en" && c.scene.ends_with("preset-1-head-on.toml"));
     assert!(
-        head_on.is_some_and(|c| c.shown.contains("total momentum stays the same")),
+        shows(
+            "en",
+            "preset-1-head-on.toml",
+            "total momentum stays the same"
+        ),
         "the head-on lesson"
     );
 }

@@ -3,6 +3,27 @@
 use super::{slider, Reading};
 use egui::{pos2, vec2, Context, Event, Key, Modifiers, PointerButton, Pos2, Rect};
 
+/// A key pressed with `modifiers`.
+fn press(key: Key, modifiers: Modifiers) -> Event {
+    Event::Key {
+        key,
+        physical_key: None,
+        pressed: true,
+        repeat: false,
+        modifiers,
+    }
+}
+
+/// A frame's input in a 400 × 300 window at `time`, with `events`.
+fn input(time: Option<f64>, events: Vec<Event>) -> egui::RawInput {
+    egui::RawInput {
+        time,
+        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(400.0, 300.0))),
+        events,
+        ..Default::default()
+    }
+}
+
 /// What became of typing `text` into the value box of a slider over
 /// `range` showing `start`: the value it holds after Enter, and the line
 /// shown under it (in English) then, and 10 s later.
@@ -16,13 +37,7 @@ fn typed(
     let mut value = start;
     let pass = |time: f64, events: Vec<Event>, value: &mut f64| {
         let mut track = Rect::NOTHING;
-        let input = egui::RawInput {
-            time: Some(time),
-            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(400.0, 300.0))),
-            events,
-            ..Default::default()
-        };
-        let out = ctx.run(input, |ctx| {
+        let out = ctx.run(input(Some(time), events), |ctx| {
             egui::CentralPanel::default().show(ctx, |ui| {
                 ui.set_width(300.0);
                 let (r, _) = slider(ui, "Restitution", value, range.clone(), reading);
@@ -53,13 +68,6 @@ fn typed(
     };
     pass(0.1, vec![Event::PointerMoved(at), click(true)], &mut value);
     pass(0.2, vec![click(false)], &mut value);
-    let press = |key, modifiers| Event::Key {
-        key,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers,
-    };
     let select_all = press(Key::A, Modifiers::COMMAND);
     pass(0.3, vec![select_all, Event::Text(text.into())], &mut value);
     pass(0.4, vec![press(Key::Enter, Modifiers::NONE)], &mut value);
@@ -108,25 +116,13 @@ fn after_arrows(
     let ctx = Context::default();
     let mut value = start;
     let mut pass = |events: Vec<Event>| {
-        let input = egui::RawInput {
-            screen_rect: Some(Rect::from_min_size(Pos2::ZERO, vec2(400.0, 300.0))),
-            events,
-            ..Default::default()
-        };
-        let _ = ctx.run(input, |ctx| {
+        let _ = ctx.run(input(None, events), |ctx| {
             egui::CentralPanel::default().show(ctx, |ui| {
                 ui.set_width(300.0);
                 slider(ui, "Restitution", &mut value, range.clone(), reading);
             });
         });
         value
-    };
-    let press = |key, modifiers| Event::Key {
-        key,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers,
     };
     pass(vec![]);
     pass(vec![press(Key::Tab, Modifiers::NONE)]);
