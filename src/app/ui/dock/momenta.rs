@@ -8,7 +8,7 @@ use crate::app::model::totals::DIAGRAM_MAX_DISCS;
 use crate::app::numbers::{disc_number, vector};
 use crate::app::ui::widgets::one_line;
 use egui::Color32;
-use egui_plot::{Arrows, Line, PlotPoints, Points};
+use egui_plot::{Arrows, Line, PlotPoint, PlotPoints, Points};
 
 /// Roughly what the numbers under the plot and its axis name take, in
 /// points (body text); and the numbers and the name beside it.
@@ -80,6 +80,7 @@ impl View for Momenta {
         };
         let wanted = frame_height * (aspect as f32).clamp(1.2, 1e4) * 1.1 + Y_AXIS_POINTS;
         let width = ui.available_width().min(wanted);
+        let readout = Readout::default();
         let plot = still_plot("momenta_plot")
             .height(height)
             .width(width)
@@ -91,9 +92,9 @@ impl View for Momenta {
             .include_x(hi.x)
             .include_y(lo.y)
             .include_y(hi.y)
-            .label_formatter(|name, v| {
+            .label_formatter(readout.keeping(|name: &str, v: &PlotPoint| {
                 on_a_line(name, || vector(glam::DVec2::new(v.x, v.y), 3, "kg·m/s"))
-            })
+            }))
             .show(ui, |plot| {
                 plot.line(
                     Line::new(PlotPoints::from(vec![[0.0, 0.0], [at.x, at.y]]))
@@ -125,6 +126,7 @@ impl View for Momenta {
                     );
                 }
             });
+        readout.show(ui, &plot.response);
         cx.note("momenta_plot", &plot.response);
     }
 }

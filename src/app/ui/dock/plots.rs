@@ -9,9 +9,12 @@ use crate::app::numbers::{plain, quantity, trimmed};
 use crate::app::ui::widgets::one_line;
 use egui::{Color32, RichText};
 mod readout;
-pub use readout::{on_a_line, time_readout};
+use readout::bar_hover;
+pub use readout::{on_a_line, Readout};
 
-use egui_plot::{Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoints};
+use egui_plot::{
+    Bar, BarChart, Corner, Legend, Line, LineStyle, Plot, PlotItem, PlotPoint, PlotPoints,
+};
 
 /// Colours of the plotted totals (Okabe–Ito).
 pub const PX_COLOR: Color32 = Color32::from_rgb(86, 180, 233); // sky blue
@@ -89,7 +92,8 @@ pub fn speed_plot(
     } else {
         plot
     };
-    x_axis(plot, height, x_label, "m/s")
+    let readout = Readout::default();
+    let shown = x_axis(plot, height, x_label, "m/s")
         // Rotated beside a short plot, the name would run past it.
         .y_axis_label(if height >= ROOMY_PLOT {
             count
@@ -97,22 +101,24 @@ pub fn speed_plot(
             String::new()
         })
         .include_y(0.0)
-        .label_formatter(move |name, v| {
+        .label_formatter(readout.keeping(move |name: &str, v: &PlotPoint| {
             on_a_line(name, || {
                 format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
             })
-        })
+        }))
         .show(ui, |plot| {
             let bin_width = h.bin_width;
             let two = rims.is_some();
-            let hover = move |bar: &Bar, chart: &BarChart| {
-                bar_hover(two.then(|| chart.name()), bar, bin_width)
+            let hover = || {
+                readout.keeping(move |bar: &Bar, chart: &BarChart| {
+                    bar_hover(two.then(|| chart.name()), bar, bin_width)
+                })
             };
             plot.bar_chart(
                 BarChart::new(bars)
                     .name(speed_name)
                     .color(PX_COLOR)
-                    .element_formatter(Box::new(hover)),
+                    .element_formatter(Box::new(hover())),
             );
             // A gas's law only for a gas.
             if h.is_a_gas() {
@@ -128,7 +134,7 @@ pub fn speed_plot(
                     BarChart::new(bars)
                         .name(tr!("rim-speeds"))
                         .color(RIM_COLOR)
-                        .element_formatter(Box::new(hover)),
+                        .element_formatter(Box::new(hover())),
                 );
                 plot.line(
                     Line::new(PlotPoints::from(law))
@@ -139,23 +145,9 @@ pub fn speed_plot(
                 );
             }
         })
-        .response
-}
-
-/// What hovering a speed bar says, on one line (egui_plot puts it at the
-/// bar's top, where a second line was cut off by the plot's edge): how many
-/// discs it counts and the bin's speeds ("12 discs from 1.00 to 1.25 m/s"),
-/// after its series where two are drawn, where egui_plot would show the
-/// bare height ("12").
-fn bar_hover(series: Option<&str>, bar: &Bar, bin_width: f64) -> String {
-    let bin = (bar.argument / bin_width).floor();
-    let count = bar.value.round() as i64;
-    let (low, high) = (plain(bin * bin_width, 2), plain((bin + 1.0) * bin_width, 2));
-    let what = tr!("speeds-bar", count = count, low = low, high = high);
-    match series {
-        Some(series) => format!("{series}: {what}"),
-        None => what,
-    }
+        .response;
+    readout.show(ui, &shown);
+    shown
 }
 
 /// The x axis's name under a plot with room for it; under a shorter one
@@ -493,5 +485,7 @@ fn numbered_range((mut lo, mut hi): (f64, f64), height: f32) -> (f64, f64) {
     (lo, hi)
 }
 
+#[cfg(test)]
+mod readout_tests;
 #[cfg(test)]
 mod tests;

@@ -81,13 +81,14 @@ impl View for Speeds {
                 .map(|s| [s.time, 100.0 * s.rotation_share()])
                 .collect();
             let start = samples.first().map_or(model.world.time, |s| s.time);
+            let readout = Readout::default();
             let plot = from_start(still_plot("shares_plot"), start);
             let plot = x_axis(plot, height, tr!("axis-time"), "s");
             let r = y_unit(plot, height, "%")
                 .height(height)
                 .include_y(0.0)
                 .include_y(100.0)
-                .label_formatter(|name, v| time_readout(name, v, 1, "%"))
+                .label_formatter(readout.of_time(1, "%"))
                 .show(ui, |plot| {
                     plot.hline(
                         HLine::new(100.0 / 3.0)
@@ -109,6 +110,7 @@ impl View for Speeds {
                             .width(2.5),
                     );
                 });
+            readout.show(ui, &r.response);
             cx.note("shares_plot", &r.response);
         });
     }

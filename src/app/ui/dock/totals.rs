@@ -101,6 +101,8 @@ impl View for Totals {
             series(|s| s.rotational_energy),
             series(|s| s.energy()),
         ];
+        // One at a time: the pointer is over one plot.
+        let readout = Readout::default();
         plot_columns(ui, if line { 2 } else { 3 }, |columns| {
             let plot = from_start(still_plot("momentum_plot"), start).height(height);
             let plot = value_axis(plot, &[&px, &py], height);
@@ -111,7 +113,7 @@ impl View for Totals {
             let shown = x_axis(plot, height, tr!("axis-time"), "s")
                 // Too low for a rotated label: the line above gives the units.
                 .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
-                .label_formatter(|name, v| time_readout(name, v, 3, "kg·m/s"))
+                .label_formatter(readout.of_time(3, "kg·m/s"))
                 .show(&mut columns[0], |plot| {
                     // Where walls pushed: the only places the total moves.
                     for (k, &t) in walls.iter().enumerate() {
@@ -138,6 +140,7 @@ impl View for Totals {
                             .width(2.5),
                     );
                 });
+            readout.show(&columns[0], &shown.response);
             cx.note("momentum_plot", &shown.response);
             // The energy in the last column: the third, or the second
             // where there is no L.
@@ -151,7 +154,7 @@ impl View for Totals {
                 };
                 let shown = x_axis(plot, height, tr!("axis-time"), "s")
                     .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
-                    .label_formatter(|name, v| time_readout(name, v, 3, "kg·m²/s"))
+                    .label_formatter(readout.of_time(3, "kg·m²/s"))
                     .show(&mut columns[1], |plot| {
                         plot.line(
                             Line::new(PlotPoints::from(l))
@@ -160,6 +163,7 @@ impl View for Totals {
                                 .width(2.5),
                         );
                     });
+                readout.show(&columns[1], &shown.response);
                 cx.note("angular_momentum_plot", &shown.response);
             }
             let plotted = &energy_series[..energies.len()];
@@ -176,7 +180,7 @@ impl View for Totals {
                     (false, true) => tr!("axis-energy"),
                     (false, false) => format!("{} (J)", tr!("symbol-ke")),
                 })
-                .label_formatter(|name, v| time_readout(name, v, 3, "J"))
+                .label_formatter(readout.of_time(3, "J"))
                 .show(&mut columns[last], |plot| {
                     for ((name, _, color), points) in energies.iter().zip(plotted) {
                         plot.line(
@@ -187,6 +191,7 @@ impl View for Totals {
                         );
                     }
                 });
+            readout.show(&columns[last], &shown.response);
             cx.note("energy_plot", &shown.response);
         });
     }

@@ -1,7 +1,8 @@
 //! The plots' axes and ranges, laid out by egui without a window.
+use super::readout::{bar_hover, time_readout};
 use super::{
-    bar_hover, from_start, on_a_line, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
-    time_readout, value_axis, value_steps, x_axis,
+    from_start, on_a_line, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
+    value_axis, value_steps, x_axis,
 };
 use crate::app::ui::widgets::headless;
 use egui_plot::{Bar, GridInput};
@@ -51,7 +52,7 @@ fn drawn_text(out: &egui::FullOutput) -> impl Iterator<Item = String> + '_ {
 
 /// A plot's frame, the rectangle drawn inside the 230-point-wide room
 /// the tests give it.
-fn frame_of(out: &egui::FullOutput) -> egui::Rect {
+pub(super) fn frame_of(out: &egui::FullOutput) -> egui::Rect {
     out.shapes
         .iter()
         .find_map(|c| match &c.shape {
