@@ -86,7 +86,6 @@ impl View for Totals {
         }
         let height = ui.available_height();
         let start = samples.first().map_or(model.world.time, |s| s.time);
-        let legend = |corner| (!compact).then(|| Legend::default().position(corner));
         let series = |value: fn(&crate::app::model::totals::Sample) -> f64| -> Vec<[f64; 2]> {
             samples.iter().map(|s| [s.time, value(s)]).collect()
         };
@@ -101,20 +100,18 @@ impl View for Totals {
             series(|s| s.rotational_energy),
             series(|s| s.energy()),
         ];
-        // One at a time: the pointer is over one plot.
-        let readout = Readout::default();
+        let plots = TimePlots {
+            start,
+            height,
+            compact,
+        };
         plot_columns(ui, if line { 2 } else { 3 }, |columns| {
-            let plot = from_start(still_plot("momentum_plot"), start).height(height);
-            let plot = value_axis(plot, &[&px, &py], height);
-            let plot = match legend(Corner::RightBottom) {
-                Some(l) => plot.legend(l),
-                None => plot,
-            };
-            let shown = x_axis(plot, height, tr!("axis-time"), "s")
-                // Too low for a rotated label: the line above gives the units.
-                .y_axis_label(if compact { "" } else { "p (kg·m/s)" })
-                .label_formatter(readout.of_time(3, "kg·m/s"))
-                .show(&mut columns[0], |plot| {
+            let momentum = [("p_x", PX_COLOR, &px[..]), ("p_y", PY_COLOR, &py[..])];
+            let shown = plots.show(
+                &mut columns[0],
+                ("momentum_plot", "p (kg·m/s)".into(), "kg·m/s"),
+                momentum.map(|(name, color, points)| (name.to_string(), color, points)),
+                |plot| {
                     // Where walls pushed: the only places the total moves.
                     for (k, &t) in walls.iter().enumerate() {
                         let mark = VLine::new(t)
@@ -127,73 +124,88 @@ impl View for Totals {
                             mark
                         });
                     }
-                    plot.line(
-                        Line::new(PlotPoints::from(px))
-                            .name("p_x")
-                            .color(PX_COLOR)
-                            .width(2.5),
-                    );
-                    plot.line(
-                        Line::new(PlotPoints::from(py))
-                            .name("p_y")
-                            .color(PY_COLOR)
-                            .width(2.5),
-                    );
-                });
-            readout.show(&columns[0], &shown.response);
-            cx.note("momentum_plot", &shown.response);
+                },
+            );
+            cx.note("momentum_plot", &shown);
             // The energy in the last column: the third, or the second
             // where there is no L.
             let last = if line { 1 } else { 2 };
             if !line {
-                let plot = from_start(still_plot("angular_momentum_plot"), start).height(height);
-                let plot = value_axis(plot, &[&l], height);
-                let plot = match legend(Corner::RightBottom) {
-                    Some(l) => plot.legend(l),
-                    None => plot,
-                };
-                let shown = x_axis(plot, height, tr!("axis-time"), "s")
-                    .y_axis_label(if compact { "" } else { "L (kg·m²/s)" })
-                    .label_formatter(readout.of_time(3, "kg·m²/s"))
-                    .show(&mut columns[1], |plot| {
-                        plot.line(
-                            Line::new(PlotPoints::from(l))
-                                .name("L")
-                                .color(L_COLOR)
-                                .width(2.5),
-                        );
-                    });
-                readout.show(&columns[1], &shown.response);
-                cx.note("angular_momentum_plot", &shown.response);
+                let shown = plots.show(
+                    &mut columns[1],
+                    ("angular_momentum_plot", "L (kg·m²/s)".into(), "kg·m²/s"),
+                    [("L".to_string(), L_COLOR, &l[..])],
+                    |_| {},
+                );
+                cx.note("angular_momentum_plot", &shown);
             }
-            let plotted = &energy_series[..energies.len()];
-            let plot = from_start(still_plot("energy_plot"), start).height(height);
-            let series: Vec<&[[f64; 2]]> = plotted.iter().map(Vec::as_slice).collect();
-            let plot = value_axis(plot, &series, height);
-            let plot = match legend(Corner::RightBottom) {
-                Some(l) => plot.legend(l),
-                None => plot,
+            let y_name = if spin {
+                tr!("axis-energy")
+            } else {
+                format!("{} (J)", tr!("symbol-ke"))
             };
-            let shown = x_axis(plot, height, tr!("axis-time"), "s")
-                .y_axis_label(match (compact, spin) {
-                    (true, _) => String::new(),
-                    (false, true) => tr!("axis-energy"),
-                    (false, false) => format!("{} (J)", tr!("symbol-ke")),
-                })
-                .label_formatter(readout.of_time(3, "J"))
-                .show(&mut columns[last], |plot| {
-                    for ((name, _, color), points) in energies.iter().zip(plotted) {
-                        plot.line(
-                            Line::new(PlotPoints::from(points.clone()))
-                                .name(name)
-                                .color(*color)
-                                .width(2.5),
-                        );
-                    }
-                });
-            readout.show(&columns[last], &shown.response);
-            cx.note("energy_plot", &shown.response);
+            let lines = energies
+                .iter()
+                .zip(&energy_series)
+                .map(|((name, _, color), points)| (name.clone(), *color, &points[..]));
+            let shown = plots.show(
+                &mut columns[last],
+                ("energy_plot", y_name, "J"),
+                lines,
+                |_| {},
+            );
+            cx.note("energy_plot", &shown);
         });
+    }
+}
+
+/// What the tab's plots against time share: where their time axis starts,
+/// their height, and whether the dock is too low for legends and axis names.
+struct TimePlots {
+    start: f64,
+    height: f32,
+    compact: bool,
+}
+
+impl TimePlots {
+    /// A plot (its id, the name of its value axis and the unit of its
+    /// readout) of `lines` (name, colour, points), each numbered on its
+    /// own value axis ([`value_axis`]), with `under` drawn first.
+    fn show<'a>(
+        &self,
+        ui: &mut egui::Ui,
+        (id, y_name, unit): (&str, String, &'static str),
+        lines: impl IntoIterator<Item = (String, egui::Color32, &'a [[f64; 2]])>,
+        under: impl FnOnce(&mut egui_plot::PlotUi),
+    ) -> egui::Response {
+        let lines: Vec<_> = lines.into_iter().collect();
+        let height = self.height;
+        let plot = from_start(still_plot(id), self.start).height(height);
+        let series: Vec<&[[f64; 2]]> = lines.iter().map(|(_, _, points)| *points).collect();
+        let plot = value_axis(plot, &series, height);
+        let plot = if self.compact {
+            plot
+        } else {
+            plot.legend(Legend::default().position(Corner::RightBottom))
+        };
+        let readout = Readout::default();
+        let shown = x_axis(plot, height, tr!("axis-time"), "s")
+            // Too low for a rotated name: the line above gives the units.
+            .y_axis_label(if self.compact { String::new() } else { y_name })
+            .label_formatter(readout.of_time(3, unit))
+            .show(ui, |plot| {
+                under(plot);
+                for (name, color, points) in lines {
+                    plot.line(
+                        Line::new(PlotPoints::from(points.to_vec()))
+                            .name(name)
+                            .color(color)
+                            .width(2.5),
+                    );
+                }
+            });
+        readout.show(ui, &shown.response);
+        shown.response
     }
 }
 
