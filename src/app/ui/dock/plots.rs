@@ -406,7 +406,8 @@ pub fn value_axis(plot: Plot<'static>, series: &[&[[f64; 2]]], height: f32) -> P
 /// where all are flat (within a hundredth of the range) and their numbers
 /// do not crowd each other, the range then widened to hold the numbers of
 /// the top and bottom lines (at a projector's size the top one was cut
-/// off); else none, the range widened to hold a numbered mark of
+/// off), or where they would, the value of the line farthest from zero,
+/// in the middle; else none, the range widened to hold a numbered mark of
 /// [`value_steps`]. Each is rounded to a hundredth of the range
 /// (so it sits on its line to within a point) and written without
 /// trailing zeros.
@@ -446,6 +447,17 @@ fn own_marks((lo, hi): (f64, f64), height: f32, extents: &[(f64, f64)]) -> ((f64
                 return ((lo, hi), marks);
             }
         }
+        // Room for one number: the line farthest from zero gets it, in the
+        // middle of the range, the others under or over it. The head-on
+        // hit's p_y at 0 had taken the axis's one number, and its p_x, the
+        // total the lesson is about, had none.
+        let read = values
+            .iter()
+            .copied()
+            .fold(values[0], |a, v| if v.abs() > a.abs() { v } else { a });
+        let reach = (read - lo).max(hi - read);
+        let range = (read - reach, read + reach);
+        return (range, vec![mark(read, 2.0 * reach)]);
     }
     // Lines that move: the axis's numbers (one in the middle of the range
     // instead, a KE going from 3 to 22 J read "12.7", as if a value).

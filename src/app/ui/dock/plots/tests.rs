@@ -4,6 +4,7 @@ use super::{
     from_start, on_a_line, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
     value_axis, value_steps, x_axis,
 };
+use crate::app::numbers::{plain, trimmed};
 use crate::app::ui::widgets::headless;
 use egui_plot::{Bar, GridInput};
 
@@ -149,6 +150,35 @@ fn two_constant_totals_are_numbered_each_with_its_value() {
                 y - half >= frame.top() - 1.0 && y + half <= frame.bottom() + 1.0,
                 "{height} points: {text} at {y}, the frame {frame:?}"
             );
+        }
+    }
+}
+
+/// Two conserved totals in a plot with room for one number (a
+/// projector's): the total farther from zero is numbered, level with its
+/// line, and the other has none. The head-on hit's p_y at 0 had the
+/// number, and its p_x, the total the lesson is about, none.
+#[test]
+fn where_one_number_fits_the_total_farther_from_zero_has_it() {
+    for height in [44.0, 51.0, 60.0] {
+        for values in [[2.5, 0.0], [0.0, -4.0]] {
+            let (numbers, lines, frame) = plotted_numbers(height, &values);
+            let read = if values[0].abs() > values[1].abs() {
+                0
+            } else {
+                1
+            };
+            let texts: Vec<_> = numbers.iter().map(|(t, _)| t.as_str()).collect();
+            let expected = trimmed(&plain(values[read], 1)).to_string();
+            assert_eq!(texts, [expected.as_str()], "{height} points");
+            let y = numbers[0].1;
+            assert!((y - lines[read]).abs() < 1.0, "{height}: {y}, {lines:?}");
+            assert!(
+                y - 10.0 >= frame.top() - 1.0 && y + 10.0 <= frame.bottom() + 1.0,
+                "{height} points: at {y}, the frame {frame:?}"
+            );
+            let other = lines[1 - read];
+            assert!(frame.top() <= other && other <= frame.bottom(), "{other}");
         }
     }
 }
