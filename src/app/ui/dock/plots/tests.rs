@@ -1,8 +1,8 @@
 //! The plots' axes and ranges, laid out by egui without a window.
 use super::readout::{bar_hover, time_readout};
+use super::values::{padded_range, value_steps};
 use super::{
-    from_start, on_a_line, padded_range, steps_of_one_two_or_five_ten, still_plot, tick,
-    value_axis, value_steps, x_axis,
+    from_start, on_a_line, steps_of_one_two_or_five_ten, still_plot, tick, value_axis, x_axis,
 };
 use crate::app::numbers::{plain, trimmed};
 use crate::app::ui::widgets::headless;
