@@ -342,10 +342,6 @@ impl Sandbox {
             }
             Fit => self.fit_camera(),
             ShowTab(tab) => self.panels.show_tab(tab),
-            ChooseTab(tab) => {
-                let p = &mut self.panels;
-                (p.docks_open, p.dock_expanded, p.tab) = (true, true, tab);
-            }
             ClickTab(tab) => {
                 let p = &mut self.panels;
                 if p.tab == tab && p.dock_expanded {

@@ -154,13 +154,12 @@ pub enum Command {
     Fit,
 
     // Panels.
+    /// A tab's key, or the tab chosen from the tab menu (the row's narrow
+    /// form): shown, never folded. Both had folded the dock where the tab
+    /// was in sight, as a second click on a tab does.
     ShowTab(DockTab),
     /// A tab clicked in the tab row: chosen, or folded when it was open.
     ClickTab(DockTab),
-    /// A tab chosen from the tab menu (the row's narrow form): shown,
-    /// never folded. Choosing the tab in sight from the menu folded the
-    /// dock, as a second click on a tab does.
-    ChooseTab(DockTab),
     ToggleDockExpanded,
     /// The open tab's height in px (its top edge dragged); None: its own.
     SetTabHeight(Option<f32>),

@@ -141,14 +141,10 @@ impl Panels {
         self.scale = scale.clamp(*UI_SCALE_RANGE.start(), *UI_SCALE_RANGE.end());
     }
 
-    /// Opens the bottom dock on `tab`; the same tab again folds it.
+    /// Opens the bottom dock on `tab`, and never folds it: its key pressed
+    /// while it was in sight folded the dock, and a teacher pressing T
+    /// "to show the Totals" hid them.
     pub fn show_tab(&mut self, tab: DockTab) {
-        if self.docks_open && self.dock_expanded && self.tab == tab {
-            self.dock_expanded = false;
-        } else {
-            self.docks_open = true;
-            self.dock_expanded = true;
-            self.tab = tab;
-        }
+        (self.docks_open, self.dock_expanded, self.tab) = (true, true, tab);
     }
 }

@@ -4,22 +4,25 @@
 use super::*;
 
 /// A second click on the tab in sight folds the dock; choosing that tab
-/// from the tab menu (the row's narrow form) shows it and never folds it:
-/// it had, and the Collisions chosen from the menu vanished.
+/// from the tab menu (the row's narrow form) or pressing its key shows it
+/// and never folds it: both had, and the Collisions chosen from the menu
+/// vanished, as did the Totals of a teacher pressing T to show them.
 #[test]
-fn a_tab_chosen_from_the_menu_is_shown_and_a_second_click_on_a_tab_folds_it() {
+fn a_tab_chosen_from_the_menu_or_by_its_key_is_shown_and_a_second_click_folds_it() {
     let dir = tempfile::tempdir().unwrap();
     let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
     s.apply(Command::ClickTab(DockTab::Collisions));
     assert!(s.panels.dock_expanded && s.panels.tab == DockTab::Collisions);
-    s.apply(Command::ChooseTab(DockTab::Collisions));
+    s.apply(Command::ShowTab(DockTab::Collisions));
     assert!(s.panels.dock_expanded && s.panels.tab == DockTab::Collisions);
     s.apply(Command::ClickTab(DockTab::Collisions));
     assert!(!s.panels.dock_expanded, "a second click folds the dock");
-    s.apply(Command::ChooseTab(DockTab::Collisions));
+    s.apply(Command::ShowTab(DockTab::Collisions));
     assert!(s.panels.dock_expanded, "the menu unfolds it");
+    s.apply(Command::ShowTab(DockTab::Collisions));
+    assert!(s.panels.dock_expanded, "its key again keeps it");
     s.apply(Command::ToggleDocks);
-    s.apply(Command::ChooseTab(DockTab::Speeds));
+    s.apply(Command::ShowTab(DockTab::Speeds));
     assert!(s.panels.docks_open && s.panels.dock_expanded && s.panels.tab == DockTab::Speeds);
 }
 

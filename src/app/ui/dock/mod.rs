@@ -115,7 +115,7 @@ impl BottomDock {
                 .show_ui(&mut strip, |ui| {
                     for (tab, _) in &self.tabs {
                         if ui.selectable_label(*tab == chosen, tab.title()).clicked() {
-                            cx.send(Command::ChooseTab(*tab));
+                            cx.send(Command::ShowTab(*tab));
                         }
                     }
                 })
@@ -124,7 +124,7 @@ impl BottomDock {
             let tabs: Vec<_> = self.tabs.iter().map(|(t, _)| *t).collect();
             let at = tabs.iter().position(|t| *t == chosen);
             if let Some(k) = super::widgets::arrow_choice(&r, at, tabs.len()) {
-                cx.send(Command::ChooseTab(tabs[k]));
+                cx.send(Command::ShowTab(tabs[k]));
             }
         }
         for (tab, _) in self.tabs.iter().filter(|_| wanted <= row_rect.width()) {
