@@ -75,8 +75,8 @@ describe-totals = { $state ->
  }; Gesamtimpuls { $momentum }, kinetische Energie { $energy }.
 tab-words = In Worten
 # On the desktop; in the browser, where a screen reader reads the page.
-words-line = Was geschieht, in Worten, das Neueste zuerst.
-words-line-web = Was geschieht, in Worten, das Neueste zuerst (ein Screenreader liest dasselbe vor).
+words-line = Was geschieht, in Worten, das Neueste zuerst: höchstens ein Stoß alle { $gap } s (der Reiter { tab-collisions } listet alle).
+words-line-web = Was geschieht, in Worten, das Neueste zuerst, wie ein Screenreader es vorliest: höchstens ein Stoß alle { $gap } s (der Reiter { tab-collisions } listet alle).
 words-none = Noch nichts gesagt.
 label-describe = Szene beschreiben
 mirror-title = Impulse: Bedienelemente für Tastatur und Screenreader

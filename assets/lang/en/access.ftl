@@ -72,8 +72,8 @@ describe-totals = { $state ->
 } at t = { $time }; total momentum { $momentum }, kinetic energy { $energy }.
 tab-words = In words
 # On the desktop; in the browser, where a screen reader reads the page.
-words-line = What happens, in words, newest first.
-words-line-web = What happens, in words, newest first (a screen reader reads the same).
+words-line = What happens, in words, newest first: one impact every { $gap } s at most (the { tab-collisions } tab lists them all).
+words-line-web = What happens, in words, newest first, as a screen reader reads it: one impact every { $gap } s at most (the { tab-collisions } tab lists them all).
 words-none = Nothing said yet.
 label-describe = Describe the scene
 mirror-title = Impulse: controls for the keyboard and screen readers

@@ -75,8 +75,8 @@ describe-totals = { $state ->
  } en t = { $time }; cantidad de movimiento total { $momentum }, energía cinética { $energy }.
 tab-words = Narración
 # On the desktop; in the browser, where a screen reader reads the page.
-words-line = Lo que ocurre, contado en palabras, lo más reciente primero.
-words-line-web = Lo que ocurre, contado en palabras, lo más reciente primero (un lector de pantalla lee lo mismo).
+words-line = Lo que ocurre, contado en palabras, lo más reciente primero: como mucho un choque cada { $gap } s (la pestaña { tab-collisions } los lista todos).
+words-line-web = Lo que ocurre, contado en palabras, lo más reciente primero, como lo lee un lector de pantalla: como mucho un choque cada { $gap } s (la pestaña { tab-collisions } los lista todos).
 words-none = Todavía no se ha dicho nada.
 label-describe = Describir la escena
 mirror-title = Impulse: controles para el teclado y los lectores de pantalla

@@ -75,8 +75,8 @@ describe-totals = { $state ->
  } à t = { $time } ; quantité de mouvement totale { $momentum }, énergie cinétique { $energy }.
 tab-words = Récit
 # On the desktop; in the browser, where a screen reader reads the page.
-words-line = Ce qui se passe, raconté avec des mots, le plus récent en premier.
-words-line-web = Ce qui se passe, raconté avec des mots, le plus récent en premier (un lecteur d'écran lit la même chose).
+words-line = Ce qui se passe, raconté avec des mots, le plus récent en premier : un choc toutes les { $gap } s au plus (l'onglet { tab-collisions } les liste tous).
+words-line-web = Ce qui se passe, raconté avec des mots, le plus récent en premier, tel qu'un lecteur d'écran le lit : un choc toutes les { $gap } s au plus (l'onglet { tab-collisions } les liste tous).
 words-none = Rien n'a encore été dit.
 label-describe = Décrire la scène
 mirror-title = Impulse : commandes pour le clavier et les lecteurs d'écran

@@ -75,8 +75,8 @@ describe-totals = { $state ->
  } em t = { $time }; quantidade de movimento total { $momentum }, energia cinética { $energy }.
 tab-words = Narração
 # On the desktop; in the browser, where a screen reader reads the page.
-words-line = O que acontece, em palavras, do mais recente ao mais antigo.
-words-line-web = O que acontece, em palavras, do mais recente ao mais antigo (um leitor de tela lê o mesmo).
+words-line = O que acontece, em palavras, do mais recente ao mais antigo: no máximo uma colisão a cada { $gap } s (a aba { tab-collisions } lista todas).
+words-line-web = O que acontece, em palavras, do mais recente ao mais antigo, como um leitor de tela lê: no máximo uma colisão a cada { $gap } s (a aba { tab-collisions } lista todas).
 words-none = Nada foi dito ainda.
 label-describe = Descrever a cena
 mirror-title = Impulse: controles para teclado e leitores de tela

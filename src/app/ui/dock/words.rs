@@ -6,6 +6,7 @@ use super::super::dialog::scroll;
 use super::super::widgets::{command_button, one_line};
 use super::{Cx, View};
 use crate::app::lang::tr;
+use crate::app::model::narration::IMPACT_GAP;
 use crate::app::model::Command;
 
 /// The tab (no state of its own).
@@ -21,11 +22,15 @@ impl View for Words {
             command_button(ui, cx, Command::Describe, Some("describe"));
             // The page's live region is the browser's: the desktop window
             // does not say it speaks to a screen reader.
-            let line = if cfg!(target_arch = "wasm32") {
-                tr!("words-line-web")
+            // It says that impacts are said at most every IMPACT_GAP: a gas's
+            // 52 collisions read as a miscount beside the list's three.
+            let id = if cfg!(target_arch = "wasm32") {
+                "words-line-web"
             } else {
-                tr!("words-line")
+                "words-line"
             };
+            let gap = crate::app::numbers::plain(IMPACT_GAP, 0);
+            let line = tr!(id, gap = gap);
             one_line(ui, line, None);
         });
         let area = egui::ScrollArea::vertical().auto_shrink([false, true]);
@@ -48,5 +53,26 @@ impl View for Words {
                 }
             }
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Words;
+    use crate::app::lang::tr;
+    use crate::app::model::tests::sandbox_with;
+    use crate::app::ui::widgets::texts_drawn;
+
+    /// The tab says that it gives an impact every 2 s at most and where all
+    /// of them are: a review's student read the gas's 52 collisions against
+    /// the tab's three lines as a miscount.
+    #[test]
+    fn the_tab_says_how_often_it_tells_an_impact_and_where_all_are() {
+        let dir = tempfile::tempdir().unwrap();
+        let model = sandbox_with(dir.path(), "preset-8-gas.toml", true, 0.0);
+        let text = texts_drawn(&model, egui::vec2(1800.0, 200.0), &mut Words).concat();
+        let every = format!("{} s", super::IMPACT_GAP);
+        assert!(text.contains(&every), "{text}");
+        assert!(text.contains(&tr!("tab-collisions")), "{text}");
     }
 }
