@@ -11,6 +11,7 @@ mod clip;
 pub mod cull;
 pub mod discs;
 pub mod readouts;
+mod trails;
 
 use crate::app::look::{color, Look};
 use crate::app::model::camera::Camera;
@@ -52,7 +53,8 @@ impl Painter {
         let text = self.text.get_or_insert_with(WorldText::new);
         text.begin_frame();
         draw_boundary(world, camera, look);
-        draw_trails(&model.record.trails, camera);
+        let disc_color = |i| model.overlays.disc_color(&model.world, i);
+        trails::draw_trails(&model.record.trails, camera, disc_color);
         let batch = self.batch.get_or_insert_with(DiscBatch::new);
         draw_discs(world, camera, model.selected, &model.overlays, batch, look);
         draw_arrows(world, camera, &model.overlays, look);
@@ -75,30 +77,6 @@ impl Painter {
             let cursor = camera.screen_to_world(mouse);
             let disc = model.new_disc_now();
             draw_launch_preview(&model.world, camera, start, cursor, disc, look, text);
-        }
-    }
-}
-
-/// Fading lines, oldest faintest, and a dot every 0.1 s.
-fn draw_trails(trails: &crate::app::model::trails::Trails, camera: &Camera) {
-    if !trails.on {
-        return;
-    }
-    for (c, path, dots) in trails.paths() {
-        let n = path.len();
-        for (k, pair) in path.iter().zip(path.iter().skip(1)).enumerate() {
-            let (a, b) = (
-                camera.world_to_screen(*pair.0),
-                camera.world_to_screen(*pair.1),
-            );
-            let alpha = 0.7 * (k + 1) as f32 / n as f32;
-            let line = Color::from_rgba(c.r, c.g, c.b, (alpha * 255.0) as u8);
-            draw_line(a.x as f32, a.y as f32, b.x as f32, b.y as f32, 1.5, line);
-        }
-        let dot = Color::from_rgba(c.r, c.g, c.b, 230);
-        for d in dots {
-            let at = camera.world_to_screen(*d);
-            draw_circle(at.x as f32, at.y as f32, 2.5, dot);
         }
     }
 }
@@ -219,13 +197,7 @@ pub fn draw_discs(
     batch: &mut DiscBatch,
     look: Look,
 ) {
-    let disc_color = |i: usize| {
-        if overlays.safe_palette {
-            impulse::Color::palette(i)
-        } else {
-            world.particles[i].color
-        }
-    };
+    let disc_color = |i: usize| overlays.disc_color(world, i);
     discs::instances(world, camera, disc_color, &mut batch.instances);
     batch.spin_line = if spin_shown(world) { 1.0 } else { 0.0 };
     batch.draw();

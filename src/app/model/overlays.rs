@@ -80,6 +80,20 @@ impl Default for Overlays {
     }
 }
 
+impl Overlays {
+    /// The colour disc `i` of `world` is drawn in: its own, or with the
+    /// colour-blind-safe palette on, the palette's by its number. The
+    /// world, the readouts, the ledger, the Discs table and the Momenta
+    /// diagram all ask here: with the palette on, the ledger's dots and the
+    /// table's had kept the scene's colours, no longer the discs'.
+    pub fn disc_color(&self, world: &World, i: usize) -> impulse::Color {
+        match world.particles.get(i) {
+            Some(p) if !self.safe_palette => p.color,
+            _ => impulse::Color::palette(i),
+        }
+    }
+}
+
 /// Whether spin is worth showing: a disc spins, or the laws can make one
 /// spin (a roughness β above −1 between discs or at the walls, or friction,
 /// which rubs resting discs). Only then do discs carry their spin line and

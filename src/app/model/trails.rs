@@ -21,7 +21,7 @@ pub const MAX_DISCS: usize = 2000;
 pub struct Trails {
     /// Whether trails are recorded and drawn.
     pub on: bool,
-    paths: Vec<(impulse::Color, VecDeque<DVec2>)>,
+    paths: Vec<VecDeque<DVec2>>,
     /// Where each disc was at each whole multiple of [`DOT_SECONDS`].
     dots: Vec<VecDeque<DVec2>>,
     last_time: f64,
@@ -36,11 +36,7 @@ impl Trails {
             return;
         }
         if world.particles.len() != self.paths.len() || world.time < self.last_time {
-            self.paths = world
-                .particles
-                .iter()
-                .map(|p| (p.color, VecDeque::with_capacity(POINTS)))
-                .collect();
+            self.paths = vec![VecDeque::with_capacity(POINTS); world.particles.len()];
             self.dots = vec![VecDeque::with_capacity(DOTS); world.particles.len()];
         }
         let (t0, t1) = (self.last_time, world.time);
@@ -53,7 +49,7 @@ impl Trails {
             .iter_mut()
             .zip(&mut self.dots)
             .zip(&world.particles);
-        for (((_, path), dots), p) in discs {
+        for ((path, dots), p) in discs {
             // A jump (a periodic wrap, a drag) breaks the line.
             if path
                 .back()
@@ -82,13 +78,8 @@ impl Trails {
 
     /// Each disc's recent path (its colour, oldest point first) and its
     /// dots, for drawing.
-    pub fn paths(
-        &self,
-    ) -> impl Iterator<Item = (impulse::Color, &VecDeque<DVec2>, &VecDeque<DVec2>)> {
-        self.paths
-            .iter()
-            .zip(&self.dots)
-            .map(|((color, path), dots)| (*color, path, dots))
+    pub fn paths(&self) -> impl Iterator<Item = (&VecDeque<DVec2>, &VecDeque<DVec2>)> {
+        self.paths.iter().zip(&self.dots)
     }
 
     /// The dots of disc `k`, oldest first.
@@ -117,10 +108,10 @@ mod tests {
             world.step(0.001);
             trails.record(&world);
         }
-        assert!(trails.paths.iter().all(|(_, p)| p.len() == POINTS));
+        assert!(trails.paths.iter().all(|p| p.len() == POINTS));
         world.time = 0.0;
         trails.record(&world);
-        assert!(trails.paths.iter().all(|(_, p)| p.len() == 1));
+        assert!(trails.paths.iter().all(|p| p.len() == 1));
     }
 
     #[test]

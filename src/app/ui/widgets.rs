@@ -433,6 +433,23 @@ pub fn texts_drawn(
     size: egui::Vec2,
     view: &mut dyn super::View,
 ) -> Vec<String> {
+    shapes_drawn(model, size, view)
+        .into_iter()
+        .filter_map(|shape| match shape {
+            egui::Shape::Text(t) => Some(t.galley.text().to_string()),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The shapes `view` draws for `model` in a headless ui `size` points
+/// large ([`headless`]), in the order drawn.
+#[cfg(test)]
+pub fn shapes_drawn(
+    model: &crate::app::model::Sandbox,
+    size: egui::Vec2,
+    view: &mut dyn super::View,
+) -> Vec<egui::Shape> {
     let (mut out, mut marks) = (Vec::new(), super::Marks::default());
     let shown = headless(size, |ui| {
         let mut cx = super::Cx {
@@ -445,14 +462,7 @@ pub fn texts_drawn(
         };
         view.ui(ui, &mut cx);
     });
-    shown
-        .shapes
-        .iter()
-        .filter_map(|c| match &c.shape {
-            egui::Shape::Text(t) => Some(t.galley.text().to_string()),
-            _ => None,
-        })
-        .collect()
+    shown.shapes.into_iter().map(|c| c.shape).collect()
 }
 
 /// Runs `add` in a ui `size` points large, in an egui without a window and

@@ -161,9 +161,9 @@ fn detail(ui: &mut egui::Ui, cx: &mut Cx, impact: &Impact) {
         Option<egui::Color32>,
     );
     let mut rows: Vec<Row> = Vec::new();
-    let particles = &cx.model.world.particles;
+    let (world, overlays) = (&cx.model.world, &cx.model.overlays);
     let colour = |disc: usize| {
-        let c = particles.get(disc)?.color;
+        let c = (disc < world.particles.len()).then(|| overlays.disc_color(world, disc))?;
         Some(egui::Color32::from_rgb(c.r, c.g, c.b))
     };
     let row = |disc: usize, name, (b, a): (String, String)| (name, b, a, None, colour(disc));

@@ -247,7 +247,7 @@ impl View for DiscsTable {
                             let i = row.index();
                             let p = &particles[i];
                             row.set_selected(selected == Some(i));
-                            let c = p.color;
+                            let c = model.overlays.disc_color(&model.world, i);
                             let color = Color32::from_rgb(c.r, c.g, c.b);
                             let mut in_sight = egui::Rect::NOTHING;
                             let (_, cell) = row.col(|ui| {
@@ -428,7 +428,7 @@ impl View for DiscsTable {
 mod tests {
     use super::DiscsTable;
     use crate::app::model::tests::sandbox_with;
-    use crate::app::ui::widgets::texts_drawn;
+    use crate::app::ui::widgets::{shapes_drawn, texts_drawn};
 
     /// The table numbers its rows from 1, as the messages, the ledger and
     /// the column kept in sight when it scrolls do: it showed 0 and 1 where
@@ -443,5 +443,42 @@ mod tests {
         let count = |number: &str| texts.iter().filter(|t| *t == number).count();
         assert!(count("1") >= 1 && count("2") >= 1, "{texts:?}");
         assert_eq!(count("0"), 0, "{texts:?}");
+    }
+
+    /// With the colour-blind-safe palette on, each row's dot has the
+    /// colour its disc is drawn in: the table, the ledger and the Momenta
+    /// diagram had kept the scene's colours.
+    #[test]
+    fn the_rows_dots_have_the_discs_colours_with_the_safe_palette_too() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut model = sandbox_with(dir.path(), "preset-9-billiards.toml", true, 0.0);
+        let scene: Vec<_> = model.world.particles.iter().map(|p| p.color).collect();
+        let recoloured = (0..scene.len()).any(|i| impulse::Color::palette(i) != scene[i]);
+        assert!(recoloured, "the scene's colours are the palette's: no test");
+        for safe in [false, true] {
+            model.overlays.safe_palette = safe;
+            let dots: Vec<egui::Color32> = shapes_drawn(
+                &model,
+                egui::vec2(900.0, 2000.0),
+                &mut DiscsTable::default(),
+            )
+            .into_iter()
+            .filter_map(|shape| match shape {
+                egui::Shape::Circle(c) if c.radius == 7.0 => Some(c.fill),
+                _ => None,
+            })
+            .collect();
+            assert!(dots.len() >= 3, "{} dots", dots.len());
+            for (i, fill) in dots.iter().enumerate() {
+                let c = model.overlays.disc_color(&model.world, i);
+                assert_eq!(*fill, egui::Color32::from_rgb(c.r, c.g, c.b), "disc {i}");
+                let expected = if safe {
+                    impulse::Color::palette(i)
+                } else {
+                    scene[i]
+                };
+                assert_eq!(c, expected, "disc {i}, safe palette {safe}");
+            }
+        }
     }
 }

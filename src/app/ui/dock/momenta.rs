@@ -42,8 +42,9 @@ impl View for Momenta {
         }
         let mut at = glam::DVec2::ZERO;
         let mut chain = Vec::new();
-        for p in ps {
-            chain.push((at, at + p.momentum(), p.color));
+        for (i, p) in ps.iter().enumerate() {
+            let color = cx.model.overlays.disc_color(&cx.model.world, i);
+            chain.push((at, at + p.momentum(), color));
             at += p.momentum();
         }
         // One line, so the plot keeps the height: the whole on hover.
