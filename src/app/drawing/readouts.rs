@@ -8,14 +8,14 @@
 //! there is room. Backgrounds first, then all text.
 
 use super::cull::{
-    circle_on_screen, place_label, LabelPlacer, Obstacles, Placement, ScreenRect, MIN_ARROW_PIXELS,
+    circle_on_screen, place_label, LabelPlacer, Obstacles, Placement, MIN_ARROW_PIXELS,
     MIN_LABEL_DISC_PIXELS,
 };
 use crate::app::lang::tr;
 use crate::app::look::{color, Look, MIN_TEXT_POINTS};
 use crate::app::model::camera::Camera;
 use crate::app::model::overlays::{spin_shown, Overlays, ReadoutScope, ARROW_SECONDS};
-use crate::app::numbers::{vector, with_unit};
+use crate::app::numbers::{disc_number, vector, with_unit};
 use glam::DVec2;
 use impulse::World;
 use macroquad::prelude::*;
@@ -79,23 +79,30 @@ impl WorldText {
     }
 }
 
-/// Readout lines for one disc; with `spin`, two more: its spin and
-/// rotational KE, and its angular momentum about the origin.
-pub fn readout_lines(p: &impulse::Particle, spin: bool) -> Vec<String> {
+/// Readout lines for disc `i`: its name (as the ledger gives it), mass
+/// and KE; its velocity and speed; its momentum. With `spin`, two more:
+/// its spin and rotational KE, and its angular momentum about the origin.
+/// The name, with the disc's colour down the label's edge, tells whose
+/// values a label holds: at a projector's size two discs' labels, each
+/// far from its disc, had nothing to tell them apart. (Four shorter lines
+/// were tried: too tall to fit above or below a disc in a projector's
+/// world, they were not drawn at all.)
+pub fn readout_lines(p: &impulse::Particle, i: usize, spin: bool) -> Vec<String> {
     let v = p.vel;
     let mut lines = vec![
+        format!(
+            "{}:  m = {}   {} = {}",
+            tr!("disc-numbered", disc = disc_number(i)),
+            with_unit(p.mass, 3, "kg"),
+            tr!("symbol-ke"),
+            with_unit(p.kinetic_energy(), 3, "J")
+        ),
         format!(
             "v = {}   |v| = {}",
             vector(v, 2, "m/s"),
             with_unit(v.length(), 2, "m/s")
         ),
         format!("p = {}", vector(p.momentum(), 2, "kg·m/s")),
-        format!(
-            "m = {}   {} = {}",
-            with_unit(p.mass, 3, "kg"),
-            tr!("symbol-ke"),
-            with_unit(p.kinetic_energy(), 3, "J")
-        ),
     ];
     if spin {
         lines.push(tr!(
@@ -116,16 +123,16 @@ struct Label {
     rect: [f64; 4],
     leader: Option<(DVec2, DVec2)>,
     lines: Vec<String>,
+    /// The disc's colour, down the label's left edge.
+    color: Color,
 }
 
 /// What labels must keep clear of: every disc on screen and every arrow drawn.
 fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, cell: f64) -> Option<Obstacles> {
     let rect = camera.screen_rect();
     let mut o = Obstacles::new(cell);
-    let mean_mass =
-        world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64;
     let mut on_screen = 0;
-    let half = 4.0 * 2.4; // the momentum arrow's half width, in px
+    let mean_mass = mean_mass(world);
     for p in &world.particles {
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius).max(1.0);
@@ -136,18 +143,38 @@ fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, cell: f64) -> 
         if on_screen > MAX_OBSTACLE_DISCS {
             return None;
         }
-        o.add_circle(c, r + 2.0);
-        for (on, v) in [
-            (overlays.velocity, p.vel),
-            (overlays.momentum, p.momentum() / mean_mass),
-        ] {
-            let tip = c + camera.vector_to_screen(v * ARROW_SECONDS);
-            if on && c.distance(tip) >= MIN_ARROW_PIXELS {
-                o.add_segment(c, tip, half);
-            }
-        }
+        add_disc(&mut o, p, mean_mass, camera, overlays);
     }
     Some(o)
+}
+
+/// The mass the momentum arrows are drawn against (as velocities).
+fn mean_mass(world: &World) -> f64 {
+    world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len().max(1) as f64
+}
+
+/// Disc `p` and the arrows drawn on it (momenta against `mean_mass`), as
+/// obstacles to labels.
+fn add_disc(
+    o: &mut Obstacles,
+    p: &impulse::Particle,
+    mean_mass: f64,
+    camera: &Camera,
+    overlays: &Overlays,
+) {
+    let half = 4.0 * 2.4; // the momentum arrow's half width, in px
+    let c = camera.world_to_screen(p.pos);
+    let r = camera.length_in_pixels(p.radius).max(1.0);
+    o.add_circle(c, r + 2.0);
+    for (on, v) in [
+        (overlays.velocity, p.vel),
+        (overlays.momentum, p.momentum() / mean_mass),
+    ] {
+        let tip = c + camera.vector_to_screen(v * ARROW_SECONDS);
+        if on && c.distance(tip) >= MIN_ARROW_PIXELS {
+            o.add_segment(c, tip, half);
+        }
+    }
 }
 
 /// Text readouts beside the selected disc or every readable disc.
@@ -175,6 +202,8 @@ pub fn draw_readouts(
     let spin = spin_shown(world);
     let rows = if spin { 5.0 } else { 3.0 };
     let height = f64::from(rows * line_height + 2.0 * pad);
+    // The disc's colour down the left edge, then the text.
+    let stripe = 0.35 * size;
     let typical = DVec2::new(f64::from(22.0 * size), height);
     // Past MAX_OBSTACLE_DISCS discs on screen, only the selected disc's values.
     let (obstacles, all) = match obstacles(world, camera, overlays, typical.y) {
@@ -202,12 +231,12 @@ pub fn draw_readouts(
         if labels.len() >= MAX_LABELS || !(chosen || r >= MIN_LABEL_DISC_PIXELS) {
             continue;
         }
-        let lines = readout_lines(p, spin);
+        let lines = readout_lines(p, i, spin);
         let width = lines
             .iter()
             .map(|l| text.measure(l, size).x)
             .fold(0.0, f32::max);
-        let label_size = DVec2::new(f64::from(width + 2.0 * pad), height);
+        let label_size = DVec2::new(f64::from(stripe + width + 2.0 * pad), height);
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
         let screen = camera.screen_rect();
         let placed =
@@ -216,15 +245,20 @@ pub fn draw_readouts(
                 // it all the same, over its neighbours (a teacher chose
                 // this disc; a notice instead would cover more of them).
                 chosen
-                    .then(|| place_over_others(c, r, label_size, gaps, screen, &placer))
+                    .then(|| {
+                        let scene = (world, camera, overlays);
+                        place_over_others(p, scene, label_size, gaps, &placer)
+                    })
                     .flatten()
             });
         if let Some(at) = placed {
             placer.try_place(at.rect);
+            let c = overlays.disc_color(world, i);
             labels.push(Label {
                 rect: at.rect,
                 leader: at.leader,
                 lines,
+                color: Color::from_rgba(c.r, c.g, c.b, 255),
             });
         }
     }
@@ -236,12 +270,13 @@ pub fn draw_readouts(
         }
         let r = l.rect.map(|v| v as f32);
         draw_rectangle(r[0], r[1], r[2], r[3], background);
+        draw_rectangle(r[0], r[1], stripe, r[3], l.color);
     }
     let ink = color(look.colors.text);
     for l in &labels {
         for (k, line) in l.lines.iter().enumerate() {
             let at = vec2(
-                l.rect[0] as f32 + pad,
+                l.rect[0] as f32 + stripe + pad,
                 l.rect[1] as f32 + pad + line_height * k as f32,
             );
             text.draw(line, at, size, ink);
@@ -268,19 +303,26 @@ pub fn draw_readouts(
 }
 
 /// Where the selected disc's label goes when every place beside it covers
-/// something: the nearest one that covers only other discs and arrows, never
-/// the disc itself or another label.
+/// something: the nearest one that covers only other discs and arrows,
+/// never the disc itself, its own arrows (a review's student, having just
+/// typed its v_x, found the label over its velocity arrow) or another
+/// label; where its arrows leave no such place, one clear of the disc.
 fn place_over_others(
-    center: DVec2,
-    radius: f64,
+    p: &impulse::Particle,
+    (world, camera, overlays): (&World, &Camera, &Overlays),
     size: DVec2,
     gaps: &[f64],
-    screen: ScreenRect,
     placed: &LabelPlacer,
 ) -> Option<Placement> {
+    let center = camera.world_to_screen(p.pos);
+    let radius = camera.length_in_pixels(p.radius);
+    let screen = camera.screen_rect();
     let mut itself = Obstacles::new(size.y);
-    itself.add_circle(center, radius + 2.0);
+    add_disc(&mut itself, p, mean_mass(world), camera, overlays);
+    let mut disc = Obstacles::new(size.y);
+    disc.add_circle(center, radius + 2.0);
     place_label(center, radius, size, gaps, screen, &itself, placed)
+        .or_else(|| place_label(center, radius, size, gaps, screen, &disc, placed))
 }
 
 /// `text` cut into lines no wider than `width` (as `measure` finds them),
@@ -316,7 +358,51 @@ pub fn launch_label(text: &WorldText, label: &str, tip: Vec2, look: Look) {
 
 #[cfg(test)]
 mod tests {
-    use super::wrap_words;
+    use super::{place_over_others, wrap_words, LabelPlacer, Overlays};
+    use crate::app::model::camera::Camera;
+    use glam::DVec2;
+    use impulse::{Particle, World};
+
+    /// A label names its disc as the ledger does (numbered from 1): two
+    /// labels far from their discs had nothing to tell them apart.
+    #[test]
+    fn a_label_names_its_disc() {
+        let p = Particle::new(DVec2::ZERO, DVec2::X, 1.0, 0.5, impulse::Color::palette(0));
+        let lines = super::readout_lines(&p, 2, false);
+        let name = crate::app::lang::tr!("disc-numbered", disc = 3);
+        assert!(lines[0].starts_with(&name), "{lines:?}");
+        assert_eq!(lines.len(), 3);
+        assert_eq!(super::readout_lines(&p, 2, true).len(), 5);
+    }
+
+    /// A crowded disc's label goes over its neighbours, but not over its
+    /// own velocity arrow (right of it, where a label is tried first).
+    #[test]
+    fn a_crowded_discs_label_keeps_off_its_own_arrow() {
+        let mut world = World::new(DVec2::new(100.0, 100.0));
+        let disc = Particle::new(
+            DVec2::new(50.0, 50.0),
+            DVec2::new(30.0, 0.0),
+            1.0,
+            2.0,
+            impulse::Color::palette(0),
+        );
+        world.particles.push(disc);
+        let camera = Camera::fitting(world.laws.size, DVec2::new(800.0, 800.0), 0.0);
+        let overlays = Overlays::default();
+        assert!(overlays.velocity);
+        let size = DVec2::new(200.0, 60.0);
+        let placer = LabelPlacer::new(size);
+        let scene = (&world, &camera, &overlays);
+        let at =
+            place_over_others(&world.particles[0], scene, size, &[6.0], &placer).expect("a place");
+        // The arrow: from the centre (400, 400) px 0.5 s × 30 m/s × 8 px/m
+        // to the right, 120 px.
+        let [x, y, w, h] = at.rect;
+        let (from, to) = (400.0, 400.0 + 120.0);
+        let over = x < to && x + w > from && y < 400.0 + 10.0 && y + h > 400.0 - 10.0;
+        assert!(!over, "the label {:?} over the arrow", at.rect);
+    }
 
     /// Ten pixels a character.
     fn measure(s: &str) -> f32 {
