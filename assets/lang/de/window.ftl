@@ -11,7 +11,7 @@ state-rewound = ZURÜCKGESPULT
 state-paused = PAUSIERT
 state-running = LÄUFT
 state-stalled = STECKT FEST
-rewound-line = zurückgespult auf Stand { $snapshot } von { $snapshots } ({ $oldest } bis { $newest } s): Leertaste setzt fort
+rewound-line = aufgezeichnet: { $oldest } bis { $newest } s; Leertaste setzt fort
 momentum-hover = Gesamtimpuls der Scheiben
 momentum-walls-push = p = { $momentum } (Wände stoßen)
 momentum-walls-push-hover = Wände stoßen: Der Impuls der Scheiben ändert sich nur an den Wänden; bei Stößen zwischen Scheiben bleibt er erhalten

@@ -11,7 +11,7 @@ state-rewound = REWOUND
 state-paused = PAUSED
 state-running = RUNNING
 state-stalled = STUCK
-rewound-line = rewound to snapshot { $snapshot } of { $snapshots } ({ $oldest } to { $newest } s): Space resumes
+rewound-line = recorded: { $oldest } to { $newest } s; Space resumes
 momentum-hover = total momentum of the discs
 momentum-walls-push = p = { $momentum } (walls push)
 momentum-walls-push-hover = walls push: the discs' momentum changes only at the walls; between discs it is kept

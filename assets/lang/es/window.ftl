@@ -11,7 +11,7 @@ state-rewound = REBOBINADO
 state-paused = EN PAUSA
 state-running = EN MARCHA
 state-stalled = ATASCADO
-rewound-line = rebobinado a la instantánea { $snapshot } de { $snapshots } (de { $oldest } a { $newest } s): Espacio reanuda
+rewound-line = grabado: de { $oldest } a { $newest } s; Espacio reanuda
 momentum-hover = cantidad de movimiento total de los discos
 momentum-walls-push = p = { $momentum } (empujan las paredes)
 momentum-walls-push-hover = empujan las paredes: la cantidad de movimiento de los discos solo cambia en las paredes; entre discos se conserva

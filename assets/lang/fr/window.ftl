@@ -11,7 +11,7 @@ state-rewound = REMBOBINÉ
 state-paused = EN PAUSE
 state-running = EN COURS
 state-stalled = BLOQUÉ
-rewound-line = rembobiné à l'instantané { $snapshot } sur { $snapshots } (de { $oldest } à { $newest } s) : Espace pour reprendre
+rewound-line = enregistré : de { $oldest } à { $newest } s ; Espace pour reprendre
 momentum-hover = quantité de mouvement totale des disques
 momentum-walls-push = p = { $momentum } (les murs poussent)
 momentum-walls-push-hover = les murs poussent : la quantité de mouvement des disques ne change qu'aux murs ; entre disques, elle se conserve

@@ -11,7 +11,7 @@ state-rewound = REBOBINADO
 state-paused = PAUSADO
 state-running = RODANDO
 state-stalled = TRAVADO
-rewound-line = voltou ao registro { $snapshot } de { $snapshots } ({ $oldest } a { $newest } s): Espaço continua
+rewound-line = gravado: { $oldest } a { $newest } s; Espaço continua
 momentum-hover = quantidade de movimento total dos discos
 momentum-walls-push = p = { $momentum } (paredes empurram)
 momentum-walls-push-hover = paredes empurram: a quantidade de movimento dos discos só muda nas paredes; entre discos ela se conserva

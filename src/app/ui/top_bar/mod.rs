@@ -17,6 +17,10 @@ use crate::app::numbers::{plain, quantity, vector, with_unit};
 use egui::{Color32, RichText};
 use line::Item;
 
+/// The sign of a rewound run, beside its word or alone where the line is
+/// too full for the word.
+const REWOUND_SIGN: &str = "⏪";
+
 /// The top bar (no state of its own).
 pub struct TopBar;
 
@@ -45,10 +49,12 @@ impl View for TopBar {
             .map(|w| warning_text(w, &method));
         // The state, and its sign alone for a line too full (the π blocks'
         // count at a projector's size).
+        // Rewound, its own sign: alone at a projector (the line too full for
+        // the word), the pause's sign had said only "paused".
         let (state, sign) = if model.record.history.cursor().is_some() {
             (
-                RichText::new(format!("⏸ {}", tr!("state-rewound"))).color(paused),
-                RichText::new("⏸").color(paused),
+                RichText::new(format!("{REWOUND_SIGN} {}", tr!("state-rewound"))).color(paused),
+                RichText::new(REWOUND_SIGN).color(paused),
             )
         } else if model.clock.paused {
             (
@@ -98,15 +104,16 @@ impl View for TopBar {
         if let Some(slow) = model.slow_note() {
             optional.push(Item::new(RichText::new(slow).color(paused)));
         }
-        if let (Some(k), Some((oldest, newest))) =
+        if let (Some(_), Some((oldest, newest))) =
             (model.record.history.cursor(), model.record.history.span())
         {
+            // What was recorded, in the caption's words and figures (it said
+            // "snapshot 117 of 120", its times to two decimals where the
+            // caption has three); the time is the line's t.
             optional.push(Item::new(tr!(
                 "rewound-line",
-                snapshot = k + 1,
-                snapshots = model.record.history.len(),
-                oldest = plain(oldest, 2),
-                newest = plain(newest, 2)
+                oldest = plain(oldest, 3),
+                newest = plain(newest, 3)
             )));
         }
         // What the method cannot promise comes before the numbers it affects.
@@ -248,4 +255,37 @@ fn sound_label(cx: &Cx) -> String {
         (false, _) => "🔇",
     };
     icon.to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{TopBar, REWOUND_SIGN};
+    use crate::app::model::tests::sandbox_with;
+    use crate::app::model::Command;
+    use crate::app::ui::widgets::texts_drawn;
+
+    /// Rewound, the top bar shows a sign of its own, also where a
+    /// projector's line has room for the sign alone: it showed the
+    /// pause's, and only the caption said the run was rewound.
+    #[test]
+    fn a_rewound_run_has_its_own_sign_in_a_full_top_bar() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_with(dir.path(), "preset-1-head-on.toml", false, 0.0);
+        for k in 1..=90 {
+            s.begin_frame(f64::from(k) / 60.0);
+            s.tick(1.0 / 60.0, 1.0);
+        }
+        s.apply(Command::Scrub(-3));
+        assert!(s.record.history.cursor().is_some(), "rewound");
+        for width in [400.0, 1400.0] {
+            let text = texts_drawn(&s, egui::vec2(width, 40.0), &mut TopBar).concat();
+            assert!(text.contains(REWOUND_SIGN), "{width}: {text}");
+            assert!(!text.contains('⏸'), "{width}: {text}");
+        }
+        let fonts = egui::Context::default();
+        crate::app::look::apply(&fonts, 1.0, crate::app::look::Theme::Dark);
+        let _ = fonts.run(Default::default(), |_| {});
+        let body = egui::FontId::proportional(14.0);
+        assert!(fonts.fonts(|f| f.has_glyphs(&body, REWOUND_SIGN)));
+    }
 }
