@@ -66,7 +66,7 @@ tile-glancing = Glancing (2D)
 tile-inelastic = Inelastic
 tile-pi-blocks = π blocks
 tile-gas = A gas
-tile-free-play = Free play
+tile-free-play = { scene-untitled }
 tile-head-on-blurb = Two discs meet on a line. Is the total momentum the same after?
 tile-glancing-blurb = One disc hits another off-centre. Which way do they go?
 tile-inelastic-blurb = Discs that do not bounce back fully. Where does the energy go?
@@ -204,7 +204,10 @@ ledger-wall = disc { $disc } and the { $wall ->
    *[top] top
 } wall
 ledger-empty = None yet. Next collision (J) runs to the next one, between discs or with a wall, and pauses at the instant of impact.
-ledger-last = The last { $count }, newest first
+ledger-last = { $count ->
+    [one] The last one
+   *[other] The last { $count }, newest first
+}
 ledger-time-hover = when it happened
 ledger-what = what
 ledger-what-hover = which discs, or which disc and wall

@@ -85,7 +85,7 @@ keys-quit = Ctrl+Q
 help-quit = salir
 
 # Las etiquetas de los botones que dan una orden.
-label-toggle-pause = Iniciar / Pausa
+label-toggle-pause = Reproducir / Pausa
 label-step = Paso
 label-reset = ⟲ Reiniciar
 label-undo = Deshacer
@@ -108,7 +108,7 @@ label-zoom-in = Zoom +
 label-zoom-out = Zoom −
 label-fullscreen = Pantalla completa
 label-toggle-docks = Ocultar paneles
-label-show-start = Inicio
+label-show-start = Lecciones
 label-toggle-drawer = ☰ Controles
 label-show-all-controls = Todos los controles
 label-reopen-kept = Reabrir mi último experimento

@@ -66,7 +66,7 @@ tile-glancing = Oblicuo (2D)
 tile-inelastic = Inelástico
 tile-pi-blocks = Bloques π
 tile-gas = Un gas
-tile-free-play = Juego libre
+tile-free-play = { scene-untitled }
 tile-head-on-blurb = Dos discos se encuentran sobre una recta. ¿Es la cantidad de movimiento total la misma después?
 tile-glancing-blurb = Un disco choca con otro sin darle en el centro. ¿Hacia dónde sale cada uno?
 tile-inelastic-blurb = Discos que no rebotan del todo. ¿A dónde va la energía?
@@ -77,14 +77,14 @@ tile-free-play-blurb = Lanza tus propios discos y cámbialo todo.
 ## La pantalla de inicio
 close = Cerrar
 start-title = ¿Qué te gustaría explorar?
-start-footer = Tab y Enter eligen una lección con el teclado. Esc conserva la escena que está abierta. El botón Inicio de la barra superior vuelve a mostrar esta pantalla.
+start-footer = Tab y Enter eligen una lección con el teclado. Esc conserva la escena que está abierta. El botón Lecciones de la barra superior vuelve a mostrar esta pantalla.
 
 ## El panel lateral
 controls-for = Los controles para { $lesson }.
 selected-disc-numbered = Disco seleccionado ({ $disc })
 section-more = Más
 section-more-line = Para discos que giran y para comparar cómo hace los cálculos el programa.
-play = Iniciar
+play = Reproducir
 pause = Pausa
 colour-white = blanco
 colour-pink = rosa

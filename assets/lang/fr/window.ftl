@@ -66,7 +66,7 @@ tile-glancing = Choc oblique (2D)
 tile-inelastic = Inélastique
 tile-pi-blocks = Blocs π
 tile-gas = Un gaz
-tile-free-play = Jeu libre
+tile-free-play = { scene-untitled }
 tile-head-on-blurb = Deux disques se rencontrent sur une droite. La quantité de mouvement totale est-elle la même après ?
 tile-glancing-blurb = Un disque en heurte un autre sans le viser au centre. Dans quelles directions partent-ils ?
 tile-inelastic-blurb = Des disques qui ne rebondissent pas complètement. Où passe l'énergie ?
@@ -204,7 +204,10 @@ ledger-wall = disque { $disc } et le mur { $wall ->
    *[top] du haut
 }
 ledger-empty = Aucune pour l'instant. Collision suivante (J) avance jusqu'à la prochaine, entre disques ou avec un mur, et s'arrête à l'instant du choc.
-ledger-last = Les { $count } dernières, la plus récente en premier
+ledger-last = { $count ->
+    [one] La dernière
+   *[other] Les { $count } dernières, la plus récente en premier
+}
 ledger-time-hover = quand elle a eu lieu
 ledger-what = quoi
 ledger-what-hover = quels disques, ou quel disque et quel mur

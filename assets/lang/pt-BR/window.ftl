@@ -66,7 +66,7 @@ tile-glancing = Oblíqua (2D)
 tile-inelastic = Inelástica
 tile-pi-blocks = Blocos do π
 tile-gas = Um gás
-tile-free-play = Modo livre
+tile-free-play = { scene-untitled }
 tile-head-on-blurb = Dois discos se encontram numa linha. A quantidade de movimento total é a mesma depois?
 tile-glancing-blurb = Um disco bate em outro fora do centro. Para onde eles vão?
 tile-inelastic-blurb = Discos que não quicam de volta por completo. Para onde vai a energia?
@@ -204,7 +204,10 @@ ledger-wall = disco { $disc } e a parede { $wall ->
    *[top] superior
 }
 ledger-empty = Nenhuma ainda. Próxima colisão (J) roda até a próxima, entre discos ou com uma parede, e pausa no instante do impacto.
-ledger-last = As últimas { $count }, a mais recente primeiro
+ledger-last = { $count ->
+    [one] A última
+   *[other] As últimas { $count }, a mais recente primeiro
+}
 ledger-time-hover = quando aconteceu
 ledger-what = o quê
 ledger-what-hover = quais discos, ou qual disco e qual parede

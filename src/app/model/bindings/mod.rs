@@ -168,7 +168,10 @@ pub fn label(command: &Command) -> Option<String> {
 }
 
 /// Where a help line's keys have an on-screen twin: the labels of its
-/// commands' buttons (from [`LABELS`]), else the section it names.
+/// commands' buttons (from [`LABELS`]) after the section they are in
+/// ("Selected disc › Delete"), or either alone. (The button's label
+/// with its section in brackets, inside the help's own, read "(Delete
+/// (Selected disc))".)
 pub fn control_of(b: &Binding) -> Option<String> {
     let mut labels: Vec<String> = Vec::new();
     for (_, c) in b.acts {
@@ -178,7 +181,7 @@ pub fn control_of(b: &Binding) -> Option<String> {
     }
     let section = b.control.map(|id| text(id, &[]));
     match (labels.is_empty(), section) {
-        (false, Some(section)) => Some(format!("{} ({section})", labels.join(", "))),
+        (false, Some(section)) => Some(format!("{section} › {}", labels.join(", "))),
         (false, None) => Some(labels.join(", ")),
         (true, section) => section,
     }
@@ -193,6 +196,25 @@ pub fn browser_keeps(binding: &Binding) -> bool {
 mod tests {
     use super::*;
     use crate::app::model::command::{Dir, Law};
+
+    /// Where a key's button is, in every language, has no brackets of its
+    /// own: the help puts it in brackets after what the key does, and a
+    /// section in brackets within them read "(Apagar (Disco selecionado))".
+    #[test]
+    fn where_a_keys_button_is_needs_no_brackets_inside_the_helps() {
+        use crate::app::lang::{set_language, Lang};
+        let mut combined = 0;
+        for lang in Lang::SHIPPED {
+            set_language(lang);
+            for b in BINDINGS {
+                let control = control_of(b).unwrap_or_default();
+                assert!(!control.contains(['(', ')']), "{lang:?}: {control}");
+                combined += usize::from(control.contains('›'));
+            }
+        }
+        set_language(Lang::En);
+        assert!(combined > 0, "no button with its section: nothing tested");
+    }
 
     #[test]
     fn no_chord_gives_two_commands() {
