@@ -472,6 +472,9 @@ pub fn shapes_drawn(
 pub fn headless(size: egui::Vec2, mut add: impl FnMut(&mut Ui)) -> egui::FullOutput {
     let ctx = egui::Context::default();
     crate::app::look::apply(&ctx, 1.0, crate::app::look::Theme::Dark);
+    // A scroll asked for arrives at once (in three frames without a clock
+    // egui's animation moved a row).
+    ctx.style_mut(|s| s.scroll_animation = egui::style::ScrollAnimation::none());
     let mut out = None;
     for _ in 0..3 {
         out = Some(ctx.run(Default::default(), |ctx| {

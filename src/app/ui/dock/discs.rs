@@ -35,6 +35,9 @@ pub struct DiscsTable {
     /// An edit sent to the model, kept until it answers: refused, the cell
     /// stays open with its text.
     sent: Option<CellEdit>,
+    /// The disc selected when the table was last shown: a disc selected
+    /// since (in the world, by Q) is scrolled into sight.
+    seen_selection: Option<usize>,
 }
 
 /// The spin columns' headings, with units on a second line, and what they
@@ -185,6 +188,9 @@ impl View for DiscsTable {
         // hold no control Tab could reach.
         let mut reveal: Option<egui::Rect> = None;
         let mut first = FirstColumn::default();
+        // A disc picked in the world had its row highlighted out of sight.
+        let newly_selected = selected.filter(|_| selected != self.seen_selection);
+        self.seen_selection = selected;
         if sideways {
             ui.spacing_mut().scroll = sideways_bar;
         }
@@ -194,7 +200,7 @@ impl View for DiscsTable {
             .show(ui, |ui| {
                 ui.spacing_mut().scroll = scroll;
                 let mut table = TableBuilder::new(ui);
-                if let Some(disc) = answered {
+                if let Some(disc) = answered.or(newly_selected) {
                     table = table.scroll_to_row(disc, None);
                 }
                 table
@@ -425,60 +431,4 @@ impl View for DiscsTable {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::DiscsTable;
-    use crate::app::model::tests::sandbox_with;
-    use crate::app::ui::widgets::{shapes_drawn, texts_drawn};
-
-    /// The table numbers its rows from 1, as the messages, the ledger and
-    /// the column kept in sight when it scrolls do: it showed 0 and 1 where
-    /// the strip said "Disc 1: mass = 3 kg" of the first row.
-    #[test]
-    fn the_rows_are_numbered_from_one() {
-        let dir = tempfile::tempdir().unwrap();
-        let model = sandbox_with(dir.path(), "preset-1-head-on.toml", true, 0.0);
-        assert_eq!(model.world.particles.len(), 2);
-        let mut table = DiscsTable::default();
-        let texts = texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
-        let count = |number: &str| texts.iter().filter(|t| *t == number).count();
-        assert!(count("1") >= 1 && count("2") >= 1, "{texts:?}");
-        assert_eq!(count("0"), 0, "{texts:?}");
-    }
-
-    /// With the colour-blind-safe palette on, each row's dot has the
-    /// colour its disc is drawn in: the table, the ledger and the Momenta
-    /// diagram had kept the scene's colours.
-    #[test]
-    fn the_rows_dots_have_the_discs_colours_with_the_safe_palette_too() {
-        let dir = tempfile::tempdir().unwrap();
-        let mut model = sandbox_with(dir.path(), "preset-9-billiards.toml", true, 0.0);
-        let scene: Vec<_> = model.world.particles.iter().map(|p| p.color).collect();
-        let recoloured = (0..scene.len()).any(|i| impulse::Color::palette(i) != scene[i]);
-        assert!(recoloured, "the scene's colours are the palette's: no test");
-        for safe in [false, true] {
-            model.overlays.safe_palette = safe;
-            let dots: Vec<egui::Color32> = shapes_drawn(
-                &model,
-                egui::vec2(900.0, 2000.0),
-                &mut DiscsTable::default(),
-            )
-            .into_iter()
-            .filter_map(|shape| match shape {
-                egui::Shape::Circle(c) if c.radius == 7.0 => Some(c.fill),
-                _ => None,
-            })
-            .collect();
-            assert!(dots.len() >= 3, "{} dots", dots.len());
-            for (i, fill) in dots.iter().enumerate() {
-                let c = model.overlays.disc_color(&model.world, i);
-                assert_eq!(*fill, egui::Color32::from_rgb(c.r, c.g, c.b), "disc {i}");
-                let expected = if safe {
-                    impulse::Color::palette(i)
-                } else {
-                    scene[i]
-                };
-                assert_eq!(c, expected, "disc {i}, safe palette {safe}");
-            }
-        }
-    }
-}
+mod tests;
