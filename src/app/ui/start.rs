@@ -52,7 +52,11 @@ impl StartScreen {
                     });
                     ui.add_space(8.0);
                 }
-                ui.label(tr!("start-footer"));
+                // The footer ends where the tiles do (its words ran up to the
+                // bar).
+                ui.allocate_ui(egui::vec2(room - 16.0, 0.0), |ui| {
+                    ui.add(egui::Label::new(tr!("start-footer")).wrap());
+                });
                 ui.add_space(8.0);
                 super::side::files::language(ui, cx);
             });
