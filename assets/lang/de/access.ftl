@@ -6,18 +6,18 @@ launched-at-centre = Scheibe { $disc } ruht in der Mitte: Bei angehaltener Simul
 
 ## Der Weg über die Tastatur (Zeilen der Hilfe)
 keys-focus = Tab / Umschalt+Tab
-help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler, wählen in einer Auswahlliste oder rollen eine Liste (auch Bild auf, Bild ab, Pos1 und Ende); Esc oder ein Klick in die Welt gibt die Tasten an die Welt zurück
+help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler, wählen in einer Auswahlliste oder rollen eine Liste (auch Bild auf, Bild ab, Pos1 und Ende); Esc oder ein Klick in die Welt schaltet die Tastenkürzel wieder ein
 keys-aim-keys = Pfeiltasten, angehalten, mit gewählter Scheibe
 help-aim-keys = sie ausrichten: ihre Geschwindigkeit ±0,1 m/s pro Tastendruck (Umschalt: ±1 m/s)
 keys-select-next = Q / Umschalt+Q
 help-select-next = die nächste / die vorige Scheibe auswählen
 keys-launch-centre = Enter
 help-launch-centre = eine neue, ruhende Scheibe in der Mitte der Ansicht, gleich ausgewählt
-keys-in-panels = Die Tasten wirken auf die Bedienelemente: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
-keys-in-panels-short = Esc: Tasten zurück an die Welt
-keys-tab-edge = Reiterhöhe: Pfeile eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die eigene. Esc: Tasten an die Welt.
+keys-in-panels = Die Tasten bedienen jetzt die Bedienelemente: Esc oder ein Klick in die Welt schaltet die Tastenkürzel wieder ein.
+keys-in-panels-short = Esc: Tastenkürzel wieder an
+keys-tab-edge = Reiterhöhe: Pfeile eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die eigene. Esc: Tastenkürzel wieder an.
 keys-tab-edge-short = Pfeile, Pos1, Ende: Reiterhöhe
-keys-after-field = Leertaste, N und J wirken auf die Simulation; die anderen Tasten warten: Esc oder ein Klick in die Welt gibt sie an die Welt zurück.
+keys-after-field = Leertaste, N und J wirken auf die Simulation; die anderen Tastenkürzel warten: Esc oder ein Klick in die Welt schaltet sie wieder ein.
 
 ## Ton
 keys-sound = F8

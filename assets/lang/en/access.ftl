@@ -6,18 +6,18 @@ launched-at-centre = Disc { $disc } at rest at the centre: with the simulation p
 
 ## The keyboard path (lines of the help)
 keys-focus = Tab / Shift+Tab
-help-focus = move through the controls, in reading order; Space or Enter presses one, the arrow keys move a slider, step through a drop-down's choices or scroll a list (Page Up, Page Down, Home and End too); Esc or a click in the world gives the keys back to the world
+help-focus = move through the controls, in reading order; Space or Enter presses one, the arrow keys move a slider, step through a drop-down's choices or scroll a list (Page Up, Page Down, Home and End too); Esc or a click in the world makes the shortcut keys work again
 keys-aim-keys = Arrow keys, paused, with a disc selected
 help-aim-keys = aim it: its velocity ±0.1 m/s a press (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q
 help-select-next = select the next / the previous disc
 keys-launch-centre = Enter
 help-launch-centre = a new disc at rest at the centre of the view, selected
-keys-in-panels = The keys act on the controls: Esc or a click in the world gives them back to the world.
-keys-in-panels-short = Esc: the keys back to the world
-keys-tab-edge = Tab height: arrows a row, Home tallest, End shortest, Enter its own. Esc: keys back to the world.
+keys-in-panels = The keys work the controls now: Esc or a click in the world makes the shortcut keys work again.
+keys-in-panels-short = Esc: shortcut keys again
+keys-tab-edge = Tab height: arrows a row, Home tallest, End shortest, Enter its own. Esc: shortcut keys again.
 keys-tab-edge-short = Arrows, Home, End: tab height
-keys-after-field = Space, N and J act on the simulation; the other keys wait: Esc or a click in the world gives them back to the world.
+keys-after-field = Space, N and J act on the simulation; the other shortcut keys wait: Esc or a click in the world makes them work again.
 
 ## Sound
 keys-sound = F8

@@ -6,18 +6,18 @@ launched-at-centre = Disco { $disc } en reposo en el centro: con la simulación 
 
 ## El recorrido con el teclado (líneas de la ayuda)
 keys-focus = Tab / Mayús+Tab
-help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador, eligen en una lista desplegable o desplazan una lista (también Re Pág, Av Pág, Inicio y Fin); Esc o un clic en el mundo devuelven las teclas al mundo
+help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador, eligen en una lista desplegable o desplazan una lista (también Re Pág, Av Pág, Inicio y Fin); Esc o un clic en el mundo reactivan los atajos de teclado
 keys-aim-keys = Flechas, en pausa, con un disco seleccionado
 help-aim-keys = fijar su velocidad: ±0,1 m/s por pulsación (Mayús: ±1 m/s)
 keys-select-next = Q / Mayús+Q
 help-select-next = seleccionar el disco siguiente / el anterior
 keys-launch-centre = Intro
 help-launch-centre = un disco nuevo en reposo en el centro de la vista, ya seleccionado
-keys-in-panels = Las teclas actúan sobre los controles: Esc o un clic en el mundo las devuelven al mundo.
-keys-in-panels-short = Esc: las teclas vuelven al mundo
-keys-tab-edge = Altura: flechas una fila, Inicio la más alta, Fin la más baja, Intro la suya. Esc: teclas al mundo.
+keys-in-panels = Las teclas manejan ahora los controles: Esc o un clic en el mundo reactivan los atajos de teclado.
+keys-in-panels-short = Esc: reactivar los atajos
+keys-tab-edge = Altura: flechas una fila, Inicio la más alta, Fin la más baja, Intro la suya. Esc: reactivar los atajos.
 keys-tab-edge-short = Flechas, Inicio, Fin: altura
-keys-after-field = Espacio, N y J actúan sobre la simulación; las demás teclas esperan: Esc o un clic en el mundo las devuelven al mundo.
+keys-after-field = Espacio, N y J actúan sobre la simulación; los demás atajos esperan: Esc o un clic en el mundo los reactivan.
 
 ## Sonido
 keys-sound = F8

@@ -6,18 +6,18 @@ launched-at-centre = Disque { $disc } au repos au centre : simulation en pause, 
 
 ## Le parcours au clavier (lignes de l'aide)
 keys-focus = Tab / Maj+Tab
-help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage, choisissent dans une liste déroulante ou font défiler une liste (Page préc., Page suiv., Début et Fin aussi) ; Échap ou un clic dans la simulation rend les touches à la simulation
+help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage, choisissent dans une liste déroulante ou font défiler une liste (Page préc., Page suiv., Début et Fin aussi) ; Échap ou un clic dans la simulation réactive les raccourcis clavier
 keys-aim-keys = Touches fléchées, en pause, avec un disque sélectionné
 help-aim-keys = régler sa vitesse : ±0,1 m/s par appui (Maj : ±1 m/s)
 keys-select-next = Q / Maj+Q
 help-select-next = sélectionner le disque suivant / précédent
 keys-launch-centre = Entrée
 help-launch-centre = un nouveau disque au repos au centre de la vue, sélectionné
-keys-in-panels = Les touches agissent sur les commandes : Échap ou un clic dans la simulation les rend à la simulation.
-keys-in-panels-short = Échap : touches à la simulation
-keys-tab-edge = Hauteur : flèches une ligne, Début le plus haut, Fin le plus bas, Entrée la sienne. Échap : touches à la simulation.
+keys-in-panels = Les touches agissent maintenant sur les commandes : Échap ou un clic dans la simulation réactive les raccourcis clavier.
+keys-in-panels-short = Échap : réactiver les raccourcis
+keys-tab-edge = Hauteur : flèches une ligne, Début le plus haut, Fin le plus bas, Entrée la sienne. Échap : réactiver les raccourcis.
 keys-tab-edge-short = Flèches, Début, Fin : hauteur
-keys-after-field = Espace, N et J agissent sur la simulation ; les autres touches attendent : Échap ou un clic dans la simulation les rend à la simulation.
+keys-after-field = Espace, N et J agissent sur la simulation ; les autres raccourcis attendent : Échap ou un clic dans la simulation les réactive.
 
 ## Le son
 keys-sound = F8

@@ -6,18 +6,18 @@ launched-at-centre = Disco { $disc } em repouso no centro: com a simulação pau
 
 ## O caminho pelo teclado (linhas da ajuda)
 keys-focus = Tab / Shift+Tab
-help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante, escolhem numa lista suspensa ou rolam uma lista (também Page Up, Page Down, Home e End); Esc ou um clique no mundo devolve as teclas ao mundo
+help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante, escolhem numa lista suspensa ou rolam uma lista (também Page Up, Page Down, Home e End); Esc ou um clique no mundo reativa os atalhos de teclado
 keys-aim-keys = Teclas de seta, em pausa, com um disco selecionado
 help-aim-keys = mira o disco: a velocidade dele ±0,1 m/s a cada toque (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q
 help-select-next = seleciona o disco seguinte / o anterior
 keys-launch-centre = Enter
 help-launch-centre = um disco novo em repouso no centro da vista, já selecionado
-keys-in-panels = As teclas agem nos controles: Esc ou um clique no mundo as devolve ao mundo.
-keys-in-panels-short = Esc: as teclas voltam ao mundo
-keys-tab-edge = Altura da aba: setas uma linha, Home a mais alta, End a mais baixa, Enter a dela. Esc: teclas ao mundo.
+keys-in-panels = As teclas agora agem nos controles: Esc ou um clique no mundo reativa os atalhos de teclado.
+keys-in-panels-short = Esc: reativar os atalhos
+keys-tab-edge = Altura da aba: setas uma linha, Home a mais alta, End a mais baixa, Enter a dela. Esc: reativar os atalhos.
 keys-tab-edge-short = Setas, Home, End: altura da aba
-keys-after-field = Espaço, N e J agem na simulação; as outras teclas esperam: Esc ou um clique no mundo as devolve ao mundo.
+keys-after-field = Espaço, N e J agem na simulação; os outros atalhos esperam: Esc ou um clique no mundo os reativa.
 
 ## Som
 keys-sound = F8
