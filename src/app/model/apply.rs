@@ -423,7 +423,11 @@ impl Sandbox {
 
     /// Says which scene opened; over one `left` with changes, also which
     /// key brings it back (a digit key pressed when a click meant for a
-    /// field missed it replaces the lesson at once).
+    /// field missed it replaces the lesson at once). A scene with a caption
+    /// (a lesson) is named only to a screen reader and in *In words*: the
+    /// caption strip is the caption's at once ("Opened Head-on, equal
+    /// masses" had held it through the first seconds, before the hit it
+    /// tells a class to watch for), and the top bar has the name.
     pub(super) fn say_opened(&mut self, name: String, left: Option<String>) {
         match left {
             Some(previous) => {
@@ -437,6 +441,9 @@ impl Sandbox {
                     undo = undo
                 );
                 self.toast_for(said, 8.0);
+            }
+            None if self.scene_description().is_some() => {
+                self.announce(tr!("scene-opened", name = name));
             }
             None => self.toast(tr!("scene-opened", name = name)),
         }

@@ -448,7 +448,8 @@ mod tests {
 
     /// A preset opened over changed work (a digit key pressed when a click
     /// meant for a field missed it) says the undo that brings it back, and
-    /// that undo does; over a scene only opened, it just says what opened.
+    /// that undo does; over a scene only opened, it just says what opened
+    /// (to a screen reader only: a lesson's caption takes the strip).
     #[test]
     fn another_scene_opened_over_changes_says_how_to_get_them_back() {
         use crate::app::model::command::Law;
@@ -462,7 +463,15 @@ mod tests {
         let (head_on, heavy) = (preset("1-head-on.toml"), preset("2-heavy-hits-light.toml"));
         let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
         s.apply(heavy.clone());
-        assert_eq!(s.message(), Some("Opened Heavy hits light"));
+        // A lesson: its caption in the strip at once, its name said.
+        assert_eq!(s.message(), None);
+        let said = s
+            .messages
+            .narration
+            .said
+            .back()
+            .map(|(_, line)| line.as_str());
+        assert_eq!(said, Some("Opened Heavy hits light"));
         s.apply(head_on);
         s.apply(Command::SetLaw(Law::Restitution, 0.3));
         s.session.now += 2.0;
