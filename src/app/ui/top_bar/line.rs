@@ -146,8 +146,17 @@ impl TopBar {
         // (the π blocks' count at a projector's size), they take their
         // short forms: the state its sign, its word on hover.
         let name_room = ui.available_width() - width - spacing - fixed - more_width;
+        // A name shorter than that needs only its own width: "Choque
+        // oblicuo" left room for "PAUSADO", which had taken its sign.
+        let name_width = essential.first().map_or(0.0, |name| {
+            let end = name
+                .kept_end
+                .as_ref()
+                .map_or(0.0, |[whole, _]| galley(ui, whole).size().x);
+            galley(ui, &name.text).size().x + end
+        });
         let mut essential = essential;
-        if name_room < NAME_AT_LEAST {
+        if name_room < NAME_AT_LEAST.min(name_width) {
             essential = essential.into_iter().map(Item::shortened).collect();
             fixed = fixed_of(&essential);
         }
