@@ -99,9 +99,17 @@ impl BottomDock {
             strip.spacing().item_spacing.x,
             strip.spacing().button_padding.x,
         );
+        // Only as close as the row needs: closed up all the way at once, a
+        // Spanish row with room to spare at its end had its chosen tab's
+        // box touching the next name.
         if wanted_at(&strip, spacing, 2.0 * padding) > row_rect.width() {
-            strip.spacing_mut().item_spacing.x = 0.4 * spacing;
-            strip.spacing_mut().button_padding.x = 0.5 * padding;
+            let closer = [0.8f32, 0.6, 0.4].into_iter().find(|&f| {
+                let (s, p) = (f * spacing, (0.5 + 0.5 * f) * padding);
+                wanted_at(&strip, s, 2.0 * p) <= row_rect.width()
+            });
+            let f = closer.unwrap_or(0.4);
+            strip.spacing_mut().item_spacing.x = f * spacing;
+            strip.spacing_mut().button_padding.x = (0.5 + 0.5 * f) * padding;
         }
         let wanted = wanted_at(
             &strip,
