@@ -143,6 +143,7 @@ wall-name = { $wall ->
 edit-type-a-number = { $name }: eine Zahl eingeben
 edit-not-a-number = { $name }: „{ $text }“ ist keine Zahl
 edit-not-finite = { $name } muss eine endliche Zahl sein
+edit-speed-negative = Das Tempo kann nicht negativ sein: gib stattdessen die Gegenrichtung ein
 edit-not-positive = { $name } muss größer als 0 sein
 edit-radius-too-large = Der Radius darf hier höchstens { $radius } m betragen
 edit-out-of-range = { $name } muss zwischen { $lo } und { $hi } liegen

@@ -52,6 +52,9 @@ quantity-mass = Masse
 quantity-radius = Radius
 quantity-vx = v_x
 quantity-vy = v_y
+quantity-speed = Tempo |v|
+quantity-direction = Richtung
+direction-hover = Grad ab rechts, gegen den Uhrzeigersinn: 0 rechts, 90 oben, 180 links, −90 unten
 
 ## Die Reiter der unteren Leiste
 tab-totals = Bilanz

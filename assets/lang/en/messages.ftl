@@ -143,6 +143,7 @@ wall-name = { $wall ->
 edit-type-a-number = { $name }: type a number
 edit-not-a-number = { $name }: “{ $text }” is not a number
 edit-not-finite = { $name } must be a finite number
+edit-speed-negative = The speed cannot be negative: type the opposite direction instead
 edit-not-positive = { $name } must be more than 0
 edit-radius-too-large = radius must be at most { $radius } m here
 edit-out-of-range = { $name } must be between { $lo } and { $hi }

@@ -52,6 +52,9 @@ quantity-mass = mass
 quantity-radius = radius
 quantity-vx = v_x
 quantity-vy = v_y
+quantity-speed = speed |v|
+quantity-direction = direction
+direction-hover = Degrees from the right, turning anticlockwise: 0 right, 90 up, 180 left, −90 down
 
 ## The bottom dock's tabs
 tab-totals = Totals

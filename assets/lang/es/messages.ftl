@@ -143,6 +143,7 @@ wall-name = { $wall ->
 edit-type-a-number = { $name }: escribe un número
 edit-not-a-number = { $name }: “{ $text }” no es un número
 edit-not-finite = { $name }: debe ser un número finito
+edit-speed-negative = La rapidez no puede ser negativa: escribe la dirección contraria
 edit-not-positive = { $name }: debe ser mayor que 0
 edit-radius-too-large = aquí el radio debe ser como máximo { $radius } m
 edit-out-of-range = { $name }: debe estar entre { $lo } y { $hi }

@@ -52,6 +52,9 @@ quantity-mass = masa
 quantity-radius = radio
 quantity-vx = v_x
 quantity-vy = v_y
+quantity-speed = rapidez |v|
+quantity-direction = dirección
+direction-hover = Grados desde la derecha, en sentido antihorario: 0 derecha, 90 arriba, 180 izquierda, −90 abajo
 
 ## Las pestañas del panel inferior
 tab-totals = Totales

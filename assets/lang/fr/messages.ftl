@@ -143,6 +143,7 @@ wall-name = { $wall ->
 edit-type-a-number = { $name } : tapez un nombre
 edit-not-a-number = { $name } : « { $text } » n'est pas un nombre
 edit-not-finite = { $name } : il faut un nombre fini
+edit-speed-negative = La vitesse ne peut pas être négative : tapez plutôt la direction opposée
 edit-not-positive = { $name } : il faut une valeur supérieure à 0
 edit-radius-too-large = le rayon ne peut pas dépasser { $radius } m ici
 edit-out-of-range = { $name } : il faut une valeur entre { $lo } et { $hi }

@@ -52,6 +52,9 @@ quantity-mass = masse
 quantity-radius = rayon
 quantity-vx = v_x
 quantity-vy = v_y
+quantity-speed = vitesse |v|
+quantity-direction = direction
+direction-hover = Degrés depuis la droite, dans le sens antihoraire : 0 à droite, 90 en haut, 180 à gauche, −90 en bas
 
 ## Les onglets du panneau du bas
 tab-totals = Totaux

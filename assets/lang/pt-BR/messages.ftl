@@ -143,6 +143,7 @@ wall-name = { $wall ->
 edit-type-a-number = { $name }: digite um número
 edit-not-a-number = { $name }: “{ $text }” não é um número
 edit-not-finite = { $name } precisa ser um número finito
+edit-speed-negative = A rapidez não pode ser negativa: digite a direção oposta
 edit-not-positive = { $name } precisa ser maior que 0
 edit-radius-too-large = o raio pode ser no máximo { $radius } m aqui
 edit-out-of-range = { $name } precisa estar entre { $lo } e { $hi }

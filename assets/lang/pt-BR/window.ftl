@@ -52,6 +52,9 @@ quantity-mass = massa
 quantity-radius = raio
 quantity-vx = v_x
 quantity-vy = v_y
+quantity-speed = rapidez |v|
+quantity-direction = direção
+direction-hover = Graus a partir da direita, no sentido anti-horário: 0 direita, 90 para cima, 180 esquerda, −90 para baixo
 
 ## As abas do painel de baixo
 tab-totals = Totais

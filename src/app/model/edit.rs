@@ -6,6 +6,7 @@ use super::command::EditPlace;
 use super::{Note, Sandbox};
 use crate::app::lang::{text as words, tr};
 use crate::app::numbers::{disc_number, field, plain};
+use glam::DVec2;
 use impulse::scene::limits;
 use impulse::Particle;
 
@@ -87,6 +88,48 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
         vx: values[2],
         vy: values[3],
     })
+}
+
+/// A velocity from a speed and a direction typed into the *Selected disc*
+/// fields (`None`: untouched), the other taken from `current`: the
+/// direction in degrees counter-clockwise from the right (90 is up). A
+/// student thinks "3 m/s at 30°" more than "v_x 2.598, v_y 1.5".
+/// `Ok(None)` where neither was typed.
+pub fn polar_velocity(
+    speed: Option<&str>,
+    direction: Option<&str>,
+    current: DVec2,
+) -> Result<Option<DVec2>, String> {
+    if speed.is_none() && direction.is_none() {
+        return Ok(None);
+    }
+    let read = |text: &str, id: &str| -> Result<f64, String> {
+        let name = words(id, &[]);
+        let text = text.trim();
+        if text.is_empty() {
+            return Err(tr!("edit-type-a-number", name = name));
+        }
+        let v = crate::app::numbers::parse(text)
+            .ok_or_else(|| tr!("edit-not-a-number", name = name.as_str(), text = text))?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(tr!("edit-not-finite", name = name))
+        }
+    };
+    let speed = match speed {
+        Some(text) => read(text, "quantity-speed")?,
+        None => current.length(),
+    };
+    if speed < 0.0 {
+        return Err(tr!("edit-speed-negative"));
+    }
+    let degrees = match direction {
+        Some(text) => read(text, "quantity-direction")?,
+        None => current.y.atan2(current.x).to_degrees(),
+    };
+    let (sin, cos) = degrees.to_radians().sin_cos();
+    Ok(Some(DVec2::new(speed * cos, speed * sin)))
 }
 
 impl Sandbox {
@@ -206,284 +249,4 @@ impl Sandbox {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::app::model::command::{Command, EditPlace};
-    use crate::app::model::tests::sandbox_in;
-    use glam::DVec2;
-    use impulse::Color as DiscColor;
-    use impulse::Scene;
-
-    #[test]
-    fn edits_parse_only_what_changed_and_refuse_bad_numbers() {
-        let edit = parse_disc_edit([Some("2.5"), None, Some(" -1e-3 "), None], 4.0).unwrap();
-        assert_eq!(
-            edit,
-            DiscEdit {
-                mass: Some(2.5),
-                radius: None,
-                vx: Some(-1e-3),
-                vy: None
-            }
-        );
-        assert!(parse_disc_edit([None; 4], 4.0).unwrap().is_empty());
-        let error = |fields| parse_disc_edit(fields, 4.0).unwrap_err();
-        assert_eq!(
-            error([Some("abc"), None, None, None]),
-            "mass: “abc” is not a number"
-        );
-        assert_eq!(
-            error([Some("0"), None, None, None]),
-            "mass must be more than 0"
-        );
-        assert_eq!(
-            error([None, Some("-1"), None, None]),
-            "radius must be more than 0"
-        );
-        assert_eq!(
-            error([None, Some("5"), None, None]),
-            "radius must be at most 4 m here"
-        );
-        assert_eq!(
-            error([None, None, Some("inf"), None]),
-            "v_x must be a finite number"
-        );
-        assert_eq!(
-            error([None, None, None, Some("1e999")]),
-            "v_y must be a finite number"
-        );
-        assert_eq!(
-            error([None, None, None, Some("NaN")]),
-            "v_y must be a finite number"
-        );
-        assert_eq!(error([None, None, Some("  "), None]), "v_x: type a number");
-        assert_eq!(
-            parse_disc_edit([None, Some("1,5"), None, None], 4.0)
-                .unwrap()
-                .radius,
-            Some(1.5),
-            "a decimal comma"
-        );
-        assert_eq!(
-            error([None, Some("1,5.2"), None, None]),
-            "radius: “1,5.2” is not a number"
-        );
-        assert_eq!(
-            parse_disc_edit([None, None, Some("−2"), None], 4.0)
-                .unwrap()
-                .vx,
-            Some(-2.0),
-            "a typographic minus"
-        );
-    }
-
-    #[test]
-    fn an_edit_changes_only_its_quantities() {
-        let mut p = Particle::new(
-            DVec2::new(1.0, 2.0),
-            DVec2::new(3.0, 4.0),
-            1.0,
-            0.5,
-            DiscColor::rgb(1, 2, 3),
-        );
-        DiscEdit {
-            radius: Some(0.25),
-            vy: Some(-1.0),
-            ..DiscEdit::default()
-        }
-        .apply(&mut p);
-        assert_eq!(
-            (p.mass, p.radius, p.vel),
-            (1.0, 0.25, DVec2::new(3.0, -1.0))
-        );
-        assert_eq!(p.pos, DVec2::new(1.0, 2.0));
-    }
-
-    /// What the Discs table takes, a scene file takes: every edit it accepts
-    /// leaves a scene that saves and opens again; numbers past a scene file's
-    /// ranges are refused, saying the range. Each answer is in the strip too.
-    #[test]
-    fn an_edit_the_table_takes_saves_a_scene_that_opens_again() {
-        let dir = tempfile::tempdir().unwrap();
-        for file in ["preset-4-glancing.toml", "preset-1-head-on.toml"] {
-            let mut s = sandbox_in(dir.path(), file);
-            let edit = |s: &mut Sandbox, k: usize, text: &str| {
-                let mut fields: [Option<String>; 4] = Default::default();
-                fields[k] = Some(text.into());
-                s.apply(Command::EditDisc {
-                    disc: 0,
-                    text: fields,
-                    from: EditPlace::Table,
-                });
-                let note = s.messages.table.clone().unwrap();
-                // Also in the strip, where a projector's short tab has it.
-                assert_eq!(s.message(), Some(note.text.as_str()));
-                note
-            };
-            for (k, text, range) in [
-                (0, "1e13", "10¹² kg"),
-                (0, "1e-13", "10⁻¹² kg"),
-                (1, "1e10", "10⁹ m"),
-                (2, "-2e8", "10⁸ m/s"),
-                (3, "1e300", "10⁸ m/s"),
-            ] {
-                let before = s.fingerprint();
-                let note = edit(&mut s, k, text);
-                assert!(
-                    note.error && note.text.contains(range),
-                    "{file} {text}: {note:?}"
-                );
-                assert_eq!(s.fingerprint(), before, "{file} {text}");
-            }
-            // Each component inside its range, the speed past it.
-            edit(&mut s, 2, "9e7");
-            let note = edit(&mut s, 3, "9e7");
-            assert!(
-                note.error && note.text.contains("10⁸ m/s"),
-                "{file}: {note:?}"
-            );
-            for (k, text) in [(0, "1e12"), (3, "1"), (2, "-3e7"), (0, "2e-12"), (3, "0")] {
-                let note = edit(&mut s, k, text);
-                if file.contains("head-on") && text == "1" {
-                    assert!(note.error && note.text.contains("one line"), "{note:?}");
-                }
-                let saved = s.current_scene().to_toml();
-                let reopened =
-                    Scene::parse(&saved, "saved.toml").and_then(|sc| sc.build("saved.toml"));
-                assert!(
-                    note.error || reopened.is_ok(),
-                    "{file}: {text} taken ({note:?}), but the saved scene does not open: {:?}",
-                    reopened.err()
-                );
-            }
-        }
-    }
-
-    /// The caption ("the moving disc stops dead") is voided by a change to
-    /// the discs or to a law they obey, not by the method; undo takes the
-    /// change back with the note that reported it.
-    #[test]
-    fn a_law_changed_voids_the_caption_and_undo_takes_edits_with_their_notes() {
-        use crate::app::model::command::Law;
-        use crate::app::model::tests::later;
-        use impulse::method::{Method, Setting};
-        let dir = tempfile::tempdir().unwrap();
-        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
-        s.apply(Command::SetMethod(Setting::Fixed(Method::Verlet)));
-        assert!(!s.open.edited, "the method keeps the caption");
-        later(&mut s, 1.0);
-        s.apply(Command::SetLaw(Law::Restitution, 0.5));
-        assert!(
-            s.open.edited,
-            "at e = 0.5 the moving disc does not stop dead"
-        );
-        later(&mut s, 1.0);
-        s.apply(Command::Undo);
-        assert!(!s.open.edited && s.world.laws.restitution == 1.0);
-        later(&mut s, 1.0);
-        s.apply(Command::ToggleGravity);
-        assert!(s.open.edited, "under gravity the momentum does not stay");
-        later(&mut s, 1.0);
-        s.apply(Command::Undo);
-        for from in [EditPlace::Table, EditPlace::Fields] {
-            later(&mut s, 1.0);
-            s.apply(Command::EditDisc {
-                disc: 0,
-                text: [Some("2.5".into()), None, None, None],
-                from,
-            });
-            assert!(s.messages.table.is_some() || s.messages.fields.is_some());
-            later(&mut s, 1.0);
-            s.apply(Command::Undo);
-            assert_eq!(s.world.particles[0].mass, 1.0);
-            assert_eq!(
-                (&s.messages.table, &s.messages.fields),
-                (&None, &None),
-                "{from:?}: the note went with the edit"
-            );
-        }
-    }
-
-    /// "What if e = 0.3?" tried after J and undone: the plot and the rewind
-    /// keep the way to the impact (an undo cleared both).
-    #[test]
-    fn an_edit_undone_keeps_the_plot_and_the_rewind_of_the_run_so_far() {
-        use crate::app::model::command::Law;
-        use crate::app::model::tests::later;
-        let dir = tempfile::tempdir().unwrap();
-        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
-        s.apply(Command::NextCollision);
-        let hit = s.world.time;
-        let (samples, snapshots) = (s.record.totals.samples().count(), s.record.history.len());
-        assert!(samples > 100 && snapshots > 100, "{samples} {snapshots}");
-        later(&mut s, 1.0);
-        s.apply(Command::SetLaw(Law::Restitution, 0.3));
-        later(&mut s, 1.0);
-        s.apply(Command::Undo);
-        assert_eq!(s.world.laws.restitution, 1.0);
-        assert_eq!(s.world.time, hit);
-        assert!(s.record.totals.samples().count() >= samples - 1);
-        assert!(s.record.history.len() >= snapshots - 1);
-        s.apply(Command::Scrub(-1));
-        assert!(
-            s.world.time < hit && s.world.time > hit - 0.1,
-            "one step back from {hit} is {}",
-            s.world.time
-        );
-        // Across a reset or another scene, the past starts afresh: what was
-        // recorded since belongs to another run.
-        for change in [Command::Reset, Command::OpenPreset(0)] {
-            later(&mut s, 1.0);
-            s.apply(change);
-            for _ in 0..30 {
-                later(&mut s, 1.0 / 60.0);
-                s.apply(Command::Step);
-                s.tick(1.0 / 60.0, 1.0);
-            }
-            later(&mut s, 1.0);
-            s.apply(Command::Undo);
-            assert!(s.record.history.len() <= 1, "{}", s.record.history.len());
-        }
-    }
-
-    /// A preset opened over changed work (a digit key pressed when a click
-    /// meant for a field missed it) says the undo that brings it back, and
-    /// that undo does; over a scene only opened, it just says what opened
-    /// (to a screen reader only: a lesson's caption takes the strip).
-    #[test]
-    fn another_scene_opened_over_changes_says_how_to_get_them_back() {
-        use crate::app::model::command::Law;
-        let dir = tempfile::tempdir().unwrap();
-        let preset = |file: &str| {
-            let k = crate::app::model::scenes::PRESETS
-                .iter()
-                .position(|p| p.path.ends_with(file));
-            Command::OpenPreset(k.unwrap())
-        };
-        let (head_on, heavy) = (preset("1-head-on.toml"), preset("2-heavy-hits-light.toml"));
-        let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
-        s.apply(heavy.clone());
-        // A lesson: its caption in the strip at once, its name said.
-        assert_eq!(s.message(), None);
-        let said = s
-            .messages
-            .narration
-            .said
-            .back()
-            .map(|(_, line)| line.as_str());
-        assert_eq!(said, Some("Opened Heavy hits light"));
-        s.apply(head_on);
-        s.apply(Command::SetLaw(Law::Restitution, 0.3));
-        s.session.now += 2.0;
-        s.apply(heavy);
-        assert_eq!(
-            s.message(),
-            Some(
-                "Opened Heavy hits light. Ctrl+Z brings back Head-on, equal masses as you left it"
-            )
-        );
-        s.apply(Command::Undo);
-        assert_eq!(s.world.laws.restitution, 0.3);
-        assert!(s.open.origin.contains("head-on"), "{}", s.open.origin);
-    }
-}
+mod tests;

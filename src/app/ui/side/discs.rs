@@ -1,13 +1,14 @@
 //! *New discs* (radius and mass of the next launch, or radius from mass)
-//! and *Selected disc* (its mass, radius and velocity as text fields that
-//! follow the disc until typed in; Apply or Enter sends the edit).
+//! and *Selected disc* (its mass, radius and velocity, as v_x and v_y and as
+//! speed and direction, in text fields that follow the disc until typed in;
+//! Apply or Enter sends the edit).
 
 use super::super::widgets::{command_button, select_all_on_focus, show_note, slider, Reading};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::bindings::tooltip;
 use crate::app::model::command::{Dir, EditPlace};
-use crate::app::model::edit::FIELDS;
+use crate::app::model::edit::{polar_velocity, FIELDS};
 use crate::app::model::gesture::radius_for_mass;
 use crate::app::model::Command;
 use crate::app::numbers::{field, with_unit};
@@ -20,18 +21,37 @@ pub struct DiscFields {
     /// Which disc they were filled from.
     disc: Option<usize>,
     /// What the fields hold.
-    text: [String; 4],
+    text: [String; 6],
     /// What the disc had when a field was last filled: a field whose text
     /// differs has been edited and stops following the disc.
-    shown: [String; 4],
+    shown: [String; 6],
     /// An edit was sent: once the model has answered, fields that it
     /// took follow the disc again.
     sent: bool,
+    /// Why the speed and direction typed could not be read.
+    polar_error: Option<String>,
 }
 
+/// Each field's name (a message of `window.ftl`): the model's four, then
+/// the speed and the direction, which are sent as v_x and v_y.
+const FIELD_NAMES: [&str; 6] = [
+    FIELDS[0],
+    FIELDS[1],
+    FIELDS[2],
+    FIELDS[3],
+    "quantity-speed",
+    "quantity-direction",
+];
 /// Each field's unit, after its name.
-const FIELD_UNITS: [&str; 4] = ["kg", "m", "m/s", "m/s"];
-const FIELD_KEYS: [&str; 4] = ["disc_mass", "disc_radius", "disc_vx", "disc_vy"];
+const FIELD_UNITS: [&str; 6] = ["kg", "m", "m/s", "m/s", "m/s", "°"];
+const FIELD_KEYS: [&str; 6] = [
+    "disc_mass",
+    "disc_radius",
+    "disc_vx",
+    "disc_vy",
+    "disc_speed",
+    "disc_direction",
+];
 
 /// Radius and mass of the next disc launched.
 pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
@@ -107,7 +127,16 @@ impl DiscFields {
             self.shown = self.text.clone();
         }
         // Untouched fields follow the disc as it moves.
-        let live = [p.mass, p.radius, p.vel.x, p.vel.y].map(field);
+        let direction = p.vel.y.atan2(p.vel.x).to_degrees();
+        let live = [
+            p.mass,
+            p.radius,
+            p.vel.x,
+            p.vel.y,
+            p.vel.length(),
+            direction,
+        ]
+        .map(field);
         for (k, value) in live.into_iter().enumerate() {
             if self.text[k] == self.shown[k] {
                 self.text[k] = value.clone();
@@ -118,7 +147,7 @@ impl DiscFields {
         egui::Grid::new("selected_fields")
             .num_columns(2)
             .show(ui, |ui| {
-                for k in 0..4 {
+                for k in 0..FIELD_NAMES.len() {
                     let r =
                         ui.add(egui::TextEdit::singleline(&mut self.text[k]).desired_width(100.0));
                     select_all_on_focus(ui, &r, &self.text[k]);
@@ -127,8 +156,11 @@ impl DiscFields {
                     if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                         enter = true;
                     }
-                    let name = crate::app::lang::text(FIELDS[k], &[]);
-                    ui.label(format!("{name} ({})", FIELD_UNITS[k]));
+                    let name = crate::app::lang::text(FIELD_NAMES[k], &[]);
+                    let label = ui.label(format!("{name} ({})", FIELD_UNITS[k]));
+                    if k == 5 {
+                        label.tip(tr!("direction-hover"));
+                    }
                     ui.end_row();
                 }
             });
@@ -140,16 +172,36 @@ impl DiscFields {
             }
             command_button(ui, cx, Command::DeleteSelected, Some("delete"));
         });
-        if let Some(note) = &cx.model.messages.fields {
+        if let Some(error) = &self.polar_error {
+            show_note(ui, &crate::app::model::Note::error(error.clone()));
+        } else if let Some(note) = &cx.model.messages.fields {
             show_note(ui, note);
         }
     }
 
     /// Sends the edited fields as an edit of disc `i`; the model reads
     /// them and answers under the fields.
+    /// A speed or direction typed is sent as v_x and v_y (to a
+    /// picometre per second, so that 90° has no v_x of 6·10⁻¹⁷); one that
+    /// cannot be read is said under the fields, and nothing is sent.
     fn apply(&mut self, cx: &mut Cx, i: usize) {
-        let text: [Option<String>; 4] =
-            std::array::from_fn(|k| (self.text[k] != self.shown[k]).then(|| self.text[k].clone()));
+        let edited = |k: usize| (self.text[k] != self.shown[k]).then(|| self.text[k].clone());
+        let mut text: [Option<String>; 4] = std::array::from_fn(edited);
+        let (speed, direction) = (edited(4), edited(5));
+        let current = cx.model.world.particles[i].vel;
+        match polar_velocity(speed.as_deref(), direction.as_deref(), current) {
+            Ok(Some(v)) => {
+                let v = (v * 1e12).round() / 1e12;
+                text[2] = Some(format!("{}", v.x + 0.0));
+                text[3] = Some(format!("{}", v.y + 0.0));
+            }
+            Ok(None) => {}
+            Err(error) => {
+                self.polar_error = Some(error);
+                return;
+            }
+        }
+        self.polar_error = None;
         self.sent = true;
         cx.send(Command::EditDisc {
             disc: i,
