@@ -106,15 +106,7 @@ fn mend(events: &mut Vec<Event>, held: Modifiers) {
 mod tests {
     use super::*;
 
-    fn key(key: Key, modifiers: Modifiers) -> Event {
-        Event::Key {
-            key,
-            physical_key: None,
-            pressed: true,
-            repeat: false,
-            modifiers,
-        }
-    }
+    use crate::app::ui::widgets::key_press as key;
 
     fn text(t: &str) -> Event {
         Event::Text(t.to_string())

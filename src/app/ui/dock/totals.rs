@@ -106,7 +106,7 @@ impl View for Totals {
             compact,
         };
         plot_columns(ui, if line { 2 } else { 3 }, |columns| {
-            let momentum = [("p_x", PX_COLOR, &px[..]), ("p_y", PY_COLOR, &py[..])];
+            let momentum = [("p_x", PX_COLOR, px), ("p_y", PY_COLOR, py)];
             let shown = plots.show(
                 &mut columns[0],
                 ("momentum_plot", "p (kg·m/s)".into(), "kg·m/s"),
@@ -134,7 +134,7 @@ impl View for Totals {
                 let shown = plots.show(
                     &mut columns[1],
                     ("angular_momentum_plot", "L (kg·m²/s)".into(), "kg·m²/s"),
-                    [("L".to_string(), L_COLOR, &l[..])],
+                    [("L".to_string(), L_COLOR, l)],
                     |_| {},
                 );
                 cx.note("angular_momentum_plot", &shown);
@@ -146,8 +146,8 @@ impl View for Totals {
             };
             let lines = energies
                 .iter()
-                .zip(&energy_series)
-                .map(|((name, _, color), points)| (name.clone(), *color, &points[..]));
+                .zip(energy_series)
+                .map(|((name, _, color), points)| (name.clone(), *color, points));
             let shown = plots.show(
                 &mut columns[last],
                 ("energy_plot", y_name, "J"),
@@ -171,17 +171,17 @@ impl TimePlots {
     /// A plot (its id, the name of its value axis and the unit of its
     /// readout) of `lines` (name, colour, points), each numbered on its
     /// own value axis ([`value_axis`]), with `under` drawn first.
-    fn show<'a>(
+    fn show(
         &self,
         ui: &mut egui::Ui,
         (id, y_name, unit): (&str, String, &'static str),
-        lines: impl IntoIterator<Item = (String, egui::Color32, &'a [[f64; 2]])>,
+        lines: impl IntoIterator<Item = (String, egui::Color32, Vec<[f64; 2]>)>,
         under: impl FnOnce(&mut egui_plot::PlotUi),
     ) -> egui::Response {
         let lines: Vec<_> = lines.into_iter().collect();
         let height = self.height;
         let plot = from_start(still_plot(id), self.start).height(height);
-        let series: Vec<&[[f64; 2]]> = lines.iter().map(|(_, _, points)| *points).collect();
+        let series: Vec<&[[f64; 2]]> = lines.iter().map(|(_, _, points)| &points[..]).collect();
         let plot = value_axis(plot, &series, height);
         let plot = if self.compact {
             plot
@@ -197,7 +197,7 @@ impl TimePlots {
                 under(plot);
                 for (name, color, points) in lines {
                     plot.line(
-                        Line::new(PlotPoints::from(points.to_vec()))
+                        Line::new(PlotPoints::from(points))
                             .name(name)
                             .color(color)
                             .width(2.5),

@@ -191,6 +191,7 @@ impl DiscFields {
         let current = cx.model.world.particles[i].vel;
         match polar_velocity(speed.as_deref(), direction.as_deref(), current) {
             Ok(Some(v)) => {
+                // (+ 0.0 writes −0, a rounded −6·10⁻¹⁷, as 0.)
                 let v = (v * 1e12).round() / 1e12;
                 text[2] = Some(format!("{}", v.x + 0.0));
                 text[3] = Some(format!("{}", v.y + 0.0));

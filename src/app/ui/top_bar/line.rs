@@ -14,6 +14,9 @@ use std::sync::Arc;
 /// The least room (points) the items always shown leave the scene's name
 /// before they take their short forms.
 const NAME_AT_LEAST: f32 = 100.0;
+/// The room between the name and its kept end, as a share of the room
+/// between items.
+const NAME_END_GAP: f32 = 0.3;
 
 /// One item of the line: its text, what hovering it says, its name in the
 /// state dump, a shorter text for a line too full for the name, and (the
@@ -27,6 +30,23 @@ pub(super) struct Item {
 }
 
 impl Item {
+    /// The item's own width, and its kept end's, whole and short, each with
+    /// the `gap` before it (points).
+    fn widths(&self, ui: &egui::Ui, gap: f32) -> (f32, Option<[f32; 2]>) {
+        let own = galley(ui, &self.text).size().x;
+        let ends = self
+            .kept_end
+            .as_ref()
+            .map(|ends| ends.clone().map(|end| galley(ui, &end).size().x + gap));
+        (own, ends)
+    }
+
+    /// The item whole: its text and its whole end (points).
+    fn whole_width(&self, ui: &egui::Ui, gap: f32) -> f32 {
+        let (own, ends) = self.widths(ui, gap);
+        own + ends.map_or(0.0, |[whole, _]| whole)
+    }
+
     pub(super) fn new(text: impl Into<RichText>) -> Self {
         Item {
             text: text.into(),
@@ -148,13 +168,9 @@ impl TopBar {
         let name_room = ui.available_width() - width - spacing - fixed - more_width;
         // A name shorter than that needs only its own width: "Choque
         // oblicuo" left room for "PAUSADO", which had taken its sign.
-        let name_width = essential.first().map_or(0.0, |name| {
-            let end = name
-                .kept_end
-                .as_ref()
-                .map_or(0.0, |[whole, _]| galley(ui, whole).size().x);
-            galley(ui, &name.text).size().x + end
-        });
+        let name_width = essential
+            .first()
+            .map_or(0.0, |name| name.whole_width(ui, NAME_END_GAP * spacing));
         let mut essential = essential;
         if name_room < NAME_AT_LEAST.min(name_width) {
             essential = essential.into_iter().map(Item::shortened).collect();
@@ -234,13 +250,9 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     let free = ui.available_width() - more_width - fixed;
     // The name's own width, and its kept end's (whole and short) with the
     // room before it.
-    let own = galley(ui, &name.text).size().x;
-    let gap = 0.3 * spacing;
-    let ends = name
-        .kept_end
-        .as_ref()
-        .map(|ends| ends.clone().map(|end| galley(ui, &end).size().x + gap));
-    let full_name = own + ends.map_or(0.0, |[whole, _]| whole);
+    let gap = NAME_END_GAP * spacing;
+    let (own, ends) = name.widths(ui, gap);
+    let full_name = name.whole_width(ui, gap);
     let name_width = full_name.min((0.6 * free).max(40.0));
     // The other items that fit beside the name at that width, in order (the
     // last may use the room kept for "… more")...

@@ -3,16 +3,7 @@
 use super::{slider, Reading};
 use egui::{pos2, vec2, Context, Event, Key, Modifiers, PointerButton, Pos2, Rect};
 
-/// A key pressed with `modifiers`.
-fn press(key: Key, modifiers: Modifiers) -> Event {
-    Event::Key {
-        key,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers,
-    }
-}
+use super::key_press as press;
 
 /// A frame's input in a 400 × 300 window at `time`, with `events`.
 fn input(time: Option<f64>, events: Vec<Event>) -> egui::RawInput {
