@@ -53,6 +53,10 @@ fn main() -> std::process::ExitCode {
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
             q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre,
         ),
+        (
+            "ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row",
+            ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row,
+        ),
     ])
 }
 
@@ -679,4 +683,25 @@ fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
     let s = again.wait_frames(3);
     assert_eq!(tab_content(&s)[3], tab_content(&set)[3], "the next start");
     again.quit();
+}
+
+/// Every tab has a key: Ctrl and its place in the row, as a browser's own
+/// tabs; the digit alone still opens a preset.
+fn ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row() {
+    let x = Xvfb::start("tab keys");
+    let app = Sandbox::start(&x, &["--paused"]);
+    app.move_to([300.0, 300.0]);
+    let scene = app.wait_frames(3)["scene_name"].clone();
+    for (key, tab) in [
+        ("ctrl+3", "Discs"),
+        ("ctrl+6", "Words"),
+        ("ctrl+1", "Totals"),
+    ] {
+        app.xdo(&["key", key]);
+        let s = app.wait_frames(3);
+        assert_eq!(s["ui"]["tab"], tab, "{key}");
+        assert_eq!(s["ui"]["dock_expanded"], true, "{key}");
+        assert_eq!(s["scene_name"], scene, "{key} opened no preset");
+    }
+    app.quit();
 }

@@ -152,6 +152,16 @@
         e.stopImmediatePropagation();
         controls[controls.length - 1].focus();
     }, true);
+    // The sandbox's own Ctrl keys (save, undo, redo, the dock's tabs) are
+    // the page's while the canvas has the keys: without this the browser
+    // would also save the page, or switch to its own third tab on Ctrl+3.
+    // macroquad still gets the key (the event goes on to the canvas).
+    const OWN_CTRL = /^(KeyS|KeyZ|KeyY|Digit[1-6])$/;
+    window.addEventListener("keydown", (e) => {
+        const canvas = document.getElementById("glcanvas");
+        if (!e.ctrlKey || e.altKey || e.metaKey || document.activeElement !== canvas) return;
+        if (OWN_CTRL.test(e.code)) e.preventDefault();
+    }, true);
     function register(importObject) {
         const env = importObject.env;
         env.impulse_report_state = (ptr, len) => {

@@ -514,6 +514,19 @@ try:
     said_pair = re.compile(r"Discs \d+ and \d+, t")
     text = wait_said(d, lambda t: said_pair.search(t) is not None, "the collision")
     check(True, f"after J the live region says it: {text[:80]!r}…")
+    # Ctrl+3 shows the third tab, and the browser does not take the key
+    # for its own third tab (nor Ctrl+S for saving the page).
+    d.execute_script(
+        "window.impulseKept = [];"
+        "window.addEventListener('keydown', e => { if (e.ctrlKey) "
+        "window.impulseKept.push([e.code, e.defaultPrevented]); });"
+    )
+    ActionChains(d).key_down(Keys.CONTROL).send_keys("3").key_up(Keys.CONTROL).perform()
+    s = wait_state(d, lambda s: s["ui"]["tab"] == "Discs", what="Ctrl+3 to show the Discs tab")
+    kept = d.execute_script("return window.impulseKept")
+    check(kept == [["Digit3", True]], f"Ctrl+3 shows the Discs tab and stays the page's ({kept})")
+    ActionChains(d).key_down(Keys.CONTROL).send_keys("1").key_up(Keys.CONTROL).perform()
+    wait_state(d, lambda s: s["ui"]["tab"] == "Totals", what="Ctrl+1 to show the Totals again")
     # Spanish, through the mirror's language list.
     mirror_choose(d, "mirror-languages", 1)
     wait_state(d, lambda s: s["ui"]["language"] == "es", what="Spanish")

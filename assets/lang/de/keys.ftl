@@ -65,8 +65,8 @@ keys-export = X
 help-export = Bilanz, Scheiben, Stöße und Wandstöße als CSV exportieren
 keys-screenshot = F12
 help-screenshot = Screenshot in den Ausgabeordner
-keys-tabs = T / U / D / F4
-help-tabs = untere Leiste: Bilanz / Stöße / Impulse / Tempo
+keys-tabs = T / U / D / F4, Strg+1 … Strg+6
+help-tabs = untere Leiste: Bilanz / Stöße / Impulse / Tempo; Strg und eine Ziffer: die Reiter der Reiterzeile von links
 keys-tab-height = Den oberen Rand der unteren Leiste ziehen
 help-tab-height = macht ihren Reiter höher oder niedriger (mit Tab zum Rand: die Pfeiltasten, Pos1 und Ende; Enter oder ein Doppelklick: seine eigene Höhe)
 keys-docks = S
@@ -125,3 +125,8 @@ section-presets-last = Vorlagen…: die letzte
 section-tab-row = die Reiterzeile
 section-controls = Steuerung
 section-more-details = Mehr: Details
+
+# A key's modifiers as the keyboard prints them, and a tab's tooltip.
+key-ctrl = Strg
+key-shift = Umschalt
+tab-keys = { $keys }: diesen Reiter zeigen

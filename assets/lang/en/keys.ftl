@@ -65,8 +65,8 @@ keys-export = X
 help-export = export totals, discs, collisions and wall impacts as CSV
 keys-screenshot = F12
 help-screenshot = screenshot into the output folder
-keys-tabs = T / U / D / F4
-help-tabs = bottom dock: Totals / Collisions / Momenta / Speeds
+keys-tabs = T / U / D / F4, Ctrl+1 … Ctrl+6
+help-tabs = bottom dock: Totals / Collisions / Momenta / Speeds; Ctrl and a digit: the tab row's tabs from the left
 keys-tab-height = Drag the top edge of the bottom dock
 help-tab-height = make its tab taller or shorter (Tab to the edge: the arrows, Home and End; Enter or a double-click: its own height)
 keys-docks = S
@@ -125,3 +125,8 @@ section-presets-last = Presets…: the last one
 section-tab-row = the tab row
 section-controls = Controls
 section-more-details = More: Details
+
+# A key's modifiers as the keyboard prints them, and a tab's tooltip.
+key-ctrl = Ctrl
+key-shift = Shift
+tab-keys = { $keys }: show this tab

@@ -65,8 +65,8 @@ keys-export = X
 help-export = exportar totales, discos, choques e impactos en paredes como CSV
 keys-screenshot = F12
 help-screenshot = captura de pantalla en la carpeta de salida
-keys-tabs = T / U / D / F4
-help-tabs = panel inferior: Totales / Choques / Vectores p / Rapidez
+keys-tabs = T / U / D / F4, Ctrl+1 … Ctrl+6
+help-tabs = panel inferior: Totales / Choques / Vectores p / Rapidez; Ctrl y un dígito: las pestañas de la fila desde la izquierda
 keys-tab-height = Arrastrar el borde superior del panel inferior
 help-tab-height = hace su pestaña más alta o más baja (Tab hasta el borde: las flechas, Inicio y Fin; Intro o doble clic: su altura propia)
 keys-docks = S
@@ -125,3 +125,8 @@ section-presets-last = Ejemplos…: el último
 section-tab-row = la fila de pestañas
 section-controls = Controles
 section-more-details = Más: Detalles
+
+# A key's modifiers as the keyboard prints them, and a tab's tooltip.
+key-ctrl = Ctrl
+key-shift = Mayús
+tab-keys = { $keys }: mostrar esta pestaña

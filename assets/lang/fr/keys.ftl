@@ -65,8 +65,8 @@ keys-export = X
 help-export = exporter les totaux, les disques, les collisions et les chocs contre les murs en CSV
 keys-screenshot = F12
 help-screenshot = capture d'écran dans le dossier de sortie
-keys-tabs = T / U / D / F4
-help-tabs = panneau du bas : Totaux / Collisions / Vecteurs p / Vitesses
+keys-tabs = T / U / D / F4, Ctrl+1 … Ctrl+6
+help-tabs = panneau du bas : Totaux / Collisions / Vecteurs p / Vitesses ; Ctrl et un chiffre : les onglets de la rangée depuis la gauche
 keys-tab-height = Glisser le bord haut du panneau du bas
 help-tab-height = agrandit ou réduit son onglet (Tab jusqu'au bord : les flèches, Début et Fin ; Entrée ou un double-clic : sa hauteur d'origine)
 keys-docks = S
@@ -125,3 +125,8 @@ section-presets-last = Préréglages… : le dernier
 section-tab-row = la rangée d'onglets
 section-controls = Réglages
 section-more-details = Plus : Détails
+
+# A key's modifiers as the keyboard prints them, and a tab's tooltip.
+key-ctrl = Ctrl
+key-shift = Maj
+tab-keys = { $keys } : afficher cet onglet

@@ -65,8 +65,8 @@ keys-export = X
 help-export = exporta totais, discos, colisões e impactos nas paredes em CSV
 keys-screenshot = F12
 help-screenshot = captura de tela na pasta de saída
-keys-tabs = T / U / D / F4
-help-tabs = painel de baixo: Totais / Colisões / Vetores p / Velocidades
+keys-tabs = T / U / D / F4, Ctrl+1 … Ctrl+6
+help-tabs = painel de baixo: Totais / Colisões / Vetores p / Velocidades; Ctrl e um dígito: as abas da fileira a partir da esquerda
 keys-tab-height = Arrastar a borda de cima do painel de baixo
 help-tab-height = deixa a aba dele mais alta ou mais baixa (Tab até a borda: as setas, Home e End; Enter ou um clique duplo: a altura dela)
 keys-docks = Tab
@@ -125,3 +125,8 @@ section-presets-last = Exemplos…: o último
 section-tab-row = a fileira de abas
 section-controls = Controles
 section-more-details = Mais: Detalhes
+
+# A key's modifiers as the keyboard prints them, and a tab's tooltip.
+key-ctrl = Ctrl
+key-shift = Shift
+tab-keys = { $keys }: mostrar esta aba

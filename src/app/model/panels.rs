@@ -16,6 +16,16 @@ pub enum DockTab {
 }
 
 impl DockTab {
+    /// Every tab, in the row's order (`Ctrl+1` … `Ctrl+6` follow it).
+    pub const IN_ROW: [DockTab; 6] = [
+        DockTab::Totals,
+        DockTab::Collisions,
+        DockTab::Discs,
+        DockTab::Speeds,
+        DockTab::Momenta,
+        DockTab::Words,
+    ];
+
     /// Its name in the state dump and the widget names ("Totals").
     pub fn key(self) -> &'static str {
         match self {

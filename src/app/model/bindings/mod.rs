@@ -7,6 +7,7 @@
 //! the tooltips speak the window's language.
 
 use super::command::Command;
+use super::DockTab;
 use crate::app::lang::text;
 
 /// A key, by what is printed on it (the window maps its key codes to these).
@@ -135,6 +136,40 @@ pub fn tooltip(command: &Command) -> String {
     binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys(), b.help()))
 }
 
+/// A chord as the keyboard prints it ("T", "F4", "Ctrl+3"), in the
+/// window's language; `None` for a key without a printed letter, digit
+/// or F-number (the help's own lines name those).
+pub fn chord_text(chord: &Chord) -> Option<String> {
+    let key = match chord.key {
+        Key::Letter(c) => c.to_string(),
+        Key::Digit(d) => d.to_string(),
+        Key::F(n) => format!("F{n}"),
+        _ => return None,
+    };
+    let shift = match chord.shift {
+        Shift::Down => format!("{}+", text("key-shift", &[])),
+        Shift::Up | Shift::Either => String::new(),
+    };
+    let ctrl = if chord.ctrl {
+        format!("{}+", text("key-ctrl", &[]))
+    } else {
+        String::new()
+    };
+    Some(format!("{ctrl}{shift}{key}"))
+}
+
+/// A tab's tooltip: the keys that show it, and only it ("U, Ctrl+2: show
+/// this tab"); the help's line names every tab's keys at once.
+pub fn tab_tooltip(tab: DockTab) -> String {
+    let keys: Vec<String> = BINDINGS
+        .iter()
+        .flat_map(|b| b.acts.iter())
+        .filter(|(_, c)| *c == Command::ShowTab(tab))
+        .filter_map(|(chord, _)| chord_text(chord))
+        .collect();
+    text("tab-keys", &[("keys", keys.join(", ").into())])
+}
+
 /// The bindings as the README's key table (Markdown).
 #[cfg(test)]
 pub fn markdown_table() -> String {
@@ -216,6 +251,29 @@ mod tests {
         assert!(combined > 0, "no button with its section: nothing tested");
     }
 
+    /// Every tab has a key, `Ctrl` and its place in the row; each tab's
+    /// tooltip names its own keys, in the window's language.
+    #[test]
+    fn ctrl_and_a_digit_show_the_rows_tabs_and_each_tab_names_its_keys() {
+        for (n, tab) in DockTab::IN_ROW.into_iter().enumerate() {
+            let digit = Key::Digit(n as u8 + 1);
+            assert_eq!(
+                command_for(digit, true, false, Trigger::Press),
+                Some(Command::ShowTab(tab)),
+                "Ctrl+{}",
+                n + 1
+            );
+        }
+        assert_eq!(tab_tooltip(DockTab::Totals), "T, Ctrl+1: show this tab");
+        assert_eq!(tab_tooltip(DockTab::Speeds), "F4, Ctrl+4: show this tab");
+        assert_eq!(tab_tooltip(DockTab::Words), "Ctrl+6: show this tab");
+        use crate::app::lang::{set_language, Lang};
+        set_language(Lang::De);
+        let german = tab_tooltip(DockTab::Discs);
+        set_language(Lang::En);
+        assert_eq!(german, "Strg+3: diesen Reiter zeigen");
+    }
+
     #[test]
     fn no_chord_gives_two_commands() {
         let chords: Vec<(Chord, Trigger)> = BINDINGS
@@ -247,7 +305,7 @@ mod tests {
             cmd(Key::Letter('Z'), false, false),
             Some(Command::ToggleCenterOfMassView)
         );
-        assert_eq!(cmd(Key::Digit(5), true, false), None, "Ctrl+5 does nothing");
+        assert_eq!(cmd(Key::Digit(7), true, false), None, "Ctrl+7 does nothing");
         assert_eq!(
             cmd(Key::Letter('S'), false, false),
             Some(Command::ToggleDocks)

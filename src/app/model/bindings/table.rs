@@ -300,6 +300,13 @@ pub static BINDINGS: &[Binding] = &[
             (key(letter('U')), C::ShowTab(DockTab::Collisions)),
             (key(letter('D')), C::ShowTab(DockTab::Momenta)),
             (key(K::F(4)), C::ShowTab(DockTab::Speeds)),
+            // Every tab, in the row's order (a browser's own order too).
+            (ctrl(K::Digit(1)), C::ShowTab(DockTab::Totals)),
+            (ctrl(K::Digit(2)), C::ShowTab(DockTab::Collisions)),
+            (ctrl(K::Digit(3)), C::ShowTab(DockTab::Discs)),
+            (ctrl(K::Digit(4)), C::ShowTab(DockTab::Speeds)),
+            (ctrl(K::Digit(5)), C::ShowTab(DockTab::Momenta)),
+            (ctrl(K::Digit(6)), C::ShowTab(DockTab::Words)),
         ],
     ),
     mouse("tab-height"),

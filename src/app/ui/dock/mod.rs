@@ -25,16 +25,20 @@ use crate::app::ui::tip::Tip;
 use crate::app::ui::widgets::button_text_width;
 use egui::RichText;
 
-/// Every tab, in the row's order: its key in the model and its view.
+/// Every tab, in the row's order ([`DockTab::IN_ROW`]): its key in the
+/// model and its view.
 fn tabs() -> Vec<(DockTab, Box<dyn View>)> {
-    vec![
-        (DockTab::Totals, Box::new(totals::Totals)),
-        (DockTab::Collisions, Box::new(collisions::Collisions)),
-        (DockTab::Discs, Box::new(discs::DiscsTable::default())),
-        (DockTab::Speeds, Box::new(speeds::Speeds)),
-        (DockTab::Momenta, Box::new(momenta::Momenta)),
-        (DockTab::Words, Box::new(words::Words)),
-    ]
+    let view = |tab| -> Box<dyn View> {
+        match tab {
+            DockTab::Totals => Box::new(totals::Totals),
+            DockTab::Collisions => Box::new(collisions::Collisions),
+            DockTab::Discs => Box::new(discs::DiscsTable::default()),
+            DockTab::Speeds => Box::new(speeds::Speeds),
+            DockTab::Momenta => Box::new(momenta::Momenta),
+            DockTab::Words => Box::new(words::Words),
+        }
+    };
+    DockTab::IN_ROW.iter().map(|&t| (t, view(t))).collect()
 }
 
 /// The dock's tabs, each with its own state.
@@ -139,8 +143,7 @@ impl BottomDock {
             let chosen = model.panels.tab == *tab && expanded;
             let r = strip.selectable_label(chosen, RichText::new(tab.title()).strong());
             cx.note(format!("tab_{}", tab.key().to_lowercase()), &r);
-            let tip = crate::app::model::bindings::tooltip(&Command::ShowTab(*tab));
-            let r = if tip.is_empty() { r } else { r.tip(tip) };
+            let r = r.tip(crate::app::model::bindings::tab_tooltip(*tab));
             if r.clicked() {
                 cx.send(Command::ClickTab(*tab));
             }
