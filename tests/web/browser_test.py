@@ -518,7 +518,7 @@ try:
     # for its own third tab (nor Ctrl+S for saving the page).
     d.execute_script(
         "window.impulseKept = [];"
-        "window.addEventListener('keydown', e => { if (e.ctrlKey) "
+        "window.addEventListener('keydown', e => { if (e.ctrlKey && e.key !== 'Control') "
         "window.impulseKept.push([e.code, e.defaultPrevented]); });"
     )
     ActionChains(d).key_down(Keys.CONTROL).send_keys("3").key_up(Keys.CONTROL).perform()
