@@ -50,6 +50,18 @@ pub fn shown(path: &Path) -> String {
     }
 }
 
+/// A file written, as a message names it: its name, then the folder it is
+/// in as [`shown`] writes it. Where a message is cut short (a projector's
+/// caption), what goes is the folder, not the name.
+pub fn name_and_folder(path: &Path) -> (String, String) {
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let folder = path.parent().map(shown).unwrap_or_default();
+    (name, folder)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -65,6 +77,14 @@ mod tests {
             )),
             "{shown}"
         );
+    }
+
+    #[test]
+    fn a_message_names_the_file_then_its_folder_from_the_root() {
+        let (name, folder) = name_and_folder(Path::new("impulse-out/glancing-collision.toml"));
+        assert_eq!(name, "glancing-collision.toml");
+        assert!(Path::new(&folder).is_absolute(), "{folder}");
+        assert!(folder.ends_with("impulse-out"), "{folder}");
     }
 
     #[test]

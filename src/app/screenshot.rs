@@ -70,11 +70,11 @@ pub fn save_screenshot_key(model: &mut Sandbox, image: &ScreenImage, path: &Path
     match saved {
         Ok(path) => {
             eprintln!("impulse: screenshot saved to {}", path.display());
-            let file = crate::files::shown(&path);
             model.toast(if cfg!(target_arch = "wasm32") {
-                tr!("screenshot-downloaded", file = file)
+                tr!("screenshot-downloaded", file = crate::files::shown(&path))
             } else {
-                tr!("screenshot-saved", file = file)
+                let (file, folder) = crate::files::name_and_folder(&path);
+                tr!("screenshot-saved", file = file, folder = folder)
             });
         }
         Err(e) => model.report(tr!("screenshot-not-saved", error = e)),

@@ -96,12 +96,13 @@ pub fn preset_description(index: usize) -> Option<String> {
         .map(str::to_string)
 }
 
-/// A file name for saving a scene called `name` (ASCII letters and digits
-/// kept, the rest turned into single hyphens).
+/// A file name for saving a scene called `name`: its letters and digits,
+/// in any script and lower case ("choc-frontal-masses-égales"), the rest
+/// turned into single hyphens.
 pub fn slug(name: &str) -> String {
     let mut out = String::new();
     for c in name.chars().flat_map(char::to_lowercase) {
-        if c.is_ascii_alphanumeric() {
+        if c.is_alphanumeric() {
             out.push(c);
         } else if !out.ends_with('-') && !out.is_empty() {
             out.push('-');
@@ -294,28 +295,34 @@ impl Sandbox {
         }
     }
 
+    /// The name of the files the scene is saved and exported under: its
+    /// name as the window shows it, in the window's language (a Spanish
+    /// class's saved head-on hit is `choque-frontal-masas-iguales.toml`).
+    pub(super) fn file_stem(&self) -> String {
+        slug(&self.scene_name())
+    }
+
     /// Saves the current state as a scene file in the output folder; the
     /// write is atomic, so a failure leaves any older file as it was.
     /// Returns the file written, or what was reported; the scene section
     /// says the same under its buttons.
     pub(super) fn save_scene(&mut self) -> Result<PathBuf, String> {
-        let name = self.open.scene.name.clone();
         let scene = self.current_scene();
         let dir = self.session.out.clone();
-        let stem = slug(name.as_deref().unwrap_or_default());
+        let stem = self.file_stem();
         let result = keep_file(&dir, &stem, "toml", scene.to_toml().as_bytes());
         match result {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
                 self.open.unsaved = false;
-                let file = crate::files::shown(&path);
+                let (file, folder) = crate::files::name_and_folder(&path);
                 let said = if cfg!(target_arch = "wasm32") {
-                    tr!("scene-downloaded", file = file.as_str())
+                    tr!("scene-downloaded", file = crate::files::shown(&path))
                 } else {
-                    tr!("scene-saved", file = file.as_str())
+                    tr!("scene-saved", file = file, folder = folder)
                 };
-                self.toast(said);
-                self.messages.scene = Some(Note::ok(tr!("scene-saved", file = file)));
+                self.toast(said.clone());
+                self.messages.scene = Some(Note::ok(said));
                 Ok(path)
             }
             Err(e) => {

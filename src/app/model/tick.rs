@@ -295,13 +295,13 @@ impl Sandbox {
 
     /// Saves the next frame as a PNG in the output folder (F12).
     pub(super) fn request_screenshot(&mut self) {
-        let stem = scenes::slug(self.open.scene.name.as_deref().unwrap_or("scene"));
+        let stem = self.file_stem();
         self.session.requests.screenshot = Some(scenes::free_file(&self.session.out, &stem, "png"));
     }
 
     /// Writes the totals, the discs and the ledger as CSV files.
     pub(super) fn export_data(&mut self) {
-        let stem = scenes::slug(self.open.scene.name.as_deref().unwrap_or("scene"));
+        let stem = self.file_stem();
         let samples: Vec<totals::Sample> = self.record.totals.samples().copied().collect();
         let dir = self.session.out.clone();
         if cfg!(target_arch = "wasm32") {

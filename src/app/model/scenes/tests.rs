@@ -24,7 +24,12 @@ fn every_preset_has_its_name_and_description_in_every_language() {
 #[test]
 fn slugs_are_file_names() {
     assert_eq!(slug("Head-on, equal masses"), "head-on-equal-masses");
-    assert_eq!(slug("  Blocks that count π!  "), "blocks-that-count");
+    assert_eq!(slug("  Blocks that count π!  "), "blocks-that-count-π");
+    assert_eq!(
+        slug("Choc frontal, masses égales"),
+        "choc-frontal-masses-égales"
+    );
+    assert_eq!(slug("Zentraler Stoß"), "zentraler-stoß");
     assert_eq!(slug("???"), "scene");
 }
 

@@ -53,3 +53,36 @@ fn a_named_scene_edited_says_so_in_its_title_and_undo_takes_the_mark_away() {
     s.apply(Command::Undo);
     assert_eq!(title(&s), name);
 }
+
+/// Saved, exported and screenshot files are named after the scene as the
+/// window shows it, in its language: a Spanish class's files all read
+/// "sandbox" or "head-on-equal-masses" before.
+#[test]
+fn files_are_named_after_the_scene_in_the_windows_language() {
+    use crate::app::lang::{set_language, Lang};
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    set_language(Lang::Es);
+    let saved = s.save_scene();
+    let said = s.messages.scene.as_ref().map(|n| n.text.clone());
+    let stem = s.file_stem();
+    s.apply(Command::OpenEmpty);
+    let empty = s.file_stem();
+    set_language(Lang::En);
+    let saved = saved.unwrap();
+    assert_eq!(
+        saved.file_name().unwrap(),
+        "choque-frontal-masas-iguales.toml"
+    );
+    assert_eq!(stem, "choque-frontal-masas-iguales");
+    let folder = crate::files::shown(saved.parent().unwrap());
+    assert_eq!(
+        said.unwrap(),
+        format!("Se guardó choque-frontal-masas-iguales.toml en {folder}"),
+        "the name first, then the folder"
+    );
+    assert_eq!(
+        empty, "caja-vacía",
+        "the empty box, and a letter with its accent"
+    );
+}
