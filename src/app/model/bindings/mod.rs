@@ -133,7 +133,9 @@ pub fn binding_of(command: &Command) -> Option<&'static Binding> {
 /// The tooltip of a control that gives `command`: its keys and what they do
 /// ("Space: pause / resume"); empty when no key gives it.
 pub fn tooltip(command: &Command) -> String {
-    binding_of(command).map_or_else(String::new, |b| format!("{}: {}", b.keys(), b.help()))
+    binding_of(command)
+        .filter(|b| !(cfg!(target_arch = "wasm32") && browser_keeps(b)))
+        .map_or_else(String::new, |b| format!("{}: {}", b.keys(), b.help()))
 }
 
 /// A chord as the keyboard prints it ("T", "F4", "Ctrl+3"), in the
@@ -222,9 +224,11 @@ pub fn control_of(b: &Binding) -> Option<String> {
     }
 }
 
-/// Whether a key belongs to the browser, not to the page.
+/// Whether a key belongs to the browser, not to the page: the page never
+/// sees Ctrl+Q or Ctrl+N (a browser window of its own), and F11 is the
+/// browser's full screen.
 pub fn browser_keeps(binding: &Binding) -> bool {
-    ["quit", "fullscreen"].contains(&binding.name)
+    ["quit", "fullscreen", "new-box"].contains(&binding.name)
 }
 
 #[cfg(test)]
@@ -272,6 +276,35 @@ mod tests {
         let german = tab_tooltip(DockTab::Discs);
         set_language(Lang::En);
         assert_eq!(german, "Strg+3: diesen Reiter zeigen");
+    }
+
+    /// In the browser the page must keep its own Ctrl keys from the
+    /// browser (Ctrl+S saved the page too): `web/impulse.js` lists them,
+    /// and the list is every Ctrl chord of the table the browser lets the
+    /// page have.
+    #[test]
+    fn the_browser_page_keeps_every_ctrl_key_of_the_table() {
+        let js = include_str!("../../../../web/impulse.js");
+        let line = js
+            .lines()
+            .find(|l| l.contains("const OWN_CTRL"))
+            .expect("impulse.js lists the page's Ctrl keys");
+        let listed: std::collections::BTreeSet<&str> = line.split('"').skip(1).step_by(2).collect();
+        let code = |key: Key| match key {
+            Key::Letter(c) => format!("Key{c}"),
+            Key::Digit(d) => format!("Digit{d}"),
+            other => format!("{other:?}"),
+        };
+        let wanted: std::collections::BTreeSet<String> = BINDINGS
+            .iter()
+            .filter(|b| !browser_keeps(b))
+            .flat_map(|b| b.acts.iter())
+            .filter(|(chord, _)| chord.ctrl)
+            .map(|(chord, _)| code(chord.key))
+            .collect();
+        let listed: std::collections::BTreeSet<String> =
+            listed.into_iter().map(str::to_string).collect();
+        assert_eq!(listed, wanted);
     }
 
     #[test]
