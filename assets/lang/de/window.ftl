@@ -229,7 +229,7 @@ ledger-along-wall = längs der Wand
 ledger-wall-push = Kraftstoß der Wand, Δp (kg·m/s)
 ledger-before = vorher
 ledger-after = nachher
-ledger-detail-hover = Die Stoßlinie verläuft im Augenblick der Berührung durch die Mittelpunkte der beiden Scheiben (oder von der Wand zur Scheibe); bei einem glatten Stoß ändert sich nur die Geschwindigkeit längs dieser Linie.
+ledger-detail-hover = Die Stoßlinie verläuft im Augenblick der Berührung durch die Mittelpunkte der beiden Scheiben (oder von der Wand zur Scheibe); bei einem glatten Stoß ändert sich nur die Geschwindigkeit längs dieser Linie. Längs der Linie zeigt Plus von der zuerst genannten Scheibe zur anderen (an einer Wand von der Wand weg).
 
 ## Der Reiter Scheiben
 table-spin = Drehung ω

@@ -229,7 +229,7 @@ ledger-along-wall = along the wall
 ledger-wall-push = the wall's push, Δp (kg·m/s)
 ledger-before = before
 ledger-after = after
-ledger-detail-hover = The line of impact runs through the centres of the two discs (or from the wall to the disc) at the instant they touch; only the speed along it changes in a smooth collision.
+ledger-detail-hover = The line of impact runs through the centres of the two discs (or from the wall to the disc) at the instant they touch; only the speed along it changes in a smooth collision. Along it, plus points from the disc named first towards the other (at a wall, away from the wall).
 
 ## The Discs tab
 table-spin = spin ω

@@ -229,7 +229,7 @@ ledger-along-wall = a lo largo de la pared
 ledger-wall-push = el empuje de la pared, Δp (kg·m/s)
 ledger-before = antes
 ledger-after = después
-ledger-detail-hover = La línea de impacto pasa por los centros de los dos discos (o va de la pared al disco) en el instante en que se tocan; en un choque sin agarre solo cambia la velocidad a lo largo de ella.
+ledger-detail-hover = La línea de impacto pasa por los centros de los dos discos (o va de la pared al disco) en el instante en que se tocan; en un choque sin agarre solo cambia la velocidad a lo largo de ella. A lo largo de ella, el signo más apunta del disco nombrado primero hacia el otro (en una pared, alejándose de la pared).
 
 ## La pestaña Discos
 table-spin = giro ω

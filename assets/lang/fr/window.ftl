@@ -229,7 +229,7 @@ ledger-along-wall = le long du mur
 ledger-wall-push = la poussée du mur, Δp (kg·m/s)
 ledger-before = avant
 ledger-after = après
-ledger-detail-hover = La ligne d'impact passe par les centres des deux disques (ou va du mur au disque) à l'instant où ils se touchent ; lors d'une collision de disques lisses, seule la vitesse le long de cette ligne change.
+ledger-detail-hover = La ligne d'impact passe par les centres des deux disques (ou va du mur au disque) à l'instant où ils se touchent ; lors d'une collision de disques lisses, seule la vitesse le long de cette ligne change. Le long de cette ligne, le sens positif va du disque nommé en premier vers l'autre (contre un mur, il s'éloigne du mur).
 
 ## L'onglet Disques
 table-spin = rotation ω

@@ -229,7 +229,7 @@ ledger-along-wall = ao longo da parede
 ledger-wall-push = o empurrão da parede, Δp (kg·m/s)
 ledger-before = antes
 ledger-after = depois
-ledger-detail-hover = A linha de impacto passa pelos centros dos dois discos (ou vai da parede ao disco) no instante em que eles se tocam; numa colisão sem atrito, só muda a velocidade ao longo dela.
+ledger-detail-hover = A linha de impacto passa pelos centros dos dois discos (ou vai da parede ao disco) no instante em que eles se tocam; numa colisão sem atrito, só muda a velocidade ao longo dela. Ao longo dela, o sentido positivo vai do disco citado primeiro para o outro (numa parede, para longe da parede).
 
 ## A aba Discos
 table-spin = rotação ω

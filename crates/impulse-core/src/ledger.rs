@@ -89,11 +89,25 @@ impl Collision {
         (dp, dke)
     }
 
-    /// Disc `k`'s velocity split along the normal and the tangent, before
-    /// and after: ((normal, tangent) before, (normal, tangent) after).
+    /// The unit normal from the lower-numbered disc to the other: the
+    /// direction a person reading "discs 1 and 2" takes as positive.
+    /// (`normal` goes from `discs[0]`, whichever of the two the search met
+    /// first, so its sign alone changes from one collision to the next.)
+    pub fn normal_in_order(&self) -> DVec2 {
+        if self.discs[0] <= self.discs[1] {
+            self.normal
+        } else {
+            -self.normal
+        }
+    }
+
+    /// Disc `k`'s velocity split along [`Self::normal_in_order`] and the
+    /// tangent (the normal turned a quarter counter-clockwise), before and
+    /// after: ((normal, tangent) before, (normal, tangent) after).
     pub fn components(&self, k: usize) -> ((f64, f64), (f64, f64)) {
-        let t = self.normal.perp();
-        let split = |v: DVec2| (v.dot(self.normal), v.dot(t));
+        let n = self.normal_in_order();
+        let t = n.perp();
+        let split = |v: DVec2| (v.dot(n), v.dot(t));
         (split(self.before[k]), split(self.after[k]))
     }
 }
@@ -491,6 +505,26 @@ mod tests {
         let ((n0, t0), (n1, t1)) = w.components();
         assert_eq!((n0, n1), (-3.0, 1.5));
         assert_eq!(t0, t1);
+    }
+
+    /// The same hit recorded either way round (the search meets the pair
+    /// in either order) splits the same: disc 0 comes in at +1 along the
+    /// line, whichever disc the recorded normal starts from.
+    #[test]
+    fn a_pairs_split_is_the_same_whichever_way_round_it_was_recorded() {
+        let c = pair(0.0);
+        let swapped = Collision {
+            discs: [1, 0],
+            normal: -c.normal,
+            masses: [c.masses[1], c.masses[0]],
+            before: [c.before[1], c.before[0]],
+            after: [c.after[1], c.after[0]],
+            ..c
+        };
+        assert_eq!(c.components(0), ((1.0, 0.0), (-1.0 / 3.0, 0.0)));
+        assert_eq!(swapped.components(1), c.components(0));
+        assert_eq!(swapped.components(0), c.components(1));
+        assert_eq!(swapped.normal_in_order(), DVec2::X);
     }
 
     #[test]
