@@ -114,44 +114,6 @@ impl Sandbox {
         }
     }
 
-    /// What a command means while the recovery question is open: R and
-    /// Esc answer it; what only changes the view goes through; the rest
-    /// waits.
-    fn under_modal(&self, command: Command) -> Option<Command> {
-        if !self.modal_open() {
-            return Some(command);
-        }
-        use Command::*;
-        let question = self.recovery.offered.is_some();
-        match command {
-            Reset | RestoreRecovery if question => Some(RestoreRecovery),
-            Escape | SetRecoveryAside if question => Some(SetRecoveryAside),
-            // The start screen: a tile, a preset's key, or Esc for the
-            // scene that is open.
-            StartWith(_) | OpenPreset(_) | OpenEmpty | CloseStart if !question => Some(command),
-            Escape if !question && self.panels.help_open => Some(ToggleHelp),
-            Escape if !question => Some(CloseStart),
-            Quit
-            | Fullscreen
-            | SetScale(_)
-            | SetTabHeight(_)
-            | KeepTabHeight
-            | NextScale
-            | SetTheme(_)
-            | SetLanguage(_)
-            | Describe
-            | ToggleHelp
-            | ToggleSound
-            | Fit
-            | ZoomIn
-            | ZoomOut
-            | ZoomAt { .. }
-            | Pan(_)
-            | Pinch { .. } => Some(command),
-            _ => None,
-        }
-    }
-
     /// A hash of everything undo brings back: the discs, the laws and the
     /// choices, the time, and which scene is open.
     pub fn fingerprint(&self) -> u64 {
@@ -361,7 +323,11 @@ impl Sandbox {
             ToggleSide => self.panels.side_open = !self.panels.side_open,
             ToggleDrawer => self.panels.drawer_open = !self.panels.drawer_open,
             CloseDrawer => self.panels.drawer_open = false,
-            ToggleHelp => self.panels.help_open = !self.panels.help_open,
+            ToggleHelp => {
+                self.panels.help_open = !self.panels.help_open;
+                // A drag begun in the world does not finish behind it.
+                self.pointer.cancel();
+            }
             TogglePresets => self.panels.presets_open = !self.panels.presets_open,
             Escape => {
                 let p = &mut self.panels;

@@ -33,6 +33,7 @@ pub mod gesture;
 pub mod keyboard;
 pub mod lesson;
 pub mod mirror;
+pub mod modal;
 pub mod narration;
 pub mod overlays;
 pub mod panels;

@@ -473,6 +473,7 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
     }
 }
 
+mod help_covers;
 mod next_collision;
 mod numbering;
 mod reset_and_title;

@@ -211,7 +211,21 @@ pub fn scroll<R>(
     salt: &str,
     add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
 ) -> R {
-    scroll_area(ui, cx, area, salt, false, add)
+    scroll_area(ui, cx, area, salt, (false, false), add)
+}
+
+/// A [`scroll`] area that the keys scroll whenever no control has them:
+/// the help's list, which covers the world (whose keys wait meanwhile), is
+/// read with Page Down at once, without a Tab to it first.
+pub fn scroll_by_any_keys<R>(
+    ui: &mut egui::Ui,
+    cx: &mut Cx,
+    area: egui::ScrollArea,
+    salt: &str,
+    add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
+) -> R {
+    let free = cx.keys == super::Keys::World;
+    scroll_area(ui, cx, area, salt, (false, free), add)
 }
 
 /// A [`scroll`] area read as a page: a Tab stop to read whenever it is
@@ -225,7 +239,7 @@ pub fn page<R>(
     salt: &str,
     add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
 ) -> R {
-    scroll_area(ui, cx, area, salt, true, add)
+    scroll_area(ui, cx, area, salt, (true, false), add)
 }
 
 fn scroll_area<R>(
@@ -233,7 +247,7 @@ fn scroll_area<R>(
     cx: &mut Cx,
     area: egui::ScrollArea,
     salt: &str,
-    read_past_controls: bool,
+    (read_past_controls, keys_free): (bool, bool),
     add: impl FnOnce(&mut egui::Ui, &mut Cx) -> R,
 ) -> R {
     // egui's id for it, as `ScrollArea::show` makes it from the salt.
@@ -243,7 +257,7 @@ fn scroll_area<R>(
     cx.marks.pass_over(content, ui.layer_id());
     let reading = ui.memory(|m| m.has_focus(content));
     let out = area.id_salt(salt).show(ui, |ui| {
-        if reading {
+        if reading || keys_free {
             scroll_by_keys(ui, content);
         }
         let inner = add(ui, cx);

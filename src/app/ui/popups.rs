@@ -5,7 +5,7 @@
 //! two columns where it is wide, each key over its meaning where it is
 //! narrow, scrolling where it is tall.
 
-use super::dialog::{scroll, Dialog};
+use super::dialog::{scroll, scroll_by_any_keys, Dialog};
 use super::Cx;
 use crate::app::lang::tr;
 use crate::app::model::bindings::{browser_keeps, control_of, BINDINGS};
@@ -130,7 +130,7 @@ impl Popups {
             .closable()
             .modal(ctx)
             .show(ctx, cx, |ui, cx| {
-                scroll(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, cx| {
+                scroll_by_any_keys(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, cx| {
                     let grid = |ui: &mut egui::Ui, id: &str, part: &[(String, String)]| {
                         egui::Grid::new(id)
                             .striped(true)
@@ -171,7 +171,11 @@ impl Popups {
                 });
             });
         cx.marks.note("help_window", shown.rect);
-        if shown.close {
+        // Esc closes the help even when a control in it has the keys (egui
+        // takes them back first: it needed a second Esc).
+        let esc_in_help =
+            cx.keys == super::Keys::Controls && ctx.input(|i| i.key_pressed(egui::Key::Escape));
+        if shown.close || esc_in_help {
             cx.send(Command::ToggleHelp);
         }
     }
