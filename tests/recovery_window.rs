@@ -1,6 +1,7 @@
 //! Never lose work, tested as it happens: the window autosaves, is killed
 //! (as by a crash), and the next start offers the sandbox back; `R`
-//! restores it exactly, a normal close leaves nothing behind, and a folder
+//! restores it exactly, a quit keeps unsaved work for the next start and
+//! leaves nothing once it is saved, and a folder
 //! that cannot be written gives a message while the window carries on.
 //! Under Xvfb, driven by xdotool, read back through `--dump-state`.
 
@@ -117,9 +118,31 @@ fn a_killed_window_is_offered_back_and_restored_exactly() {
         "paused, so exactly where they were saved"
     );
 
-    // A normal close leaves nothing to recover.
+    // The restored work is not saved yet: Ctrl+Q keeps it for the next
+    // start (it used to go with the quit) …
     second.quit();
-    assert!(!file.exists(), "Ctrl+Q removes the recovery file");
+    let kept = Scene::load(&file).expect("Ctrl+Q with unsaved work keeps it");
+    assert_eq!(positions(&kept), positions(&saved));
+    let out = tempfile::tempdir().unwrap();
+    let out_dir = out.path().to_str().expect("utf-8 temp path");
+    let third = Sandbox::start_with_state(
+        &x,
+        &["--autosave", "0.5", "--paused", "--out", out_dir],
+        state.path(),
+    );
+    let s = third.wait_frames(10);
+    assert_eq!(
+        s["recovery"]["offered"], true,
+        "and the next start offers it"
+    );
+    // … and once it is saved, a close leaves nothing to recover.
+    third.xdo(&["key", "r"]);
+    wait_for(&third, "the restore", |s| s["recovery"]["offered"] == false);
+    third.xdo(&["key", "ctrl+s"]);
+    third.wait_frames(3);
+    third.quit();
+    assert_eq!(std::fs::read_dir(out.path()).unwrap().count(), 1, "saved");
+    assert!(!file.exists(), "saved, then Ctrl+Q: no recovery file");
 }
 
 fn a_folder_that_cannot_be_written_gives_a_message_and_the_window_goes_on() {

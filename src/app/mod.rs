@@ -240,7 +240,7 @@ impl App {
         });
         if model.recovery.offered.is_some() {
             eprintln!(
-                "impulse: an earlier session did not close normally; R restores it ({})",
+                "impulse: an earlier session ended with unsaved changes; R restores it ({})",
                 model.recovery.path().display()
             );
         }
@@ -313,7 +313,7 @@ impl App {
                 .is_some_and(|limit| get_time() >= limit);
             let closing = self.model.session.requests.quit || is_quit_requested() || timed_out;
             if closing {
-                self.model.recovery.finish();
+                self.model.on_close();
             }
             let requested = self.model.session.requests.screenshot.take();
             let wanted = (closing && self.options.screenshot.is_some()) || requested.is_some();

@@ -172,7 +172,7 @@ recovery-question-browser = Dieser Browser hat deinen letzten Sandkasten aufbewa
     [one] 1 Scheibe
    *[other] { $discs } Scheiben
 }). Wiederherstellen oder beiseitelegen?
-recovery-question = Die letzte Sitzung wurde nicht normal beendet. Ihre Szene { $name } ({ $discs ->
+recovery-question = Die letzte Sitzung endete mit ungespeicherten Änderungen. Ihre Szene { $name } ({ $discs ->
     [one] 1 Scheibe
    *[other] { $discs } Scheiben
 }) wiederherstellen oder beiseitelegen?

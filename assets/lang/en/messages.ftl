@@ -172,7 +172,7 @@ recovery-question-browser = This browser kept your last sandbox, { $name } ({ $d
     [one] 1 disc
    *[other] { $discs } discs
 }). Restore it, or set it aside?
-recovery-question = The last session did not close normally. Restore its { $name } ({ $discs ->
+recovery-question = The last session ended with changes that were not saved. Restore its { $name } ({ $discs ->
     [one] 1 disc
    *[other] { $discs } discs
 }), or set it aside?

@@ -172,7 +172,7 @@ recovery-question-browser = Este navegador guardó tu último experimento, { $na
     [one] 1 disco
    *[other] { $discs } discos
 }). ¿Restaurarlo o dejarlo aparte?
-recovery-question = La última sesión no se cerró bien. ¿Restaurar su escena, { $name } ({ $discs ->
+recovery-question = La última sesión terminó con cambios sin guardar. ¿Restaurar su escena, { $name } ({ $discs ->
     [one] 1 disco
    *[other] { $discs } discos
 }), o dejarla aparte?

@@ -172,7 +172,7 @@ recovery-question-browser = Ce navigateur a gardé votre dernier bac à sable, �
     [one] { $discs } disque
    *[other] { $discs } disques
 }). Le restaurer, ou le mettre de côté ?
-recovery-question = La dernière session ne s'est pas fermée normalement. Restaurer sa scène « { $name } » ({ $discs ->
+recovery-question = La dernière session s'est terminée avec des modifications non enregistrées. Restaurer sa scène « { $name } » ({ $discs ->
     [one] { $discs } disque
    *[other] { $discs } disques
 }), ou la mettre de côté ?

@@ -172,7 +172,7 @@ recovery-question-browser = Este navegador guardou a sua última caixa livre, { 
     [one] { $discs } disco
    *[other] { $discs } discos
 }). Restaurar ou deixar de lado?
-recovery-question = A última sessão não fechou normalmente. Restaurar a cena dela, { $name } ({ $discs ->
+recovery-question = A última sessão terminou com alterações não salvas. Restaurar a cena dela, { $name } ({ $discs ->
     [one] { $discs } disco
    *[other] { $discs } discos
 }), ou deixar de lado?

@@ -1,9 +1,10 @@
 //! Never lose work: every few seconds, while the person has unsaved
 //! changes, the sandbox is written, atomically, to a recovery file; a
-//! window that closes normally (or whose work is saved) removes it, so a
-//! file that is still there at the next start means the last session ended
-//! abruptly with work in it (a crash, a killed process, a power cut), and
-//! the window offers to restore it: `R` restores, `Esc` sets it aside
+//! window that closes with its work saved removes it, and one that closes
+//! with work unsaved writes it a last time, so a file that is still there
+//! at the next start means the last session ended with work in it (a quit
+//! without saving, a crash, a killed process, a power cut), and the window
+//! offers to restore it: `R` restores, `Esc` sets it aside
 //! (renamed, not deleted). The simulation waits while it asks. In the
 //! browser nothing is asked: a reload or a return reopens the kept sandbox,
 //! and a shared link sets it aside (its own key, [`KEPT_NAME`]) for the
@@ -172,7 +173,13 @@ impl Recovery {
         }
     }
 
-    /// The window closes normally: nothing to recover next time.
+    /// Whether autosave is on (`--autosave 0` turns it off).
+    pub fn enabled(&self) -> bool {
+        self.every > 0.0
+    }
+
+    /// The window closes with nothing unsaved: nothing to recover next
+    /// time.
     pub fn finish(&mut self) {
         if self.every > 0.0 && self.offered.is_none() {
             keep::remove(&self.path);
@@ -282,6 +289,23 @@ impl Sandbox {
         if let Some(problem) = self.recovery.save(now, hash, &text) {
             self.report(problem);
         }
+    }
+
+    /// The window closes. Unsaved work is written one last time and left
+    /// for the next start to offer: a quit (Ctrl+Q, the window's close
+    /// button) with changes not saved loses nothing, and asks nothing now.
+    /// With nothing unsaved the file goes.
+    pub fn on_close(&mut self) {
+        let unanswered = self.recovery.offered.is_some();
+        if self.recovery.enabled() && !unanswered && self.worth_keeping() {
+            let (now, hash) = (self.session.now, self.world.state_hash());
+            let text = self.current_scene().to_toml();
+            if let Some(problem) = self.recovery.save(now, hash, &text) {
+                eprintln!("impulse: {problem}");
+            }
+            return;
+        }
+        self.recovery.finish();
     }
 
     /// Opens the session that was offered (its Restore button, or `R`).

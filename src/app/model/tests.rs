@@ -354,6 +354,17 @@ fn only_unsaved_work_is_kept_for_recovery() {
     s.apply(Command::Save);
     run(&mut s, 1.0);
     assert!(!file.exists(), "saved: nothing left to recover");
+    // A quit with nothing unsaved leaves nothing; with a change not saved
+    // (within the autosave's interval) it writes the change, for the next
+    // start to offer: a Ctrl+Q lost it.
+    s.on_close();
+    assert!(!file.exists(), "nothing unsaved: nothing kept");
+    s.apply(Command::ToggleGravity);
+    s.on_close();
+    let kept = Scene::load(&file).expect("the change is kept at the close");
+    assert_eq!(kept.world.gravity, s.world.laws.gravity);
+    let next = sandbox_with(dir.path(), "preset-8-gas.toml", false, 0.5);
+    assert!(next.recovery.offered.is_some(), "the next start offers it");
 }
 
 #[test]

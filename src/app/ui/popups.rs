@@ -1,6 +1,6 @@
 //! What the user opens and closes, the only things allowed over the world:
 //! the key list (H), made from the bindings table, the preset menu (P), and
-//! the question whether to restore a session that did not close normally.
+//! the question whether to restore a session that ended with unsaved work.
 //! Each fits the window at every scale: a fixed size within the window,
 //! two columns where it is wide, each key over its meaning where it is
 //! narrow, scrolling where it is tall.
