@@ -3,6 +3,7 @@
 select-no-discs = Keine Scheibe zum Auswählen: Enter setzt eine in die Mitte.
 selected-disc-said = Scheibe { $disc } von { $discs } gewählt: { $mass }, Geschwindigkeit { $velocity }
 launched-at-centre = Scheibe { $disc } ruht in der Mitte: Bei angehaltener Simulation stellen die Pfeiltasten ihre Geschwindigkeit ein
+launched-near-centre = Scheibe { $disc } ruht neben Scheibe { $beside } (die Mitte war besetzt): Bei angehaltener Simulation stellen die Pfeiltasten ihre Geschwindigkeit ein
 
 ## Der Weg über die Tastatur (Zeilen der Hilfe)
 keys-focus = Tab / Umschalt+Tab
@@ -15,7 +16,7 @@ keys-launch-centre = Enter
 help-launch-centre = eine neue, ruhende Scheibe in der Mitte der Ansicht, gleich ausgewählt
 keys-in-panels = Die Tasten bedienen jetzt die Bedienelemente: Esc oder ein Klick in die Welt schaltet die Tastenkürzel wieder ein.
 keys-in-panels-short = Esc: Tastenkürzel wieder an
-keys-tab-edge = Reiterhöhe: Pfeile eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die eigene. Esc: Tastenkürzel wieder an.
+keys-tab-edge = Reiterhöhe: Pfeile eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter: passende Höhe. Esc: Tastenkürzel wieder an.
 keys-tab-edge-short = Pfeile, Pos1, Ende: Reiterhöhe
 keys-after-field = Leertaste, N und J wirken auf die Simulation; die anderen Tastenkürzel warten: Esc oder ein Klick in die Welt schaltet sie wieder ein.
 

@@ -66,6 +66,7 @@ edit-substeps = Teilschritte
 edit-disc = Scheibe bearbeiten
 edit-delete = Löschen
 edit-launch = Abschuss
+edit-add-disc = neue Scheibe
 edit-fling = Schleudern
 edit-aim = Geschwindigkeit festlegen
 no-room = Hier ist kein Platz für eine neue Scheibe

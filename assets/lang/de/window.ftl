@@ -290,4 +290,4 @@ launch-no-room = hier ist kein Platz
 gas-name = Gas aus { $count } Scheiben
 gas-description = { $count } gleiche Scheiben bedecken 30 % eines periodischen Kastens (--gas { $count })
 tab-edge = Höhe des Reiters
-tab-edge-hover = Ziehen, um den Reiter höher oder niedriger zu machen. Mit der Tastatur (mit Tab hierher): die Pfeiltasten eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die eigene Höhe; oder Doppelklick.
+tab-edge-hover = Ziehen, um den Reiter höher oder niedriger zu machen. Mit der Tastatur (mit Tab hierher): die Pfeiltasten eine Zeile, Pos1 am höchsten, Ende am niedrigsten, Enter die passende Höhe; oder Doppelklick.

@@ -3,6 +3,7 @@
 select-no-discs = No discs to select: Enter puts one at the centre.
 selected-disc-said = Disc { $disc } of { $discs } selected: { $mass }, velocity { $velocity }
 launched-at-centre = Disc { $disc } at rest at the centre: with the simulation paused, the arrow keys aim it
+launched-near-centre = Disc { $disc } at rest beside disc { $beside } (the centre was taken): with the simulation paused, the arrow keys aim it
 
 ## The keyboard path (lines of the help)
 keys-focus = Tab / Shift+Tab
@@ -15,7 +16,7 @@ keys-launch-centre = Enter
 help-launch-centre = a new disc at rest at the centre of the view, selected
 keys-in-panels = The keys work the controls now: Esc or a click in the world makes the shortcut keys work again.
 keys-in-panels-short = Esc: shortcut keys again
-keys-tab-edge = Tab height: arrows a row, Home tallest, End shortest, Enter its own. Esc: shortcut keys again.
+keys-tab-edge = Tab height: arrows a row, Home tallest, End shortest, Enter: its own height. Esc: shortcut keys again.
 keys-tab-edge-short = Arrows, Home, End: tab height
 keys-after-field = Space, N and J act on the simulation; the other shortcut keys wait: Esc or a click in the world makes them work again.
 

@@ -66,6 +66,7 @@ edit-substeps = substeps
 edit-disc = edit a disc
 edit-delete = delete
 edit-launch = launch
+edit-add-disc = a new disc
 edit-fling = fling
 edit-aim = set a velocity
 no-room = No room for a new disc here

@@ -185,9 +185,9 @@ totals-energy = energy
 totals-kinetic-energy = kinetic energy
 totals-momentum = momentum
 totals-angular-momentum = angular momentum L
-totals-change = change since t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-line = change since t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
-totals-change-wrapping = change since t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } is not kept when discs wrap round the edges
+totals-change = Change since t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-line = Change since t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
+totals-change-wrapping = Change since t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } is not kept when discs wrap round the edges
 totals-none = No record yet: run the simulation.
 totals-rotational-ke = rotational KE
 totals-ke-sum = KE + rotational KE

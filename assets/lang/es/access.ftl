@@ -3,6 +3,7 @@
 select-no-discs = No hay discos que seleccionar: Intro pone uno en el centro.
 selected-disc-said = Disco { $disc } de { $discs } seleccionado: { $mass }, velocidad { $velocity }
 launched-at-centre = Disco { $disc } en reposo en el centro: con la simulación en pausa, las flechas fijan su velocidad
+launched-near-centre = Disco { $disc } en reposo junto al disco { $beside } (el centro estaba ocupado): con la simulación en pausa, las flechas fijan su velocidad
 
 ## El recorrido con el teclado (líneas de la ayuda)
 keys-focus = Tab / Mayús+Tab

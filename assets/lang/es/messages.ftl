@@ -66,6 +66,7 @@ edit-substeps = subpasos
 edit-disc = editar un disco
 edit-delete = borrar
 edit-launch = lanzar un disco nuevo
+edit-add-disc = añadir un disco
 edit-fling = lanzar un disco
 edit-aim = fijar una velocidad
 no-room = Aquí no hay espacio para un disco nuevo

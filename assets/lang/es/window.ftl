@@ -185,9 +185,9 @@ totals-energy = energía
 totals-kinetic-energy = energía cinética
 totals-momentum = cantidad de movimiento
 totals-angular-momentum = momento angular L
-totals-change = cambio desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-line = cambio desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
-totals-change-wrapping = cambio desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } no se conserva cuando los discos pasan de un borde al opuesto
+totals-change = Cambio desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-line = Cambio desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
+totals-change-wrapping = Cambio desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } no se conserva cuando los discos pasan de un borde al opuesto
 totals-none = Aún no hay registro: pon en marcha la simulación.
 totals-rotational-ke = Ec de rotación
 totals-ke-sum = Ec + Ec de rotación

@@ -3,6 +3,7 @@
 select-no-discs = Aucun disque à sélectionner : Entrée en place un au centre.
 selected-disc-said = Disque { $disc } sur { $discs } sélectionné : { $mass }, vitesse { $velocity }
 launched-at-centre = Disque { $disc } au repos au centre : simulation en pause, les touches fléchées règlent sa vitesse
+launched-near-centre = Disque { $disc } au repos à côté du disque { $beside } (le centre était pris) : simulation en pause, les touches fléchées règlent sa vitesse
 
 ## Le parcours au clavier (lignes de l'aide)
 keys-focus = Tab / Maj+Tab

@@ -66,6 +66,7 @@ edit-substeps = sous-pas
 edit-disc = modification d'un disque
 edit-delete = suppression
 edit-launch = lancement d'un disque
+edit-add-disc = ajout d'un disque
 edit-fling = disque attrapé et lancé
 edit-aim = réglage d'une vitesse
 no-room = Pas de place ici pour un nouveau disque

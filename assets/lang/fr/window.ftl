@@ -185,9 +185,9 @@ totals-energy = énergie
 totals-kinetic-energy = énergie cinétique
 totals-momentum = quantité de mouvement
 totals-angular-momentum = moment cinétique L
-totals-change = variation depuis t = { $since } : { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-line = variation depuis t = { $since } : { $p_name } { $momentum }, { $e_name } { $energy }
-totals-change-wrapping = variation depuis t = { $since } : { $p_name } { $momentum }, { $e_name } { $energy } ; { $l_name } n'est pas conservé quand des disques passent d'un bord à l'autre
+totals-change = Variation depuis t = { $since } : { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-line = Variation depuis t = { $since } : { $p_name } { $momentum }, { $e_name } { $energy }
+totals-change-wrapping = Variation depuis t = { $since } : { $p_name } { $momentum }, { $e_name } { $energy } ; { $l_name } n'est pas conservé quand des disques passent d'un bord à l'autre
 totals-none = Rien d'enregistré pour l'instant : lancez la simulation.
 totals-rotational-ke = Ec de rotation
 totals-ke-sum = Ec + Ec de rotation

@@ -3,6 +3,7 @@
 select-no-discs = Nenhum disco para selecionar: Enter coloca um no centro.
 selected-disc-said = Disco { $disc } de { $discs } selecionado: { $mass }, velocidade { $velocity }
 launched-at-centre = Disco { $disc } em repouso no centro: com a simulação pausada, as teclas de seta definem a velocidade dele
+launched-near-centre = Disco { $disc } em repouso ao lado do disco { $beside } (o centro estava ocupado): com a simulação pausada, as teclas de seta definem a velocidade dele
 
 ## O caminho pelo teclado (linhas da ajuda)
 keys-focus = Tab / Shift+Tab

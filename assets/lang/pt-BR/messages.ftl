@@ -66,6 +66,7 @@ edit-substeps = subpassos
 edit-disc = editar um disco
 edit-delete = apagar
 edit-launch = lançar
+edit-add-disc = disco novo
 edit-fling = arremessar
 edit-aim = definir uma velocidade
 no-room = Sem espaço para um disco novo aqui

@@ -185,9 +185,9 @@ totals-energy = energia
 totals-kinetic-energy = energia cinética
 totals-momentum = quantidade de movimento
 totals-angular-momentum = momento angular L
-totals-change = variação desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
-totals-change-line = variação desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
-totals-change-wrapping = variação desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } não se conserva quando os discos passam de uma borda para a oposta
+totals-change = Variação desde t = { $since }: { $p_name } { $momentum }, { $l_name } { $angular }, { $e_name } { $energy }
+totals-change-line = Variação desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }
+totals-change-wrapping = Variação desde t = { $since }: { $p_name } { $momentum }, { $e_name } { $energy }; { $l_name } não se conserva quando os discos passam de uma borda para a oposta
 totals-none = Nada registrado ainda: rode a simulação.
 totals-rotational-ke = Ec de rotação
 totals-ke-sum = Ec + Ec de rotação

@@ -228,7 +228,7 @@ impl Command {
             EditDisc { .. } => "edit-disc",
             DeleteSelected => "edit-delete",
             AimSelected(_) => "edit-aim",
-            LaunchAtCentre => "edit-launch",
+            LaunchAtCentre => "edit-add-disc",
             // A gesture's release names its own change (pointer.rs).
             _ => return None,
         })

@@ -84,7 +84,23 @@ impl Sandbox {
         ));
         let i = self.world.particles.len() - 1;
         self.selected = Some(i);
-        self.toast(tr!("launched-at-centre", disc = disc_number(i)));
+        // Where the centre was taken, it went beside the nearest disc: the
+        // message said "at the centre" all the same.
+        let beside = (pos.distance(centre) > 1e-9 * disc.radius.max(1.0))
+            .then(|| self.world.particles[..i].iter().enumerate())
+            .and_then(|others| {
+                others
+                    .min_by(|a, b| pos.distance(a.1.pos).total_cmp(&pos.distance(b.1.pos)))
+                    .map(|(k, _)| k)
+            });
+        self.toast(match beside {
+            Some(k) => tr!(
+                "launched-near-centre",
+                disc = disc_number(i),
+                beside = disc_number(k)
+            ),
+            None => tr!("launched-at-centre", disc = disc_number(i)),
+        });
     }
 }
 
@@ -126,5 +142,29 @@ mod tests {
         assert_eq!(s.world.particles[n].vel, DVec2::ZERO);
         s.apply(Command::Undo);
         assert_eq!(s.world.particles.len(), n);
+    }
+
+    /// A second Enter finds the centre taken: the disc goes beside the
+    /// first, and the message says so (it said "at the centre"); undo
+    /// names it a new disc, not a launch.
+    #[test]
+    fn enter_says_where_the_new_disc_went() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_on(dir.path(), "preset-1-head-on.toml");
+        s.apply(Command::OpenEmpty);
+        s.apply(Command::LaunchAtCentre);
+        let first = s.message().unwrap_or_default();
+        assert!(first.contains("at the centre"), "{first}");
+        s.apply(Command::LaunchAtCentre);
+        let second = s.message().unwrap_or_default();
+        assert!(second.contains("Disc 2 at rest beside disc 1"), "{second}");
+        let [a, b] = [&s.world.particles[0], &s.world.particles[1]];
+        assert!(
+            a.pos.distance(b.pos) >= a.radius + b.radius - 1e-9,
+            "side by side"
+        );
+        s.apply(Command::Undo);
+        let undone = s.message().unwrap_or_default();
+        assert!(undone.starts_with("Undone: a new disc"), "{undone}");
     }
 }

@@ -53,13 +53,17 @@ impl View for Totals {
         let drift = match (model.record.totals.drift(), samples.first(), samples.last()) {
             (Some(_), Some(a), Some(b)) => tr!(
                 change,
-                since = with_unit(a.time, 2, "s"),
+                since = unit_kept(with_unit(a.time, 2, "s")),
                 p_name = p_name,
-                momentum = vector(b.momentum - a.momentum, 3, "kg·m/s"),
+                momentum = unit_kept(vector(b.momentum - a.momentum, 3, "kg·m/s")),
                 l_name = l_name,
-                angular = with_unit(b.angular_momentum - a.angular_momentum, 3, "kg·m²/s"),
+                angular = unit_kept(with_unit(
+                    b.angular_momentum - a.angular_momentum,
+                    3,
+                    "kg·m²/s"
+                )),
                 e_name = energy_name,
-                energy = with_unit(b.energy() - a.energy(), 3, "J")
+                energy = unit_kept(with_unit(b.energy() - a.energy(), 3, "J"))
             ),
             _ => tr!("totals-none"),
         };
@@ -209,6 +213,15 @@ impl TimePlots {
     }
 }
 
+/// A quantity whose unit stays on its number's line where the change
+/// wraps (a German line ended "ΔE 0,000" with "J" alone below it).
+fn unit_kept(quantity: String) -> String {
+    match quantity.rsplit_once(' ') {
+        Some((number, unit)) => format!("{number}\u{a0}{unit}"),
+        None => quantity,
+    }
+}
+
 /// The change since the record began, whole on as many lines as it needs,
 /// then the plots' series named in their colours after it, on two lines at
 /// most or the change's last, cut with "…" where that is full: then the
@@ -261,7 +274,7 @@ fn change_and_names_galley<'a>(
 
 #[cfg(test)]
 mod tests {
-    use super::change_and_names_galley;
+    use super::{change_and_names_galley, unit_kept};
     use crate::app::ui::widgets::headless;
     use egui::Color32;
 
@@ -277,8 +290,18 @@ mod tests {
     }
 
     #[test]
+    fn a_unit_stays_on_its_numbers_line() {
+        assert_eq!(unit_kept("0,000 J".into()), "0,000\u{a0}J");
+        assert_eq!(
+            unit_kept("(1,000; −2,000) kg·m/s".into()),
+            "(1,000; −2,000)\u{a0}kg·m/s",
+            "the vector may still break after its separator"
+        );
+    }
+
+    #[test]
     fn the_change_stays_whole_and_the_names_take_two_lines_at_most() {
-        let change = "change since t = 0.00 s: Δp (−11.360, −0.058) kg·m/s, ΔL 80.799 kg·m²/s, \
+        let change = "Change since t = 0.00 s: Δp (−11.360, −0.058) kg·m/s, ΔL 80.799 kg·m²/s, \
                       ΔE 0.000 J";
         let rough = ["p_x", "p_y", "L", "KE", "rotational KE", "sum"];
         // Wide enough for the change on one line: the names go on to a
