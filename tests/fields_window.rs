@@ -2,7 +2,7 @@
 //! Discs table at a projector's size follows Tab to each field and the
 //! rest of its row; Ctrl with a letter types nothing there, and Ctrl+S
 //! applies what was typed and saves it; the text size and theme chosen are
-//! where the next start opens.
+//! where the next start opens; a disc is placed by its typed position.
 
 #[path = "window_harness/mod.rs"]
 mod harness;
@@ -19,6 +19,10 @@ fn main() -> std::process::ExitCode {
         (
             "the_text_size_and_theme_chosen_are_kept_for_the_next_start",
             the_text_size_and_theme_chosen_are_kept_for_the_next_start,
+        ),
+        (
+            "a_disc_is_placed_from_the_keyboard_by_its_position_fields",
+            a_disc_is_placed_from_the_keyboard_by_its_position_fields,
         ),
     ])
 }
@@ -157,4 +161,48 @@ fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
         "--ui-scale is for one run"
     );
     third.quit();
+}
+
+/// A teacher with no mouse places a disc: Q selects it, Tab reaches its x
+/// field, and x and y typed with Enter move it there (only a drag could);
+/// until Enter the panel says they wait.
+fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
+    let x = Xvfb::start("position fields");
+    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "1.5"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "q"]);
+    app.wait_frames(3);
+    tab_to(&app, "section_selected", 60);
+    app.xdo(&["key", "Return"]);
+    app.wait_frames(3);
+    tab_to(&app, "disc_x", 20);
+    app.xdo(&["type", "3"]);
+    app.xdo(&["key", "Tab"]);
+    app.wait_frames(2);
+    app.xdo(&["type", "2.5"]);
+    // Typed, not applied: the panel says so (Tab applied nothing, silently).
+    let s = app.wait_frames(3);
+    assert!(
+        s["panel_widgets"]["edit_pending"].is_array(),
+        "no word that the typed values wait for Enter"
+    );
+    app.xdo(&["key", "Return"]);
+    let pos = |s: &Value| {
+        let p = &s["particles"][0]["pos"];
+        [p[0].as_f64().unwrap(), p[1].as_f64().unwrap()]
+    };
+    app.wait_for("the disc moved", 60, |s| pos(s) == [3.0, 2.5]);
+    let s = app.wait_frames(3);
+    assert!(
+        s["panel_widgets"]["edit_pending"].is_null(),
+        "applied: nothing waits"
+    );
+    assert!(
+        s["ui"]["message"].is_null() || !s["ui"]["message"].as_str().unwrap().contains("overlap"),
+        "{}",
+        s["ui"]
+    );
+    app.quit();
 }

@@ -153,11 +153,15 @@ slider-out-of-range = { $typed } liegt außerhalb von { $low } bis { $high }: ei
 slider-sign-dropped = { $typed } wird als { $value } gelesen: Die Richtung steht schon im Namen
 edit-across-the-line = Hier bewegen sich die Scheiben auf einer Geraden: { $name } muss 0 sein
 edit-nothing-changed = Nichts geändert: zuerst einen neuen Wert eingeben
+edit-pending = Eingetippt, noch nicht übernommen: Enter oder Übernehmen
 edit-applied = Für Scheibe { $disc } übernommen
 edit-applied-table = Scheibe { $disc }: { $values }
 edit-refused-table = Scheibe { $disc }: { $error }; nichts geändert
 edit-mass-overlaps = bei { $mass } kg hätte die Scheibe { $size } m Radius (Größe folgt der Masse) und würde Scheibe { $disc } überlappen
 edit-mass-crosses-wall = bei { $mass } kg hätte die Scheibe { $size } m Radius (Größe folgt der Masse) und würde über eine Wand hinausragen
+edit-position-off-the-line = Hier bewegen sich die Scheiben auf einer Geraden: { $name } bleibt { $value } m
+edit-position-crosses-wall = bei { $at } würde die Scheibe über eine Wand hinausragen
+edit-position-overlaps = bei { $at } würde die Scheibe Scheibe { $disc } überlappen
 
 ## Wiederherstellung
 recovery-unreadable-moved = Eine unlesbare Wiederherstellungsdatei wurde nach { $file } verschoben: { $error }

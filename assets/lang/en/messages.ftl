@@ -153,11 +153,15 @@ slider-out-of-range = { $typed } is outside { $low } to { $high }: set to { $val
 slider-sign-dropped = { $typed } read as { $value }: the label gives the direction
 edit-across-the-line = the discs here move along one line: { $name } must be 0
 edit-nothing-changed = Nothing changed: type a new value first
+edit-pending = Typed, not applied yet: Enter or Apply
 edit-applied = Applied to disc { $disc }
 edit-applied-table = Disc { $disc }: { $values }
 edit-refused-table = Disc { $disc }: { $error }; nothing changed
 edit-mass-overlaps = at { $mass } kg the disc would be { $size } m in radius (size follows mass) and overlap disc { $disc }
 edit-mass-crosses-wall = at { $mass } kg the disc would be { $size } m in radius (size follows mass) and cross a wall
+edit-position-off-the-line = the discs here move along one line: { $name } stays { $value } m
+edit-position-crosses-wall = at { $at } the disc would cross a wall
+edit-position-overlaps = at { $at } the disc would overlap disc { $disc }
 
 ## Recovery
 recovery-unreadable-moved = An unreadable recovery file was moved to { $file }: { $error }

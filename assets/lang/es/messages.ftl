@@ -153,11 +153,15 @@ slider-out-of-range = { $typed } está fuera del intervalo de { $low } a { $high
 slider-sign-dropped = { $typed } se lee como { $value }: el nombre ya indica la dirección
 edit-across-the-line = aquí los discos se mueven sobre una recta: { $name } debe ser 0
 edit-nothing-changed = No cambió nada: escribe primero un valor nuevo
+edit-pending = Escrito, aún sin aplicar: Intro o Aplicar
 edit-applied = Aplicado al disco { $disc }
 edit-applied-table = Disco { $disc }: { $values }
 edit-refused-table = Disco { $disc }: { $error }; no cambió nada
 edit-mass-overlaps = con { $mass } kg el disco tendría { $size } m de radio (el tamaño sigue a la masa) y se solaparía con el disco { $disc }
 edit-mass-crosses-wall = con { $mass } kg el disco tendría { $size } m de radio (el tamaño sigue a la masa) y atravesaría una pared
+edit-position-off-the-line = aquí los discos se mueven sobre una recta: { $name } se queda en { $value } m
+edit-position-crosses-wall = en { $at } el disco atravesaría una pared
+edit-position-overlaps = en { $at } el disco se solaparía con el disco { $disc }
 
 ## Recuperación
 recovery-unreadable-moved = Un archivo de recuperación ilegible se movió a { $file }: { $error }

@@ -153,11 +153,15 @@ slider-out-of-range = { $typed } est hors de l'intervalle de { $low } à { $high
 slider-sign-dropped = { $typed } est lu comme { $value } : le nom indique déjà le sens
 edit-across-the-line = ici les disques se déplacent sur une droite : { $name } doit valoir 0
 edit-nothing-changed = Rien n'a changé : tapez d'abord une nouvelle valeur
+edit-pending = Saisi, pas encore appliqué : Entrée ou Appliquer
 edit-applied = Appliqué au disque { $disc }
 edit-applied-table = Disque { $disc } : { $values }
 edit-refused-table = Disque { $disc } : { $error } ; rien n'a changé
 edit-mass-overlaps = avec { $mass } kg, le disque aurait un rayon de { $size } m (taille selon la masse) et chevaucherait le disque { $disc }
 edit-mass-crosses-wall = avec { $mass } kg, le disque aurait un rayon de { $size } m (taille selon la masse) et traverserait un mur
+edit-position-off-the-line = ici les disques se déplacent sur une droite : { $name } reste { $value } m
+edit-position-crosses-wall = en { $at }, le disque traverserait un mur
+edit-position-overlaps = en { $at }, le disque chevaucherait le disque { $disc }
 
 ## Récupération
 recovery-unreadable-moved = Un fichier de récupération illisible a été déplacé vers { $file } : { $error }

@@ -153,11 +153,15 @@ slider-out-of-range = { $typed } está fora do intervalo de { $low } a { $high }
 slider-sign-dropped = { $typed } é lido como { $value }: o nome já indica a direção
 edit-across-the-line = aqui os discos se movem sobre uma reta: { $name } precisa ser 0
 edit-nothing-changed = Nada mudou: digite primeiro um valor novo
+edit-pending = Digitado, ainda não aplicado: Enter ou Aplicar
 edit-applied = Aplicado ao disco { $disc }
 edit-applied-table = Disco { $disc }: { $values }
 edit-refused-table = Disco { $disc }: { $error }; nada mudou
 edit-mass-overlaps = com { $mass } kg o disco teria { $size } m de raio (tamanho segue a massa) e se sobreporia ao disco { $disc }
 edit-mass-crosses-wall = com { $mass } kg o disco teria { $size } m de raio (tamanho segue a massa) e atravessaria uma parede
+edit-position-off-the-line = aqui os discos se movem sobre uma reta: { $name } fica em { $value } m
+edit-position-crosses-wall = em { $at } o disco atravessaria uma parede
+edit-position-overlaps = em { $at } o disco se sobreporia ao disco { $disc }
 
 ## Recuperação
 recovery-unreadable-moved = Um arquivo de recuperação ilegível foi movido para { $file }: { $error }

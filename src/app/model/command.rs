@@ -114,7 +114,8 @@ pub enum Command {
     /// (`None`: untouched); read and checked by the model.
     EditDisc {
         disc: usize,
-        text: [Option<String>; 4],
+        /// Typed text per quantity, in [`super::edit::FIELDS`] order.
+        text: [Option<String>; 6],
         from: EditPlace,
     },
     DeleteSelected,

@@ -10,13 +10,15 @@ use glam::DVec2;
 use impulse::scene::limits;
 use impulse::Particle;
 
-/// The selected disc's editable quantities, in field order (their names
-/// are messages of `window.ftl`).
-pub const FIELDS: [&str; 4] = [
+/// The selected disc's editable quantities, in the order an edit carries
+/// them (their names are messages of `window.ftl`).
+pub const FIELDS: [&str; 6] = [
     "quantity-mass",
     "quantity-radius",
     "quantity-vx",
     "quantity-vy",
+    "quantity-x",
+    "quantity-y",
 ];
 
 /// An edit of a disc's quantities; `None` leaves one as it is.
@@ -30,6 +32,10 @@ pub struct DiscEdit {
     pub vx: Option<f64>,
     /// Velocity, y (m/s).
     pub vy: Option<f64>,
+    /// Position, x (m).
+    pub x: Option<f64>,
+    /// Position, y (m).
+    pub y: Option<f64>,
 }
 
 impl DiscEdit {
@@ -44,6 +50,13 @@ impl DiscEdit {
         p.radius = self.radius.unwrap_or(p.radius);
         p.vel.x = self.vx.unwrap_or(p.vel.x);
         p.vel.y = self.vy.unwrap_or(p.vel.y);
+        p.pos.x = self.x.unwrap_or(p.pos.x);
+        p.pos.y = self.y.unwrap_or(p.pos.y);
+    }
+
+    /// Whether it moves the disc.
+    pub fn moves(&self) -> bool {
+        self.x.is_some() || self.y.is_some()
     }
 }
 
@@ -51,8 +64,8 @@ impl DiscEdit {
 /// order). Every value must be a finite number; mass and radius positive,
 /// the radius at most `max_radius`, each in a scene file's range (so that a
 /// saved scene opens again). The error is one short line.
-pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<DiscEdit, String> {
-    let mut values = [None; 4];
+pub fn parse_disc_edit(changed: [Option<&str>; 6], max_radius: f64) -> Result<DiscEdit, String> {
+    let mut values = [None; 6];
     for (k, text) in changed.into_iter().enumerate() {
         let Some(text) = text else { continue };
         let name = words(FIELDS[k], &[]);
@@ -75,7 +88,8 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
         let ([lo, hi], [least, most]) = match k {
             0 => (limits::MASS, ["10⁻¹² kg", "10¹² kg"]),
             1 => (limits::LENGTH, ["10⁻⁹ m", "10⁹ m"]),
-            _ => ([-limits::SPEED, limits::SPEED], ["−10⁸ m/s", "10⁸ m/s"]),
+            2 | 3 => ([-limits::SPEED, limits::SPEED], ["−10⁸ m/s", "10⁸ m/s"]),
+            _ => ([-limits::POSITION, limits::POSITION], ["−10¹² m", "10¹² m"]),
         };
         if !(lo..=hi).contains(&v) {
             return Err(tr!("edit-out-of-range", name = name, lo = least, hi = most));
@@ -87,6 +101,8 @@ pub fn parse_disc_edit(changed: [Option<&str>; 4], max_radius: f64) -> Result<Di
         radius: values[1],
         vx: values[2],
         vy: values[3],
+        x: values[4],
+        y: values[5],
     })
 }
 
@@ -135,11 +151,11 @@ pub fn polar_velocity(
 impl Sandbox {
     /// Applies an edit typed for `disc`, or keeps it and says what is wrong,
     /// where it was typed.
-    pub(super) fn edit_disc(&mut self, disc: usize, text: &[Option<String>; 4], from: EditPlace) {
+    pub(super) fn edit_disc(&mut self, disc: usize, text: &[Option<String>; 6], from: EditPlace) {
         if disc >= self.world.particles.len() {
             return;
         }
-        let changed: [Option<&str>; 4] = std::array::from_fn(|k| text[k].as_deref());
+        let changed: [Option<&str>; 6] = std::array::from_fn(|k| text[k].as_deref());
         let max_radius = match from {
             EditPlace::Fields => self.biggest_radius(),
             EditPlace::Table => f64::INFINITY,
@@ -161,7 +177,8 @@ impl Sandbox {
         };
         let edit = parse_disc_edit(changed, max_radius)
             .and_then(velocity_kept)
-            .and_then(|e| self.sized_edit(disc, e));
+            .and_then(|e| self.sized_edit(disc, e))
+            .and_then(|e| self.placed_edit(disc, e));
         let note = match edit {
             Ok(edit) if edit.is_empty() => Note::ok(tr!("edit-nothing-changed")),
             Ok(edit) => {
@@ -176,6 +193,8 @@ impl Sandbox {
                             (edit.radius, FIELDS[1], "m"),
                             (edit.vx, FIELDS[2], "m/s"),
                             (edit.vy, FIELDS[3], "m/s"),
+                            (edit.x, FIELDS[4], "m"),
+                            (edit.y, FIELDS[5], "m"),
                         ];
                         let said: Vec<String> = what
                             .iter()
@@ -205,6 +224,51 @@ impl Sandbox {
                 self.messages.table = Some(note);
             }
         }
+    }
+
+    /// A disc moved by its typed position lands where it has room: inside
+    /// the walls, on a one-dimensional world's line, clear of every other
+    /// disc (with the edit's own radius); otherwise refused, saying which.
+    /// The keyboard's way to place a disc (a drag is the mouse's).
+    pub fn placed_edit(&self, i: usize, edit: DiscEdit) -> Result<DiscEdit, String> {
+        let w = &self.world;
+        let Some(mut p) = w.particles.get(i).copied() else {
+            return Ok(edit);
+        };
+        if !edit.moves() {
+            return Ok(edit);
+        }
+        let before = p.pos;
+        edit.apply(&mut p);
+        let at = crate::app::numbers::vector(p.pos, 3, "m");
+        if let Some(axis) = w.laws.constrain {
+            let c = 1 - axis.index();
+            if p.pos[c] != before[c] {
+                let name = words(FIELDS[4 + c], &[]);
+                return Err(tr!(
+                    "edit-position-off-the-line",
+                    name = name,
+                    value = plain(before[c], 3)
+                ));
+            }
+        }
+        let l = &w.laws;
+        if l.boundary == impulse::Boundary::Box
+            && !l.boundary.admits(l.walls, l.size, p.pos, p.radius)
+        {
+            return Err(tr!("edit-position-crosses-wall", at = at));
+        }
+        let overlapped = w.particles.iter().enumerate().find(|&(j, q)| {
+            j != i && l.boundary.separation(q.pos, p.pos, l.size).length() < p.radius + q.radius
+        });
+        if let Some((j, _)) = overlapped {
+            return Err(tr!(
+                "edit-position-overlaps",
+                at = at,
+                disc = disc_number(j)
+            ));
+        }
+        Ok(edit)
     }
 
     /// With "size follows mass", a new mass brings its radius, refused if

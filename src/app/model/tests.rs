@@ -151,7 +151,14 @@ fn commands_that_change_the_scene_can_be_undone_and_the_others_leave_no_level() 
         Command::CycleSubsteps,
         Command::EditDisc {
             disc: 2,
-            text: [Some("3".into()), None, Some("-1.5".into()), None],
+            text: [
+                Some("3".into()),
+                None,
+                Some("-1.5".into()),
+                None,
+                None,
+                None,
+            ],
             from: EditPlace::Table,
         },
         Command::Select(Some(4)),
@@ -194,7 +201,7 @@ fn a_bad_edit_is_refused_where_it_was_typed_and_changes_nothing() {
     let before = s.fingerprint();
     s.apply(Command::EditDisc {
         disc: 0,
-        text: [Some("-2".into()), None, None, None],
+        text: [Some("-2".into()), None, None, None, None, None],
         from: EditPlace::Table,
     });
     assert_eq!(s.fingerprint(), before);
@@ -204,7 +211,7 @@ fn a_bad_edit_is_refused_where_it_was_typed_and_changes_nothing() {
     assert!(s.messages.fields.is_none(), "said where it was typed");
     s.apply(Command::EditDisc {
         disc: 0,
-        text: [Some("2.5".into()), None, None, None],
+        text: [Some("2.5".into()), None, None, None, None, None],
         from: EditPlace::Fields,
     });
     assert_eq!(s.world.particles[0].mass, 2.5);

@@ -8,60 +8,66 @@ use impulse::Scene;
 
 #[test]
 fn edits_parse_only_what_changed_and_refuse_bad_numbers() {
-    let edit = parse_disc_edit([Some("2.5"), None, Some(" -1e-3 "), None], 4.0).unwrap();
+    let edit =
+        parse_disc_edit([Some("2.5"), None, Some(" -1e-3 "), None, None, None], 4.0).unwrap();
     assert_eq!(
         edit,
         DiscEdit {
             mass: Some(2.5),
             radius: None,
             vx: Some(-1e-3),
-            vy: None
+            vy: None,
+            x: None,
+            y: None
         }
     );
-    assert!(parse_disc_edit([None; 4], 4.0).unwrap().is_empty());
+    assert!(parse_disc_edit([None; 6], 4.0).unwrap().is_empty());
     let error = |fields| parse_disc_edit(fields, 4.0).unwrap_err();
     assert_eq!(
-        error([Some("abc"), None, None, None]),
+        error([Some("abc"), None, None, None, None, None]),
         "mass: “abc” is not a number"
     );
     assert_eq!(
-        error([Some("0"), None, None, None]),
+        error([Some("0"), None, None, None, None, None]),
         "mass must be more than 0"
     );
     assert_eq!(
-        error([None, Some("-1"), None, None]),
+        error([None, Some("-1"), None, None, None, None]),
         "radius must be more than 0"
     );
     assert_eq!(
-        error([None, Some("5"), None, None]),
+        error([None, Some("5"), None, None, None, None]),
         "radius must be at most 4 m here"
     );
     assert_eq!(
-        error([None, None, Some("inf"), None]),
+        error([None, None, Some("inf"), None, None, None]),
         "v_x must be a finite number"
     );
     assert_eq!(
-        error([None, None, None, Some("1e999")]),
+        error([None, None, None, Some("1e999"), None, None]),
         "v_y must be a finite number"
     );
     assert_eq!(
-        error([None, None, None, Some("NaN")]),
+        error([None, None, None, Some("NaN"), None, None]),
         "v_y must be a finite number"
     );
-    assert_eq!(error([None, None, Some("  "), None]), "v_x: type a number");
     assert_eq!(
-        parse_disc_edit([None, Some("1,5"), None, None], 4.0)
+        error([None, None, Some("  "), None, None, None]),
+        "v_x: type a number"
+    );
+    assert_eq!(
+        parse_disc_edit([None, Some("1,5"), None, None, None, None], 4.0)
             .unwrap()
             .radius,
         Some(1.5),
         "a decimal comma"
     );
     assert_eq!(
-        error([None, Some("1,5.2"), None, None]),
+        error([None, Some("1,5.2"), None, None, None, None]),
         "radius: “1,5.2” is not a number"
     );
     assert_eq!(
-        parse_disc_edit([None, None, Some("−2"), None], 4.0)
+        parse_disc_edit([None, None, Some("−2"), None, None, None], 4.0)
             .unwrap()
             .vx,
         Some(-2.0),
@@ -100,7 +106,7 @@ fn an_edit_the_table_takes_saves_a_scene_that_opens_again() {
     for file in ["preset-4-glancing.toml", "preset-1-head-on.toml"] {
         let mut s = sandbox_in(dir.path(), file);
         let edit = |s: &mut Sandbox, k: usize, text: &str| {
-            let mut fields: [Option<String>; 4] = Default::default();
+            let mut fields: [Option<String>; 6] = Default::default();
             fields[k] = Some(text.into());
             s.apply(Command::EditDisc {
                 disc: 0,
@@ -180,7 +186,7 @@ fn a_law_changed_voids_the_caption_and_undo_takes_edits_with_their_notes() {
         later(&mut s, 1.0);
         s.apply(Command::EditDisc {
             disc: 0,
-            text: [Some("2.5".into()), None, None, None],
+            text: [Some("2.5".into()), None, None, None, None, None],
             from,
         });
         assert!(s.messages.table.is_some() || s.messages.fields.is_some());
@@ -303,4 +309,62 @@ fn a_speed_and_a_direction_typed_give_their_velocity() {
         refused(Some("-1"), None),
         crate::app::lang::tr!("edit-speed-negative")
     );
+}
+
+/// A disc placed by its typed position (the keyboard's way to place
+/// one): moved where it has room, refused with the reason where it would
+/// overlap another or cross a wall, and undone in one step.
+#[test]
+fn a_typed_position_moves_the_disc_where_it_has_room() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+    let place = |s: &mut Sandbox, x: &str, y: &str| {
+        s.apply(Command::EditDisc {
+            disc: 0,
+            text: [None, None, None, None, Some(x.into()), Some(y.into())],
+            from: EditPlace::Fields,
+        });
+        s.messages.fields.clone().unwrap()
+    };
+    let (start, other) = (s.world.particles[0].pos, s.world.particles[1]);
+    let r = s.world.particles[0].radius;
+    let note = place(&mut s, "3", "2,5");
+    assert!(!note.error, "{}", note.text);
+    assert_eq!(s.world.particles[0].pos, DVec2::new(3.0, 2.5));
+    let on_top = format!("{}", other.pos.x + 0.5 * r);
+    let note = place(&mut s, &on_top, &format!("{}", other.pos.y));
+    assert!(
+        note.error && note.text.ends_with("overlap disc 2"),
+        "{}",
+        note.text
+    );
+    let note = place(&mut s, "0", "2,5");
+    assert!(
+        note.error && note.text.ends_with("cross a wall"),
+        "{}",
+        note.text
+    );
+    assert_eq!(
+        s.world.particles[0].pos,
+        DVec2::new(3.0, 2.5),
+        "refused: unmoved"
+    );
+    s.apply(Command::Undo);
+    assert_eq!(s.world.particles[0].pos, start, "undo puts it back");
+    // On a one-dimensional world's line a disc moves only along it.
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    let start = s.world.particles[0].pos;
+    let note = place(
+        &mut s,
+        &format!("{}", start.x),
+        &format!("{}", start.y + 1.0),
+    );
+    assert!(note.error && note.text.contains("y stays"), "{}", note.text);
+    let note = place(
+        &mut s,
+        &format!("{}", start.x - 1.0),
+        &format!("{}", start.y),
+    );
+    assert!(!note.error, "{}", note.text);
+    assert_eq!(s.world.particles[0].pos, start - DVec2::X);
 }

@@ -22,7 +22,7 @@ fn a_reset_that_drops_edits_says_so_and_undo_brings_them_back() {
     later(&mut s, 1.0);
     s.apply(Command::EditDisc {
         disc: 0,
-        text: [Some("3".into()), None, None, None],
+        text: [Some("3".into()), None, None, None, None, None],
         from: EditPlace::Table,
     });
     assert_eq!(s.world.particles[0].mass, 3.0);

@@ -417,7 +417,7 @@ impl View for DiscsTable {
             self.editing = None;
         }
         if let Some(cell) = commit {
-            let mut text: [Option<String>; 4] = Default::default();
+            let mut text: [Option<String>; 6] = Default::default();
             text[cell.field] = Some(cell.text.clone());
             cx.send(Command::EditDisc {
                 disc: cell.disc,

@@ -1,7 +1,7 @@
 //! *New discs* (radius and mass of the next launch, or radius from mass)
-//! and *Selected disc* (its mass, radius and velocity, as v_x and v_y and as
-//! speed and direction, in text fields that follow the disc until typed in;
-//! Apply or Enter sends the edit).
+//! and *Selected disc* (its mass, radius, position, and velocity as v_x and
+//! v_y and as speed and direction, in text fields that follow the disc
+//! until typed in; Apply or Enter sends the edit).
 
 use super::super::widgets::{command_button, select_all_on_focus, show_note, slider, Reading};
 use super::Cx;
@@ -21,10 +21,10 @@ pub struct DiscFields {
     /// Which disc they were filled from.
     disc: Option<usize>,
     /// What the fields hold.
-    text: [String; 6],
+    text: [String; 8],
     /// What the disc had when a field was last filled: a field whose text
     /// differs has been edited and stops following the disc.
-    shown: [String; 6],
+    shown: [String; 8],
     /// An edit was sent: once the model has answered, fields that it
     /// took follow the disc again.
     sent: bool,
@@ -32,26 +32,35 @@ pub struct DiscFields {
     polar_error: Option<String>,
 }
 
-/// Each field's name (a message of `window.ftl`): the model's four, then
-/// the speed and the direction, which are sent as v_x and v_y.
-const FIELD_NAMES: [&str; 6] = [
+/// Each field's name (a message of `window.ftl`): the model's six (mass,
+/// radius, v_x, v_y, x, y), then the speed and the direction, which are
+/// sent as v_x and v_y.
+const FIELD_NAMES: [&str; 8] = [
     FIELDS[0],
     FIELDS[1],
     FIELDS[2],
     FIELDS[3],
+    FIELDS[4],
+    FIELDS[5],
     "quantity-speed",
     "quantity-direction",
 ];
 /// Each field's unit, after its name.
-const FIELD_UNITS: [&str; 6] = ["kg", "m", "m/s", "m/s", "m/s", "°"];
-const FIELD_KEYS: [&str; 6] = [
+const FIELD_UNITS: [&str; 8] = ["kg", "m", "m/s", "m/s", "m", "m", "m/s", "°"];
+const FIELD_KEYS: [&str; 8] = [
     "disc_mass",
     "disc_radius",
     "disc_vx",
     "disc_vy",
+    "disc_x",
+    "disc_y",
     "disc_speed",
     "disc_direction",
 ];
+/// The fields top to bottom: where it is, then how it moves.
+const SHOWN_IN_ORDER: [usize; 8] = [0, 1, 4, 5, 2, 3, 6, 7];
+/// The direction's field (its label explains the angle).
+const DIRECTION: usize = 7;
 
 /// Radius and mass of the next disc launched.
 pub fn new_discs(ui: &mut Ui, cx: &mut Cx) {
@@ -133,6 +142,8 @@ impl DiscFields {
             p.radius,
             p.vel.x,
             p.vel.y,
+            p.pos.x,
+            p.pos.y,
             p.vel.length(),
             direction,
         ]
@@ -147,7 +158,7 @@ impl DiscFields {
         egui::Grid::new("selected_fields")
             .num_columns(2)
             .show(ui, |ui| {
-                for k in 0..FIELD_NAMES.len() {
+                for k in SHOWN_IN_ORDER {
                     let r =
                         ui.add(egui::TextEdit::singleline(&mut self.text[k]).desired_width(100.0));
                     select_all_on_focus(ui, &r, &self.text[k]);
@@ -157,13 +168,26 @@ impl DiscFields {
                         enter = true;
                     }
                     let name = crate::app::lang::text(FIELD_NAMES[k], &[]);
-                    let label = ui.label(format!("{name} ({})", FIELD_UNITS[k]));
-                    if k == 5 {
+                    let mut label = egui::RichText::new(format!("{name} ({})", FIELD_UNITS[k]));
+                    // Typed and not yet applied: its name in amber.
+                    if self.text[k] != self.shown[k] {
+                        label = label.color(ui.visuals().warn_fg_color);
+                    }
+                    let label = ui.label(label);
+                    if k == DIRECTION {
                         label.tip(tr!("direction-hover"));
                     }
                     ui.end_row();
                 }
             });
+        // Nothing typed takes effect before Enter or Apply (a teacher who
+        // moved on with Tab saw the disc unchanged and nothing saying why).
+        let pending = (0..FIELD_NAMES.len()).any(|k| self.text[k] != self.shown[k]);
+        if pending && !self.sent {
+            let r = ui
+                .label(egui::RichText::new(tr!("edit-pending")).color(ui.visuals().warn_fg_color));
+            cx.note("edit_pending", &r);
+        }
         ui.horizontal(|ui| {
             let r = ui.button(tr!("apply")).tip(tr!("apply-hover"));
             cx.note("apply", &r);
@@ -186,8 +210,8 @@ impl DiscFields {
     /// cannot be read is said under the fields, and nothing is sent.
     fn apply(&mut self, cx: &mut Cx, i: usize) {
         let edited = |k: usize| (self.text[k] != self.shown[k]).then(|| self.text[k].clone());
-        let mut text: [Option<String>; 4] = std::array::from_fn(edited);
-        let (speed, direction) = (edited(4), edited(5));
+        let mut text: [Option<String>; 6] = std::array::from_fn(edited);
+        let (speed, direction) = (edited(6), edited(DIRECTION));
         let current = cx.model.world.particles[i].vel;
         match polar_velocity(speed.as_deref(), direction.as_deref(), current) {
             Ok(Some(v)) => {
