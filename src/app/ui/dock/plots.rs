@@ -104,6 +104,7 @@ pub fn speed_plot(
             String::new()
         })
         .include_y(0.0)
+        .y_axis_formatter(|mark, _| whole_count(mark))
         .label_formatter(readout.keeping(move |name: &str, v: &PlotPoint| {
             on_a_line(name, || {
                 format!("{} m/s\n{} {discs_word}", plain(v.x, 2), plain(v.y, 1))
@@ -172,6 +173,16 @@ pub fn y_unit(plot: Plot<'static>, height: f32, unit: &'static str) -> Plot<'sta
         return plot.y_axis_label(unit);
     }
     plot.y_axis_formatter(move |mark, _| beside_frame(format!("{} {unit}", tick(mark))))
+}
+
+/// A count axis's number: only whole ones (a histogram of two discs was
+/// numbered 0.5 and 1.5 discs), with [`beside_frame`]'s space.
+fn whole_count(mark: egui_plot::GridMark) -> String {
+    if mark.value.fract() == 0.0 {
+        beside_frame(plain(mark.value, 0))
+    } else {
+        String::new()
+    }
 }
 
 /// A value axis's number with a space after it: egui_plot sets it flush

@@ -2,7 +2,8 @@
 use super::readout::{bar_hover, time_readout};
 use super::values::{padded_range, value_steps};
 use super::{
-    from_start, on_a_line, steps_of_one_two_or_five_ten, still_plot, tick, value_axis, x_axis,
+    from_start, on_a_line, steps_of_one_two_or_five_ten, still_plot, tick, value_axis, whole_count,
+    x_axis,
 };
 use crate::app::numbers::{plain, trimmed};
 use crate::app::ui::widgets::headless;
@@ -331,6 +332,14 @@ fn a_speed_bar_says_how_many_discs_it_counts_and_between_which_speeds() {
     let german = bar_hover(None, &bar, 0.25);
     set_language(Lang::En);
     assert_eq!(german, "12 Scheiben von 0,50 bis 0,75 m/s");
+}
+
+#[test]
+fn a_count_axis_numbers_whole_discs_only() {
+    let mark = |value, step_size| egui_plot::GridMark { value, step_size };
+    assert_eq!(whole_count(mark(0.5, 0.5)), "");
+    assert_eq!(whole_count(mark(1.0, 0.5)).trim(), "1");
+    assert_eq!(whole_count(mark(20.0, 10.0)).trim(), "20");
 }
 
 #[test]
