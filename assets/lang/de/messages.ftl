@@ -38,6 +38,8 @@ scene-cleared = Geleert: auf freier Fläche ziehen, um Scheiben abzuschießen
 scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben
 scene-downloaded = Heruntergeladen: { $file }
 scene-saved = Gespeichert: { $file } in { $folder }
+scene-renamed = Die Szene heißt jetzt { $name }
+scene-name-empty = Ein Name braucht einen Buchstaben oder eine Ziffer
 scene-not-saved = Nicht gespeichert: { $error }
 screenshot-saved = Bildschirmfoto gespeichert: { $file } in { $folder }
 screenshot-downloaded = Bildschirmfoto heruntergeladen: { $file }
@@ -52,6 +54,7 @@ nothing-to-redo = Nichts zu wiederholen
 ## Was Rückgängig nennt
 edit-open-scene = Szene öffnen
 edit-reset = Zurücksetzen
+edit-rename = Name der Szene
 edit-clear = Leeren
 edit-restitution = Stoßzahl
 edit-wall-restitution = Stoßzahl der Wände

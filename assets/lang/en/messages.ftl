@@ -38,6 +38,8 @@ scene-cleared = Cleared: drag on empty space to launch discs
 scene-path-empty = Type the path of a scene file first
 scene-downloaded = Downloaded { $file }
 scene-saved = Saved { $file } in { $folder }
+scene-renamed = The scene is called { $name } now
+scene-name-empty = A name needs a letter or a digit
 scene-not-saved = Not saved: { $error }
 screenshot-saved = Screenshot saved: { $file } in { $folder }
 screenshot-downloaded = Screenshot downloaded: { $file }
@@ -52,6 +54,7 @@ nothing-to-redo = Nothing to redo
 ## What undo names
 edit-open-scene = open a scene
 edit-reset = reset
+edit-rename = the scene's name
 edit-clear = clear
 edit-restitution = restitution
 edit-wall-restitution = wall restitution

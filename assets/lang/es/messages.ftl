@@ -38,6 +38,8 @@ scene-cleared = Discos quitados: arrastra sobre un espacio vacío para lanzar di
 scene-path-empty = Escribe primero la ruta de un archivo de escena
 scene-downloaded = Se descargó { $file }
 scene-saved = Se guardó { $file } en { $folder }
+scene-renamed = La escena se llama ahora { $name }
+scene-name-empty = Un nombre necesita una letra o un dígito
 scene-not-saved = No se guardó: { $error }
 screenshot-saved = Se guardó la captura: { $file } en { $folder }
 screenshot-downloaded = Se descargó la captura: { $file }
@@ -52,6 +54,7 @@ nothing-to-redo = Nada que rehacer
 ## Lo que nombra Deshacer
 edit-open-scene = abrir una escena
 edit-reset = reiniciar
+edit-rename = nombre de la escena
 edit-clear = quitar los discos
 edit-restitution = restitución
 edit-wall-restitution = restitución en las paredes

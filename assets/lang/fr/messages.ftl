@@ -38,6 +38,8 @@ scene-cleared = Disques effacés : glissez dans le vide pour en lancer
 scene-path-empty = Tapez d'abord le chemin d'un fichier de scène
 scene-downloaded = Téléchargé : { $file }
 scene-saved = Enregistré : { $file } dans { $folder }
+scene-renamed = La scène s'appelle maintenant { $name }
+scene-name-empty = Un nom doit contenir une lettre ou un chiffre
 scene-not-saved = Non enregistré : { $error }
 screenshot-saved = Capture d'écran enregistrée : { $file } dans { $folder }
 screenshot-downloaded = Capture d'écran téléchargée : { $file }
@@ -52,6 +54,7 @@ nothing-to-redo = Rien à rétablir
 ## Ce que nomme l'annulation
 edit-open-scene = ouverture d'une scène
 edit-reset = réinitialisation
+edit-rename = nom de la scène
 edit-clear = effacement des disques
 edit-restitution = restitution
 edit-wall-restitution = restitution aux murs

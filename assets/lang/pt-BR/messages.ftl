@@ -38,6 +38,8 @@ scene-cleared = Cena limpa: arraste num espaço vazio para lançar discos
 scene-path-empty = Digite primeiro o caminho de um arquivo de cena
 scene-downloaded = Baixado: { $file }
 scene-saved = Cena salva: { $file } em { $folder }
+scene-renamed = A cena agora se chama { $name }
+scene-name-empty = Um nome precisa de uma letra ou um dígito
 scene-not-saved = Não foi salvo: { $error }
 screenshot-saved = Captura de tela salva: { $file } em { $folder }
 screenshot-downloaded = Captura de tela baixada: { $file }
@@ -52,6 +54,7 @@ nothing-to-redo = Nada para refazer
 ## Como o desfazer chama as alterações
 edit-open-scene = abrir uma cena
 edit-reset = reiniciar
+edit-rename = nome da cena
 edit-clear = limpar
 edit-restitution = restituição
 edit-wall-restitution = restituição nas paredes

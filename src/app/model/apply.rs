@@ -155,6 +155,7 @@ impl Sandbox {
             OpenPreset(k) => self.open_preset_from_menu(k),
             OpenEmpty => self.open_preset_from_menu(scenes::PRESETS.len() - 1),
             OpenFile(path) => self.open_file(&path),
+            RenameScene(name) => self.rename_scene(&name),
             OpenText { name, text } => self.open_text(&name, &text),
             Reset => self.say_reset(),
             Clear => self.clear_discs(),

@@ -51,6 +51,8 @@ pub enum Command {
     OpenEmpty,
     /// A scene file by its path (the path field).
     OpenFile(String),
+    /// The person names the scene (the *Scene* section's name field).
+    RenameScene(String),
     /// A scene's text, named (a dropped file), or why it could not be read.
     OpenText {
         name: String,
@@ -211,6 +213,7 @@ impl Command {
             | StartWith(_)
             | ReopenKept => "edit-open-scene",
             Reset => "edit-reset",
+            RenameScene(_) => "edit-rename",
             Clear => "edit-clear",
             SetLaw(Law::Restitution, _) | NudgeLaw(Law::Restitution, _) => "edit-restitution",
             SetLaw(Law::WallRestitution, _) | NudgeLaw(Law::WallRestitution, _) => {

@@ -295,6 +295,27 @@ impl Sandbox {
         }
     }
 
+    /// The person names the scene: the name in every language (the
+    /// preset's translated names go), and the preset's caption with them,
+    /// which described the preset, not this scene. A name with no letter
+    /// or digit is refused (it would name no file).
+    pub(super) fn rename_scene(&mut self, name: &str) {
+        let name = name.trim();
+        if slug(name) == "scene" && !name.eq_ignore_ascii_case("scene") {
+            self.messages.scene = Some(Note::error(tr!("scene-name-empty")));
+            return;
+        }
+        if self.scene_name() == name {
+            return;
+        }
+        let scene = &mut self.open.scene;
+        scene.name = Some(name.to_string());
+        scene.description = None;
+        scene.translations.clear();
+        self.open.edited = false;
+        self.messages.scene = Some(Note::ok(tr!("scene-renamed", name = name)));
+    }
+
     /// The name of the files the scene is saved and exported under: its
     /// name as the window shows it, in the window's language (a Spanish
     /// class's saved head-on hit is `choque-frontal-masas-iguales.toml`).

@@ -86,3 +86,40 @@ fn files_are_named_after_the_scene_in_the_windows_language() {
         "the empty box, and a letter with its accent"
     );
 }
+
+/// A teacher names her own scene: the name heads the window in every
+/// language, the preset's caption and "(edited)" go with the old name,
+/// the saved file is named after it, and undo brings the old name back.
+/// (She could not: her scene stayed "Empty box (edited)" in every save.)
+#[test]
+fn a_scene_renamed_is_saved_under_its_new_name() {
+    use crate::app::lang::{set_language, Lang};
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [Some("3".into()), None, None, None, None, None],
+        from: EditPlace::Fields,
+    });
+    assert_eq!(title(&s), "Head-on, equal masses (edited)");
+    s.apply(Command::RenameScene("  Schiefer Stoß, 4 kg  ".into()));
+    assert_eq!(title(&s), "Schiefer Stoß, 4 kg");
+    assert_eq!(
+        s.scene_description(),
+        None,
+        "the preset's caption went with its name"
+    );
+    set_language(Lang::Es);
+    let in_spanish = s.scene_name();
+    set_language(Lang::En);
+    assert_eq!(in_spanish, "Schiefer Stoß, 4 kg");
+    let saved = s.save_scene().unwrap();
+    assert_eq!(saved.file_name().unwrap(), "schiefer-stoß-4-kg.toml");
+    let reopened = impulse::Scene::load(&saved).unwrap();
+    assert_eq!(reopened.name.as_deref(), Some("Schiefer Stoß, 4 kg"));
+    s.apply(Command::RenameScene(" !? ".into()));
+    assert!(s.messages.scene.as_ref().is_some_and(|n| n.error));
+    assert_eq!(s.scene_name(), "Schiefer Stoß, 4 kg", "refused: kept");
+    s.apply(Command::Undo);
+    assert_eq!(title(&s), "Head-on, equal masses (edited)");
+}

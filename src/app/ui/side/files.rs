@@ -14,8 +14,44 @@ use crate::app::numbers::{plain, with_unit};
 use crate::app::ui::tip::Tip;
 use egui::Ui;
 
-/// Presets, the path field, Open, Save, Share, Clear, Export, Screenshot.
-pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String) {
+/// The scene's name, in a field that follows it until typed in; Enter
+/// renames the scene (the name heads the window and names saved files).
+#[derive(Default)]
+pub struct NameField {
+    /// What the field holds.
+    text: String,
+    /// The name it was last filled with: text that differs was typed.
+    shown: String,
+}
+
+impl NameField {
+    fn ui(&mut self, ui: &mut Ui, cx: &mut Cx) {
+        let name = cx.model.scene_name();
+        if self.text == self.shown {
+            self.text.clone_from(&name);
+        }
+        self.shown = name;
+        ui.horizontal(|ui| {
+            ui.label(tr!("scene-name-label"));
+            let r = ui
+                .add(egui::TextEdit::singleline(&mut self.text).desired_width(f32::INFINITY))
+                .tip(tr!("scene-name-hover"));
+            super::super::widgets::select_all_on_focus(ui, &r, &self.text);
+            cx.note("scene_name_field", &r);
+            cx.marks.text_field(&r);
+            if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                cx.send(Command::RenameScene(self.text.clone()));
+                // Refused, it shows the name again; taken, the new one.
+                self.text.clone_from(&self.shown);
+            }
+        });
+    }
+}
+
+/// The name, presets, the path field, Open, Save, Share, Clear, Export,
+/// Screenshot.
+pub fn scene(ui: &mut Ui, cx: &mut Cx, path: &mut String, name: &mut NameField) {
+    name.ui(ui, cx);
     // A list of things to do, not a setting: the arrows open nothing.
     let r = combo(
         ui,

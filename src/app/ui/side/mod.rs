@@ -28,6 +28,8 @@ pub struct SideDock {
     fields: discs::DiscFields,
     /// The scene path field.
     path: String,
+    /// The scene name field.
+    name: files::NameField,
 }
 
 impl SideDock {
@@ -35,6 +37,7 @@ impl SideDock {
         SideDock {
             fields: discs::DiscFields::default(),
             path,
+            name: files::NameField::default(),
         }
     }
 }
@@ -64,6 +67,7 @@ impl View for SideDock {
         let focus = cx.model.panels.focus;
         let fields = &mut self.fields;
         let path = &mut self.path;
+        let name = &mut self.name;
         // Room beside the controls for the scroll handle shown at rest: at
         // text size 1 the value fields ran under it.
         let bar = &mut ui.spacing_mut().scroll;
@@ -117,7 +121,7 @@ impl View for SideDock {
                         Section::Scene => {
                             let title = tr!("section-scene");
                             section(ui, cx, (&title, "section_scene", false), |ui, cx| {
-                                files::scene(ui, cx, path);
+                                files::scene(ui, cx, path, name);
                             })
                         }
                         Section::View => {
