@@ -67,8 +67,24 @@ fn tab_in_the_discs_table_shows_each_rows_last_columns_and_brings_back_its_first
         last.is_some_and(|r| r[0] <= width - 100.0),
         "the energy's column: {last:?}"
     );
+    // Shift+Tab back to the row's mass: the field comes out from under the
+    // disc numbers kept at the table's left (it stayed hidden there, its
+    // heading too).
+    for _ in 0..6 {
+        app.xdo(&["key", "shift+Tab"]);
+        if focus(&app.wait_frames(3)).as_deref() == Some("discs_mass_0") {
+            break;
+        }
+    }
+    let s = app.wait_frames(3);
+    assert_eq!(focus(&s).as_deref(), Some("discs_mass_0"));
+    let (mass, number) = (cell(&s, "discs_mass_0"), cell(&s, "discs_number_0"));
+    assert!(
+        matches!((mass, number), (Some(m), Some(n)) if m[0] >= n[0] + n[2] - 0.5),
+        "the mass field {mass:?} under the disc's number {number:?}"
+    );
     // The next row, below the one row the tab has room for.
-    tab_to(&app, "discs_mass_1", 3);
+    tab_to(&app, "discs_mass_1", 6);
     let s = app.wait_frames(2);
     in_sight(&s, "discs_mass_1");
     // Keys with Ctrl in a field type nothing (each had typed its letter

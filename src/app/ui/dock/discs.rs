@@ -385,6 +385,15 @@ impl View for DiscsTable {
                     select = Some(i);
                 }
                 if let Some(rect) = reveal {
+                    // Clear of the disc numbers kept over the table's left
+                    // edge: a field shown just inside the edge (Shift+Tab
+                    // back to a row's mass) lay under them, heading and all.
+                    let kept = first
+                        .rows
+                        .first()
+                        .map_or(FIRST_COLUMN, |(cell, ..)| cell.rect.width())
+                        + ui.spacing().item_spacing.x;
+                    let rect = rect.with_min_x(rect.min.x - kept);
                     let none = egui::style::ScrollAnimation::none();
                     ui.scroll_to_rect_animation(rect, None, none);
                 }
