@@ -86,14 +86,13 @@ impl Sandbox {
         self.selected = Some(i);
         // Where the centre was taken, it went beside the nearest disc: the
         // message said "at the centre" all the same.
-        let beside = (pos.distance(centre) > 1e-9 * disc.radius.max(1.0))
-            .then(|| self.world.particles[..i].iter().enumerate())
-            .and_then(|others| {
-                others
-                    .min_by(|a, b| pos.distance(a.1.pos).total_cmp(&pos.distance(b.1.pos)))
-                    .map(|(k, _)| k)
-            });
-        self.toast(match beside {
+        let moved = pos.distance(centre) > 1e-9 * disc.radius.max(1.0);
+        let nearest = self.world.particles[..i]
+            .iter()
+            .enumerate()
+            .min_by(|(_, a), (_, b)| pos.distance(a.pos).total_cmp(&pos.distance(b.pos)))
+            .map(|(k, _)| k);
+        self.toast(match nearest.filter(|_| moved) {
             Some(k) => tr!(
                 "launched-near-centre",
                 disc = disc_number(i),

@@ -181,7 +181,7 @@ impl Recovery {
     /// The window closes with nothing unsaved: nothing to recover next
     /// time.
     pub fn finish(&mut self) {
-        if self.every > 0.0 && self.offered.is_none() {
+        if self.enabled() && self.offered.is_none() {
             keep::remove(&self.path);
         }
     }

@@ -301,7 +301,7 @@ impl Sandbox {
     /// or digit is refused (it would name no file).
     pub(super) fn rename_scene(&mut self, name: &str) {
         let name = name.trim();
-        if slug(name) == "scene" && !name.eq_ignore_ascii_case("scene") {
+        if !name.chars().any(char::is_alphanumeric) {
             self.messages.scene = Some(Note::error(tr!("scene-name-empty")));
             return;
         }
