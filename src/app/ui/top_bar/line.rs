@@ -256,20 +256,27 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     let name_width = full_name.min((0.6 * free).max(40.0));
     // The other items that fit beside the name at that width, in order (the
     // last may use the room kept for "… more")...
-    let galleys: Vec<_> = optional.iter().map(|item| galley(ui, &item.text)).collect();
     // (`free` has the room between items: `fixed` the one before each item
     // always shown, `more_width` the one before "… more", each other item's
-    // its own before it.)
+    // its own before it.) An item too long whole goes in its short form if
+    // that fits (the momentum without "(walls push)"): a German line with a
+    // long name had dropped the momentum for its note.
     let (mut room, mut used, mut shown) = (free - name_width, 0.0, 0);
-    for (k, g) in galleys.iter().enumerate() {
-        let last = k + 1 == galleys.len();
-        let need = g.size().x + spacing - if last { more_width } else { 0.0 };
-        if need > room {
+    let mut galleys = Vec::new();
+    for (k, item) in optional.iter().enumerate() {
+        let last = k + 1 == optional.len();
+        let fits = |g: &Arc<egui::Galley>| {
+            g.size().x + spacing - if last { more_width } else { 0.0 } <= room
+        };
+        let whole = galley(ui, &item.text);
+        let short = || item.short.as_ref().map(|text| galley(ui, text));
+        let Some(g) = Some(whole).filter(fits).or_else(|| short().filter(fits)) else {
             break;
-        }
+        };
         room -= g.size().x + spacing;
         used += g.size().x + spacing;
         shown += 1;
+        galleys.push(g);
     }
     // ... and the room they leave goes back to the name, so that it is cut
     // only where the line is really full.
@@ -320,10 +327,8 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     }
     let always_shown = always.len();
     let said = always.into_iter().map(|item| (item, None));
-    let others = optional
-        .into_iter()
-        .zip(galleys)
-        .map(|(item, g)| (item, Some(g)));
+    let mut galleys = galleys.into_iter();
+    let others = optional.into_iter().map(|item| (item, galleys.next()));
     let mut hidden = Vec::new();
     for (k, (item, g)) in said.chain(others).enumerate() {
         if k >= always_shown + shown {

@@ -146,7 +146,10 @@ impl View for TopBar {
                 .color(paused),
             )
             .hover(tr!("momentum-walls-push-hover"))
-            .named("walls_push");
+            .named("walls_push")
+            // Where the note does not fit, the momentum alone, its colour
+            // and hover still saying the walls push.
+            .short(RichText::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s"))).color(paused));
         }
         optional.push(momentum);
         if spin {
@@ -263,6 +266,29 @@ mod tests {
     use crate::app::model::tests::sandbox_with;
     use crate::app::model::Command;
     use crate::app::ui::widgets::texts_drawn;
+
+    /// Where the momentum with its note ("walls push") does not fit, the
+    /// momentum alone does: the whole item had gone under "… more".
+    #[test]
+    fn the_momentum_stays_in_a_line_too_short_for_its_note() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_with(dir.path(), "preset-2-heavy-hits-light.toml", false, 0.0);
+        for k in 1..=300 {
+            s.begin_frame(f64::from(k) / 60.0);
+            s.tick(1.0 / 60.0, 1.0);
+        }
+        let (mut whole, mut alone) = (0, 0);
+        for width in (300..1600).step_by(10) {
+            let text = texts_drawn(&s, egui::vec2(width as f32, 40.0), &mut TopBar).concat();
+            match (text.contains("p = ("), text.contains("walls push")) {
+                (true, true) => whole += 1,
+                (true, false) => alone += 1,
+                _ => {}
+            }
+        }
+        assert!(whole > 0, "the walls pushed: the note shows where it fits");
+        assert!(alone > 0, "and the momentum alone where only it fits");
+    }
 
     /// Rewound, the top bar shows a sign of its own, also where a
     /// projector's line has room for the sign alone: it showed the
