@@ -29,7 +29,11 @@ impl View for Totals {
         // series are named in coloured words beside it instead (p in
         // kg·m/s, L in kg·m²/s, energies in J, as the line says), and the
         // line is put in symbols, so that both fit on one line.
-        let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0;
+        // So does a narrow one: in a laptop's third of the dock the legend
+        // box ("walls push", p_y, p_x) covered most of the momentum plot.
+        let columns: f32 = if line { 2.0 } else { 3.0 };
+        let narrow = ui.available_width() / columns < LEGEND_NEEDS_WIDTH;
+        let compact = ui.available_height() < COMPACT_PLOT_HEIGHT + 24.0 || narrow;
         let energy_name = match (compact, spin) {
             (true, _) => "ΔE".to_string(),
             (false, true) => tr!("totals-energy"),
@@ -162,6 +166,10 @@ impl View for Totals {
         });
     }
 }
+
+/// The least width (points) of a plot's column for a legend box inside it:
+/// narrower, the series are named on the line above.
+const LEGEND_NEEDS_WIDTH: f32 = 280.0;
 
 /// What the tab's plots against time share: where their time axis starts,
 /// their height, and whether the dock is too low for legends and axis names.
@@ -324,6 +332,26 @@ mod tests {
             "{}",
             tall.text()
         );
+    }
+
+    /// A laptop's narrow dock names the series on the line above, not in
+    /// legend boxes inside plots a third of it wide (one covered most of
+    /// the momentum plot); a wide one keeps the boxes and the words.
+    #[test]
+    fn a_narrow_dock_names_its_series_above_the_plots() {
+        use crate::app::model::tests::sandbox_with;
+        use crate::app::ui::widgets::texts_drawn;
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_with(dir.path(), "preset-4-glancing.toml", false, 0.0);
+        for k in 1..=30 {
+            s.begin_frame(f64::from(k) / 60.0);
+            s.tick(1.0 / 60.0, 1.0);
+        }
+        let at = |width: f32| texts_drawn(&s, egui::vec2(width, 240.0), &mut super::Totals);
+        let narrow = at(760.0).join(" | ");
+        assert!(narrow.contains("Δp ("), "{narrow}");
+        let wide = at(1400.0).join(" | ");
+        assert!(wide.contains("momentum ("), "{wide}");
     }
 
     /// On one line L is −y·p_x, the momentum's plot again, as a number a
