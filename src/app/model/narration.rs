@@ -189,14 +189,24 @@ impl Sandbox {
         }
     }
 
-    /// The scene in words: the box, the laws that matter, each disc (up to
-    /// [`DESCRIBED_DISCS`]: where it is and how it moves), the time and the
-    /// totals.
+    /// The scene in words: its name and caption whole (the strip cuts a
+    /// long caption, and only a pointer's hover showed the rest), the box,
+    /// the laws that matter, each disc (up to [`DESCRIBED_DISCS`]: where it
+    /// is and how it moves), the time and the totals.
     pub fn describe(&self) -> String {
         let w = &self.world;
         let size = w.laws.size;
         let n = w.particles.len();
-        let mut lines = vec![tr!(
+        let caption = self.scene_description().map(|text| match self.open.edited {
+            true => tr!("caption-edited", caption = text),
+            false => text,
+        });
+        let heading = match caption {
+            Some(caption) => format!("{}: {caption}", self.scene_name()),
+            None => format!("{}.", self.scene_name()),
+        };
+        let mut lines = vec![heading];
+        lines.push(tr!(
             "describe-box",
             discs = n,
             width = crate::app::numbers::field(size.x),
@@ -206,7 +216,7 @@ impl Sandbox {
                 impulse::Boundary::Open => "open",
                 impulse::Boundary::Periodic => "periodic",
             }
-        )];
+        ));
         let g = w.laws.gravity.length();
         lines.push(if g > 0.0 {
             tr!("describe-gravity", gravity = with_unit(g, 2, "m/s²"))
@@ -277,7 +287,15 @@ mod tests {
             .iter()
             .filter(|p| p.vel.length() > 1e-3)
             .count();
-        assert_eq!(text.matches("moving ").count(), moving, "{text}");
+        let discs = &text[text.find("metre box").unwrap()..];
+        assert_eq!(discs.matches("moving ").count(), moving, "{text}");
+        // The name and the caption first, whole: the strip cuts a long
+        // caption, and a keyboard had no way to read the rest.
+        let caption = s.scene_description().unwrap();
+        assert!(
+            text.starts_with(&format!("{}: {caption}", s.scene_name())),
+            "{text}"
+        );
     }
 
     #[test]
