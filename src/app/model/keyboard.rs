@@ -53,8 +53,11 @@ impl Sandbox {
             return;
         };
         let p = &mut self.world.particles[i];
-        // Whole tenths, so that steps add up to round numbers.
-        p.vel = ((p.vel + dv) / AIM_STEP).round() * AIM_STEP;
+        // Whole tenths, so that steps add up to round numbers: divided by
+        // ten, not multiplied by 0.1 (−6 × 0.1 is −0.6000000000000001, which
+        // a saved scene and the CSV then carried).
+        let per_unit = (1.0 / AIM_STEP).round();
+        p.vel = ((p.vel + dv) * per_unit).round() / per_unit;
         let v = p.vel;
         // The Totals tab starts afresh in `apply`, where the aim moved a
         // total.
@@ -129,6 +132,18 @@ mod tests {
         );
         s.apply(Command::Undo);
         assert_eq!(s.world.particles[n - 1].vel, before);
+        // Tenths exactly as typed: six presses down from 0 are −0.6, not
+        // −0.6000000000000001.
+        s.apply(Command::EditDisc {
+            disc: n - 1,
+            text: [None, None, Some("0".into()), Some("0".into()), None, None],
+            from: super::super::command::EditPlace::Fields,
+        });
+        for _ in 0..6 {
+            s.apply(Command::AimSelected(DVec2::new(0.0, -0.1)));
+        }
+        assert_eq!(s.world.particles[n - 1].vel.y, -0.6);
+        let before = s.world.particles[n - 1].vel;
         // Running: they do not (they pan).
         s.apply(Command::TogglePause);
         s.apply(Command::AimSelected(DVec2::new(1.0, 0.0)));
