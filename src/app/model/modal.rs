@@ -23,6 +23,7 @@ impl Sandbox {
             Escape if !question && self.panels.help_open => Some(ToggleHelp),
             Escape if !question => Some(CloseStart),
             Quit
+            | Screenshot
             | Fullscreen
             | SetScale(_)
             | SetTabHeight(_)
@@ -47,15 +48,16 @@ impl Sandbox {
     /// so nothing changes behind it (its keys scroll the list, where Home
     /// and Enter made a disc out of sight); Esc, H and its close button
     /// close it; the window's own settings (size, language, theme, sound,
-    /// full screen) and quitting go through.
+    /// full screen), a screenshot (of the key list, for a handout) and
+    /// quitting go through.
     fn under_help(&self, command: Command) -> Option<Command> {
         if !self.panels.help_open {
             return Some(command);
         }
         use Command::*;
         match command {
-            Escape | ToggleHelp | Quit | Fullscreen | SetScale(_) | NextScale | SetTheme(_)
-            | SetLanguage(_) | ToggleSound | Describe => Some(command),
+            Escape | ToggleHelp | Quit | Screenshot | Fullscreen | SetScale(_) | NextScale
+            | SetTheme(_) | SetLanguage(_) | ToggleSound | Describe => Some(command),
             _ => None,
         }
     }

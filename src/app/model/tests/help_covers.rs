@@ -1,4 +1,5 @@
-//! The help covers the world: nothing changes behind it.
+//! The help and the start screen cover the world: nothing changes behind
+//! them, but a screenshot can be taken of them.
 
 use super::*;
 
@@ -33,10 +34,27 @@ fn while_the_help_is_open_nothing_changes_behind_it() {
         assert_eq!(before(&s), was, "{c:?} changed the world behind the help");
         assert!(s.panels.help_open);
     }
+    s.apply(Command::Screenshot);
+    assert!(
+        s.session.requests.screenshot.is_some(),
+        "F12 takes the key list, for a handout"
+    );
     s.apply(Command::SetScale(2.0));
     assert_eq!(s.panels.scale, 2.0, "the window's own settings go through");
     s.apply(Command::Escape);
     assert!(!s.panels.help_open, "Esc closes it");
     s.apply(Command::LaunchAtCentre);
     assert_eq!(s.world.particles.len(), discs + 1, "and the keys act again");
+}
+
+/// F12 on the start screen saves it (it saved nothing: the tiles wait for
+/// a choice, and let only a few keys through).
+#[test]
+fn the_start_screen_can_be_saved_as_a_picture() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::ShowStart);
+    assert!(s.panels.start_open);
+    s.apply(Command::Screenshot);
+    assert!(s.session.requests.screenshot.is_some());
 }
