@@ -193,7 +193,11 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
     tab_to(&app, "section_selected", 60);
     app.xdo(&["key", "Return"]);
     app.wait_frames(3);
-    tab_to(&app, "disc_x", 20);
+    let s = tab_to(&app, "disc_x", 20);
+    // Wide enough for its number whole (four characters showed "13,4" for
+    // 13,457): 80 points at text size 1.5.
+    let width = s["panel_widgets"]["disc_x"][2].as_f64().unwrap();
+    assert!(width >= 100.0, "the x field is {width} px wide");
     app.xdo(&["type", "3"]);
     app.xdo(&["key", "Tab"]);
     app.wait_frames(2);

@@ -73,8 +73,10 @@ pub fn save_screenshot_key(model: &mut Sandbox, image: &ScreenImage, path: &Path
             model.toast(if cfg!(target_arch = "wasm32") {
                 tr!("screenshot-downloaded", file = crate::files::shown(&path))
             } else {
-                let (file, folder) = crate::files::name_and_folder(&path);
-                tr!("screenshot-saved", file = file, folder = folder)
+                // Its name alone, whole on a projector's one line: the
+                // Scene section says where saves go.
+                let (file, _) = crate::files::name_and_folder(&path);
+                tr!("screenshot-saved", file = file)
             });
         }
         Err(e) => model.report(tr!("screenshot-not-saved", error = e)),

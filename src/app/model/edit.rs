@@ -216,6 +216,13 @@ impl Sandbox {
             }),
         };
         match from {
+            // A refusal in the strip too: under the fields it was out of
+            // sight in a projector's drawer, where the strip only said how
+            // to give the keys back.
+            EditPlace::Fields if note.error => {
+                self.toast(note.text.clone());
+                self.messages.fields = Some(note);
+            }
             EditPlace::Fields => self.messages.fields = Some(note),
             // Also in the strip, and said: in a projector's short tab the
             // line above the table would take the row edited out of sight.

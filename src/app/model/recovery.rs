@@ -315,12 +315,18 @@ impl Sandbox {
                 "origin-recovered",
                 file = self.recovery.path().display().to_string()
             );
-            let _ = self.open_scene(scene, origin); // a failure is reported
-                                                    // Kept nowhere but in the recovery file: still unsaved work.
+            let restored = self.open_scene(scene, origin).is_ok(); // a failure is reported
+                                                                   // Kept nowhere but in the recovery file: still unsaved work.
             self.open.unsaved = true;
             // The kept sandbox is what the person wanted: no start screen.
             self.panels.start_open = false;
-            self.resume_after_modal();
+            // Back as it was left, paused, and said: it ran on at once,
+            // with nothing to say it was back.
+            self.panels.paused_by_modal = false;
+            self.clock.paused = true;
+            if restored {
+                self.toast(tr!("recovery-restored", name = self.scene_name()));
+            }
         }
     }
 

@@ -337,13 +337,19 @@ impl Sandbox {
                 eprintln!("impulse: saved {}", path.display());
                 self.open.unsaved = false;
                 let (file, folder) = crate::files::name_and_folder(&path);
-                let said = if cfg!(target_arch = "wasm32") {
-                    tr!("scene-downloaded", file = crate::files::shown(&path))
+                // The strip has the file's name alone, which a projector's
+                // one line shows whole (with its folder the line broke
+                // before the name and read "Saved …"); the Scene section
+                // has the folder too.
+                let (said, noted) = if cfg!(target_arch = "wasm32") {
+                    let said = tr!("scene-downloaded", file = crate::files::shown(&path));
+                    (said.clone(), said)
                 } else {
-                    tr!("scene-saved", file = file, folder = folder)
+                    let noted = tr!("scene-saved", file = file.as_str(), folder = folder);
+                    (tr!("scene-saved-short", file = file), noted)
                 };
-                self.toast(said.clone());
-                self.messages.scene = Some(Note::ok(said));
+                self.toast(said);
+                self.messages.scene = Some(Note::ok(noted));
                 Ok(path)
             }
             Err(e) => {

@@ -57,6 +57,8 @@ const FIELD_KEYS: [&str; 8] = [
     "disc_speed",
     "disc_direction",
 ];
+/// A field's width (points): a number of seven characters whole.
+const FIELD_WIDTH: f32 = 80.0;
 /// The fields top to bottom: where it is, then how it moves.
 const SHOWN_IN_ORDER: [usize; 8] = [0, 1, 4, 5, 2, 3, 6, 7];
 /// The direction's field (its label explains the angle).
@@ -159,8 +161,13 @@ impl DiscFields {
             .num_columns(2)
             .show(ui, |ui| {
                 for k in SHOWN_IN_ORDER {
-                    let r =
-                        ui.add(egui::TextEdit::singleline(&mut self.text[k]).desired_width(100.0));
+                    // Wide enough for "13,457" and "−84,29" whole: the grid
+                    // had squeezed the fields to four characters, and a
+                    // teacher read 13,4 for 13,457.
+                    let field = egui::TextEdit::singleline(&mut self.text[k])
+                        .desired_width(FIELD_WIDTH)
+                        .min_size(egui::vec2(FIELD_WIDTH, 0.0));
+                    let r = ui.add(field);
                     select_all_on_focus(ui, &r, &self.text[k]);
                     cx.marks.text_field(&r);
                     cx.note(FIELD_KEYS[k], &r);
