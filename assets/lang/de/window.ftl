@@ -289,7 +289,10 @@ shares-turning-ke = Drehung (Rotationsenergie)
 ## In der Welt
 readout-spin = Drehung ω = { $spin }   Erot = { $energy }
 readout-angular-momentum = Drehimpuls um (0; 0): L = { $angular }
-readouts-culled = Werte neben { $shown } von { $wanted } Scheiben: kein Platz für den Rest (mit dem Mausrad hineinzoomen)
+readouts-culled = { $wanted ->
+    [one] kein Platz für die Werte der gewählten Scheibe (mit dem Mausrad hineinzoomen)
+   *[other] Werte neben { $shown } von { $wanted } Scheiben: kein Platz für den Rest (mit dem Mausrad hineinzoomen)
+}
 launch-no-room = hier ist kein Platz
 gas-name = Gas aus { $count } Scheiben
 gas-description = { $count } gleiche Scheiben bedecken 30 % eines periodischen Kastens (--gas { $count })

@@ -289,7 +289,10 @@ shares-turning-ke = turning (rotational KE)
 ## In the world
 readout-spin = spin ω = { $spin }   rotational KE = { $energy }
 readout-angular-momentum = angular momentum about (0, 0): L = { $angular }
-readouts-culled = values beside { $shown } of { $wanted } discs: no room for the rest (zoom in with the wheel)
+readouts-culled = { $wanted ->
+    [one] no room here for the selected disc's values (zoom in with the wheel)
+   *[other] values beside { $shown } of { $wanted } discs: no room for the rest (zoom in with the wheel)
+}
 launch-no-room = no room here
 gas-name = Gas of { $count } discs
 gas-description = { $count } equal discs covering 30 % of a periodic box (--gas { $count })

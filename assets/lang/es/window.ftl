@@ -289,7 +289,10 @@ shares-turning-ke = giro (Ec de rotación)
 ## En el mundo
 readout-spin = giro ω = { $spin }   Ec de rotación = { $energy }
 readout-angular-momentum = momento angular respecto a (0, 0): L = { $angular }
-readouts-culled = valores junto a { $shown } de { $wanted } discos: no hay espacio para el resto (acerca la vista con la rueda)
+readouts-culled = { $wanted ->
+    [one] no hay espacio aquí para los valores del disco elegido (acerca la vista con la rueda)
+   *[other] valores junto a { $shown } de { $wanted } discos: no hay espacio para el resto (acerca la vista con la rueda)
+}
 launch-no-room = aquí no hay espacio
 gas-name = Gas de { $count } discos
 gas-description = { $count } discos iguales que ocupan el 30 % de una caja periódica (--gas { $count })

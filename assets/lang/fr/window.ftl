@@ -289,7 +289,10 @@ shares-turning-ke = rotation (Ec de rotation)
 ## Dans la simulation
 readout-spin = rotation ω = { $spin }   Ec de rotation = { $energy }
 readout-angular-momentum = moment cinétique par rapport à (0, 0) : L = { $angular }
-readouts-culled = valeurs à côté de { $shown } disques sur { $wanted } : pas de place pour les autres (zoomez avec la molette)
+readouts-culled = { $wanted ->
+    [one] pas de place ici pour les valeurs du disque sélectionné (zoomez avec la molette)
+   *[other] valeurs à côté de { $shown } disques sur { $wanted } : pas de place pour les autres (zoomez avec la molette)
+}
 launch-no-room = pas de place ici
 gas-name = Gaz de { $count } disques
 gas-description = { $count } disques identiques couvrant 30 % d'une boîte périodique (--gas { $count })

@@ -289,7 +289,10 @@ shares-turning-ke = rotação (Ec de rotação)
 ## No mundo
 readout-spin = rotação ω = { $spin }   Ec de rotação = { $energy }
 readout-angular-momentum = momento angular em relação a (0, 0): L = { $angular }
-readouts-culled = valores ao lado de { $shown } de { $wanted } discos: sem espaço para os outros (aproxime com a roda do mouse)
+readouts-culled = { $wanted ->
+    [one] sem espaço aqui para os valores do disco selecionado (aproxime com a roda do mouse)
+   *[other] valores ao lado de { $shown } de { $wanted } discos: sem espaço para os outros (aproxime com a roda do mouse)
+}
 launch-no-room = sem espaço aqui
 gas-name = Gás de { $count } discos
 gas-description = { $count } discos iguais ocupando 30 % de uma caixa periódica (--gas { $count })

@@ -409,6 +409,22 @@ mod tests {
         10.0 * s.chars().count() as f32
     }
 
+    /// "Values beside 0 of 1 discs" was no sentence: with one disc wanted
+    /// the note says whose values have no room.
+    #[test]
+    fn the_note_for_one_disc_says_whose_values_have_no_room() {
+        use crate::app::lang::{set_language, tr, Lang};
+        set_language(Lang::Es);
+        let one = tr!("readouts-culled", shown = 0usize, wanted = 1usize);
+        let many = tr!("readouts-culled", shown = 2usize, wanted = 5usize);
+        set_language(Lang::En);
+        assert!(
+            one.contains("del disco elegido") && !one.contains("de 1"),
+            "{one}"
+        );
+        assert!(many.contains("junto a 2 de 5 discos"), "{many}");
+    }
+
     #[test]
     fn a_long_note_is_cut_between_words_and_loses_none() {
         let note = "values beside 0 of 1 discs: no room for the rest (zoom in with the wheel)";
