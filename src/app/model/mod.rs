@@ -102,6 +102,10 @@ pub struct OpenScene {
     /// saved since: on the desktop, only then is the sandbox kept for
     /// recovery, and only then does the next start ask.
     pub unsaved: bool,
+    /// The file this session last saved the scene as: saved again under
+    /// the same name, the scene goes back into it (each Save had made a
+    /// file more, `-2`, `-3`).
+    pub saved_to: Option<std::path::PathBuf>,
 }
 
 /// The view of the world: the camera, whether it is fitted to the box, and
@@ -272,6 +276,7 @@ impl Sandbox {
                 unsaved: false,
                 scene: start.scene,
                 origin: start.origin,
+                saved_to: None,
             },
             clock,
             view: WorldView {

@@ -5,10 +5,12 @@
 use super::undo::Moment;
 use super::{DockTab, Note, Sandbox};
 use crate::app::lang::tr;
-#[cfg(not(target_arch = "wasm32"))]
-use crate::files::write_durably;
 use impulse::Scene;
 use std::path::{Path, PathBuf};
+
+mod names;
+use names::named_after;
+pub use names::{free_file, keep_file, slug};
 
 /// A preset: the key that opens it, and its scene file (from the core's
 /// catalogue, compiled in).
@@ -96,72 +98,6 @@ pub fn preset_description(index: usize) -> Option<String> {
         .map(str::to_string)
 }
 
-/// A file name for saving a scene called `name`: its letters and digits,
-/// in any script and lower case ("choc-frontal-masses-égales"), the rest
-/// turned into single hyphens.
-pub fn slug(name: &str) -> String {
-    let mut out = String::new();
-    for c in name.chars().flat_map(char::to_lowercase) {
-        if c.is_alphanumeric() {
-            out.push(c);
-        } else if !out.ends_with('-') && !out.is_empty() {
-            out.push('-');
-        }
-    }
-    let out = out.trim_end_matches('-').to_string();
-    if out.is_empty() {
-        "scene".into()
-    } else {
-        out
-    }
-}
-
-/// Keeps `bytes` for the user as `stem.ext`: on the desktop written into
-/// `dir` (created if needed) under the first free name, atomically and
-/// durably; in the browser downloaded. Returns the file, or why not.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn keep_file(dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| {
-            tr!(
-                "file-cannot-create",
-                folder = dir.display().to_string(),
-                error = e.to_string()
-            )
-        })
-        .and_then(|()| {
-            let path = free_file(dir, stem, ext);
-            write_durably(&path, bytes)
-                .map(|()| path.clone())
-                .map_err(|e| {
-                    tr!(
-                        "file-cannot-write",
-                        file = path.display().to_string(),
-                        error = e.to_string()
-                    )
-                })
-        })
-}
-
-/// Keeps `bytes` for the user as `stem.ext`: downloaded by the browser.
-#[cfg(target_arch = "wasm32")]
-pub fn keep_file(_dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<PathBuf, String> {
-    let name = format!("{stem}.{ext}");
-    crate::web::download(&name, bytes);
-    Ok(PathBuf::from(name))
-}
-
-/// The first of `dir/stem.ext`, `dir/stem-2.ext`, … that does not exist.
-pub fn free_file(dir: &Path, stem: &str, ext: &str) -> PathBuf {
-    let mut path = dir.join(format!("{stem}.{ext}"));
-    let mut k = 2;
-    while path.exists() {
-        path = dir.join(format!("{stem}-{k}.{ext}"));
-        k += 1;
-    }
-    path
-}
-
 impl Sandbox {
     /// Opens preset `index` of [`PRESETS`].
     pub(super) fn open_preset(&mut self, index: usize) {
@@ -216,6 +152,7 @@ impl Sandbox {
                 let name = scene.name_in(lang).unwrap_or(&origin).to_string();
                 self.open.scene = scene;
                 self.open.origin = origin;
+                self.open.saved_to = None;
                 self.fit_camera();
                 self.say_opened(name, left);
                 Ok(())
@@ -331,11 +268,33 @@ impl Sandbox {
         let scene = self.current_scene();
         let dir = self.session.out.clone();
         let stem = self.file_stem();
-        let result = keep_file(&dir, &stem, "toml", scene.to_toml().as_bytes());
+        let text = scene.to_toml();
+        // Saved before this session under the same name: back into that
+        // file (atomically, as every save); else a new one beside the rest.
+        let again = self.open.saved_to.clone().filter(|p| {
+            !cfg!(target_arch = "wasm32")
+                && p.file_stem()
+                    .is_some_and(|s| named_after(&s.to_string_lossy(), &stem))
+                && p.exists()
+        });
+        let result = match again {
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(path) => crate::files::write_durably(&path, text.as_bytes())
+                .map(|()| path.clone())
+                .map_err(|e| {
+                    tr!(
+                        "file-cannot-write",
+                        file = path.display().to_string(),
+                        error = e.to_string()
+                    )
+                }),
+            _ => keep_file(&dir, &stem, "toml", text.as_bytes()),
+        };
         match result {
             Ok(path) => {
                 eprintln!("impulse: saved {}", path.display());
                 self.open.unsaved = false;
+                self.open.saved_to = Some(path.clone());
                 let (file, folder) = crate::files::name_and_folder(&path);
                 // The strip has the file's name alone, which a projector's
                 // one line shows whole (with its folder the line broke
@@ -442,6 +401,7 @@ impl Sandbox {
             origin: moment.origin,
             edited: moment.edited,
             unsaved: true,
+            saved_to: self.open.saved_to.take(),
         };
         // What came after the moment belongs to the undone timeline; the
         // ledger came back with the world.

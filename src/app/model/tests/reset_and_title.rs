@@ -123,3 +123,32 @@ fn a_scene_renamed_is_saved_under_its_new_name() {
     s.apply(Command::Undo);
     assert_eq!(title(&s), "Head-on, equal masses (edited)");
 }
+
+/// Saved again, the scene goes back into the file this session saved it
+/// as (each Ctrl+S made a file more); renamed, it gets a file of its own;
+/// a file of the same name from before this session is left as it was.
+#[test]
+fn saving_again_writes_back_into_the_same_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+    let out = dir.path().join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let earlier = out.join("glancing-collision.toml");
+    std::fs::write(&earlier, "from before").unwrap();
+    let first = s.save_scene().unwrap();
+    assert_eq!(first.file_name().unwrap(), "glancing-collision-2.toml");
+    s.apply(Command::ToggleGravity);
+    let second = s.save_scene().unwrap();
+    assert_eq!(second, first, "back into the same file");
+    let saved = impulse::Scene::load(&second).unwrap();
+    assert_eq!(saved.world.gravity, s.world.laws.gravity, "with the change");
+    assert_eq!(std::fs::read_to_string(&earlier).unwrap(), "from before");
+    s.apply(Command::RenameScene("Mein Stoß".into()));
+    let third = s.save_scene().unwrap();
+    assert_eq!(third.file_name().unwrap(), "mein-stoß.toml");
+    let files = std::fs::read_dir(&out).unwrap().count();
+    assert_eq!(
+        files, 3,
+        "the earlier file, the glancing one, the renamed one"
+    );
+}
