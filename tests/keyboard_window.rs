@@ -53,14 +53,6 @@ fn main() -> std::process::ExitCode {
             "q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre",
             q_selects_a_disc_the_arrows_aim_it_and_enter_puts_one_at_the_centre,
         ),
-        (
-            "ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row",
-            ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row,
-        ),
-        (
-            "the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it",
-            the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it,
-        ),
     ])
 }
 
@@ -315,16 +307,6 @@ fn every_tab_stop_is_a_control_never_a_frame_round_others() {
         }
         app.quit();
     }
-}
-
-/// How far the list `name` is scrolled down, and how far it can be (px).
-fn list_scroll(s: &Value, name: &str) -> (f64, f64) {
-    let l = &s["ui"]["lists"][name];
-    let y = |v: &Value| {
-        v[1].as_f64()
-            .unwrap_or_else(|| panic!("{name} in {}", s["ui"]))
-    };
-    (y(&l["offset"]), y(&l["max"]))
 }
 
 fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
@@ -687,79 +669,4 @@ fn the_tab_is_made_taller_by_its_edge_dragged_or_moved_by_the_keys() {
     let s = again.wait_frames(3);
     assert_eq!(tab_content(&s)[3], tab_content(&set)[3], "the next start");
     again.quit();
-}
-
-/// Every tab has a key: Ctrl and its place in the row, as a browser's own
-/// tabs; the digit alone still opens a preset.
-fn ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row() {
-    let x = Xvfb::start("tab keys");
-    let app = Sandbox::start(&x, &["--paused"]);
-    app.move_to([300.0, 300.0]);
-    let scene = app.wait_frames(3)["scene_name"].clone();
-    for (key, tab) in [
-        ("ctrl+3", "Discs"),
-        ("ctrl+6", "Words"),
-        ("ctrl+1", "Totals"),
-    ] {
-        app.xdo(&["key", key]);
-        let s = app.wait_frames(3);
-        assert_eq!(s["ui"]["tab"], tab, "{key}");
-        assert_eq!(s["ui"]["dock_expanded"], true, "{key}");
-        assert_eq!(s["scene_name"], scene, "{key} opened no preset");
-    }
-    app.quit();
-}
-
-/// The help opened with H is read with Page Down at once (it needed a Tab
-/// to its list first); the keys that scroll it (Home, Enter, the arrows)
-/// no longer make a disc or move the view behind it; Esc closes it.
-fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
-    let x = Xvfb::start("help keys");
-    let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
-    app.move_to([300.0, 300.0]);
-    app.xdo(&["key", "1"]);
-    let s = app.wait_frames(3);
-    let discs = s["particles"].as_array().unwrap().len();
-    let view = s["camera"].clone();
-    app.xdo(&["key", "h"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "Next"]);
-    let s = app.wait_frames(3);
-    let (offset, max) = list_scroll(&s, "scroll_keys");
-    assert!(
-        offset > 0.0 && max > 0.0,
-        "Page Down scrolled the help: {offset} of {max}"
-    );
-    for key in ["Home", "Return", "Up", "Left", "space"] {
-        app.xdo(&["key", key]);
-    }
-    let s = app.wait_frames(3);
-    assert_eq!(
-        s["particles"].as_array().unwrap().len(),
-        discs,
-        "no disc behind the help"
-    );
-    assert_eq!(s["camera"], view, "the view stayed");
-    assert_eq!(
-        s["paused"], true,
-        "Space scrolled; it did not run the clock"
-    );
-    assert_eq!(s["ui"]["help_open"], true);
-    app.xdo(&["key", "Escape"]);
-    let s = app.wait_frames(3);
-    assert_eq!(s["ui"]["help_open"], false, "Esc closed the help");
-    // With a control in the help holding the keys, one Esc still closes it.
-    app.xdo(&["key", "h"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "Tab"]);
-    let s = app.wait_frames(3);
-    assert!(
-        s["ui"]["focus"].is_string(),
-        "Tab gave a control the keys: {}",
-        s["ui"]
-    );
-    app.xdo(&["key", "Escape"]);
-    let s = app.wait_frames(3);
-    assert_eq!(s["ui"]["help_open"], false, "one Esc closed the help");
-    app.quit();
 }

@@ -617,3 +617,13 @@ pub fn check_layout(s: &Value, what: &str, scale: f64, window: [f64; 2]) {
         "{what}"
     );
 }
+
+/// How far the list `name` is scrolled down, and how far it can be (px).
+pub fn list_scroll(s: &Value, name: &str) -> (f64, f64) {
+    let l = &s["ui"]["lists"][name];
+    let y = |v: &Value| {
+        v[1].as_f64()
+            .unwrap_or_else(|| panic!("{name} in {}", s["ui"]))
+    };
+    (y(&l["offset"]), y(&l["max"]))
+}

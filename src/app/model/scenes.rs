@@ -279,15 +279,7 @@ impl Sandbox {
         });
         let result = match again {
             #[cfg(not(target_arch = "wasm32"))]
-            Some(path) => crate::files::write_durably(&path, text.as_bytes())
-                .map(|()| path.clone())
-                .map_err(|e| {
-                    tr!(
-                        "file-cannot-write",
-                        file = path.display().to_string(),
-                        error = e.to_string()
-                    )
-                }),
+            Some(path) => names::write_kept(path, text.as_bytes()),
             _ => keep_file(&dir, &stem, "toml", text.as_bytes()),
         };
         match result {

@@ -41,17 +41,20 @@ pub fn keep_file(dir: &Path, stem: &str, ext: &str, bytes: &[u8]) -> Result<Path
                 error = e.to_string()
             )
         })
-        .and_then(|()| {
-            let path = free_file(dir, stem, ext);
-            write_durably(&path, bytes)
-                .map(|()| path.clone())
-                .map_err(|e| {
-                    tr!(
-                        "file-cannot-write",
-                        file = path.display().to_string(),
-                        error = e.to_string()
-                    )
-                })
+        .and_then(|()| write_kept(free_file(dir, stem, ext), bytes))
+}
+
+/// Writes `bytes` to `path`, atomically and durably: the file, or why not.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn write_kept(path: PathBuf, bytes: &[u8]) -> Result<PathBuf, String> {
+    write_durably(&path, bytes)
+        .map(|()| path.clone())
+        .map_err(|e| {
+            tr!(
+                "file-cannot-write",
+                file = path.display().to_string(),
+                error = e.to_string()
+            )
         })
 }
 
