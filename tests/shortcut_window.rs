@@ -43,7 +43,8 @@ fn ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row() {
 
 /// The help opened with H is read with Page Down at once (it needed a Tab
 /// to its list first); the keys that scroll it (Home, Enter, the arrows)
-/// no longer make a disc or move the view behind it; Esc closes it.
+/// no longer make a disc or move the view behind it; Esc closes it, and it
+/// opens again at its top.
 fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
     let x = Xvfb::start("help keys");
     let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
@@ -76,9 +77,17 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
         "Space scrolled; it did not run the clock"
     );
     assert_eq!(s["ui"]["help_open"], true);
+    let (offset, _) = list_scroll(&s, "scroll_keys");
+    assert!(offset > 0.0, "Space scrolled the help down: {offset}");
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["help_open"], false, "Esc closed the help");
+    app.xdo(&["key", "h"]);
+    let s = app.wait_frames(3);
+    let (offset, _) = list_scroll(&s, "scroll_keys");
+    assert_eq!(offset, 0.0, "the help opened again at its top");
+    app.xdo(&["key", "Escape"]);
+    app.wait_frames(3);
     // With a control in the help holding the keys, one Esc still closes it.
     app.xdo(&["key", "h"]);
     app.wait_frames(3);

@@ -153,6 +153,9 @@ impl Sandbox {
                 self.open.scene = scene;
                 self.open.origin = origin;
                 self.open.saved_to = None;
+                // A note on the scene before ("Saved … in …") is not about
+                // this one.
+                self.messages.scene = None;
                 self.fit_camera();
                 self.say_opened(name, left);
                 Ok(())

@@ -83,8 +83,13 @@ impl Popups {
     pub fn show(&mut self, ctx: &egui::Context, cx: &mut Cx) {
         let screen = ctx.screen_rect();
         let panels = &cx.model.panels;
+        // The help opens at its top, as a page does: it had kept where it
+        // was read to the last time, the first lines out of sight.
+        let was_open = egui::Id::new("help_was_open");
+        let opened = !ctx.data(|d| d.get_temp(was_open)).unwrap_or(false);
+        ctx.data_mut(|d| d.insert_temp(was_open, panels.help_open));
         if panels.help_open {
-            self.help(ctx, cx, screen);
+            self.help(ctx, cx, screen, opened);
         }
         if panels.presets_open {
             self.presets(ctx, cx, screen);
@@ -114,7 +119,7 @@ impl Popups {
         }
     }
 
-    fn help(&mut self, ctx: &egui::Context, cx: &mut Cx, screen: egui::Rect) {
+    fn help(&mut self, ctx: &egui::Context, cx: &mut Cx, screen: egui::Rect, opened: bool) {
         let size = fitted(screen, egui::vec2(1100.0, 900.0));
         let two_columns = size.x >= 860.0;
         let lines: Vec<_> = BINDINGS
@@ -130,7 +135,11 @@ impl Popups {
             .closable()
             .modal(ctx)
             .show(ctx, cx, |ui, cx| {
-                scroll_by_any_keys(ui, cx, egui::ScrollArea::vertical(), "keys", |ui, cx| {
+                let mut area = egui::ScrollArea::vertical();
+                if opened {
+                    area = area.vertical_scroll_offset(0.0);
+                }
+                scroll_by_any_keys(ui, cx, area, "keys", |ui, cx| {
                     let grid = |ui: &mut egui::Ui, id: &str, part: &[(String, String)]| {
                         egui::Grid::new(id)
                             .striped(true)

@@ -68,6 +68,7 @@ fn files_are_named_after_the_scene_in_the_windows_language() {
     let stem = s.file_stem();
     s.apply(Command::OpenEmpty);
     let empty = s.file_stem();
+    let note_after_open = s.messages.scene.clone();
     set_language(Lang::En);
     let saved = saved.unwrap();
     assert_eq!(
@@ -84,6 +85,10 @@ fn files_are_named_after_the_scene_in_the_windows_language() {
     assert_eq!(
         empty, "caja-vacía",
         "the empty box, and a letter with its accent"
+    );
+    assert!(
+        note_after_open.is_none(),
+        "the note on the saved file went with its scene: {note_after_open:?}"
     );
 }
 
