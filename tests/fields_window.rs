@@ -179,9 +179,11 @@ fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
     third.quit();
 }
 
-/// A teacher with no mouse places a disc: Q selects it, Tab reaches its x
-/// field, and x and y typed with Enter move it there (only a drag could);
-/// until Enter the panel says they wait.
+/// A teacher with no mouse places a disc: Q selects it and opens *Selected
+/// disc* (it stayed folded), Tab reaches its x field, and x and y typed
+/// with Enter move it there (only a drag could); until Enter the panel
+/// says they wait. Folded by hand, the section stays folded. Every
+/// field's name is whole.
 fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
     let x = Xvfb::start("position fields");
     let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "1.5"]);
@@ -189,11 +191,20 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
     app.xdo(&["key", "4"]);
     app.wait_frames(3);
     app.xdo(&["key", "q"]);
-    app.wait_frames(3);
-    tab_to(&app, "section_selected", 60);
-    app.xdo(&["key", "Return"]);
-    app.wait_frames(3);
-    let s = tab_to(&app, "disc_x", 20);
+    let s = app.wait_frames(3);
+    assert!(
+        s["panel_widgets"]["disc_x"].is_array(),
+        "selecting a disc opened its section"
+    );
+    // Every field's name in the dock (at text size 1.5, "speed |v| (m/s)"
+    // ran past the window's edge).
+    for (name, rect) in s["panel_widgets"].as_object().unwrap() {
+        if name.starts_with("disc_") && name.ends_with("_label") {
+            let right = rect[0].as_f64().unwrap() + rect[2].as_f64().unwrap();
+            assert!(right <= 1280.0, "{name} ends at x {right}");
+        }
+    }
+    let s = tab_to(&app, "disc_x", 60);
     // Wide enough for its number whole (four characters showed "13,4" for
     // 13,457): 80 points at text size 1.5.
     let width = s["panel_widgets"]["disc_x"][2].as_f64().unwrap();
@@ -223,6 +234,19 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
         s["ui"]["message"].is_null() || !s["ui"]["message"].as_str().unwrap().contains("overlap"),
         "{}",
         s["ui"]
+    );
+    tab_to(&app, "section_selected", 60);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(10);
+    assert!(s["panel_widgets"]["disc_x"].is_null(), "folded by hand");
+    app.xdo(&["key", "Escape"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "q"]);
+    let s = app.wait_frames(3);
+    assert!(s["selected"].is_number(), "Q selected a disc");
+    assert!(
+        s["panel_widgets"]["disc_x"].is_null(),
+        "a section folded by hand stays folded"
     );
     app.quit();
 }

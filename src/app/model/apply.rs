@@ -252,7 +252,12 @@ impl Sandbox {
                 self.toast(tr!("new-disc-mass", mass = with_unit(m, 3, "kg")));
             }
             SizeFollowsMass(on) => self.new_discs.size_follows_mass = on,
-            Select(i) => self.selected = i.filter(|&i| i < self.world.particles.len()),
+            Select(i) => {
+                self.selected = i.filter(|&i| i < self.world.particles.len());
+                if self.selected.is_some() {
+                    self.panels.picks = self.panels.picks.wrapping_add(1);
+                }
+            }
             SelectNext(step) => self.select_next(step),
             AimSelected(dv) => self.aim_selected(dv),
             LaunchAtCentre => self.launch_at_centre(),

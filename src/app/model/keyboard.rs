@@ -34,6 +34,7 @@ impl Sandbox {
             None => n - 1,
         };
         self.selected = Some(next);
+        self.panels.picks = self.panels.picks.wrapping_add(1);
         let p = &self.world.particles[next];
         self.toast(tr!(
             "selected-disc-said",

@@ -122,6 +122,10 @@ pub struct Panels {
     pub focus: start::Tile,
     /// The simulation was running when a modal screen paused it.
     pub paused_by_modal: bool,
+    /// How many times the person picked a disc (a click on it, Q, a row of
+    /// the Discs table): each pick opens *Selected disc* in the side dock.
+    /// A disc selected otherwise (a new one, a preset's) leaves it as it is.
+    pub picks: u32,
 }
 
 impl Panels {
@@ -132,6 +136,7 @@ impl Panels {
             docks_open: true,
             side_open: true,
             drawer_open: false,
+            picks: 0,
             tab: DockTab::Totals,
             dock_expanded: true,
             tab_height: None,

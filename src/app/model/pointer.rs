@@ -72,7 +72,12 @@ impl Sandbox {
                     .gesture
                     .press_arrow_tip(&self.world, i, ARROW_SECONDS, press)
             }
-            None => self.selected = self.pointer.gesture.press(&self.world, world_at, now, slop),
+            None => {
+                self.selected = self.pointer.gesture.press(&self.world, world_at, now, slop);
+                if self.selected.is_some() {
+                    self.panels.picks = self.panels.picks.wrapping_add(1);
+                }
+            }
         }
     }
 

@@ -437,5 +437,6 @@ mod help_covers;
 mod kept_work;
 mod next_collision;
 mod numbering;
+mod picks;
 mod reset_and_title;
 mod tabs_and_totals;

@@ -180,7 +180,11 @@ impl DiscFields {
                     if self.text[k] != self.shown[k] {
                         label = label.color(ui.visuals().warn_fg_color);
                     }
-                    let label = ui.label(label);
+                    // Wrapped where the dock is narrow: "speed |v| (m/s)"
+                    // ran past its edge at text size 1.5.
+                    let label = ui.add(egui::Label::new(label).wrap());
+                    cx.marks
+                        .note(format!("{}_label", FIELD_KEYS[k]), label.rect);
                     if k == DIRECTION {
                         label.tip(tr!("direction-hover"));
                     }

@@ -30,6 +30,60 @@ pub struct SideDock {
     path: String,
     /// The scene name field.
     name: files::NameField,
+    /// *Selected disc* opens itself when a disc is selected, unless the
+    /// person folded it by hand: what it did last, and the disc it last
+    /// showed.
+    selected_section: SelectedSection,
+}
+
+/// Whether *Selected disc* follows the person's picks: it opens when they
+/// pick a disc, and scrolls into sight (a click on a disc showed a folded
+/// header, often below the fold, its fields two steps away), until they
+/// fold it by hand. A disc selected for them (a new one, a preset's)
+/// leaves the controls where they were.
+#[derive(Default)]
+struct SelectedSection {
+    folded_by_hand: bool,
+    /// The model's count of picks when last seen.
+    picks: u32,
+    /// Opened for a pick: to be brought into sight once open.
+    reveal: bool,
+}
+
+impl SelectedSection {
+    /// `Some(true)` when the section should open this frame: the person
+    /// picked a disc since the last.
+    fn follow(&mut self, picks: u32, selected: Option<usize>) -> Option<bool> {
+        let picked = picks != self.picks && selected.is_some();
+        self.picks = picks;
+        let open = picked && !self.folded_by_hand;
+        self.reveal |= open;
+        open.then_some(true)
+    }
+
+    /// After the section was shown: a click on its header says whether the
+    /// person wants it; opened for a selection, its header goes to the top
+    /// of the controls unless the whole of it is in sight.
+    fn shown(&mut self, ui: &Ui, section: Shown) {
+        if let Some(open) = section.clicked {
+            self.folded_by_hand = !open;
+            self.reveal = false;
+        }
+        if let (true, Some(whole)) = (self.reveal, section.whole) {
+            if !ui.clip_rect().contains_rect(whole) {
+                ui.scroll_to_rect(section.header, Some(egui::Align::TOP));
+            }
+            self.reveal = false;
+        }
+    }
+}
+
+/// What a section's frame did: `clicked` is `Some(open)` when its header
+/// was clicked, whether it is open now; `whole` its place once fully open.
+struct Shown {
+    clicked: Option<bool>,
+    header: egui::Rect,
+    whole: Option<egui::Rect>,
 }
 
 impl SideDock {
@@ -38,6 +92,7 @@ impl SideDock {
             fields: discs::DiscFields::default(),
             path,
             name: files::NameField::default(),
+            selected_section: SelectedSection::default(),
         }
     }
 }
@@ -49,15 +104,42 @@ fn section(
     (title, name, open): (&str, &str, bool),
     body: impl FnOnce(&mut Ui, &mut Cx),
 ) {
+    section_opened(ui, cx, (title, name, open), None, body);
+}
+
+/// A [`section`] opened or closed this frame by `set` (`None`: as it was).
+fn section_opened(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    (title, name, open): (&str, &str, bool),
+    set: Option<bool>,
+    body: impl FnOnce(&mut Ui, &mut Cx),
+) -> Shown {
     // Tab reaches the header before its body: its place among the frame's
     // stops is the one before the body's.
     let place = cx.marks.stops.len();
     let r = CollapsingHeader::new(title)
         .id_salt(name)
         .default_open(open)
+        .open(set)
         .show(ui, |ui| body(ui, cx));
     cx.note(name, &r.header_response);
     cx.marks.move_stop_to(r.header_response.id, place);
+    let header = &r.header_response;
+    // Its state, not its openness, which is still on the way there.
+    let clicked = header.clicked().then(|| {
+        egui::collapsing_header::CollapsingState::load(ui.ctx(), header.id)
+            .is_some_and(|s| s.is_open())
+    });
+    let whole = match &r.body_response {
+        Some(body) if r.fully_open() => Some(header.rect.union(body.rect)),
+        _ => None,
+    };
+    Shown {
+        clicked,
+        header: header.rect,
+        whole,
+    }
 }
 
 impl View for SideDock {
@@ -68,6 +150,9 @@ impl View for SideDock {
         let fields = &mut self.fields;
         let path = &mut self.path;
         let name = &mut self.name;
+        let selected_section = &mut self.selected_section;
+        let open_selected =
+            selected_section.follow(cx.model.panels.picks, cx.model.selected_disc());
         // Room beside the controls for the scroll handle shown at rest: at
         // text size 1 the value fields ran under it.
         let bar = &mut ui.spacing_mut().scroll;
@@ -114,9 +199,14 @@ impl View for SideDock {
                             )
                         }
                         Section::Selected => {
-                            section(ui, cx, (&title, "section_selected", false), |ui, cx| {
-                                fields.ui(ui, cx);
-                            })
+                            let shown = section_opened(
+                                ui,
+                                cx,
+                                (&title, "section_selected", false),
+                                open_selected,
+                                |ui, cx| fields.ui(ui, cx),
+                            );
+                            selected_section.shown(ui, shown);
                         }
                         Section::Scene => {
                             let title = tr!("section-scene");
