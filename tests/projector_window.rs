@@ -4,7 +4,7 @@
 //! pseudo-language the top bar, the tab row and the ledger are inside the
 //! window, none over another; scrolled, the ledger keeps its before and
 //! after over its rows; the Discs table scrolls sideways to its last
-//! column.
+//! column; the selected disc's values keep out from under the drawer.
 
 #[path = "window_harness/mod.rs"]
 mod harness;
@@ -37,6 +37,10 @@ fn main() -> std::process::ExitCode {
         (
             "with_the_drawer_open_tab_goes_from_its_button_into_it",
             with_the_drawer_open_tab_goes_from_its_button_into_it,
+        ),
+        (
+            "with_the_drawer_open_the_selected_discs_values_stay_in_sight",
+            with_the_drawer_open_the_selected_discs_values_stay_in_sight,
         ),
         (
             "at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column",
@@ -385,6 +389,31 @@ fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
             && at[1] + at[3] <= drawer[1] + drawer[3] + 0.5,
         "after the drawer's button the keys went to {:?} at {at:?}, outside the drawer {drawer:?}",
         focus(&s)
+    );
+    app.quit();
+}
+
+/// The drawer open at a projector's text size (1280×800): the selected
+/// disc's values, to the right of it where they went first, ran under the
+/// drawer; they stay in the world's part in sight.
+fn with_the_drawer_open_the_selected_discs_values_stay_in_sight() {
+    let x = Xvfb::start("readout beside the drawer");
+    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "2"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "q"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "l"]);
+    app.wait_for("the drawer", 60, |s| s["ui"]["drawer_open"] == true);
+    let s = app.wait_frames(3);
+    let num = |v: &Value, k: usize| v[k].as_f64().unwrap();
+    let (label, drawer) = (&s["selected_readout"], &s["layout"]["drawer"]);
+    let right = num(label, 0) + num(label, 2);
+    assert!(
+        right <= num(drawer, 0),
+        "the values end at x {right}, under the drawer from x {}",
+        num(drawer, 0)
     );
     app.quit();
 }

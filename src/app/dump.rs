@@ -108,6 +108,9 @@ pub struct CountsDump {
     /// Discs with their values beside them, of those on screen that were
     /// to have them ([shown, wanted]); the world says so when fewer.
     pub readouts_shown: [usize; 2],
+    /// Where the selected disc's values were drawn (px: x, y, width,
+    /// height), if they were.
+    pub selected_readout: Option<[f64; 4]>,
     /// The π blocks' final line ("31 collisions: π ≈ 3.1"), once shown.
     pub pi_result: Option<String>,
 }
@@ -284,7 +287,7 @@ pub struct Window<'a> {
     pub world_text_px: Option<f32>,
     /// Discs with their values beside them, and discs on screen that were to
     /// have them.
-    pub readouts: (usize, usize),
+    pub readouts: crate::app::drawing::readouts::Shown,
     pub timing: super::frame_stats::TimingSummary,
 }
 
@@ -319,7 +322,8 @@ pub fn state<'a>(m: &'a Sandbox, window: Window<'a>) -> StateDump<'a> {
             wall_hits: world.total_wall_hits,
             count_line: super::model::lesson::count_line(world),
             resting_contacts: world.resting_contacts,
-            readouts_shown: [window.readouts.0, window.readouts.1],
+            readouts_shown: [window.readouts.shown, window.readouts.wanted],
+            selected_readout: window.readouts.selected_at,
             pi_result: super::model::lesson::pi_result(world),
         },
         scene: SceneDump {

@@ -238,7 +238,10 @@ const DIRECTIONS: [(f64, f64); 8] = [
 /// Places a label of `size` beside the disc at `center` (radius `radius`),
 /// wholly inside `inside`, over no obstacle and no label placed before:
 /// each direction close to the disc first, then farther out (`gaps`, px)
-/// with a leader line. Returns `None` when every place is taken.
+/// with a leader line. Where none of those fits (a disc near the edge of a
+/// world narrower than its label, beside a projector's drawer), the same
+/// places slid back inside, with a leader line. Returns `None` when every
+/// place is taken.
 pub fn place_label(
     center: DVec2,
     radius: f64,
@@ -248,40 +251,53 @@ pub fn place_label(
     obstacles: &Obstacles,
     placed: &LabelPlacer,
 ) -> Option<Placement> {
-    for (k, &gap) in gaps.iter().enumerate() {
-        for (ux, uy) in DIRECTIONS {
-            let u = DVec2::new(ux, uy);
-            let anchor = center + u * (radius + gap);
-            let x = if ux > 0.3 {
-                anchor.x
-            } else if ux < -0.3 {
-                anchor.x - size.x
-            } else {
-                anchor.x - 0.5 * size.x
-            };
-            let y = if uy > 0.3 {
-                anchor.y
-            } else if uy < -0.3 {
-                anchor.y - size.y
-            } else {
-                anchor.y - 0.5 * size.y
-            };
-            let rect = [x, y, size.x, size.y];
-            let (lo, hi) = inside;
-            let within = x >= lo.x && y >= lo.y && x + size.x <= hi.x && y + size.y <= hi.y;
-            if !within || obstacles.hits(rect) || !placed.is_free(rect) {
-                continue;
+    let (lo, hi) = inside;
+    for slid in [false, true] {
+        for (k, &gap) in gaps.iter().enumerate() {
+            for (ux, uy) in DIRECTIONS {
+                let [mut x, mut y] = beside(center, radius + gap, (ux, uy), size);
+                if slid {
+                    x = x.min(hi.x - size.x).max(lo.x);
+                    y = y.min(hi.y - size.y).max(lo.y);
+                }
+                let rect = [x, y, size.x, size.y];
+                let within = x >= lo.x && y >= lo.y && x + size.x <= hi.x && y + size.y <= hi.y;
+                if !within || obstacles.hits(rect) || !placed.is_free(rect) {
+                    continue;
+                }
+                let leader = (k > 0 || slid).then(|| {
+                    let nearest =
+                        DVec2::new(center.x.clamp(x, x + size.x), center.y.clamp(y, y + size.y));
+                    let dir = (nearest - center).normalize_or_zero();
+                    (center + dir * radius, nearest)
+                });
+                return Some(Placement { rect, leader });
             }
-            let leader = (k > 0).then(|| {
-                let nearest =
-                    DVec2::new(center.x.clamp(x, x + size.x), center.y.clamp(y, y + size.y));
-                let dir = (nearest - center).normalize_or_zero();
-                (center + dir * radius, nearest)
-            });
-            return Some(Placement { rect, leader });
         }
     }
     None
+}
+
+/// The top left corner of a label of `size` whose near side touches the
+/// point `away` px from `center` in the direction `(ux, uy)`: beside it on
+/// that side, centred across it.
+fn beside(center: DVec2, away: f64, (ux, uy): (f64, f64), size: DVec2) -> [f64; 2] {
+    let anchor = center + DVec2::new(ux, uy) * away;
+    let x = if ux > 0.3 {
+        anchor.x
+    } else if ux < -0.3 {
+        anchor.x - size.x
+    } else {
+        anchor.x - 0.5 * size.x
+    };
+    let y = if uy > 0.3 {
+        anchor.y
+    } else if uy < -0.3 {
+        anchor.y - size.y
+    } else {
+        anchor.y - 0.5 * size.y
+    };
+    [x, y]
 }
 
 #[cfg(test)]
@@ -407,6 +423,34 @@ mod tests {
             place_label(c, 20.0, size, &[6.0, 60.0], tiny, &obstacles, &placed).is_none(),
             "outside the world"
         );
+    }
+
+    /// Beside a projector's drawer the world is little wider than a label:
+    /// with no room right of the disc nor centred over it, the label slides
+    /// along above it, inside, on a leader line (it went under the drawer).
+    #[test]
+    fn a_label_with_no_room_beside_its_disc_slides_back_inside() {
+        let world = (DVec2::new(0.0, 60.0), DVec2::new(862.0, 440.0));
+        let (c, r) = (DVec2::new(247.0, 240.0), 25.0);
+        let mut obstacles = Obstacles::new(142.0);
+        obstacles.add_circle(c, r);
+        let size = DVec2::new(615.0, 142.0);
+        let placed = LabelPlacer::new(size);
+        let gaps = [6.0, 30.0];
+        let p = place_label(c, r, size, &gaps, world, &obstacles, &placed).expect("a place");
+        let [x, y, w, h] = p.rect;
+        let (lo, hi) = world;
+        assert!(
+            x >= lo.x && y >= lo.y && x + w <= hi.x && y + h <= hi.y,
+            "{p:?}"
+        );
+        assert!(!rect_hits_circle(p.rect, c, r), "{p:?} covers its disc");
+        assert!(p.leader.is_some(), "slid along: a leader line");
+        // Where it fits as it is, it is not slid.
+        let wide = (lo, DVec2::new(1280.0, 440.0));
+        let p = place_label(c, r, size, &gaps, wide, &obstacles, &placed).unwrap();
+        assert_eq!(p.rect[0], c.x + r + 6.0, "right beside the disc");
+        assert_eq!(p.leader, None);
     }
 
     #[test]

@@ -31,9 +31,8 @@ use readouts::WorldText;
 pub struct Painter {
     batch: Option<DiscBatch>,
     text: Option<WorldText>,
-    /// Discs that got their values beside them last frame, and discs on
-    /// screen that were to have them.
-    pub readouts: (usize, usize),
+    /// What the readouts showed last frame.
+    pub readouts: readouts::Shown,
 }
 
 impl Painter {
@@ -71,8 +70,12 @@ impl Painter {
         let Some(text) = self.text.as_ref() else {
             return;
         };
+        // The labels keep out from under the open drawer.
+        let (lo, hi) = camera.screen_rect();
+        let visible = (lo, hi - DVec2::new(model.view.covered, 0.0));
+        let (overlays, selected) = (&model.overlays, model.selected);
         self.readouts =
-            readouts::draw_readouts(world, camera, &model.overlays, model.selected, look, text);
+            readouts::draw_readouts(world, camera, visible, overlays, selected, look, text);
         if let Gesture::Launching { start, .. } = model.pointer.gesture {
             let cursor = camera.screen_to_world(mouse);
             let disc = model.new_disc_now();

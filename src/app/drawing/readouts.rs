@@ -8,7 +8,7 @@
 //! there is room. Backgrounds first, then all text.
 
 use super::cull::{
-    circle_on_screen, place_label, LabelPlacer, Obstacles, Placement, MIN_ARROW_PIXELS,
+    circle_on_screen, place_label, LabelPlacer, Obstacles, Placement, ScreenRect, MIN_ARROW_PIXELS,
     MIN_LABEL_DISC_PIXELS,
 };
 use crate::app::lang::tr;
@@ -118,6 +118,18 @@ pub fn readout_lines(p: &impulse::Particle, i: usize, spin: bool) -> Vec<String>
     lines
 }
 
+/// What the readouts showed this frame.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Shown {
+    /// Discs with their values beside them.
+    pub shown: usize,
+    /// Discs on screen that were to have them (the world says so when
+    /// fewer were shown).
+    pub wanted: usize,
+    /// Where the selected disc's label went (px: x, y, width, height).
+    pub selected_at: Option<[f64; 4]>,
+}
+
 /// One placed label.
 struct Label {
     rect: [f64; 4],
@@ -180,21 +192,26 @@ fn add_disc(
 /// Text readouts beside the selected disc or every readable disc.
 /// Returns how many discs got their values and how many on screen were to
 /// have them; where not all could, it says so in the world's corner.
+///
+/// `visible` is the part of the world's rectangle in sight: less than the
+/// camera's where the open drawer covers its right end, whose labels went
+/// under the drawer.
 pub fn draw_readouts(
     world: &World,
     camera: &Camera,
+    visible: ScreenRect,
     overlays: &Overlays,
     selected: Option<usize>,
     look: Look,
     text: &WorldText,
-) -> (usize, usize) {
+) -> Shown {
     let all = match overlays.readouts {
-        ReadoutScope::Off => return (0, 0),
+        ReadoutScope::Off => return Shown::default(),
         ReadoutScope::Selected => false,
         ReadoutScope::All => true,
     };
     if world.particles.is_empty() {
-        return (0, 0);
+        return Shown::default();
     }
     let size = MIN_TEXT_POINTS * look.text_scale;
     let pad = 0.35 * size;
@@ -209,12 +226,13 @@ pub fn draw_readouts(
     let (obstacles, all) = match obstacles(world, camera, overlays, typical.y) {
         Some(o) => (o, all),
         None if selected.is_some() => (Obstacles::new(typical.y), false),
-        None => return (0, 0),
+        None => return Shown::default(),
     };
     let mut placer = LabelPlacer::new(typical);
     let gaps = [6.0, 30.0, 80.0].map(|g| g * f64::from(look.text_scale));
     let mut labels = Vec::new();
     let mut wanted = 0;
+    let mut selected_at = None;
     // The selected disc first, so its label is never crowded out.
     let others = (0..world.particles.len()).filter(|&i| all && Some(i) != selected);
     for i in selected.into_iter().chain(others) {
@@ -224,7 +242,7 @@ pub fn draw_readouts(
         let c = camera.world_to_screen(p.pos);
         let r = camera.length_in_pixels(p.radius);
         let chosen = Some(i) == selected;
-        if !circle_on_screen(c, r, camera.screen_rect()) {
+        if !circle_on_screen(c, r, visible) {
             continue;
         }
         wanted += 1;
@@ -238,21 +256,34 @@ pub fn draw_readouts(
             .fold(0.0, f32::max);
         let label_size = DVec2::new(f64::from(stripe + width + 2.0 * pad), height);
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
-        let screen = camera.screen_rect();
-        let placed =
-            place_label(c, r, label_size, gaps, screen, &obstacles, &placer).or_else(|| {
+        let place_in = |room: ScreenRect| {
+            place_label(c, r, label_size, gaps, room, &obstacles, &placer).or_else(|| {
                 // Crowded all round: the selected disc's values go beside
                 // it all the same, over its neighbours (a teacher chose
                 // this disc; a notice instead would cover more of them).
                 chosen
                     .then(|| {
                         let scene = (world, camera, overlays);
-                        place_over_others(p, scene, label_size, gaps, &placer)
+                        place_over_others(p, scene, (label_size, room), gaps, &placer)
                     })
                     .flatten()
-            });
+            })
+        };
+        // Clear of the open drawer where there is room; the selected disc's
+        // values, where there is none (a projector's world beside the
+        // drawer is narrower than they are), partly under its edge rather
+        // than not at all.
+        let full = camera.screen_rect();
+        let placed = place_in(visible).or_else(|| {
+            (chosen && visible != full)
+                .then(|| place_in(full))
+                .flatten()
+        });
         if let Some(at) = placed {
             placer.try_place(at.rect);
+            if chosen {
+                selected_at = Some(at.rect);
+            }
             let c = overlays.disc_color(world, i);
             labels.push(Label {
                 rect: at.rect,
@@ -287,7 +318,7 @@ pub fn draw_readouts(
         // Wrapped to the world's width: at a projector's text size one line
         // ran off the right edge.
         let note = tr!("readouts-culled", shown = labels.len(), wanted = wanted);
-        let (lo, hi) = camera.screen_rect();
+        let (lo, hi) = visible;
         let room = (hi.x - lo.x) as f32 - 16.0;
         let lines = wrap_words(&note, room, |line| text.measure(line, size).x);
         let line_height = text.measure(&note, size).y;
@@ -299,7 +330,11 @@ pub fn draw_readouts(
             text.draw(line, at, size, ink);
         }
     }
-    (labels.len(), wanted)
+    Shown {
+        shown: labels.len(),
+        wanted,
+        selected_at,
+    }
 }
 
 /// Where the selected disc's label goes when every place beside it covers
@@ -310,13 +345,12 @@ pub fn draw_readouts(
 fn place_over_others(
     p: &impulse::Particle,
     (world, camera, overlays): (&World, &Camera, &Overlays),
-    size: DVec2,
+    (size, screen): (DVec2, ScreenRect),
     gaps: &[f64],
     placed: &LabelPlacer,
 ) -> Option<Placement> {
     let center = camera.world_to_screen(p.pos);
     let radius = camera.length_in_pixels(p.radius);
-    let screen = camera.screen_rect();
     let mut itself = Obstacles::new(size.y);
     add_disc(&mut itself, p, mean_mass(world), camera, overlays);
     let mut disc = Obstacles::new(size.y);
@@ -394,8 +428,9 @@ mod tests {
         let size = DVec2::new(200.0, 60.0);
         let placer = LabelPlacer::new(size);
         let scene = (&world, &camera, &overlays);
+        let room = (size, camera.screen_rect());
         let at =
-            place_over_others(&world.particles[0], scene, size, &[6.0], &placer).expect("a place");
+            place_over_others(&world.particles[0], scene, room, &[6.0], &placer).expect("a place");
         // The arrow: from the centre (400, 400) px 0.5 s × 30 m/s × 8 px/m
         // to the right, 120 px.
         let [x, y, w, h] = at.rect;
