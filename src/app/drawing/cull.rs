@@ -283,21 +283,17 @@ pub fn place_label(
 /// that side, centred across it.
 fn beside(center: DVec2, away: f64, (ux, uy): (f64, f64), size: DVec2) -> [f64; 2] {
     let anchor = center + DVec2::new(ux, uy) * away;
-    let x = if ux > 0.3 {
-        anchor.x
-    } else if ux < -0.3 {
-        anchor.x - size.x
-    } else {
-        anchor.x - 0.5 * size.x
+    // Along one axis: past the anchor, before it, or centred on it.
+    let start = |anchor: f64, u: f64, length: f64| {
+        if u > 0.3 {
+            anchor
+        } else if u < -0.3 {
+            anchor - length
+        } else {
+            anchor - 0.5 * length
+        }
     };
-    let y = if uy > 0.3 {
-        anchor.y
-    } else if uy < -0.3 {
-        anchor.y - size.y
-    } else {
-        anchor.y - 0.5 * size.y
-    };
-    [x, y]
+    [start(anchor.x, ux, size.x), start(anchor.y, uy, size.y)]
 }
 
 #[cfg(test)]
