@@ -31,6 +31,7 @@ scene-cannot-open = { $file } kann nicht geöffnet werden: { $error }
 scene-opened = Geöffnet: { $name }
 scene-opened-undo = Geöffnet: { $name }. { $undo } holt { $previous } zurück, so wie Sie es verlassen haben
 scene-kept = { $error } (die aktuelle Szene bleibt)
+scene-not-found = Keine Szenendatei { $name }, weder hier noch in { $folder } (die aktuelle Szene bleibt)
 scene-reset = Szene zurückgesetzt
 scene-reset-edits = Szene zurückgesetzt, wie sie geöffnet wurde, ohne Ihre Änderungen: { $undo } holt sie zurück
 scene-cannot-reset = Zurücksetzen nicht möglich: { $error }

@@ -31,6 +31,7 @@ scene-cannot-open = Cannot open { $file }: { $error }
 scene-opened = Opened { $name }
 scene-opened-undo = Opened { $name }. { $undo } brings back { $previous } as you left it
 scene-kept = { $error } (kept the current scene)
+scene-not-found = There is no scene file { $name }, here or in { $folder } (kept the current scene)
 scene-reset = Scene reset
 scene-reset-edits = Scene reset to how it opened, without your edits: { $undo } brings them back
 scene-cannot-reset = Cannot reset: { $error }

@@ -31,6 +31,7 @@ scene-cannot-open = No se puede abrir { $file }: { $error }
 scene-opened = Se abrió { $name }
 scene-opened-undo = Se abrió { $name }. { $undo } recupera { $previous } tal como lo dejó
 scene-kept = { $error } (se mantiene la escena actual)
+scene-not-found = No hay ningún archivo de escena { $name }, ni aquí ni en { $folder } (se mantiene la escena actual)
 scene-reset = Escena reiniciada
 scene-reset-edits = Escena reiniciada tal como se abrió, sin sus cambios: { $undo } los recupera
 scene-cannot-reset = No se puede reiniciar: { $error }

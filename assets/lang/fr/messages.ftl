@@ -31,6 +31,7 @@ scene-cannot-open = Impossible d'ouvrir { $file } : { $error }
 scene-opened = Ouvert : { $name }
 scene-opened-undo = Ouvert : { $name }. { $undo } ramène { $previous } tel que vous l’avez laissé
 scene-kept = { $error } (la scène actuelle est conservée)
+scene-not-found = Aucun fichier de scène { $name }, ni ici ni dans { $folder } (la scène actuelle est conservée)
 scene-reset = Scène réinitialisée
 scene-reset-edits = Scène réinitialisée telle qu’elle a été ouverte, sans vos modifications : { $undo } les ramène
 scene-cannot-reset = Impossible de réinitialiser : { $error }

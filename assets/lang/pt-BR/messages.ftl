@@ -31,6 +31,7 @@ scene-cannot-open = Não foi possível abrir { $file }: { $error }
 scene-opened = Cena aberta: { $name }
 scene-opened-undo = Cena aberta: { $name }. { $undo } traz de volta { $previous } como você deixou
 scene-kept = { $error } (a cena atual foi mantida)
+scene-not-found = Não há arquivo de cena { $name }, nem aqui nem em { $folder } (a cena atual foi mantida)
 scene-reset = Cena reiniciada
 scene-reset-edits = Cena reiniciada como foi aberta, sem as suas alterações: { $undo } as traz de volta
 scene-cannot-reset = Não foi possível reiniciar: { $error }

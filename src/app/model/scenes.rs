@@ -206,10 +206,22 @@ impl Sandbox {
             self.messages.scene = Some(Note::error(tr!("scene-path-empty")));
             return;
         }
-        let result = match Scene::load(Path::new(&path)) {
-            Ok(scene) => self.open_scene(scene, path.clone()),
-            Err(e) => {
+        // A name alone is looked for where Save puts files too: the Save
+        // note names the file alone, and typed back it was "not found".
+        let found = names::find_scene_file(Path::new(&path), &self.session.out);
+        let result = match found.as_deref().map(Scene::load) {
+            Some(Ok(scene)) => {
+                let origin = found.as_deref().map(|f| f.display().to_string());
+                self.open_scene(scene, origin.unwrap_or_else(|| path.clone()))
+            }
+            Some(Err(e)) => {
                 let message = tr!("scene-kept", error = e.to_string());
+                self.report(message.clone());
+                Err(message)
+            }
+            None => {
+                let folder = crate::files::shown(&self.session.out);
+                let message = tr!("scene-not-found", name = path.as_str(), folder = folder);
                 self.report(message.clone());
                 Err(message)
             }

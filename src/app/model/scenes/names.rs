@@ -28,6 +28,24 @@ pub fn slug(name: &str) -> String {
     }
 }
 
+/// The scene file a person typed, found: as typed, else (a name alone, as
+/// the Save note gives it) in `saved_in`, the folder the window saves
+/// into; either with `.toml` added where the name has no extension.
+/// `None` when there is no such file.
+pub fn find_scene_file(typed: &Path, saved_in: &Path) -> Option<PathBuf> {
+    let mut places = vec![typed.to_path_buf()];
+    if typed.is_relative() {
+        places.push(saved_in.join(typed));
+    }
+    places
+        .into_iter()
+        .flat_map(|p| {
+            let with_toml = p.extension().is_none().then(|| p.with_extension("toml"));
+            std::iter::once(p).chain(with_toml)
+        })
+        .find(|p| p.is_file())
+}
+
 /// Keeps `bytes` for the user as `stem.ext`: on the desktop written into
 /// `dir` (created if needed) under the first free name, atomically and
 /// durably; in the browser downloaded. Returns the file, or why not.

@@ -157,3 +157,36 @@ fn saving_again_writes_back_into_the_same_file() {
         "the earlier file, the glancing one, the renamed one"
     );
 }
+
+/// The Save note names the file alone ("Saved schiefer-stoß.toml"); typed
+/// back into the path field, with or without ".toml", the scene opens from
+/// the save folder (it was "cannot read: No such file", in English). A
+/// name found nowhere is said in the window's language.
+#[test]
+fn a_saved_scene_opens_again_by_the_name_the_save_gave() {
+    use crate::app::lang::{set_language, Lang};
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    s.apply(Command::RenameScene("Aula 3".into()));
+    let saved = s.save_scene().unwrap();
+    let file = saved.file_name().unwrap().to_string_lossy().to_string();
+    assert_eq!(file, "aula-3.toml");
+    for typed in [file.as_str(), "aula-3", " aula-3 "] {
+        s.apply(Command::OpenEmpty);
+        assert_ne!(s.scene_name(), "Aula 3");
+        s.apply(Command::OpenFile(typed.into()));
+        assert_eq!(s.scene_name(), "Aula 3", "typed {typed:?}");
+        assert!(s.messages.scene.as_ref().is_some_and(|n| !n.error));
+    }
+    set_language(Lang::PtBr);
+    s.apply(Command::OpenFile("aula-4".into()));
+    let note = s.messages.scene.clone().unwrap();
+    set_language(Lang::En);
+    assert!(note.error);
+    assert!(
+        note.text.starts_with("Não há arquivo de cena aula-4"),
+        "{}",
+        note.text
+    );
+    assert_eq!(s.scene_name(), "Aula 3", "the scene was kept");
+}
