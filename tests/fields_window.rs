@@ -2,7 +2,8 @@
 //! Discs table at a projector's size follows Tab to each field and the
 //! rest of its row; Ctrl with a letter types nothing there, and Ctrl+S
 //! applies what was typed and saves it; the text size and theme chosen are
-//! where the next start opens; a disc is placed by its typed position.
+//! where the next start opens; a disc is placed by its typed position, and
+//! a field the edit was refused for is marked until typed again.
 
 #[path = "window_harness/mod.rs"]
 mod harness;
@@ -23,6 +24,10 @@ fn main() -> std::process::ExitCode {
         (
             "a_disc_is_placed_from_the_keyboard_by_its_position_fields",
             a_disc_is_placed_from_the_keyboard_by_its_position_fields,
+        ),
+        (
+            "a_refused_field_is_marked_until_typed_again",
+            a_refused_field_is_marked_until_typed_again,
         ),
     ])
 }
@@ -248,5 +253,47 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
         s["panel_widgets"]["disc_x"].is_null(),
         "a section folded by hand stays folded"
     );
+    app.quit();
+}
+
+/// A student types a mass out of range and Enter: the mass is marked as
+/// refused, not as waiting for Enter. A speed typed next is refused for
+/// the mass, which stays marked (the speed does not); the mass typed
+/// again, both apply.
+fn a_refused_field_is_marked_until_typed_again() {
+    let x = Xvfb::start("refused field");
+    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "1.5"]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "q"]);
+    app.wait_frames(3);
+    let marks = |s: &Value| {
+        let w = &s["panel_widgets"];
+        (
+            w["disc_mass_refused"].is_array(),
+            w["disc_vx_refused"].is_array(),
+            w["edit_pending"].is_array(),
+        )
+    };
+    tab_to(&app, "disc_mass", 60);
+    app.xdo(&["type", "1e30"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(5);
+    assert_eq!(marks(&s), (true, false, false), "the mass refused");
+    tab_to(&app, "disc_vx", 80);
+    app.xdo(&["type", "3"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(5);
+    assert_eq!(marks(&s), (true, false, true), "refused for the mass");
+    assert_eq!(s["particles"][0]["vel"][0], 2.5, "nothing applied");
+    assert_eq!(s["particles"][0]["mass"], 1.0);
+    tab_to(&app, "disc_mass", 80);
+    app.xdo(&["type", "2"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_for("the edit", 60, |s| s["particles"][0]["mass"] == 2.0);
+    assert_eq!(s["particles"][0]["vel"][0], 3.0);
+    let s = app.wait_frames(3);
+    assert_eq!(marks(&s), (false, false, false), "applied: nothing marked");
     app.quit();
 }

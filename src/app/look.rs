@@ -11,6 +11,25 @@ pub use crate::app::model::Theme;
 /// scale 1): 16, so scale 1.5 gives 24 px and the projector's 2.0 gives 32.
 pub const MIN_TEXT_POINTS: f32 = 16.0;
 
+/// The font the world's labels are drawn in, and the panels' last resort
+/// for a character egui's own fonts lack (the minus of "10⁻¹² kg").
+pub static DEJAVU_SANS: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// egui's fonts with DejaVu Sans after them: a character none of egui's
+/// has is drawn from it instead of as a box.
+pub fn font_definitions() -> egui::FontDefinitions {
+    let mut fonts = egui::FontDefinitions::default();
+    let name = "DejaVu Sans".to_string();
+    fonts.font_data.insert(
+        name.clone(),
+        std::sync::Arc::new(egui::FontData::from_static(DEJAVU_SANS)),
+    );
+    for family in [FontFamily::Proportional, FontFamily::Monospace] {
+        fonts.families.entry(family).or_default().push(name.clone());
+    }
+    fonts
+}
+
 /// Text sizes (points) by egui's text styles; nothing on screen is drawn in
 /// any other size but the world's labels, which use [`MIN_TEXT_POINTS`] and up.
 pub fn text_sizes() -> [(TextStyle, f32); 5] {

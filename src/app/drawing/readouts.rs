@@ -36,7 +36,7 @@ pub struct WorldText {
 impl WorldText {
     /// Loads the bundled font (needs the window).
     pub fn new() -> Self {
-        let font = load_ttf_font_from_bytes(include_bytes!("../../../assets/fonts/DejaVuSans.ttf"))
+        let font = load_ttf_font_from_bytes(crate::app::look::DEJAVU_SANS)
             .expect("the bundled DejaVu Sans loads");
         WorldText {
             font,

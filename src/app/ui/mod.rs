@@ -203,6 +203,9 @@ impl Panels {
         out: &mut Vec<Command>,
     ) {
         let p = &model.panels;
+        if self.applied.is_none() {
+            ctx.set_fonts(look::font_definitions());
+        }
         let dpi = macroquad::window::screen_dpi_scale();
         let wanted_ppp = dpi * p.scale;
         if self.applied != Some((p.scale, p.theme))

@@ -30,6 +30,11 @@ pub struct DiscFields {
     sent: bool,
     /// Why the speed and direction typed could not be read.
     polar_error: Option<String>,
+    /// The fields' text when the model refused the last edit: a field it
+    /// refused, until typed in again, has its name in red (in amber, with
+    /// "not applied yet", it read as if Enter had not been pressed, and a
+    /// later edit of another field was refused for it without a sign why).
+    refused: Option<[String; 8]>,
 }
 
 /// Each field's name (a message of `window.ftl`): the model's six (mass,
@@ -132,11 +137,17 @@ impl DiscFields {
             };
         }
         // The model took the last edit: every field follows the disc again.
-        if std::mem::take(&mut self.sent)
-            && cx.model.messages.fields.as_ref().is_some_and(|n| !n.error)
-        {
-            self.shown = self.text.clone();
+        if std::mem::take(&mut self.sent) {
+            match cx.model.messages.fields.as_ref().map(|n| n.error) {
+                Some(false) => {
+                    self.shown = self.text.clone();
+                    self.refused = None;
+                }
+                Some(true) => self.refused = Some(self.text.clone()),
+                None => {}
+            }
         }
+        let refused = self.refused_fields(cx);
         // Untouched fields follow the disc as it moves.
         let direction = p.vel.y.atan2(p.vel.x).to_degrees();
         let live = [
@@ -176,8 +187,11 @@ impl DiscFields {
                     }
                     let name = crate::app::lang::text(FIELD_NAMES[k], &[]);
                     let mut label = egui::RichText::new(format!("{name} ({})", FIELD_UNITS[k]));
-                    // Typed and not yet applied: its name in amber.
-                    if self.text[k] != self.shown[k] {
+                    // Typed and not yet applied: its name in amber;
+                    // refused, in red.
+                    if refused[k] {
+                        label = label.color(ui.visuals().error_fg_color);
+                    } else if self.text[k] != self.shown[k] {
                         label = label.color(ui.visuals().warn_fg_color);
                     }
                     // Wrapped where the dock is narrow: "speed |v| (m/s)"
@@ -185,6 +199,10 @@ impl DiscFields {
                     let label = ui.add(egui::Label::new(label).wrap());
                     cx.marks
                         .note(format!("{}_label", FIELD_KEYS[k]), label.rect);
+                    if refused[k] {
+                        cx.marks
+                            .note(format!("{}_refused", FIELD_KEYS[k]), label.rect);
+                    }
                     if k == DIRECTION {
                         label.tip(tr!("direction-hover"));
                     }
@@ -193,7 +211,7 @@ impl DiscFields {
             });
         // Nothing typed takes effect before Enter or Apply (a teacher who
         // moved on with Tab saw the disc unchanged and nothing saying why).
-        let pending = (0..FIELD_NAMES.len()).any(|k| self.text[k] != self.shown[k]);
+        let pending = (0..FIELD_NAMES.len()).any(|k| self.text[k] != self.shown[k] && !refused[k]);
         if pending && !self.sent {
             let r = ui
                 .label(egui::RichText::new(tr!("edit-pending")).color(ui.visuals().warn_fg_color));
@@ -212,6 +230,31 @@ impl DiscFields {
         } else if let Some(note) = &cx.model.messages.fields {
             show_note(ui, note);
         }
+    }
+
+    /// Which fields the model refused in the last edit and are as they were
+    /// then: those that cannot be taken on their own, else (a disc that
+    /// would overlap, a velocity too fast as a whole) every field sent.
+    fn refused_fields(&self, cx: &Cx) -> [bool; 8] {
+        let Some(was) = &self.refused else {
+            return [false; 8];
+        };
+        let sent: [bool; 8] = std::array::from_fn(|k| was[k] != self.shown[k]);
+        let biggest = cx.model.biggest_radius();
+        let alone_refused: [bool; 8] = std::array::from_fn(|k| {
+            let mut one = [None; 6];
+            let Some(slot) = one.get_mut(k) else {
+                return false; // speed and direction: said under the fields
+            };
+            *slot = Some(was[k].as_str());
+            sent[k] && crate::app::model::edit::parse_disc_edit(one, biggest).is_err()
+        });
+        let culprits = if alone_refused.contains(&true) {
+            alone_refused
+        } else {
+            sent
+        };
+        std::array::from_fn(|k| culprits[k] && self.text[k] == was[k])
     }
 
     /// Sends the edited fields as an edit of disc `i`; the model reads
