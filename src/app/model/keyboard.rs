@@ -53,6 +53,27 @@ impl Sandbox {
         let Some(i) = self.selected_disc() else {
             return;
         };
+        // In a one-dimensional world only along its line: a velocity across
+        // it showed in the readout, and the step then set it to 0 (the
+        // kinetic energy fell with no collision).
+        let dv = match self.world.laws.constrain {
+            Some(axis) => {
+                let along = axis.index();
+                if dv[along] == 0.0 {
+                    let keys = if along == 0 {
+                        tr!("key-left-right")
+                    } else {
+                        tr!("key-up-down")
+                    };
+                    self.toast(tr!("aim-across-the-line", keys = keys));
+                    return;
+                }
+                let mut only = DVec2::ZERO;
+                only[along] = dv[along];
+                only
+            }
+            None => dv,
+        };
         let p = &mut self.world.particles[i];
         // Whole tenths, so that steps add up to round numbers: divided by
         // ten, not multiplied by 0.1 (−6 × 0.1 is −0.6000000000000001, which
@@ -116,7 +137,7 @@ mod tests {
     #[test]
     fn the_world_answers_the_keyboard_alone() {
         let dir = tempfile::tempdir().unwrap();
-        let mut s = sandbox_on(dir.path(), "preset-1-head-on.toml");
+        let mut s = sandbox_on(dir.path(), "preset-4-glancing.toml");
         let n = s.world.particles.len();
         s.apply(Command::SelectNext(1));
         assert_eq!(s.selected, Some(0));
@@ -157,6 +178,26 @@ mod tests {
         assert_eq!(s.world.particles[n].vel, DVec2::ZERO);
         s.apply(Command::Undo);
         assert_eq!(s.world.particles.len(), n);
+    }
+
+    /// In a one-dimensional world the arrows aim along its line only: Up
+    /// had given a disc a v_y the readout showed and the next step took
+    /// away, its kinetic energy falling with no collision.
+    #[test]
+    fn in_one_dimension_the_arrows_aim_along_the_line() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut s = sandbox_on(dir.path(), "preset-1-head-on.toml");
+        assert!(s.world.laws.constrain.is_some());
+        s.apply(Command::SelectNext(1));
+        let before = s.world.particles[0].vel;
+        s.apply(Command::AimSelected(DVec2::new(0.0, 0.1)));
+        assert_eq!(s.world.particles[0].vel, before, "Up changed nothing");
+        let said = s.message().unwrap_or_default();
+        assert!(said.contains("one line: Left and Right"), "{said}");
+        s.apply(Command::AimSelected(DVec2::new(0.1, 0.1)));
+        let after = s.world.particles[0].vel;
+        assert_eq!(after.y, 0.0, "nothing across the line");
+        assert!((after.x - before.x - 0.1).abs() < 1e-9, "{after}");
     }
 
     /// A second Enter finds the centre taken: the disc goes beside the

@@ -107,6 +107,21 @@ pub enum Released {
     Aimed(usize, DVec2),
 }
 
+/// In a one-dimensional world, the axis across its line: a gesture moves
+/// nothing across it (the step took a velocity across the line away, and
+/// the kinetic energy shown fell with no collision).
+fn across_line(world: &World) -> Option<usize> {
+    world.laws.constrain.map(|axis| axis.locked())
+}
+
+/// `v` without its part across the line (`across`), if there is one.
+fn along_line(across: Option<usize>, mut v: DVec2) -> DVec2 {
+    if let Some(c) = across {
+        v[c] = 0.0;
+    }
+    v
+}
+
 /// Launch velocity for a drag from `start` to `end` (world).
 pub fn launch_velocity(start: DVec2, end: DVec2) -> DVec2 {
     (end - start) * LAUNCH_GAIN
@@ -192,8 +207,9 @@ impl Gesture {
         } = self
         {
             *dragged |= pressed_at.distance(at) > *slop;
+            let across = across_line(world);
             if let (true, Some(p)) = (*dragged, world.particles.get_mut(*index)) {
-                p.vel = (at - p.pos) / *seconds;
+                p.vel = along_line(across, (at - p.pos) / *seconds);
             }
             return;
         }
@@ -235,15 +251,21 @@ impl Gesture {
         ) else {
             return;
         };
-        let velocity = trail_velocity(trail);
+        let across = across_line(world);
+        let velocity = along_line(across, trail_velocity(trail));
         if let Some(p) = world.particles.get_mut(*index) {
+            let line = p.pos;
             p.pos = keep_inside(cursor + *offset, p.radius, size, edges);
+            if let Some(c) = across {
+                p.pos[c] = line[c]; // held on its line
+            }
             p.vel = velocity;
         }
     }
 
     /// Ends the gesture at `at`.
     pub fn release(&mut self, world: &mut World, at: DVec2, new_disc: NewDisc) -> Released {
+        let across = across_line(world);
         match std::mem::take(self) {
             Gesture::Idle => Released::Nothing,
             Gesture::Aiming {
@@ -259,7 +281,7 @@ impl Gesture {
                         p.vel = velocity_before; // taken and let go: nothing set
                         return Released::Clicked(index);
                     }
-                    p.vel = (at - p.pos) / seconds;
+                    p.vel = along_line(across, (at - p.pos) / seconds);
                     Released::Aimed(index, p.vel)
                 }
                 None => Released::Nothing,
@@ -268,11 +290,19 @@ impl Gesture {
                 if start.distance(at) <= slop {
                     return Released::Nothing; // a click on empty space
                 }
-                let Some(pos) = world.free_spot_near(start, new_disc.radius) else {
+                // In one dimension on the discs' line (off it, the disc
+                // moved along a line of its own and met none of them).
+                let mut wanted = start;
+                if let Some(c) = across {
+                    let middle = 0.5 * world.laws.size[c];
+                    wanted[c] = world.particles.first().map_or(middle, |p| p.pos[c]);
+                }
+                let spot = world.free_spot_near(wanted, new_disc.radius);
+                let Some(pos) = spot.filter(|p| across.is_none_or(|c| p[c] == wanted[c])) else {
                     return Released::NoRoom;
                 };
                 let color = Color::palette(world.particles.len());
-                let vel = launch_velocity(start, at);
+                let vel = along_line(across, launch_velocity(start, at));
                 world.particles.push(Particle::new(
                     pos,
                     vel,
@@ -294,7 +324,7 @@ impl Gesture {
                     return Released::Nothing;
                 };
                 if dragged {
-                    p.vel = trail_velocity(&trail);
+                    p.vel = along_line(across, trail_velocity(&trail));
                     Released::Flung(index, p.vel)
                 } else {
                     // A click selects; it neither stops nor moves the disc.

@@ -198,3 +198,39 @@ fn dragging_the_arrow_tip_sets_the_velocity_it_draws() {
     assert_eq!(r, Released::Clicked(0));
     assert_eq!(w.particles[0].vel, before);
 }
+
+/// In a one-dimensional world (along x) no gesture moves a disc across the
+/// line, nor gives it a velocity across it: a launch goes onto the discs'
+/// line, a held disc slides along it, a fling and an aimed arrow keep v_y
+/// at 0 (the step took it away, and the kinetic energy shown fell).
+#[test]
+fn in_one_dimension_gestures_keep_to_the_line() {
+    let mut w = world();
+    w.laws.constrain = Some(impulse::Axis::X);
+    let mut g = Gesture::default();
+    g.press(&w, DVec2::new(1.5, 3.0), 0.0, SLOP);
+    let r = g.release(&mut w, DVec2::new(2.5, 4.0), NEW);
+    assert_eq!(r, Released::Launched(1));
+    let p = w.particles[1];
+    assert_eq!(p.pos, DVec2::new(1.5, 5.0), "on the first disc's line");
+    assert_eq!(p.vel, DVec2::new(1.0, 0.0) * LAUNCH_GAIN);
+    // Held and flung diagonally.
+    assert_eq!(g.press(&w, DVec2::new(5.0, 5.0), 0.0, SLOP), Some(0));
+    for k in 1..=5 {
+        let t = 0.02 * f64::from(k);
+        g.drag(&mut w, DVec2::new(5.0 + t, 5.0 + 2.0 * t), t);
+        assert_eq!(w.particles[0].pos.y, 5.0, "held on its line");
+    }
+    let r = g.release(&mut w, DVec2::new(5.1, 5.2), NEW);
+    let Released::Flung(0, v) = r else {
+        panic!("{r:?}")
+    };
+    assert!(v.x > 0.0 && v.y == 0.0, "{v}");
+    // Its arrow's tip dragged up and right.
+    let centre = w.particles[0].pos;
+    g.press_arrow_tip(&w, 0, 0.5, (centre, SLOP));
+    g.drag(&mut w, centre + DVec2::new(1.0, 1.0), 0.2);
+    assert_eq!(w.particles[0].vel.y, 0.0);
+    let r = g.release(&mut w, centre + DVec2::new(1.0, 1.0), NEW);
+    assert_eq!(r, Released::Aimed(0, DVec2::new(2.0, 0.0)));
+}
