@@ -419,6 +419,16 @@ fn a_list_without_controls_takes_tab_and_the_keys_scroll_it() {
         button[1] >= tab[1] - 0.5 && button[1] + button[3] <= tab[1] + tab[3] + 0.5,
         "Next collision {button:?} is outside the tab {tab:?}"
     );
+    // Another scene's ledger from its top (it kept this one's scroll).
+    app.xdo(&["key", "Escape"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "j"]);
+    app.wait_for("the glancing impact", 300, |s| s["pair_collisions"] == 1);
+    let s = app.wait_frames(3);
+    let (top, _) = list_scroll(&s, "scroll_ledger_stacked");
+    assert_eq!(top, 0.0, "{}", s["ui"]);
     app.quit();
 }
 

@@ -106,6 +106,10 @@ pub struct OpenScene {
     /// the same name, the scene goes back into it (each Save had made a
     /// file more, `-2`, `-3`).
     pub saved_to: Option<std::path::PathBuf>,
+    /// How many scenes this window has opened (an undo back to one counts):
+    /// a view that keeps a place per scene (the ledger's scroll) starts
+    /// again when it changes.
+    pub opened: u32,
 }
 
 /// The view of the world: the camera, whether it is fitted to the box, and
@@ -277,6 +281,7 @@ impl Sandbox {
                 scene: start.scene,
                 origin: start.origin,
                 saved_to: None,
+                opened: 0,
             },
             clock,
             view: WorldView {

@@ -153,6 +153,7 @@ impl Sandbox {
                 self.open.scene = scene;
                 self.open.origin = origin;
                 self.open.saved_to = None;
+                self.open.opened = self.open.opened.wrapping_add(1);
                 // A note on the scene before ("Saved … in …") is not about
                 // this one.
                 self.messages.scene = None;
@@ -409,6 +410,10 @@ impl Sandbox {
             edited: moment.edited,
             unsaved: true,
             saved_to: self.open.saved_to.take(),
+            opened: match what {
+                "edit-open-scene" => self.open.opened.wrapping_add(1),
+                _ => self.open.opened,
+            },
         };
         // What came after the moment belongs to the undone timeline; the
         // ledger came back with the world.

@@ -59,6 +59,18 @@ impl View for Collisions {
             ui.add(egui::Label::new(tr!("ledger-empty")).wrap());
             return;
         };
+        // Another scene: the ledger from its top (its rows had stayed
+        // scrolled as in the scene before, the momenta out of sight).
+        let seen = egui::Id::new("ledger_scene");
+        let fresh = ui.data(|d| d.get_temp::<u32>(seen)) != Some(model.open.opened);
+        ui.data_mut(|d| d.insert_temp(seen, model.open.opened));
+        let area = || {
+            let area = egui::ScrollArea::both().auto_shrink([false, true]);
+            match fresh {
+                true => area.scroll_offset(egui::Vec2::ZERO),
+                false => area,
+            }
+        };
         if ui.available_width() >= SIDE_BY_SIDE {
             // The count over the list, so the newest impact's table starts
             // at the top: at a laptop's size its third row, the total
@@ -66,12 +78,10 @@ impl View for Collisions {
             ui.columns(2, |columns| {
                 count(&mut columns[0], cx);
                 columns[0].strong(tr!("ledger-last", count = recent.len()));
-                let area = egui::ScrollArea::both().auto_shrink([false, true]);
-                scroll(&mut columns[0], cx, area, "ledger_list", |ui, cx| {
+                scroll(&mut columns[0], cx, area(), "ledger_list", |ui, cx| {
                     list(ui, cx, &recent)
                 });
-                let area = egui::ScrollArea::both().auto_shrink([false, true]);
-                scroll(&mut columns[1], cx, area, "ledger_detail", |ui, cx| {
+                scroll(&mut columns[1], cx, area(), "ledger_detail", |ui, cx| {
                     detail(ui, cx, newest)
                 });
             });
@@ -82,8 +92,7 @@ impl View for Collisions {
             // One page, scrolled as one: in areas of their own the wheel
             // scrolled the newest impact's rows to their end before the
             // page, and the list had the two rows left under the count.
-            let area = egui::ScrollArea::both().auto_shrink([false, true]);
-            page(ui, cx, area, "ledger_stacked", |ui, cx| {
+            page(ui, cx, area(), "ledger_stacked", |ui, cx| {
                 detail(ui, cx, newest);
                 count(ui, cx);
                 ui.separator();
