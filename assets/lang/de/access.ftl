@@ -1,7 +1,7 @@
 # Zugang über Tastatur, Ton und Screenreader: was das Fenster dazu sagt.
 
 select-no-discs = Keine Scheibe zum Auswählen: Enter setzt eine in die Mitte.
-selected-disc-said = Scheibe { $disc } von { $discs } gewählt: { $mass }, Geschwindigkeit { $velocity }
+selected-disc-said = Scheibe { $disc } von { $discs } gewählt: { $mass }; Geschwindigkeit { $velocity }
 launched-at-centre = Scheibe { $disc } ruht in der Mitte: Bei angehaltener Simulation stellen die Pfeiltasten ihre Geschwindigkeit ein
 launched-near-centre = Scheibe { $disc } ruht neben Scheibe { $beside } (die Mitte war besetzt): Bei angehaltener Simulation stellen die Pfeiltasten ihre Geschwindigkeit ein
 
@@ -65,7 +65,7 @@ describe-box = { $discs ->
 describe-gravity = Die Schwerkraft zieht mit { $gravity } nach unten.
 describe-no-gravity = Keine Schwerkraft.
 describe-restitution = Stoßzahl zwischen Scheiben: { $restitution }.
-describe-disc = Scheibe { $disc }, { $mass }, { $place }, { $motion }.
+describe-disc = Scheibe { $disc }: { $mass }; { $place }; { $motion }.
 describe-more = { $more ->
     [one] Dazu kommt eine weitere Scheibe
    *[other] Dazu kommen { $more } weitere Scheiben

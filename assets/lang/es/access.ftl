@@ -1,7 +1,7 @@
 # Acceso con el teclado, el sonido y los lectores de pantalla: lo que dice la ventana sobre ellos.
 
 select-no-discs = No hay discos que seleccionar: Intro pone uno en el centro.
-selected-disc-said = Disco { $disc } de { $discs } seleccionado: { $mass }, velocidad { $velocity }
+selected-disc-said = Disco { $disc } de { $discs } seleccionado: { $mass }; velocidad { $velocity }
 launched-at-centre = Disco { $disc } en reposo en el centro: con la simulación en pausa, las flechas fijan su velocidad
 launched-near-centre = Disco { $disc } en reposo junto al disco { $beside } (el centro estaba ocupado): con la simulación en pausa, las flechas fijan su velocidad
 
@@ -65,7 +65,7 @@ describe-box = { $discs ->
 describe-gravity = La gravedad tira hacia abajo, con una aceleración de { $gravity }.
 describe-no-gravity = Sin gravedad.
 describe-restitution = Coeficiente de restitución entre discos: { $restitution }.
-describe-disc = Disco { $disc }, { $mass }, { $place }, { $motion }.
+describe-disc = Disco { $disc }: { $mass }; { $place }; { $motion }.
 describe-more = { $more ->
     [one] Y un disco más
    *[other] Y { $more } discos más

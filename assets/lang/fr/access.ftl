@@ -1,7 +1,7 @@
 # Accès au clavier, au son et aux lecteurs d'écran : ce qu'en dit la fenêtre.
 
 select-no-discs = Aucun disque à sélectionner : Entrée en place un au centre.
-selected-disc-said = Disque { $disc } sur { $discs } sélectionné : { $mass }, vitesse { $velocity }
+selected-disc-said = Disque { $disc } sur { $discs } sélectionné : { $mass }; vitesse { $velocity }
 launched-at-centre = Disque { $disc } au repos au centre : simulation en pause, les touches fléchées règlent sa vitesse
 launched-near-centre = Disque { $disc } au repos à côté du disque { $beside } (le centre était pris) : simulation en pause, les touches fléchées règlent sa vitesse
 
@@ -65,7 +65,7 @@ describe-box = { $discs ->
 describe-gravity = La pesanteur tire vers le bas, avec une intensité de { $gravity }.
 describe-no-gravity = Pas de pesanteur.
 describe-restitution = Coefficient de restitution entre disques : { $restitution }.
-describe-disc = Disque { $disc }, { $mass }, { $place }, { $motion }.
+describe-disc = Disque { $disc }: { $mass }; { $place }; { $motion }.
 describe-more = { $more ->
     [one] Et { $more } autre disque
    *[other] Et { $more } autres disques

@@ -1,7 +1,7 @@
 # Acesso pelo teclado, som e leitor de tela: o que a janela diz sobre eles.
 
 select-no-discs = Nenhum disco para selecionar: Enter coloca um no centro.
-selected-disc-said = Disco { $disc } de { $discs } selecionado: { $mass }, velocidade { $velocity }
+selected-disc-said = Disco { $disc } de { $discs } selecionado: { $mass }; velocidade { $velocity }
 launched-at-centre = Disco { $disc } em repouso no centro: com a simulação pausada, as teclas de seta definem a velocidade dele
 launched-near-centre = Disco { $disc } em repouso ao lado do disco { $beside } (o centro estava ocupado): com a simulação pausada, as teclas de seta definem a velocidade dele
 
@@ -65,7 +65,7 @@ describe-box = { $discs ->
 describe-gravity = Gravidade de { $gravity }, apontando para baixo.
 describe-no-gravity = Sem gravidade.
 describe-restitution = Coeficiente de restituição entre discos: { $restitution }.
-describe-disc = Disco { $disc }, { $mass }, { $place }, { $motion }.
+describe-disc = Disco { $disc }: { $mass }; { $place }; { $motion }.
 describe-more = E mais { $more ->
     [one] { $more } disco
    *[other] { $more } discos
