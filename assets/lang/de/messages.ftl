@@ -22,7 +22,7 @@ warning-substeps = schnelle Scheiben können durcheinander hindurchfliegen: Die 
     [one] 1 Teilschritt
    *[other] { $substeps } Teilschritte
 } pro Schritt; mehr davon, unter Mehr, verhindern es)
-warning-stall = { $method }: zu viele Stöße auf einmal, die Zeit steht still; zum Weiterlaufen das Verfahren impulse wählen (unter Mehr)
+warning-stall = { $method }: zu viele Stöße auf einmal, die Zeit steht still. Rückgängig nimmt die Änderung zurück, die das auslöste; um so weiterzulaufen, das Verfahren impulse wählen (unter Mehr)
 
 ## Szenen und Dateien
 file-cannot-create = { $folder } kann nicht angelegt werden: { $error }

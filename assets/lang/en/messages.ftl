@@ -22,7 +22,7 @@ warning-substeps = fast discs can pass through each other: the fastest moves { $
     [one] 1 substep
    *[other] { $substeps } substeps
 } per step; more of them, under More, prevent it)
-warning-stall = { $method }: too many collisions at once, so time has stopped; to go on, choose the method impulse (under More)
+warning-stall = { $method }: too many collisions at once, so time has stopped. Undo takes back the change that caused it; to go on as it is, choose the method impulse (under More)
 
 ## Scenes and files
 file-cannot-create = cannot create { $folder }: { $error }

@@ -22,7 +22,7 @@ warning-substeps = los discos rápidos pueden atravesarse: el más rápido avanz
     [one] 1 subpaso
    *[other] { $substeps } subpasos
 } por paso; más subpasos, en Más, lo evitan)
-warning-stall = { $method }: demasiados choques a la vez, así que el tiempo se ha detenido; para seguir, elige el método impulse (en Más)
+warning-stall = { $method }: demasiados choques a la vez, así que el tiempo se ha detenido. Deshacer quita el cambio que lo causó; para seguir así, elige el método impulse (en Más)
 
 ## Escenas y archivos
 file-cannot-create = no se puede crear { $folder }: { $error }

@@ -22,7 +22,7 @@ warning-substeps = des disques rapides peuvent se traverser : le plus rapide par
     [one] { $substeps } sous-pas
    *[other] { $substeps } sous-pas
 } par pas ; davantage de sous-pas, sous Plus, l'empêchent)
-warning-stall = { $method } : trop de collisions à la fois, le temps s'est arrêté ; pour continuer, choisissez la méthode impulse (sous Plus)
+warning-stall = { $method } : trop de collisions à la fois, le temps s'est arrêté. Annuler retire le changement qui l'a causé ; pour continuer ainsi, choisissez la méthode impulse (sous Plus)
 
 ## Scènes et fichiers
 file-cannot-create = impossible de créer { $folder } : { $error }

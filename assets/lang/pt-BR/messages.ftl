@@ -22,7 +22,7 @@ warning-substeps = discos rápidos podem atravessar uns aos outros: o mais rápi
     [one] 1 subpasso
    *[other] { $substeps } subpassos
 } por passo; mais subpassos, em Mais, evitam isso)
-warning-stall = { $method }: colisões demais ao mesmo tempo, e o tempo parou; para continuar, escolha o método impulse (em Mais)
+warning-stall = { $method }: colisões demais ao mesmo tempo, e o tempo parou. Desfazer tira a mudança que causou isso; para continuar assim, escolha o método impulse (em Mais)
 
 ## Cenas e arquivos
 file-cannot-create = não foi possível criar { $folder }: { $error }

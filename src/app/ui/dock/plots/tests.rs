@@ -281,6 +281,8 @@ fn a_constant_total_is_numbered_with_its_own_value() {
         (3.125, "3.125"),
         (750.0, "750"),
         (0.0, "0"),
+        // A disc at 10⁷ m/s: its KE had read 50000000000000, cut.
+        (5e13, "5×10¹³"),
     ] {
         for height in [50.0, 120.0, 200.0] {
             let (numbers, _) = value_numbers(height, v);

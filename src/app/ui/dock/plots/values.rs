@@ -125,7 +125,13 @@ fn own_marks((lo, hi): (f64, f64), height: f32, extents: &[(f64, f64)]) -> ((f64
     let mark = |v: f64, span: f64| {
         let step = 10f64.powf((span / 100.0).log10().floor());
         let value = (v / step).round() * step;
-        (value, trimmed(&plain(value, decimals_of(step))).to_string())
+        // From a million up as the top bar writes it (5×10¹³, not
+        // 50000000000000, which a narrow plot cut).
+        let label = match value.abs() >= 1e6 {
+            true => crate::app::numbers::field(value),
+            false => trimmed(&plain(value, decimals_of(step))).to_string(),
+        };
+        (value, label)
     };
     let flat = extents.iter().all(|(a, b)| b - a <= 0.01 * span);
     if flat && !extents.is_empty() {
