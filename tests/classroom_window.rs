@@ -319,7 +319,9 @@ fn dragging_the_selected_discs_arrow_tip_sets_its_velocity() {
     let x = Xvfb::start("aim");
     let app = Sandbox::start(&x, &["--paused"]);
     app.move_to([300.0, 400.0]);
-    app.xdo(&["key", "1"]); // head-on: the first disc moves, at 0.5 s per arrow
+    // Glancing (in two dimensions: the head-on hit keeps to its line): the
+    // first disc moves, at 0.5 s per arrow.
+    app.xdo(&["key", "4"]);
     let s = app.wait_frames(3);
     let view = View::of(&s);
     let disc = &s["particles"][0];

@@ -39,8 +39,8 @@ fn main() -> std::process::ExitCode {
             with_the_drawer_open_tab_goes_from_its_button_into_it,
         ),
         (
-            "with_the_drawer_open_the_selected_discs_values_stay_in_sight",
-            with_the_drawer_open_the_selected_discs_values_stay_in_sight,
+            "with_the_drawer_open_the_values_and_the_ledger_stay_in_sight",
+            with_the_drawer_open_the_values_and_the_ledger_stay_in_sight,
         ),
         (
             "at_the_projector_scale_the_discs_table_scrolls_sideways_to_its_last_column",
@@ -395,8 +395,9 @@ fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
 
 /// The drawer open at a projector's text size (1280×800): the selected
 /// disc's values, to the right of it where they went first, ran under the
-/// drawer; they stay in the world's part in sight.
-fn with_the_drawer_open_the_selected_discs_values_stay_in_sight() {
+/// drawer; they stay in the world's part in sight. The ledger is laid out
+/// beside the drawer (its "after" column was under it).
+fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
     let x = Xvfb::start("readout beside the drawer");
     let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "2"]);
     app.move_to([300.0, 300.0]);
@@ -415,5 +416,24 @@ fn with_the_drawer_open_the_selected_discs_values_stay_in_sight() {
         "the values end at x {right}, under the drawer from x {}",
         num(drawer, 0)
     );
+    app.xdo(&["key", "j"]);
+    app.xdo(&["key", "ctrl+2"]);
+    app.wait_for("the ledger", 120, |s| {
+        s["ui"]["tab"] == "Collisions" && s["panel_widgets"]["ledger_newest"].is_array()
+    });
+    // (The keys to the world closed the drawer.)
+    if app.state()["ui"]["drawer_open"] == false {
+        app.xdo(&["key", "l"]);
+    }
+    app.wait_for("the drawer", 60, |s| s["ui"]["drawer_open"] == true);
+    let s = app.wait_frames(3);
+    for name in ["ledger_newest", "scroll_ledger_stacked"] {
+        let r = &s["panel_widgets"][name];
+        let right = num(r, 0) + num(r, 2);
+        assert!(
+            right <= num(drawer, 0),
+            "{name} ends at x {right}, under the drawer"
+        );
+    }
     app.quit();
 }

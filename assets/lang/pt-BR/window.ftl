@@ -115,10 +115,10 @@ show-com-view = vista do centro de massa
 show-com-view-hover = a vista se move junto com o centro de massa e as setas mostram as velocidades em relação a ele; o experimento não muda
 
 ## A seção Colisões
-restitution-label = Choque entre discos: coeficiente de restituição (e)
+restitution-label = Choque entre discos, restituição (e)
 restitution-scale = 1: voltam por completo, 0: seguem juntos ao longo da linha de impacto
 restitution-hover = Quanto da velocidade de aproximação dois discos mantêm ao se afastar, ao longo da linha que passa pelos seus centros: 1 toda, 0 nada (o movimento de lado se mantém)
-wall-restitution-label = Choque com as paredes: coeficiente de restituição (e)
+wall-restitution-label = Choque nas paredes, restituição (e)
 wall-restitution-hover = Quanto da sua velocidade em direção a uma parede um disco mantém ao se afastar dela: 1 toda, 0 nada
 gravity-label = Gravidade, apontando para baixo
 gravity-hover = com que força os discos são puxados para baixo; { $gravity } m/s² na Terra

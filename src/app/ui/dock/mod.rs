@@ -62,7 +62,15 @@ impl BottomDock {
         let split = full.bottom() - row;
         let row_rect = egui::Rect::from_min_max(egui::pos2(full.left(), split), full.max);
         if expanded {
-            let area = egui::Rect::from_min_max(full.min, egui::pos2(full.right(), split - 4.0));
+            let mut area =
+                egui::Rect::from_min_max(full.min, egui::pos2(full.right(), split - 4.0));
+            // The open drawer floats over the dock's right end: the tab is
+            // laid out beside it (the ledger's "after" column and the
+            // plots' right ends were under it).
+            if let Some(drawer) = cx.open_drawer.filter(|d| d.intersects(area)) {
+                let left = drawer.left() - ui.spacing().item_spacing.x;
+                area.max.x = area.max.x.min(left.max(area.min.x + 1.0));
+            }
             let mut tab = ui.new_child(egui::UiBuilder::new().max_rect(area));
             tab.set_clip_rect(area.intersect(ui.clip_rect()));
             let chosen = model.panels.tab;
