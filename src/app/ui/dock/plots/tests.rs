@@ -256,11 +256,8 @@ fn a_short_plot_of_a_constant_total_numbers_its_line_in_the_middle() {
             let span = 2.0 * (0.05 * v.abs()).max(0.01);
             for (text, off) in &numbers {
                 if *off < 1.5 {
-                    let read: f64 = text
-                        .replace('−', "-")
-                        .replace(',', ".")
-                        .parse()
-                        .unwrap_or(f64::NAN);
+                    // (As a field reads it: "2.45×10⁶" too.)
+                    let read = crate::app::numbers::parse(text).unwrap_or(f64::NAN);
                     assert!(
                         (read - v).abs() <= 0.01 * span,
                         "{height} points, {v}: \"{text}\" beside the line"
