@@ -18,6 +18,10 @@ use std::time::{Duration, Instant};
 fn main() -> std::process::ExitCode {
     harness::run(vec![
         (
+            "a_scene_without_a_caption_has_the_world_of_one_with_a_long_caption",
+            a_scene_without_a_caption_has_the_world_of_one_with_a_long_caption,
+        ),
+        (
             "no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset",
             no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset,
         ),
@@ -280,8 +284,9 @@ fn a_machine_too_slow_for_real_time_slows_the_simulation_and_says_by_how_much() 
     app.quit();
 }
 
-/// Switching the dock's tabs, a long caption, a rewind and the end of the
-/// π run keep the world's rectangle and the view exactly where they were.
+/// Switching the dock's tabs, a long caption, a rewind, the end of the π
+/// run and captions of one line and of two keep the world's rectangle and
+/// the view exactly where they were.
 fn tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world() {
     let x = Xvfb::start("steady");
     for size in ["1024x768", "1280x800"] {
@@ -322,6 +327,58 @@ fn tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world() {
             rect(&s["panel_widgets"]["run_state"])[1],
             rect(&first["panel_widgets"]["run_state"])[1]
         );
+        // Captions of one line and of two (the empty box's, the head-on
+        // hit's, a first edit's "Before the edits:"): the strip kept its
+        // height, the world where it was (the strip had grown and shrunk
+        // with them).
+        for (key, what) in [
+            ("ctrl+n", "the empty box"),
+            ("1", "the head-on hit"),
+            ("Right", "an edit"),
+        ] {
+            if key == "Right" {
+                // Paused, Right aims the selected disc (along the line).
+                if app.state()["paused"] == false {
+                    app.xdo(&["key", "space"]);
+                }
+                app.xdo(&["key", "q"]);
+            }
+            app.xdo(&["key", key]);
+            let s = app.wait_frames(5);
+            assert_eq!(place(&s).0, world, "{size}: {what}");
+            if key == "Right" {
+                assert_eq!(s["ui"]["scene_edited"], true, "{size}: edited");
+            }
+        }
         app.quit();
+    }
+}
+
+/// A scene named by the teacher has no caption: at a projector's size its
+/// strip had shrunk to one line, and the world grew, its box moved and its
+/// scale bar jumped from 2 m to 5 m. The world is the same as beside the
+/// head-on hit's caption of two lines.
+fn a_scene_without_a_caption_has_the_world_of_one_with_a_long_caption() {
+    let x = Xvfb::start("caption lines");
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(asset("preset-1-head-on.toml")).unwrap();
+    let bare: String = text
+        .lines()
+        .filter(|l| !l.starts_with("description"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_ne!(bare, text, "the caption was taken out");
+    let file = dir.path().join("aula-3.toml");
+    std::fs::write(&file, bare).unwrap();
+    for size in ["1366x768", "1024x768"] {
+        let world = |scene: &str| {
+            let app = Sandbox::start(&x, &["--paused", "--size", size, "--ui-scale", "2", scene]);
+            let s = app.wait_frames(3);
+            app.quit();
+            (rect(&s["layout"]["world"]), s["camera"]["scale"].clone())
+        };
+        let captioned = world(&asset("preset-1-head-on.toml"));
+        let bare = world(file.to_str().unwrap());
+        assert_eq!(bare, captioned, "{size}");
     }
 }

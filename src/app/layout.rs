@@ -45,9 +45,9 @@
 //!
 //! What stays fixed: the top bar and tab row are one row each
 //! ([`row_px`]), a function of the scale alone; the caption strip is one
-//! row, or taller by a line while the scene's caption needs it
-//! ([`caption_px`] of [`Docks::caption_lines`], which changes with the scene
-//! or the window's width, not from frame to frame). Opening or closing a
+//! row taller by a line for each line of caption beyond the first
+//! ([`caption_px`] of [`Docks::caption_lines`]; the window's strip always
+//! asks for [`MAX_CAPTION_LINES`], so no caption moves the world). Opening or closing a
 //! tab, or the drawer, never moves the world's top, left or width, nor the
 //! top bar, side dock or tab row; a tab moves only the world's bottom edge
 //! (and the caption strip glued under it) by the tab content's height.

@@ -1,14 +1,15 @@
 //! The strip under the world: a scale bar of a round number of metres on
-//! the left, then what the scene shows (its caption), or, for a few
-//! seconds, the latest message (opened, saved, an error). It is one row
-//! high, or holds two lines while the scene's caption needs them; the
-//! scale bar is shorter where the caption needs the room, its length under
-//! it beside more than one line. The lines follow the caption and the
-//! window's width alone, so a message or a zoom never moves the world.
-//! What they cannot hold is cut, whole on hover: so every caption says its
-//! answer first ("The heavy disc keeps 9/11 of its speed…"), then the
-//! set-up, and a projector's narrow strip cuts the set-up. The text stops
-//! short of the drawer open over the strip's end.
+//! the left, its length under it, then what the scene shows (its caption),
+//! or, for a few seconds, the latest message (opened, saved, an error). It
+//! always holds two lines, whatever the caption: a strip of one line or two
+//! as the caption needed had moved the world when a caption changed (a
+//! first edit's "Before the edits:", a scene named, another scene). The
+//! text's width is fixed by the window's, so a message or a zoom never
+//! moves the world either. What two lines cannot hold is cut, whole on
+//! hover: so every caption says its answer first ("The heavy disc keeps
+//! 9/11 of its speed…"), then the set-up, and a projector's narrow strip
+//! cuts the set-up. The text stops short of the drawer open over the
+//! strip's end.
 
 use super::{Cx, Keys, View};
 use crate::app::lang::tr;
@@ -17,72 +18,21 @@ use crate::app::model::lesson::pi_result;
 use egui::{Color32, RichText, Stroke};
 
 /// Longest scale bar (points).
-const BAR_POINTS: f64 = 120.0;
-/// Longest scale bar where the caption needs the room (points).
-const SHORT_BAR_POINTS: f64 = 60.0;
-/// What the scale bar, its length ("500 mm") and the separator take at
-/// most (points): the full bar, the short one with its length beside it,
-/// and the short one with its length under it (beside a caption of more
-/// than one line). The caption's lines are measured in what these leave,
-/// so a zoom does not change them.
-const BAR_ROOM: f32 = 230.0;
-const SHORT_BAR_ROOM: f32 = 160.0;
-const STACKED_BAR_ROOM: f32 = 84.0;
+const BAR_POINTS: f64 = 60.0;
+/// What the scale bar, its length ("500 mm") under it and the separator
+/// take at most (points): the caption is laid out in what this leaves, so
+/// a zoom does not change its lines.
+const BAR_ROOM: f32 = 84.0;
 
-/// The strip: the lines its caption wants, and whether the scale bar is
-/// short to give the caption room.
-pub struct Strip {
-    lines: u8,
-    short_bar: bool,
-    /// The caption and the width (points) `lines` and `short_bar` were
-    /// measured for: they are measured again only when these change.
-    measured: Option<(String, f32)>,
-}
-
-impl Default for Strip {
-    fn default() -> Self {
-        Strip {
-            lines: 1,
-            short_bar: false,
-            measured: None,
-        }
-    }
-}
+/// The strip (no state of its own).
+#[derive(Default)]
+pub struct Strip;
 
 impl Strip {
-    /// Lines of caption the layout gives the strip room for.
+    /// Lines of caption the layout gives the strip room for: always the
+    /// most it holds.
     pub fn lines(&self) -> u8 {
-        self.lines
-    }
-}
-
-/// Lines `caption` needs in a strip `width` points wide, and whether the
-/// scale bar must be short for it: one line beside the full bar if it
-/// fits, else beside the short bar, else as many as it takes beside the
-/// short bar with its length under it, up to [`MAX_CAPTION_LINES`].
-fn caption_lines(ui: &egui::Ui, caption: &str, width: f32) -> (u8, bool) {
-    let text = || egui::WidgetText::from(caption);
-    let fits = |room: f32| !caption_galley(ui, text(), width - room, 1).elided;
-    if fits(BAR_ROOM) {
-        return (1, false);
-    }
-    if fits(SHORT_BAR_ROOM) {
-        return (1, true);
-    }
-    let most = usize::from(MAX_CAPTION_LINES);
-    let rows = caption_galley(ui, text(), width - STACKED_BAR_ROOM, most)
-        .rows
-        .len();
-    (rows.clamp(2, most) as u8, true)
-}
-
-/// What the scale bar may take beside a caption of `lines` lines, short or
-/// not (points).
-fn bar_room(lines: u8, short_bar: bool) -> f32 {
-    match (lines, short_bar) {
-        (1, false) => BAR_ROOM,
-        (1, true) => SHORT_BAR_ROOM,
-        _ => STACKED_BAR_ROOM,
+        MAX_CAPTION_LINES
     }
 }
 
@@ -99,35 +49,11 @@ impl View for Strip {
                 d
             }
         });
-        let width = ui.available_width();
-        let text = caption.as_deref().unwrap_or_default();
-        let same = self
-            .measured
-            .as_ref()
-            .is_some_and(|(was, w)| was == text && *w == width);
-        let (lines, short_bar) = match caption.as_deref() {
-            _ if same => (self.lines, self.short_bar),
-            Some(c) => caption_lines(ui, c, width),
-            None => (1, false),
-        };
-        if !same {
-            self.measured = Some((text.to_owned(), width));
-        }
-        if (lines, short_bar) != (self.lines, self.short_bar) {
-            (self.lines, self.short_bar) = (lines, short_bar);
-            ui.ctx()
-                .request_discard("the caption strip changed its lines");
-        }
-        let longest = if self.short_bar {
-            SHORT_BAR_POINTS
-        } else {
-            BAR_POINTS
-        };
         // The text's width is fixed by what the bar may take at most, not
         // what it takes: a zoom changes the bar's length ("1 m", "10 m")
         // and moved words from line to line.
-        let room = bar_room(self.lines, self.short_bar);
-        let text_width = (ui.available_width() - room).max(1.0);
+        let text_width = (ui.available_width() - BAR_ROOM).max(1.0);
+        let longest = BAR_POINTS;
         let metres = nice_length(longest * ppp / camera.scale);
         let bar = (metres * camera.scale / ppp) as f32;
         ui.horizontal_centered(|ui| {
@@ -146,18 +72,14 @@ impl View for Strip {
                 }
                 ui.label(format_metres(metres));
             };
-            if self.lines > 1 {
-                // The length under the bar: the caption's lines get the room.
-                ui.vertical(scale_bar);
-            } else {
-                scale_bar(ui);
-            }
+            // The length under the bar: the caption's lines get the room.
+            ui.vertical(scale_bar);
             ui.separator();
             // In the rows the caption wants, whatever it says: a longer
             // text is cut with "…", the whole of it on hover. A message (the
             // J's long report among them) may use the second row a long
             // caption gave the strip.
-            let most = usize::from(self.lines);
+            let most = usize::from(self.lines());
             let mut width = text_width.min(ui.available_width());
             // The drawer open over the strip's right end hides what runs
             // under it: the text stops short of it, cut there (whole on
