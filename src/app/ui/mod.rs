@@ -170,7 +170,7 @@ impl Panels {
             top_bar: top_bar::TopBar,
             side: side::SideDock::new(path),
             dock: dock::BottomDock::new(),
-            strip: strip::Strip::default(),
+            strip: strip::Strip,
             popups: popups::Popups,
             start: start::StartScreen,
             marks: Marks::default(),

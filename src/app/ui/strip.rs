@@ -25,7 +25,6 @@ const BAR_POINTS: f64 = 60.0;
 const BAR_ROOM: f32 = 84.0;
 
 /// The strip (no state of its own).
-#[derive(Default)]
 pub struct Strip;
 
 impl Strip {
