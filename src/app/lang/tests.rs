@@ -383,6 +383,8 @@ fn every_letter_of_every_language_is_in_the_windows_font() {
     // The range an edit is refused outside says "10⁻¹² kg" (a box before
     // the ¹²: egui's own fonts have no superscript minus).
     assert!(drawn('⁻'), "the superscript minus");
+    // The top bar's short mark of an edited scene.
+    assert!(drawn('✎'), "the pencil");
     let mut missing = BTreeSet::new();
     for (folder, name, text) in FILES {
         for line in text.lines().filter(|l| !l.starts_with('#')) {

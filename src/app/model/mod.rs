@@ -63,8 +63,7 @@ use overlays::Overlays;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
-/// Above this many discs, a scene that runs slower than asked suggests
-/// fewer.
+/// Above this many discs, a scene slower than asked suggests fewer.
 const MANY_DISCS: usize = 10_000;
 
 /// A line of feedback under a control.
@@ -103,12 +102,10 @@ pub struct OpenScene {
     /// recovery, and only then does the next start ask.
     pub unsaved: bool,
     /// The file this session last saved the scene as: saved again under
-    /// the same name, the scene goes back into it (each Save had made a
-    /// file more, `-2`, `-3`).
+    /// the same name, the scene goes back into it (not into `-2`, `-3`).
     pub saved_to: Option<std::path::PathBuf>,
-    /// How many scenes this window has opened (an undo back to one counts):
-    /// a view that keeps a place per scene (the ledger's scroll) starts
-    /// again when it changes.
+    /// Scenes opened so far (an undo back to one counts): the ledger's
+    /// scroll starts again when it changes.
     pub opened: u32,
 }
 

@@ -59,7 +59,7 @@ impl Item {
 
     /// Text after the item's own, kept where the item is cut, whole or, where
     /// the item would keep less than [`NAME_AT_LEAST`], short: the scene's
-    /// name is cut before its "(edited)", or its "*" at a projector.
+    /// name is cut before its "(edited)", or its "✎" at a projector.
     pub(super) fn kept_end(mut self, end: Option<[RichText; 2]>) -> Self {
         self.kept_end = end;
         self

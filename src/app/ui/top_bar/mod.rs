@@ -89,7 +89,10 @@ impl View for TopBar {
         // Always shown, in this order.
         let mut essential = vec![
             Item::new(RichText::new(name).strong())
-                .kept_end(mark.map(|m| [RichText::new(m).strong(), RichText::new("*").strong()])),
+                // Short, a pencil: "*" read as "not saved", and stayed
+                // after a save (it says the discs were edited since the
+                // scene opened, so its caption may not hold).
+                .kept_end(mark.map(|m| [RichText::new(m).strong(), RichText::new("✎").strong()])),
             Item::new(format!("t = {}", with_unit(world.time, 2, "s"))),
             match stall {
                 Some(why) => Item::new(state.strong())
