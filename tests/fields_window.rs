@@ -191,11 +191,7 @@ fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
 /// field's name is whole.
 fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
     let x = Xvfb::start("position fields");
-    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "1.5"]);
-    app.move_to([300.0, 300.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "q"]);
+    let app = glancing_disc_selected(&x, "1280x800", "1.5");
     let s = app.wait_frames(3);
     assert!(
         s["panel_widgets"]["disc_x"].is_array(),
@@ -262,11 +258,7 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
 /// again, both apply.
 fn a_refused_field_is_marked_until_typed_again() {
     let x = Xvfb::start("refused field");
-    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "1.5"]);
-    app.move_to([300.0, 300.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "q"]);
+    let app = glancing_disc_selected(&x, "1280x800", "1.5");
     app.wait_frames(3);
     let marks = |s: &Value| {
         let w = &s["panel_widgets"];

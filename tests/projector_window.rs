@@ -399,11 +399,7 @@ fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
 /// beside the drawer (its "after" column was under it).
 fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
     let x = Xvfb::start("readout beside the drawer");
-    let app = Sandbox::start(&x, &["--paused", "--size", "1280x800", "--ui-scale", "2"]);
-    app.move_to([300.0, 300.0]);
-    app.xdo(&["key", "4"]);
-    app.wait_frames(3);
-    app.xdo(&["key", "q"]);
+    let app = glancing_disc_selected(&x, "1280x800", "2");
     app.wait_frames(3);
     app.xdo(&["key", "l"]);
     app.wait_for("the drawer", 60, |s| s["ui"]["drawer_open"] == true);

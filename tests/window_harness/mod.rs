@@ -510,6 +510,17 @@ pub fn tab_to(app: &Sandbox, name: &str, most: usize) -> Value {
     panic!("Tab never reached {name}: {seen:?}");
 }
 
+/// The glancing preset, paused, its first disc selected with Q, in a window
+/// of `size` at text size `scale`.
+pub fn glancing_disc_selected(x: &Xvfb, size: &str, scale: &str) -> Sandbox {
+    let app = Sandbox::start(x, &["--paused", "--size", size, "--ui-scale", scale]);
+    app.move_to([300.0, 300.0]);
+    app.xdo(&["key", "4"]);
+    app.wait_frames(3);
+    app.xdo(&["key", "q"]);
+    app
+}
+
 /// The glancing preset at 1024×768 and text size 2 (with `more` on the
 /// command line), its Discs tab open: a table wider than the window.
 pub fn projector_discs_tab(x: &Xvfb, more: &[&str]) -> Sandbox {
