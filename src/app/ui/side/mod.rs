@@ -30,9 +30,7 @@ pub struct SideDock {
     path: String,
     /// The scene name field.
     name: files::NameField,
-    /// *Selected disc* opens itself when a disc is selected, unless the
-    /// person folded it by hand: what it did last, and the disc it last
-    /// showed.
+    /// Whether *Selected disc* opens for the person's next pick.
     selected_section: SelectedSection,
 }
 
@@ -62,7 +60,7 @@ impl SelectedSection {
     }
 
     /// After the section was shown: a click on its header says whether the
-    /// person wants it; opened for a selection, its header goes to the top
+    /// person wants it; opened for a pick, its header goes to the top
     /// of the controls unless the whole of it is in sight.
     fn shown(&mut self, ui: &Ui, section: Shown) {
         if let Some(open) = section.clicked {
