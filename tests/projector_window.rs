@@ -396,7 +396,7 @@ fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
 /// The drawer open at a projector's text size (1280×800): the selected
 /// disc's values, to the right of it where they went first, ran under the
 /// drawer; they stay in the world's part in sight. The ledger is laid out
-/// beside the drawer (its "after" column was under it).
+/// beside the drawer (its "after" column was under it) where it has room.
 fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
     let x = Xvfb::start("readout beside the drawer");
     let app = glancing_disc_selected(&x, "1280x800", "2");
@@ -431,5 +431,14 @@ fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
             "{name} ends at x {right}, under the drawer"
         );
     }
+    app.quit();
+    // At 1024×768 the room beside the drawer is too narrow for the ledger
+    // (its "nachher" went letter by letter): it stays as wide as the window.
+    let app = projector_at_impact(&x, "de");
+    app.xdo(&["key", "l"]);
+    app.wait_for("the drawer", 60, |s| s["ui"]["drawer_open"] == true);
+    let s = app.wait_frames(3);
+    let page = &s["panel_widgets"]["scroll_ledger_stacked"];
+    assert!(num(page, 2) > 900.0, "the ledger {page} was squeezed");
     app.quit();
 }

@@ -197,10 +197,7 @@ impl Sandbox {
         let w = &self.world;
         let size = w.laws.size;
         let n = w.particles.len();
-        let caption = self.scene_description().map(|text| match self.open.edited {
-            true => tr!("caption-edited", caption = text),
-            false => text,
-        });
+        let caption = self.shown_caption();
         let heading = match caption {
             Some(caption) => format!("{}: {caption}", self.scene_name()),
             None => format!("{}.", self.scene_name()),

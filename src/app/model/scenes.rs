@@ -99,6 +99,35 @@ pub fn preset_description(index: usize) -> Option<String> {
 }
 
 impl Sandbox {
+    /// The caption as the window shows and says it: after an edit it
+    /// begins "Before the edits:", as the preset's answer may no longer
+    /// hold; not where the caption says what to do (the sandbox's and the
+    /// empty boxes'), which an edit does not make untrue ("Before the
+    /// edits: Drag on empty space…" read as nonsense).
+    pub fn shown_caption(&self) -> Option<String> {
+        use impulse::catalogue::{DEFAULT, EMPTY, PRESET_EMPTY};
+        // Known by their captions (the sandbox's origin is a word in the
+        // language of the start), read from their files once.
+        static WHAT_TO_DO: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+        let what_to_do = WHAT_TO_DO.get_or_init(|| {
+            [DEFAULT, EMPTY, PRESET_EMPTY]
+                .iter()
+                .filter_map(|f| Scene::parse(f.text, f.path).ok()?.description)
+                .collect()
+        });
+        let text = self.scene_description()?;
+        let says_what_to_do = self
+            .open
+            .scene
+            .description
+            .as_ref()
+            .is_some_and(|d| what_to_do.contains(d));
+        Some(match self.open.edited && !says_what_to_do {
+            true => tr!("caption-edited", caption = text),
+            false => text,
+        })
+    }
+
     /// Opens preset `index` of [`PRESETS`].
     pub(super) fn open_preset(&mut self, index: usize) {
         let Some(preset) = PRESETS.get(index) else {

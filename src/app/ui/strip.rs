@@ -41,13 +41,7 @@ impl View for Strip {
         let ppp = f64::from(cx.marks.ppp);
         let camera = &model.view.camera;
         let result = pi_result(&model.world);
-        let caption = model.scene_description().map(|d| {
-            if model.open.edited {
-                tr!("caption-edited", caption = d)
-            } else {
-                d
-            }
-        });
+        let caption = model.shown_caption();
         // The text's width is fixed by what the bar may take at most, not
         // what it takes: a zoom changes the bar's length ("1 m", "10 m")
         // and moved words from line to line.

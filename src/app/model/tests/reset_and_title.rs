@@ -190,3 +190,38 @@ fn a_saved_scene_opens_again_by_the_name_the_save_gave() {
     );
     assert_eq!(s.scene_name(), "Aula 3", "the scene was kept");
 }
+
+/// A caption that says what to do ("Drag on empty space to launch discs")
+/// stays as it is after an edit; a lesson's, whose answer may no longer
+/// hold, begins "Before the edits:". (Two reviews read "Before the edits:
+/// Drag on empty space…" as nonsense.)
+#[test]
+fn only_a_lessons_caption_says_before_the_edits() {
+    let dir = tempfile::tempdir().unwrap();
+    let sandbox = |file: &str| match file {
+        "default" => {
+            let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+            let scene = Scene::parse(impulse::catalogue::DEFAULT.text, "built-in").unwrap();
+            s.open_scene(scene, "built-in".into()).unwrap();
+            s
+        }
+        _ => sandbox_in(dir.path(), file),
+    };
+    for (file, prefixed) in [
+        ("default", false),
+        ("preset-empty.toml", false),
+        ("preset-1-head-on.toml", true),
+    ] {
+        let mut s = sandbox(file);
+        let before = s.shown_caption().unwrap();
+        s.apply(Command::LaunchAtCentre);
+        assert!(s.open.edited, "{file}");
+        let after = s.shown_caption().unwrap();
+        assert_eq!(
+            after.starts_with("Before the edits: "),
+            prefixed,
+            "{file}: {after}"
+        );
+        assert!(after.ends_with(&before), "{file}: {after}");
+    }
+}

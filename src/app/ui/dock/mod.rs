@@ -25,6 +25,9 @@ use crate::app::ui::tip::Tip;
 use crate::app::ui::widgets::button_text_width;
 use egui::RichText;
 
+/// The narrowest tab laid out beside the open drawer (points).
+const MIN_BESIDE_DRAWER: f32 = 400.0;
+
 /// Every tab, in the row's order ([`DockTab::IN_ROW`]): its key in the
 /// model and its view.
 fn tabs() -> Vec<(DockTab, Box<dyn View>)> {
@@ -67,9 +70,13 @@ impl BottomDock {
             // The open drawer floats over the dock's right end: the tab is
             // laid out beside it (the ledger's "after" column and the
             // plots' right ends were under it).
+            // Where that leaves too little (1024×768 at size 2: the ledger's
+            // "after" went letter by letter), it stays under the drawer.
             if let Some(drawer) = cx.open_drawer.filter(|d| d.intersects(area)) {
                 let left = drawer.left() - ui.spacing().item_spacing.x;
-                area.max.x = area.max.x.min(left.max(area.min.x + 1.0));
+                if left - area.min.x >= MIN_BESIDE_DRAWER {
+                    area.max.x = area.max.x.min(left);
+                }
             }
             let mut tab = ui.new_child(egui::UiBuilder::new().max_rect(area));
             tab.set_clip_rect(area.intersect(ui.clip_rect()));
