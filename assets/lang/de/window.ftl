@@ -254,6 +254,7 @@ momenta-too-many = Summe: { $total }. Zu viele Scheiben ({ $count }), um für je
 momenta-line = Summe (dick): { $total }, dazu der Impuls jeder Scheibe in ihrer Farbe, Pfeil an Pfeil gehängt
 momenta-hover = { $line }; p_x und p_y sind im selben Maßstab gezeichnet, die Winkel stimmen also
 disc-numbered = Scheibe { $disc }
+readout-disc = { $disc }:
 
 ## Der Reiter Tempo
 speeds-axis-rim = Geschwindigkeit, Randgeschwindigkeit (m/s)

@@ -254,6 +254,7 @@ momenta-too-many = Total: { $total }. Too many discs ({ $count }) to draw one ar
 momenta-line = Total (thick): { $total }, each disc's momentum tip to tail in its colour
 momenta-hover = { $line }; p_x and p_y are drawn to one scale, so angles are true
 disc-numbered = disc { $disc }
+readout-disc = { $disc }:
 
 ## The Speeds tab
 speeds-axis-rim = speed, rim speed (m/s)

@@ -254,6 +254,7 @@ momenta-too-many = Total: { $total }. Demasiados discos ({ $count }) para dibuja
 momenta-line = Total (flecha gruesa): { $total }; la cantidad de movimiento de cada disco, una flecha a continuación de otra, en su color
 momenta-hover = { $line }; p_x y p_y se dibujan a la misma escala, así que los ángulos son reales
 disc-numbered = disco { $disc }
+readout-disc = { $disc }:
 
 ## La pestaña Rapidez
 speeds-axis-rim = rapidez, rapidez del borde (m/s)

@@ -254,6 +254,7 @@ momenta-too-many = Total : { $total }. Trop de disques ({ $count }) pour dessin
 momenta-line = Total (épais) : { $total }, les quantités de mouvement des disques mises bout à bout, chacune dans sa couleur
 momenta-hover = { $line } ; p_x et p_y sont tracés à la même échelle, donc les angles sont exacts
 disc-numbered = disque { $disc }
+readout-disc = { $disc } :
 
 ## L'onglet Vitesses
 speeds-axis-rim = vitesse, vitesse du bord (m/s)

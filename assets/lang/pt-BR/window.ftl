@@ -254,6 +254,7 @@ momenta-too-many = Total: { $total }. Discos demais ({ $count }) para desenhar u
 momenta-line = Total (seta grossa): { $total }; a quantidade de movimento de cada disco na sua cor, cada seta começando na ponta da anterior
 momenta-hover = { $line }; p_x e p_y são desenhados na mesma escala, então os ângulos são verdadeiros
 disc-numbered = disco { $disc }
+readout-disc = { $disc }:
 
 ## A aba Velocidades
 speeds-axis-rim = velocidade, velocidade da borda (m/s)

@@ -91,8 +91,12 @@ pub fn readout_lines(p: &impulse::Particle, i: usize, spin: bool) -> Vec<String>
     let v = p.vel;
     let mut lines = vec![
         format!(
-            "{}:  m = {}   {} = {}",
-            tr!("disc-numbered", disc = disc_number(i)),
+            "{}  m = {}   {} = {}",
+            // "disque 3 :" in French, the space before the colon kept.
+            tr!(
+                "readout-disc",
+                disc = tr!("disc-numbered", disc = disc_number(i))
+            ),
             with_unit(p.mass, 3, "kg"),
             tr!("symbol-ke"),
             with_unit(p.kinetic_energy(), 3, "J")
@@ -404,7 +408,11 @@ mod tests {
         let p = Particle::new(DVec2::ZERO, DVec2::X, 1.0, 0.5, impulse::Color::palette(0));
         let lines = super::readout_lines(&p, 2, false);
         let name = crate::app::lang::tr!("disc-numbered", disc = 3);
-        assert!(lines[0].starts_with(&name), "{lines:?}");
+        assert!(lines[0].starts_with(&format!("{name}:")), "{lines:?}");
+        crate::app::lang::set_language(crate::app::lang::Lang::Fr);
+        let french = super::readout_lines(&p, 2, false);
+        crate::app::lang::set_language(crate::app::lang::Lang::En);
+        assert!(french[0].starts_with("disque 3\u{a0}:"), "{french:?}");
         assert_eq!(lines.len(), 3);
         assert_eq!(super::readout_lines(&p, 2, true).len(), 5);
     }
