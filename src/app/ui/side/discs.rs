@@ -30,11 +30,12 @@ pub struct DiscFields {
     sent: bool,
     /// Why the speed and direction typed could not be read.
     polar_error: Option<String>,
-    /// The fields' text when the model refused the last edit: a field it
-    /// refused, until typed in again, has its name in red (in amber, with
-    /// "not applied yet", it read as if Enter had not been pressed, and a
-    /// later edit of another field was refused for it without a sign why).
-    refused: Option<[String; 8]>,
+    /// The fields the model refused in the last edit, with their text
+    /// then: until typed in again, each has its name in red (in amber,
+    /// with "not applied yet", it read as if Enter had not been pressed,
+    /// and a later edit of another field was refused for it without a
+    /// sign why).
+    refused: Option<([String; 8], [bool; 8])>,
 }
 
 /// Each field's name (a message of `window.ftl`): the model's six (mass,
@@ -143,11 +144,14 @@ impl DiscFields {
                     self.shown = self.text.clone();
                     self.refused = None;
                 }
-                Some(true) => self.refused = Some(self.text.clone()),
+                Some(true) => {
+                    let culprits = self.culprits(cx);
+                    self.refused = Some((self.text.clone(), culprits));
+                }
                 None => {}
             }
         }
-        let refused = self.refused_fields(cx);
+        let refused = self.refused_fields();
         // Untouched fields follow the disc as it moves.
         let direction = p.vel.y.atan2(p.vel.x).to_degrees();
         let live = [
@@ -232,27 +236,30 @@ impl DiscFields {
         }
     }
 
-    /// Which fields the model refused in the last edit and are as they were
-    /// then: those that cannot be taken on their own, else (a disc that
-    /// would overlap, a velocity too fast as a whole) every field sent.
-    fn refused_fields(&self, cx: &Cx) -> [bool; 8] {
-        let Some(was) = &self.refused else {
-            return [false; 8];
-        };
-        let sent: [bool; 8] = std::array::from_fn(|k| was[k] != self.shown[k]);
+    /// Which of the fields sent the model refused, decided once as the
+    /// refusal comes: those that cannot be taken on their own, else (a disc
+    /// that would overlap, a velocity too fast as a whole) every field sent.
+    fn culprits(&self, cx: &Cx) -> [bool; 8] {
+        let sent: [bool; 8] = std::array::from_fn(|k| self.text[k] != self.shown[k]);
         let biggest = cx.model.biggest_radius();
         let alone_refused: [bool; 8] = std::array::from_fn(|k| {
             let mut one = [None; 6];
             let Some(slot) = one.get_mut(k) else {
                 return false; // speed and direction: said under the fields
             };
-            *slot = Some(was[k].as_str());
+            *slot = Some(self.text[k].as_str());
             sent[k] && crate::app::model::edit::parse_disc_edit(one, biggest).is_err()
         });
-        let culprits = if alone_refused.contains(&true) {
-            alone_refused
-        } else {
-            sent
+        match alone_refused.contains(&true) {
+            true => alone_refused,
+            false => sent,
+        }
+    }
+
+    /// The refused fields still as they were when refused.
+    fn refused_fields(&self) -> [bool; 8] {
+        let Some((was, culprits)) = &self.refused else {
+            return [false; 8];
         };
         std::array::from_fn(|k| culprits[k] && self.text[k] == was[k])
     }
