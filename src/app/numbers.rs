@@ -11,6 +11,10 @@
 //! ([`disc_number`]): the tables, the messages, the narration and the CSV
 //! files. The world's list, the dump and the command line count from 0.
 
+mod typed;
+
+pub use typed::{read, Unread};
+
 use crate::app::lang::{decimal_comma, tr};
 use glam::DVec2;
 
@@ -51,44 +55,10 @@ pub fn list_separator() -> &'static str {
     }
 }
 
-/// A number typed into a field: a decimal point or comma, a minus sign or
-/// hyphen, spaces around; `None` if it is not one number.
+/// A number typed into a field ([`typed::read`]); `None` if it is not
+/// one number, or if it could be read two ways.
 pub fn parse(text: &str) -> Option<f64> {
-    let text = text.trim().replace('−', "-").replace(',', ".");
-    // A power of ten as the screen writes it: 2.5×10⁹ (or 2.5x10^9).
-    let power = ["×10", "x10", "*10"]
-        .iter()
-        .find_map(|sign| text.split_once(sign));
-    if let Some((mantissa, exponent)) = power {
-        let exponent: String = exponent
-            .trim_start_matches('^')
-            .chars()
-            .map(|c| match c {
-                '⁻' => '-',
-                '⁰'..='⁹' | '¹' | '²' | '³' => superscript_digit(c),
-                c => c,
-            })
-            .collect();
-        let exponent: i32 = exponent.parse().ok()?;
-        return format!("{}e{exponent}", mantissa.trim())
-            .parse::<f64>()
-            .ok()
-            .filter(|_| !mantissa.trim().is_empty() && mantissa.matches('.').count() <= 1);
-    }
-    if text.matches('.').count() > 1 {
-        return None;
-    }
-    text.parse::<f64>().ok()
-}
-
-/// The digit a superscript digit stands for.
-fn superscript_digit(c: char) -> char {
-    let digits = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    digits
-        .iter()
-        .position(|&d| d == c)
-        .and_then(|k| char::from_digit(k as u32, 10))
-        .unwrap_or(c)
+    typed::read(text).ok()
 }
 
 /// `v` and its unit: "2.000 J".

@@ -148,6 +148,7 @@ wall-name = { $wall ->
 ## Eine Scheibe bearbeiten
 edit-type-a-number = { $name }: eine Zahl eingeben
 edit-not-a-number = { $name }: „{ $text }“ ist keine Zahl
+edit-ambiguous-number = { $name }: „{ $text }“ kann { $decimal } oder { $grouped } heißen; gib die gemeinte Zahl ein
 edit-not-finite = { $name } muss eine endliche Zahl sein
 edit-speed-negative = Das Tempo kann nicht negativ sein: gib stattdessen die Gegenrichtung ein
 edit-not-positive = { $name } muss größer als 0 sein

@@ -148,6 +148,7 @@ wall-name = { $wall ->
 ## Editing a disc
 edit-type-a-number = { $name }: type a number
 edit-not-a-number = { $name }: “{ $text }” is not a number
+edit-ambiguous-number = { $name }: “{ $text }” could be { $decimal } or { $grouped }; type the one you mean
 edit-not-finite = { $name } must be a finite number
 edit-speed-negative = The speed cannot be negative: type the opposite direction instead
 edit-not-positive = { $name } must be more than 0

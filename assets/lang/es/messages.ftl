@@ -148,6 +148,7 @@ wall-name = { $wall ->
 ## Editar un disco
 edit-type-a-number = { $name }: escribe un número
 edit-not-a-number = { $name }: “{ $text }” no es un número
+edit-ambiguous-number = { $name }: “{ $text }” puede ser { $decimal } o { $grouped }; escribe el que quieres decir
 edit-not-finite = { $name }: debe ser un número finito
 edit-speed-negative = La rapidez no puede ser negativa: escribe la dirección contraria
 edit-not-positive = { $name }: debe ser mayor que 0

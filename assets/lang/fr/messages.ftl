@@ -148,6 +148,7 @@ wall-name = { $wall ->
 ## Modifier un disque
 edit-type-a-number = { $name } : tapez un nombre
 edit-not-a-number = { $name } : « { $text } » n'est pas un nombre
+edit-ambiguous-number = { $name } : « { $text } » peut se lire { $decimal } ou { $grouped } ; tapez celui que vous voulez dire
 edit-not-finite = { $name } : il faut un nombre fini
 edit-speed-negative = La vitesse ne peut pas être négative : tapez plutôt la direction opposée
 edit-not-positive = { $name } : il faut une valeur supérieure à 0

@@ -148,6 +148,7 @@ wall-name = { $wall ->
 ## Editar um disco
 edit-type-a-number = { $name }: digite um número
 edit-not-a-number = { $name }: “{ $text }” não é um número
+edit-ambiguous-number = { $name }: “{ $text }” pode ser { $decimal } ou { $grouped }; digite o que você quer dizer
 edit-not-finite = { $name } precisa ser um número finito
 edit-speed-negative = O módulo da velocidade não pode ser negativo: digite a direção oposta
 edit-not-positive = { $name } precisa ser maior que 0

@@ -16,7 +16,9 @@ mod trails;
 use crate::app::look::{color, Look};
 use crate::app::model::camera::Camera;
 use crate::app::model::gesture::{launch_velocity, Gesture, NewDisc};
-use crate::app::model::overlays::{spin_shown, Overlays, ARROW_SECONDS, DELTA_P_MAX_DISCS};
+use crate::app::model::overlays::{
+    momentum_changes, spin_shown, MomentumChange, Overlays, ARROW_SECONDS, DELTA_P_MAX_DISCS,
+};
 use crate::app::model::Sandbox;
 use cull::{arrow_readable, circle_on_screen, MIN_DISC_PIXELS};
 use discs::DiscBatch;
@@ -56,7 +58,13 @@ impl Painter {
         trails::draw_trails(&model.record.trails, camera, disc_color);
         let batch = self.batch.get_or_insert_with(DiscBatch::new);
         draw_discs(world, camera, model.selected, &model.overlays, batch, look);
-        draw_arrows(world, camera, &model.overlays, look);
+        draw_arrows(
+            world,
+            camera,
+            &model.overlays,
+            model.record.totals.edited_at(),
+            look,
+        );
         if model.overlays.center_of_mass {
             draw_center_of_mass(world, camera, ARROW_SECONDS, look);
         }
@@ -343,7 +351,13 @@ pub fn hollow_arrow(from: Vec2, to: Vec2, half_width: f32, line: f32, color: Col
 /// ([`cull::MIN_ARROW_PIXELS`]) and crossing the world's rectangle.
 /// Momentum arrows are wide and hollow and drawn first, so a velocity arrow
 /// lying along one shows inside it.
-pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Look) {
+pub fn draw_arrows(
+    world: &World,
+    camera: &Camera,
+    overlays: &Overlays,
+    edited_at: Option<f64>,
+    look: Look,
+) {
     if !(overlays.velocity || overlays.momentum) || world.particles.is_empty() {
         return;
     }
@@ -365,7 +379,8 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
         }
     }
     if overlays.delta_p && world.particles.len() <= DELTA_P_MAX_DISCS {
-        draw_momentum_changes(world, camera, mean_mass, look, clip);
+        let changes = momentum_changes(world, edited_at);
+        draw_momentum_changes(&changes, world, camera, mean_mass, look, clip);
     }
     if overlays.velocity {
         let white = color(look.colors.velocity);
@@ -381,13 +396,10 @@ pub fn draw_arrows(world: &World, camera: &Camera, overlays: &Overlays, look: Lo
     }
 }
 
-/// How long a collision's Δp arrows stay (simulated seconds).
-pub const DELTA_P_SECONDS: f64 = 1.0;
-
-/// For [`DELTA_P_SECONDS`] after each recorded collision between discs,
-/// each of its two discs carries its change of momentum m·(v′ − v), fading,
-/// on the momentum arrows' scale.
+/// Each disc's change of momentum in a recent collision
+/// ([`momentum_changes`]), fading, on the momentum arrows' scale.
 fn draw_momentum_changes(
+    changes: &[MomentumChange],
     world: &World,
     camera: &Camera,
     mean_mass: f64,
@@ -395,35 +407,20 @@ fn draw_momentum_changes(
     clip: Option<(DVec2, DVec2)>,
 ) {
     let mut outline = color(look.colors.outline);
-    for impact in world.ledger.impacts() {
-        let age = world.time - impact.time();
-        if !(0.0..=DELTA_P_SECONDS).contains(&age) {
+    for change in changes {
+        let Some(p) = world.particles.get(change.disc) else {
             continue;
-        }
-        let fade = (1.0 - 0.7 * age / DELTA_P_SECONDS) as f32;
-        let mut amber = color(look.colors.delta_p);
-        amber.a *= fade;
-        outline.a = fade;
-        // Between discs only: the lesson is that the two are equal and
-        // opposite (a wall's push, twice the momentum, would cross the box).
-        let changes: Vec<(usize, DVec2)> = match impact {
-            impulse::ledger::Impact::Pair(c) => (0..2)
-                .map(|k| (c.discs[k], c.masses[k] * (c.after[k] - c.before[k])))
-                .collect(),
-            impulse::ledger::Impact::Wall(_) => continue,
         };
-        for (disc, dp) in changes {
-            let Some(p) = world.particles.get(disc) else {
-                continue;
-            };
-            let from = camera.world_to_screen(p.pos);
-            let tip = from + camera.vector_to_screen(dp / mean_mass * ARROW_SECONDS);
-            if from.distance(tip) >= 4.0 {
-                if let Some((a, b, whole)) = clipped(from, tip, clip) {
-                    // An outline under it, so it reads on an orange disc too.
-                    arrow_outline(px(a), px(b), 4.0, 2.0, outline, whole);
-                    arrow(px(a), px(b), 4.0, amber, whole);
-                }
+        let mut amber = color(look.colors.delta_p);
+        amber.a *= change.fade;
+        outline.a = change.fade;
+        let from = camera.world_to_screen(p.pos);
+        let tip = from + camera.vector_to_screen(change.change / mean_mass * ARROW_SECONDS);
+        if from.distance(tip) >= 4.0 {
+            if let Some((a, b, whole)) = clipped(from, tip, clip) {
+                // An outline under it, so it reads on an orange disc too.
+                arrow_outline(px(a), px(b), 4.0, 2.0, outline, whole);
+                arrow(px(a), px(b), 4.0, amber, whole);
             }
         }
     }

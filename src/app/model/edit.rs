@@ -5,7 +5,7 @@
 use super::command::EditPlace;
 use super::{Note, Sandbox};
 use crate::app::lang::{text as words, tr};
-use crate::app::numbers::{disc_number, field, plain};
+use crate::app::numbers::{disc_number, field, plain, Unread};
 use glam::DVec2;
 use impulse::scene::limits;
 use impulse::Particle;
@@ -60,6 +60,21 @@ impl DiscEdit {
     }
 }
 
+/// `text` read as a number for the field called `name`, or the line that
+/// says why it was not: "1,000" in English is asked about, not taken as 1.
+fn typed_number(text: &str, name: &str) -> Result<f64, String> {
+    crate::app::numbers::read(text).map_err(|unread| match unread {
+        Unread::NotANumber => tr!("edit-not-a-number", name = name, text = text),
+        Unread::Ambiguous { decimal, grouped } => tr!(
+            "edit-ambiguous-number",
+            name = name,
+            text = text,
+            decimal = field(decimal),
+            grouped = field(grouped)
+        ),
+    })
+}
+
 /// Reads the fields the user changed (`None`: untouched, in [`FIELDS`]
 /// order). Every value must be a finite number; mass and radius positive,
 /// the radius at most `max_radius`, each in a scene file's range (so that a
@@ -73,8 +88,7 @@ pub fn parse_disc_edit(changed: [Option<&str>; 6], max_radius: f64) -> Result<Di
         if text.is_empty() {
             return Err(tr!("edit-type-a-number", name = name));
         }
-        let v = crate::app::numbers::parse(text)
-            .ok_or_else(|| tr!("edit-not-a-number", name = name.as_str(), text = text))?;
+        let v = typed_number(text, &name)?;
         if !v.is_finite() {
             return Err(tr!("edit-not-finite", name = name));
         }
@@ -125,8 +139,7 @@ pub fn polar_velocity(
         if text.is_empty() {
             return Err(tr!("edit-type-a-number", name = name));
         }
-        let v = crate::app::numbers::parse(text)
-            .ok_or_else(|| tr!("edit-not-a-number", name = name.as_str(), text = text))?;
+        let v = typed_number(text, &name)?;
         if v.is_finite() {
             Ok(v)
         } else {
@@ -183,8 +196,11 @@ impl Sandbox {
             Ok(edit) if edit.is_empty() => Note::ok(tr!("edit-nothing-changed")),
             Ok(edit) => {
                 let p = &mut self.world.particles[disc];
+                let before = *p;
                 edit.apply(p);
-                self.record.totals.restart(&self.world);
+                if *p != before {
+                    self.record.totals.restart(&self.world);
+                }
                 Note::ok(match from {
                     EditPlace::Fields => tr!("edit-applied", disc = disc_number(disc)),
                     EditPlace::Table => {

@@ -94,6 +94,49 @@ impl Overlays {
     }
 }
 
+/// How long a collision's Δp arrows stay (simulated seconds).
+pub const DELTA_P_SECONDS: f64 = 1.0;
+
+/// A disc's change of momentum m·(v′ − v) in a recent collision between
+/// discs, to be drawn as an arrow on it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MomentumChange {
+    /// The disc, by its index in the world's list.
+    pub disc: usize,
+    /// Its change of momentum (kg·m/s).
+    pub change: DVec2,
+    /// How much of the arrow's colour is left: 1 at the collision, 0.3
+    /// after [`DELTA_P_SECONDS`].
+    pub fade: f32,
+}
+
+/// The changes of momentum of the collisions between discs in the last
+/// [`DELTA_P_SECONDS`], but only those after `edited_at`: a disc the person
+/// has since changed (a mass typed, a velocity aimed) no longer carries the
+/// change a collision made to what it was. A wall's push, twice the
+/// momentum, would cross the box: the lesson is that the two are equal and
+/// opposite.
+pub fn momentum_changes(world: &World, edited_at: Option<f64>) -> Vec<MomentumChange> {
+    let mut changes = Vec::new();
+    for impact in world.ledger.impacts() {
+        let age = world.time - impact.time();
+        let fresh = edited_at.is_none_or(|at| impact.time() > at);
+        let impulse::ledger::Impact::Pair(c) = impact else {
+            continue;
+        };
+        if !fresh || !(0.0..=DELTA_P_SECONDS).contains(&age) {
+            continue;
+        }
+        let fade = (1.0 - 0.7 * age / DELTA_P_SECONDS) as f32;
+        changes.extend((0..2).map(|k| MomentumChange {
+            disc: c.discs[k],
+            change: c.masses[k] * (c.after[k] - c.before[k]),
+            fade,
+        }));
+    }
+    changes
+}
+
 /// Whether spin is worth showing: a disc spins, or the laws can make one
 /// spin (a roughness β above −1 between discs or at the walls, or friction,
 /// which rubs resting discs). Only then do discs carry their spin line and

@@ -59,6 +59,9 @@ pub struct Totals {
     momentum_scale: f64,
     /// When walls pushed the discs (s), in small scenes.
     walls: VecDeque<f64>,
+    /// When the person last changed the discs' totals (s): the collisions
+    /// before it no longer describe these discs.
+    edited_at: Option<f64>,
 }
 
 impl Totals {
@@ -77,6 +80,10 @@ impl Totals {
             rotational_energy: metrics.rotational_energy,
             angular_momentum: metrics.angular_momentum,
         };
+        if self.edited_at.is_some_and(|at| at > sample.time) {
+            // Back before the change: the discs are as they were then.
+            self.edited_at = None;
+        }
         while self.samples.back().is_some_and(|s| s.time > sample.time) {
             self.samples.pop_back();
         }
@@ -105,6 +112,9 @@ impl Totals {
         while self.walls.back().is_some_and(|&t| t >= time) {
             self.walls.pop_back();
         }
+        if self.edited_at.is_some_and(|at| at >= time) {
+            self.edited_at = None;
+        }
         if self.samples.is_empty() {
             self.clear();
         }
@@ -116,6 +126,13 @@ impl Totals {
     pub fn restart(&mut self, world: &World) {
         self.clear();
         self.push(world, &world.metrics());
+        self.edited_at = Some(world.time);
+    }
+
+    /// When the discs' totals were last set afresh (a scene opened, the
+    /// person's edit), unless a rewind or an undo has gone back before it.
+    pub fn edited_at(&self) -> Option<f64> {
+        self.edited_at
     }
 
     /// Forgets every sample (a rewind to another run).

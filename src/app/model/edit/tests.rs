@@ -76,6 +76,29 @@ fn edits_parse_only_what_changed_and_refuse_bad_numbers() {
 }
 
 #[test]
+fn a_thousand_typed_with_the_other_separator_is_asked_about_not_taken_as_one() {
+    use crate::app::lang::{set_language, Lang};
+    let mass = |typed| parse_disc_edit([Some(typed), None, None, None, None, None], 4.0);
+    // "1,000" was read as 1 kg in English: a thousand times lighter, said nowhere.
+    assert_eq!(
+        mass("1,000").unwrap_err(),
+        "mass: “1,000” could be 1 or 1000; type the one you mean"
+    );
+    assert_eq!(mass("1,000.0").unwrap().mass, Some(1000.0));
+    assert_eq!(mass("2,5").unwrap().mass, Some(2.5));
+    set_language(Lang::Fr);
+    // A French teacher's thousand, with the space French writes in it.
+    assert_eq!(mass("1 000").unwrap().mass, Some(1000.0));
+    assert_eq!(mass("1 000,5").unwrap().mass, Some(1000.5));
+    assert_eq!(mass("1,000").unwrap().mass, Some(1.0));
+    assert_eq!(
+        mass("2.500").unwrap_err(),
+        "masse : « 2.500 » peut se lire 2,5 ou 2500 ; tapez celui que vous voulez dire"
+    );
+    set_language(Lang::En);
+}
+
+#[test]
 fn an_edit_changes_only_its_quantities() {
     let mut p = Particle::new(
         DVec2::new(1.0, 2.0),
@@ -367,4 +390,44 @@ fn a_typed_position_moves_the_disc_where_it_has_room() {
     );
     assert!(!note.error, "{}", note.text);
     assert_eq!(s.world.particles[0].pos, start - DVec2::X);
+}
+
+/// A collision's Δp arrows say what it did to the discs: once the person
+/// changes one (its velocity typed into the table), they describe discs no
+/// longer there, and go; an undo brings them back with the discs.
+#[test]
+fn an_edit_takes_away_the_arrows_of_the_collision_before_it() {
+    use crate::app::model::overlays::momentum_changes;
+    use crate::app::model::tests::later;
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    let arrows = |s: &Sandbox| momentum_changes(&s.world, s.record.totals.edited_at());
+    assert!(arrows(&s).is_empty(), "no collision yet");
+    s.apply(Command::NextCollision);
+    let shown = arrows(&s);
+    assert_eq!(shown.len(), 2, "{shown:?}");
+    let sum = shown[0].change + shown[1].change;
+    assert!(
+        sum.length() < 1e-9 * shown[0].change.length(),
+        "equal and opposite: {shown:?}"
+    );
+    // The value it has typed again changes nothing, and keeps them.
+    let stopped = crate::app::numbers::field(s.world.particles[0].vel.x);
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [None, None, Some(stopped), None, None, None],
+        from: EditPlace::Table,
+    });
+    assert_eq!(arrows(&s), shown);
+    later(&mut s, 1.0);
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [None, None, Some("−1".into()), None, None, None],
+        from: EditPlace::Table,
+    });
+    assert_eq!(s.world.particles[0].vel.x, -1.0);
+    assert_eq!(arrows(&s), vec![], "the arrows of discs no longer there");
+    later(&mut s, 1.0);
+    s.apply(Command::Undo);
+    assert_eq!(arrows(&s), shown, "back with the discs they describe");
 }

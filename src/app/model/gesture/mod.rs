@@ -8,7 +8,8 @@
 //!   nearest free spot so it never starts overlapping another disc.
 //! - Press on a disc: it is held at the same offset from the cursor, kept
 //!   inside the walls, and on release keeps the velocity of the recent mouse
-//!   trajectory (metres per real second).
+//!   trajectory (metres per real second); let go over another disc, it goes
+//!   to the nearest free spot.
 //! - A click (press and release without moving more than a few pixels) only
 //!   selects: on empty space it launches nothing, on a disc it gives the disc
 //!   back the velocity it had, so selecting a disc to read it never stops it.
@@ -120,6 +121,29 @@ fn along_line(across: Option<usize>, mut v: DVec2) -> DVec2 {
         v[c] = 0.0;
     }
     v
+}
+
+/// The free spot for a disc of `radius` nearest to `wanted`, or `None` in
+/// a world too crowded; in one dimension on the line through `wanted`,
+/// searched both ways along it.
+fn free_spot(world: &World, wanted: DVec2, radius: f64, across: Option<usize>) -> Option<DVec2> {
+    let Some(c) = across else {
+        return world.free_spot_near(wanted, radius);
+    };
+    let along = 1 - c;
+    let (step, length) = (0.05 * radius, world.laws.size[along]);
+    let steps = (length / step).ceil().min(1e5) as usize;
+    (0..=steps)
+        .flat_map(|k| [1.0, -1.0].map(|sign| sign * k as f64 * step))
+        .map(|shift| {
+            let mut spot = wanted;
+            spot[along] += shift;
+            if world.laws.boundary == Boundary::Periodic {
+                spot[along] = spot[along].rem_euclid(length);
+            }
+            spot
+        })
+        .find(|&spot| world.is_free(spot, radius))
 }
 
 /// Launch velocity for a drag from `start` to `end` (world).
@@ -297,8 +321,7 @@ impl Gesture {
                     let middle = 0.5 * world.laws.size[c];
                     wanted[c] = world.particles.first().map_or(middle, |p| p.pos[c]);
                 }
-                let spot = world.free_spot_near(wanted, new_disc.radius);
-                let Some(pos) = spot.filter(|p| across.is_none_or(|c| p[c] == wanted[c])) else {
+                let Some(pos) = free_spot(world, wanted, new_disc.radius, across) else {
                     return Released::NoRoom;
                 };
                 let color = Color::palette(world.particles.len());
@@ -324,8 +347,15 @@ impl Gesture {
                     return Released::Nothing;
                 };
                 if dragged {
-                    p.vel = along_line(across, trail_velocity(&trail));
-                    Released::Flung(index, p.vel)
+                    let velocity = along_line(across, trail_velocity(&trail));
+                    p.vel = velocity;
+                    // Let go over another disc (easy while paused): to the
+                    // nearest free spot, or back where it was picked up.
+                    let mut held = world.particles.remove(index);
+                    held.pos =
+                        free_spot(world, held.pos, held.radius, across).unwrap_or(position_before);
+                    world.particles.insert(index, held);
+                    Released::Flung(index, velocity)
                 } else {
                     // A click selects; it neither stops nor moves the disc.
                     p.vel = velocity_before;

@@ -234,3 +234,43 @@ fn in_one_dimension_gestures_keep_to_the_line() {
     let r = g.release(&mut w, centre + DVec2::new(1.0, 1.0), NEW);
     assert_eq!(r, Released::Aimed(0, DVec2::new(2.0, 0.0)));
 }
+
+/// A disc let go over another (paused, nothing pushes them apart) goes to
+/// the nearest free spot: the next step had shoved the two apart, out of
+/// nothing, and a student read the energy it made.
+#[test]
+fn a_disc_let_go_over_another_goes_to_the_nearest_free_spot() {
+    for line in [false, true] {
+        let mut w = world();
+        w.particles.push(Particle::new(
+            DVec2::new(2.0, 5.0),
+            DVec2::ZERO,
+            1.0,
+            0.5,
+            Color::palette(1),
+        ));
+        if line {
+            w.laws.constrain = Some(impulse::Axis::X);
+        }
+        let mut g = Gesture::default();
+        assert_eq!(g.press(&w, DVec2::new(2.0, 5.0), 0.0, SLOP), Some(1));
+        // Onto the big disc's centre, a little above it.
+        g.drag(&mut w, DVec2::new(4.8, 5.2), 0.1);
+        g.drag(&mut w, DVec2::new(4.8, 5.2), 0.3);
+        assert!(matches!(
+            g.release(&mut w, DVec2::new(4.8, 5.2), NEW),
+            Released::Flung(1, _)
+        ));
+        let (big, small) = (w.particles[0], w.particles[1]);
+        let gap = big.pos.distance(small.pos) - (big.radius + small.radius);
+        assert!((0.0..0.2).contains(&gap), "line {line}: gap {gap}");
+        if line {
+            assert_eq!(small.pos.y, 5.0, "on its line");
+            assert!(
+                small.pos.x < 5.0,
+                "on the side it came from: {}",
+                small.pos.x
+            );
+        }
+    }
+}
