@@ -1,6 +1,7 @@
 //! Keys that reach what the mouse reaches, under Xvfb with xdotool: Ctrl
-//! and a digit show the bottom dock's tab at that place in the row, and the
-//! help is read with its keys at once while nothing changes behind it.
+//! and a digit show the bottom dock's tab at that place in the row, the
+//! help is read with its keys at once while nothing changes behind it, and
+//! F6 jumps between the window's parts.
 
 #[path = "window_harness/mod.rs"]
 mod harness;
@@ -16,6 +17,10 @@ fn main() -> std::process::ExitCode {
         (
             "the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it",
             the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it,
+        ),
+        (
+            "f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world",
+            f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world,
         ),
     ])
 }
@@ -101,5 +106,49 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["help_open"], false, "one Esc closed the help");
+    app.quit();
+}
+
+/// A teacher at a projector (1024×768, text size 2, the controls in a
+/// closed drawer) changes the selected disc's mass from the keyboard: F6
+/// opens the drawer on the mass field (about thirty Tabs from the top bar
+/// before), the number typed is applied with Enter, and F6 goes on to the
+/// tabs, the top bar and back to the world, whose keys work again;
+/// Shift+F6 goes the other way.
+fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world() {
+    let x = Xvfb::start("F6");
+    let app = glancing_disc_selected(&x, "1024x768", "2");
+    let s = app.wait_frames(3);
+    assert_eq!(s["ui"]["drawer_open"], false, "{}", s["layout"]);
+    app.xdo(&["key", "F6"]);
+    let s = app.wait_for("the mass field has the keys", 60, |s| {
+        s["ui"]["focus"] == "disc_mass"
+    });
+    assert_eq!(s["ui"]["drawer_open"], true);
+    app.xdo(&["key", "ctrl+a"]);
+    app.xdo(&["type", "2"]);
+    app.xdo(&["key", "Return"]);
+    app.wait_for("the mass applied", 60, |s| s["particles"][0]["mass"] == 2.0);
+    app.xdo(&["key", "F6"]);
+    let s = app.wait_for("a tab has the keys", 60, |s| {
+        s["ui"]["focus"] == "tab_totals"
+    });
+    assert_eq!(s["ui"]["tab"], "Totals");
+    app.xdo(&["key", "F6"]);
+    let s = app.wait_for("the top bar has the keys", 60, |s| {
+        s["ui"]["focus"].as_str().is_some_and(|f| {
+            let r = &s["panel_widgets"][f];
+            r[1].as_f64().unwrap() < s["layout"]["world"][1].as_f64().unwrap()
+        })
+    });
+    let top = s["ui"]["focus"].clone();
+    app.xdo(&["key", "F6"]);
+    app.wait_for("the world has the keys", 60, |s| {
+        s["ui"]["focus"].is_null() && s["ui"]["typing"] == false
+    });
+    app.xdo(&["key", "space"]);
+    app.wait_for("Space runs the clock", 60, |s| s["paused"] == false);
+    app.xdo(&["key", "shift+F6"]);
+    app.wait_for("back to the top bar", 60, |s| s["ui"]["focus"] == top);
     app.quit();
 }

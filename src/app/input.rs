@@ -183,6 +183,11 @@ impl Input {
     pub fn commands(&mut self, panels: &mut Panels, model: &Sandbox, mouse: DVec2) -> Vec<Command> {
         let mut out = Vec::new();
         let left = self.left_button();
+        if is_key_pressed(KeyCode::F6) {
+            // Between the window's parts, wherever the keyboard is.
+            let shift = held_or_pressed([KeyCode::LeftShift, KeyCode::RightShift]);
+            panels.jump_to_next_part(shift, model.modal_open() || model.panels.help_open);
+        }
         self.keys(panels, model.arrows_aim(), &mut out);
         self.touches(&mut out);
         if self.pinch.is_none() {

@@ -8,6 +8,8 @@ launched-near-centre = Scheibe { $disc } ruht neben Scheibe { $beside } (die Mit
 ## Der Weg über die Tastatur (Zeilen der Hilfe)
 keys-focus = Tab / Umschalt+Tab
 help-focus = durch die Bedienelemente gehen, in Lesereihenfolge; Leertaste oder Enter betätigt eines, die Pfeiltasten verschieben einen Schieberegler, wählen in einer Auswahlliste oder rollen eine Liste (auch Bild auf, Bild ab, Pos1 und Ende); Esc oder ein Klick in die Welt schaltet die Tastenkürzel wieder ein
+keys-regions = F6 / Umschalt+F6
+help-regions = zum nächsten Teil des Fensters springen: zur Steuerung (wird geöffnet, falls geschlossen; zuerst die Masse der gewählten Scheibe), zu den Reitern, zur oberen Leiste und zurück zur Welt; Tab geht dann darin weiter
 keys-aim-keys = Pfeiltasten, angehalten, mit gewählter Scheibe
 help-aim-keys = sie ausrichten: ihre Geschwindigkeit ±0,1 m/s pro Tastendruck (Umschalt: ±1 m/s)
 keys-select-next = Q / Umschalt+Q

@@ -8,6 +8,8 @@ launched-near-centre = Disc { $disc } at rest beside disc { $beside } (the centr
 ## The keyboard path (lines of the help)
 keys-focus = Tab / Shift+Tab
 help-focus = move through the controls, in reading order; Space or Enter presses one, the arrow keys move a slider, step through a drop-down's choices or scroll a list (Page Up, Page Down, Home and End too); Esc or a click in the world makes the shortcut keys work again
+keys-regions = F6 / Shift+F6
+help-regions = jump to the next part of the window: the controls (opened if closed; the selected disc's mass first), the tabs, the top bar, and back to the world; Tab then moves within it
 keys-aim-keys = Arrow keys, paused, with a disc selected
 help-aim-keys = aim it: its velocity ±0.1 m/s a press (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q

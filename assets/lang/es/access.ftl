@@ -8,6 +8,8 @@ launched-near-centre = Disco { $disc } en reposo junto al disco { $beside } (el 
 ## El recorrido con el teclado (líneas de la ayuda)
 keys-focus = Tab / Mayús+Tab
 help-focus = recorrer los controles en el orden de lectura; Espacio o Intro activa el control, las flechas mueven un deslizador, eligen en una lista desplegable o desplazan una lista (también Re Pág, Av Pág, Inicio y Fin); Esc o un clic en el mundo reactivan los atajos de teclado
+keys-regions = F6 / Mayús+F6
+help-regions = saltar a la parte siguiente de la ventana: los controles (se abren si están cerrados; primero la masa del disco elegido), las pestañas, la barra superior y de vuelta al mundo; después Tab avanza dentro de ella
 keys-aim-keys = Flechas, en pausa, con un disco seleccionado
 help-aim-keys = fijar su velocidad: ±0,1 m/s por pulsación (Mayús: ±1 m/s)
 keys-select-next = Q / Mayús+Q

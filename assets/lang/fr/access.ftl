@@ -8,6 +8,8 @@ launched-near-centre = Disque { $disc } au repos à côté du disque { $beside }
 ## Le parcours au clavier (lignes de l'aide)
 keys-focus = Tab / Maj+Tab
 help-focus = parcourir les commandes dans l'ordre de lecture ; Espace ou Entrée en actionne une, les touches fléchées déplacent un curseur de réglage, choisissent dans une liste déroulante ou font défiler une liste (Page préc., Page suiv., Début et Fin aussi) ; Échap ou un clic dans la simulation réactive les raccourcis clavier
+keys-regions = F6 / Maj+F6
+help-regions = passer à la partie suivante de la fenêtre : les réglages (ouverts s'ils sont fermés ; d'abord la masse du disque sélectionné), les onglets, la barre du haut, puis retour à la simulation ; Tab avance ensuite à l'intérieur
 keys-aim-keys = Touches fléchées, en pause, avec un disque sélectionné
 help-aim-keys = régler sa vitesse : ±0,1 m/s par appui (Maj : ±1 m/s)
 keys-select-next = Q / Maj+Q

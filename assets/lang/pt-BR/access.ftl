@@ -8,6 +8,8 @@ launched-near-centre = Disco { $disc } em repouso ao lado do disco { $beside } (
 ## O caminho pelo teclado (linhas da ajuda)
 keys-focus = Tab / Shift+Tab
 help-focus = percorre os controles, na ordem de leitura; Espaço ou Enter aciona um, as teclas de seta movem um controle deslizante, escolhem numa lista suspensa ou rolam uma lista (também Page Up, Page Down, Home e End); Esc ou um clique no mundo reativa os atalhos de teclado
+keys-regions = F6 / Shift+F6
+help-regions = pular para a próxima parte da janela: os controles (abertos se estiverem fechados; primeiro a massa do disco selecionado), as abas, a barra de cima e de volta ao mundo; depois Tab avança dentro dela
 keys-aim-keys = Teclas de seta, em pausa, com um disco selecionado
 help-aim-keys = mira o disco: a velocidade dele ±0,1 m/s a cada toque (Shift: ±1 m/s)
 keys-select-next = Q / Shift+Q

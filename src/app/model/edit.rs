@@ -201,29 +201,31 @@ impl Sandbox {
                 if *p != before {
                     self.record.totals.restart(&self.world);
                 }
+                let what = [
+                    (edit.mass, FIELDS[0], "kg"),
+                    (edit.radius, FIELDS[1], "m"),
+                    (edit.vx, FIELDS[2], "m/s"),
+                    (edit.vy, FIELDS[3], "m/s"),
+                    (edit.x, FIELDS[4], "m"),
+                    (edit.y, FIELDS[5], "m"),
+                ];
+                let said: Vec<String> = what
+                    .iter()
+                    .filter_map(|(v, name, unit)| {
+                        v.map(|v| format!("{} = {} {unit}", words(name, &[]), field(v)))
+                    })
+                    .collect();
+                let values = tr!(
+                    "edit-applied-table",
+                    disc = disc_number(disc),
+                    values = said.join("; ")
+                );
+                // In the strip too, over what it said of the disc before
+                // ("Disc 1 of 2 selected: 1.000 kg" beside a mass of 2).
+                self.toast(values.clone());
                 Note::ok(match from {
                     EditPlace::Fields => tr!("edit-applied", disc = disc_number(disc)),
-                    EditPlace::Table => {
-                        let what = [
-                            (edit.mass, FIELDS[0], "kg"),
-                            (edit.radius, FIELDS[1], "m"),
-                            (edit.vx, FIELDS[2], "m/s"),
-                            (edit.vy, FIELDS[3], "m/s"),
-                            (edit.x, FIELDS[4], "m"),
-                            (edit.y, FIELDS[5], "m"),
-                        ];
-                        let said: Vec<String> = what
-                            .iter()
-                            .filter_map(|(v, name, unit)| {
-                                v.map(|v| format!("{} = {} {unit}", words(name, &[]), field(v)))
-                            })
-                            .collect();
-                        tr!(
-                            "edit-applied-table",
-                            disc = disc_number(disc),
-                            values = said.join("; ")
-                        )
-                    }
+                    EditPlace::Table => values,
                 })
             }
             Err(e) => Note::error(match from {

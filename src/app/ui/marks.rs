@@ -36,8 +36,8 @@ pub struct Marks {
     pub tooltips: usize,
     /// Where a tooltip showing is (pixels).
     pub tooltip_rect: Option<[f32; 4]>,
-    /// The layers of the widgets [`super::Cx::note`] noted.
-    pub layers: BTreeMap<String, egui::LayerId>,
+    /// The layers and ids of the widgets [`super::Cx::note`] noted.
+    pub named: BTreeMap<String, (egui::LayerId, egui::Id)>,
     /// The dialogs shown this frame, bottom first: their layers and
     /// rectangles (points).
     pub covers: Vec<(egui::LayerId, egui::Rect)>,
@@ -88,7 +88,7 @@ impl Marks {
         self.widgets = widgets
             .into_iter()
             .filter(|(name, r)| {
-                let Some(&layer) = self.layers.get(name) else {
+                let Some(&(layer, _)) = self.named.get(name) else {
                     return true;
                 };
                 let centre = egui::pos2(r[0] + 0.5 * r[2], r[1] + 0.5 * r[3]) / self.ppp;

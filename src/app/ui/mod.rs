@@ -22,17 +22,21 @@
 //! - [`dialog`]: the boxes over the world and scroll areas, whose own parts
 //!   Tab passes over.
 //! - [`marks`]: what the views note for the state dump and the keyboard.
+//! - [`regions`]: F6, the keyboard's jump between the window's parts.
+//! - [`touch`]: a finger's press held for a tooltip presses nothing.
 
 mod dialog;
 mod dock;
 mod focus;
 mod marks;
 mod popups;
+mod regions;
 mod side;
 mod start;
 mod strip;
 pub(crate) mod tip;
 mod top_bar;
+mod touch;
 mod typing;
 pub mod widgets;
 
@@ -94,7 +98,9 @@ impl Cx<'_> {
         if response.sense.is_focusable() {
             self.marks.stops.push(Stop::control(response));
         }
-        self.marks.layers.insert(name.clone(), response.layer_id);
+        self.marks
+            .named
+            .insert(name.clone(), (response.layer_id, response.id));
         self.marks.note(name, response.rect);
     }
 }
@@ -160,6 +166,10 @@ struct FocusTrail {
     tab_back: bool,
     /// What had the keyboard when the last frame's views were laid out.
     seen: Option<egui::Id>,
+    /// A jump between the window's parts (F6) to carry out.
+    jump: Option<regions::Jump>,
+    /// The part of the window the keyboard is in.
+    part: regions::Part,
 }
 
 impl Panels {
@@ -183,11 +193,19 @@ impl Panels {
         }
     }
 
+    /// F6 (`back`: Shift+F6) was pressed: the next frame gives the
+    /// keyboard to the window's next part ([`regions`]).
+    pub fn jump_to_next_part(&mut self, back: bool, modal: bool) {
+        if !modal {
+            self.trail.jump = Some(regions::Jump { back, to: None });
+        }
+    }
+
     /// The frame's egui pass: lays the panels out, draws each, and returns
     /// what their clicks asked for. Runs before the key and mouse bindings.
     pub fn pass(&mut self, model: &Sandbox, mouse: glam::DVec2) -> Vec<Command> {
         let mut out = Vec::new();
-        egui_macroquad::cfg(hold_is_not_a_tap);
+        egui_macroquad::cfg(touch::hold_is_not_a_tap);
         egui_macroquad::ui(|ctx| self.frame(ctx, model, mouse, &mut out));
         if self.marks.left_with_enter {
             self.panel_keyboard = true;
@@ -264,9 +282,11 @@ impl Panels {
         // it (it is drawn over them all the same).
         self.start
             .show(ctx, &mut cx, points(rects.top_bar).bottom());
+        let top_bar = cx.marks.stops.len();
         egui::TopBottomPanel::top("top_bar")
             .exact_height(points(rects.top_bar).height())
             .show(ctx, |ui| self.top_bar.ui(ui, &mut cx));
+        let controls = cx.marks.stops.len();
         panels.push(rects.top_bar.as_array());
         // The drawer next, though it floats over the panels made after it:
         // Tab goes from its button in the top bar into it, not first
@@ -285,6 +305,7 @@ impl Panels {
                 .show(ctx, |ui| self.side.ui(ui, &mut cx));
             panels.push(side.as_array());
         }
+        let tabs = cx.marks.stops.len();
         if let (Some(row), content) = (rects.tab_row, rects.tab_content) {
             let height = row.h + content.map_or(0.0, |c| c.h);
             egui::TopBottomPanel::bottom("dock")
@@ -307,6 +328,11 @@ impl Panels {
                 panels.push(content.as_array());
             }
         }
+        let parts = regions::Parts {
+            top_bar: top_bar..controls,
+            controls: controls..tabs,
+            tabs: tabs..cx.marks.stops.len(),
+        };
         egui::TopBottomPanel::bottom("strip")
             .exact_height(points(rects.caption).height())
             .show(ctx, |ui| self.strip.ui(ui, &mut cx));
@@ -349,6 +375,18 @@ impl Panels {
             })
         }) {
             self.trail.tab_back = back;
+        }
+        let with_panel = self.panel_keyboard || self.marks.left_with_enter;
+        let before = self.trail.part;
+        self.trail.part = parts.part_now(ctx, &self.marks, before, with_panel);
+        if let Some(jump) = self.trail.jump.take() {
+            let tab = format!("tab_{}", p.tab.key().to_lowercase());
+            let from = (jump, self.trail.part);
+            match parts.carry_out(ctx, from, &self.marks, &rects, &tab, out) {
+                regions::Jumped::Waiting(jump) => self.trail.jump = Some(jump),
+                regions::Jumped::Done(regions::Part::World) => self.panel_keyboard = false,
+                regions::Jumped::Done(_) | regions::Jumped::Nothing => {}
+            }
         }
         let mut focused = dialog::pass_over_containers(ctx, &self.marks, self.trail.tab_back);
         if let Some(id) = focused {
@@ -406,82 +444,4 @@ impl Panels {
 /// pixels on a high-density screen, so text is as large and sharper there.
 pub fn px_per_point(ctx: &egui::Context) -> f32 {
     ctx.pixels_per_point() / macroquad::window::screen_dpi_scale()
-}
-
-/// A finger held on a control shows its tooltip once the tooltip's delay
-/// has passed, as a resting mouse does; letting go then must not press the
-/// control. So while a finger is on the screen a press is a tap only as long
-/// as that delay (egui's own limit, 0.8 s, stays for the mouse), and its
-/// tooltips go where the hand does not cover them ([`tip`]).
-fn hold_is_not_a_tap(ctx: &egui::Context) {
-    let finger = !macroquad::input::touches().is_empty();
-    tip::set_finger(ctx, finger);
-    let limit = longest_click(finger, ctx.style().interaction.tooltip_delay);
-    ctx.options_mut(|o| o.input_options.max_click_duration = limit);
-}
-
-/// egui's own limit on a click's length (s), for the mouse.
-static MOUSE_CLICK: std::sync::LazyLock<f64> =
-    std::sync::LazyLock::new(|| egui::Options::default().input_options.max_click_duration);
-
-/// How long a press may last and still be a click or tap (s).
-fn longest_click(finger: bool, tooltip_delay: f32) -> f64 {
-    if finger {
-        f64::from(tooltip_delay)
-    } else {
-        *MOUSE_CLICK
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::longest_click;
-
-    /// Whether a button pressed at 0.1 s and let go at `up` s was clicked,
-    /// with presses limited to `limit` s.
-    fn clicked(limit: f64, up: f64) -> bool {
-        let ctx = egui::Context::default();
-        ctx.options_mut(|o| o.input_options.max_click_duration = limit);
-        let at = egui::pos2(20.0, 10.0);
-        let button = |pressed: bool, time: f64| egui::RawInput {
-            time: Some(time),
-            events: vec![egui::Event::PointerButton {
-                pos: at,
-                button: egui::PointerButton::Primary,
-                pressed,
-                modifiers: egui::Modifiers::NONE,
-            }],
-            ..Default::default()
-        };
-        // A first pass lays the button out (egui hits what the last pass
-        // drew) with the pointer already over it.
-        let over = egui::RawInput {
-            time: Some(0.0),
-            events: vec![egui::Event::PointerMoved(at)],
-            ..Default::default()
-        };
-        let mut was_clicked = false;
-        for input in [over, button(true, 0.1), button(false, up)] {
-            let _ = ctx.run(input, |ctx| {
-                egui::CentralPanel::default().show(ctx, |ui| {
-                    was_clicked |= ui.button("Play").clicked();
-                });
-            });
-        }
-        was_clicked
-    }
-
-    #[test]
-    fn a_finger_let_go_after_the_tooltips_delay_does_not_press_but_a_mouse_may() {
-        let (delay, up) = (0.5, 0.75);
-        assert!(clicked(longest_click(true, delay), 0.3), "a tap presses");
-        assert!(
-            !clicked(longest_click(true, delay), up),
-            "a held finger does not"
-        );
-        assert!(
-            clicked(longest_click(false, delay), up),
-            "a slow mouse click does"
-        );
-    }
 }

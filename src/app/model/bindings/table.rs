@@ -321,6 +321,12 @@ pub static BINDINGS: &[Binding] = &[
         trigger: Trigger::Panels,
         acts: &[],
     },
+    Binding {
+        name: "regions",
+        control: None,
+        trigger: Trigger::Panels,
+        acts: &[],
+    },
     line(
         "side",
         Some("section-controls"),

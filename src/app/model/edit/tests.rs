@@ -213,6 +213,12 @@ fn a_law_changed_voids_the_caption_and_undo_takes_edits_with_their_notes() {
             from,
         });
         assert!(s.messages.table.is_some() || s.messages.fields.is_some());
+        // The strip says it, over what it said of the disc before.
+        assert!(
+            s.message().is_some_and(|m| m.contains("mass = 2.5 kg")),
+            "{from:?}: {:?}",
+            s.message()
+        );
         later(&mut s, 1.0);
         s.apply(Command::Undo);
         assert_eq!(s.world.particles[0].mass, 1.0);
