@@ -112,7 +112,7 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
 /// A teacher at a projector (1024×768, text size 2, the controls in a
 /// closed drawer) changes the selected disc's mass from the keyboard: F6
 /// opens the drawer on the mass field (about thirty Tabs from the top bar
-/// before), the number typed is applied with Enter, and F6 goes on to the
+/// before), the number typed replaces the one there and is applied with Enter, and F6 goes on to the
 /// tabs, the top bar and back to the world, whose keys work again;
 /// Shift+F6 goes the other way.
 fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world() {
@@ -125,7 +125,7 @@ fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world()
         s["ui"]["focus"] == "disc_mass"
     });
     assert_eq!(s["ui"]["drawer_open"], true);
-    app.xdo(&["key", "ctrl+a"]);
+    // Its value selected, as Tab selects it: "2" typed is 2 kg, not 12.
     app.xdo(&["type", "2"]);
     app.xdo(&["key", "Return"]);
     app.wait_for("the mass applied", 60, |s| s["particles"][0]["mass"] == 2.0);

@@ -170,6 +170,8 @@ struct FocusTrail {
     jump: Option<regions::Jump>,
     /// The part of the window the keyboard is in.
     part: regions::Part,
+    /// The last frame's parts.
+    parts: Option<regions::Parts>,
 }
 
 impl Panels {
@@ -197,7 +199,27 @@ impl Panels {
     /// keyboard to the window's next part ([`regions`]).
     pub fn jump_to_next_part(&mut self, back: bool, modal: bool) {
         if !modal {
-            self.trail.jump = Some(regions::Jump { back, to: None });
+            self.trail.jump = Some(regions::Jump {
+                back,
+                to: None,
+                waited: 0,
+            });
+        }
+    }
+
+    /// Carries out a jump F6 asked for ([`regions`]).
+    fn jump(&mut self, ctx: &egui::Context, model: &Sandbox, out: &mut Vec<Command>) {
+        let (Some(jump), Some(parts), Some(rects)) =
+            (self.trail.jump.take(), &self.trail.parts, &self.rects)
+        else {
+            return;
+        };
+        let tab = format!("tab_{}", model.panels.tab.key().to_lowercase());
+        let from = (jump, self.trail.part);
+        match parts.carry_out(ctx, from, &self.marks, rects, &tab, out) {
+            regions::Jumped::Waiting(jump) => self.trail.jump = Some(jump),
+            regions::Jumped::Done(regions::Part::World) => self.panel_keyboard = false,
+            regions::Jumped::Done(_) | regions::Jumped::Nothing => {}
         }
     }
 
@@ -236,6 +258,9 @@ impl Panels {
         let ppp = px_per_point(ctx);
         typing::drop_characters_typed_with_ctrl(ctx);
         let saving = typing::enter_before_saving(ctx);
+        // Before the views, on the last frame's notes: a field given the
+        // keyboard now gains it as it is made, and selects its text.
+        self.jump(ctx, model, out);
         dialog::note_focus(ctx, &mut self.trail.seen);
         let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {
@@ -379,15 +404,7 @@ impl Panels {
         let with_panel = self.panel_keyboard || self.marks.left_with_enter;
         let before = self.trail.part;
         self.trail.part = parts.part_now(ctx, &self.marks, before, with_panel);
-        if let Some(jump) = self.trail.jump.take() {
-            let tab = format!("tab_{}", p.tab.key().to_lowercase());
-            let from = (jump, self.trail.part);
-            match parts.carry_out(ctx, from, &self.marks, &rects, &tab, out) {
-                regions::Jumped::Waiting(jump) => self.trail.jump = Some(jump),
-                regions::Jumped::Done(regions::Part::World) => self.panel_keyboard = false,
-                regions::Jumped::Done(_) | regions::Jumped::Nothing => {}
-            }
-        }
+        self.trail.parts = Some(parts);
         let mut focused = dialog::pass_over_containers(ctx, &self.marks, self.trail.tab_back);
         if let Some(id) = focused {
             if !self.pointer_on_ui && ctx.input(|i| i.pointer.any_pressed()) {

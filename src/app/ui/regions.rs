@@ -27,17 +27,22 @@ pub enum Part {
     TopBar,
 }
 
+/// Frames a jump waits for the drawer it opened.
+const WAIT_FOR_DRAWER: u8 = 5;
+
 /// F6's order: the controls first, the part a person reaches for.
 const ORDER: [Part; 4] = [Part::World, Part::Controls, Part::Tabs, Part::TopBar];
 
-/// A jump F6 asked for, carried out in the frame after the key (the views
-/// have noted their controls by then).
+/// A jump F6 asked for, carried out as the next frame begins, on the
+/// controls the frame before noted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Jump {
     /// Shift+F6: the part before.
     pub back: bool,
     /// The part chosen, while it waits for a drawer to open.
     pub to: Option<Part>,
+    /// Frames waited so far.
+    pub waited: u8,
 }
 
 /// What a jump did.
@@ -51,8 +56,9 @@ pub enum Jumped {
     Nothing,
 }
 
-/// Each part's Tab stops this frame: where they are in [`Marks::stops`]
+/// Each part's Tab stops in a frame: where they are in [`Marks::stops`]
 /// (the views are made in the order top bar, controls, tabs).
+#[derive(Clone, Debug, Default)]
 pub struct Parts {
     pub top_bar: Range<usize>,
     pub controls: Range<usize>,
@@ -91,8 +97,8 @@ impl Parts {
             .unwrap_or(Part::World)
     }
 
-    /// Carries out `jump` from the part `from` once the frame's views have
-    /// noted their controls: the keyboard goes to the next part's first
+    /// Carries out `jump` from the part `from` on the last frame's notes
+    /// (`marks`, `rects`): the keyboard goes to the next part's first
     /// control (the selected disc's mass, the open tab's name), or back to
     /// the world. `tab`: the open tab's noted name.
     pub fn carry_out(
@@ -130,14 +136,18 @@ impl Parts {
             return Jumped::Done(Part::World);
         }
         if to == Part::Controls && closed_drawer {
-            if jump.to.is_some() {
-                return Jumped::Nothing; // it did not open
+            // Asked to open; it shows in a frame or two.
+            if jump.to.is_none() {
+                out.push(Command::ToggleDrawer);
             }
-            out.push(Command::ToggleDrawer);
-            return Jumped::Waiting(Jump {
-                to: Some(to),
-                ..jump
-            });
+            return match jump.waited {
+                0..WAIT_FOR_DRAWER => Jumped::Waiting(Jump {
+                    to: Some(to),
+                    waited: jump.waited + 1,
+                    ..jump
+                }),
+                _ => Jumped::Nothing,
+            };
         }
         let range = self.stops(to);
         let shown = |stop: &Stop| {
