@@ -168,6 +168,8 @@ edit-mass-crosses-wall = bei { $mass } kg hätte die Scheibe { $size } m Radius 
 edit-position-off-the-line = Hier bewegen sich die Scheiben auf einer Geraden: { $name } bleibt { $value } m
 edit-position-crosses-wall = bei { $at } würde die Scheibe über eine Wand hinausragen
 edit-position-overlaps = bei { $at } würde die Scheibe Scheibe { $disc } überlappen
+edit-radius-crosses-wall = mit { $radius } m Radius würde die Scheibe über eine Wand hinausragen
+edit-radius-overlaps = mit { $radius } m Radius würde die Scheibe Scheibe { $disc } überlappen
 
 ## Wiederherstellung
 recovery-unreadable-moved = Eine unlesbare Wiederherstellungsdatei wurde nach { $file } verschoben: { $error }

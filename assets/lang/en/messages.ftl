@@ -168,6 +168,8 @@ edit-mass-crosses-wall = at { $mass } kg the disc would be { $size } m in radius
 edit-position-off-the-line = the discs here move along one line: { $name } stays { $value } m
 edit-position-crosses-wall = at { $at } the disc would cross a wall
 edit-position-overlaps = at { $at } the disc would overlap disc { $disc }
+edit-radius-crosses-wall = with a radius of { $radius } m the disc would cross a wall
+edit-radius-overlaps = with a radius of { $radius } m the disc would overlap disc { $disc }
 
 ## Recovery
 recovery-unreadable-moved = An unreadable recovery file was moved to { $file }: { $error }

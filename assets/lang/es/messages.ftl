@@ -168,6 +168,8 @@ edit-mass-crosses-wall = con { $mass } kg el disco tendría { $size } m de radio
 edit-position-off-the-line = aquí los discos se mueven sobre una recta: { $name } se queda en { $value } m
 edit-position-crosses-wall = en { $at } el disco atravesaría una pared
 edit-position-overlaps = en { $at } el disco se solaparía con el disco { $disc }
+edit-radius-crosses-wall = con { $radius } m de radio el disco atravesaría una pared
+edit-radius-overlaps = con { $radius } m de radio el disco se solaparía con el disco { $disc }
 
 ## Recuperación
 recovery-unreadable-moved = Un archivo de recuperación ilegible se movió a { $file }: { $error }

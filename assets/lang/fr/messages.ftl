@@ -168,6 +168,8 @@ edit-mass-crosses-wall = avec { $mass } kg, le disque aurait un rayon de { $size
 edit-position-off-the-line = ici les disques se déplacent sur une droite : { $name } reste { $value } m
 edit-position-crosses-wall = en { $at }, le disque traverserait un mur
 edit-position-overlaps = en { $at }, le disque chevaucherait le disque { $disc }
+edit-radius-crosses-wall = avec un rayon de { $radius } m, le disque traverserait un mur
+edit-radius-overlaps = avec un rayon de { $radius } m, le disque chevaucherait le disque { $disc }
 
 ## Récupération
 recovery-unreadable-moved = Un fichier de récupération illisible a été déplacé vers { $file } : { $error }

@@ -168,6 +168,8 @@ edit-mass-crosses-wall = com { $mass } kg o disco teria { $size } m de raio (tam
 edit-position-off-the-line = aqui os discos se movem sobre uma reta: { $name } fica em { $value } m
 edit-position-crosses-wall = em { $at } o disco atravessaria uma parede
 edit-position-overlaps = em { $at } o disco se sobreporia ao disco { $disc }
+edit-radius-crosses-wall = com { $radius } m de raio o disco atravessaria uma parede
+edit-radius-overlaps = com { $radius } m de raio o disco se sobreporia ao disco { $disc }
 
 ## Recuperação
 recovery-unreadable-moved = Um arquivo de recuperação ilegível foi movido para { $file }: { $error }

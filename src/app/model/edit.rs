@@ -253,19 +253,24 @@ impl Sandbox {
 
     /// A disc moved by its typed position lands where it has room: inside
     /// the walls, on a one-dimensional world's line, clear of every other
-    /// disc (with the edit's own radius); otherwise refused, saying which.
+    /// disc (with the edit's own radius); so is a disc made larger where
+    /// it is. Otherwise refused, saying which.
     /// The keyboard's way to place a disc (a drag is the mouse's).
     pub fn placed_edit(&self, i: usize, edit: DiscEdit) -> Result<DiscEdit, String> {
         let w = &self.world;
         let Some(mut p) = w.particles.get(i).copied() else {
             return Ok(edit);
         };
-        if !edit.moves() {
+        // A larger radius is placed too (a disc grown into its neighbour
+        // had been taken; the step then shoved the two apart).
+        let grows = edit.radius.is_some_and(|r| r > p.radius);
+        if !edit.moves() && !grows {
             return Ok(edit);
         }
         let before = p.pos;
         edit.apply(&mut p);
         let at = crate::app::numbers::vector(p.pos, 3, "m");
+        let radius = field(p.radius);
         if let Some(axis) = w.laws.constrain {
             let c = 1 - axis.index();
             if p.pos[c] != before[c] {
@@ -281,17 +286,23 @@ impl Sandbox {
         if l.boundary == impulse::Boundary::Box
             && !l.boundary.admits(l.walls, l.size, p.pos, p.radius)
         {
-            return Err(tr!("edit-position-crosses-wall", at = at));
+            return Err(match edit.moves() {
+                true => tr!("edit-position-crosses-wall", at = at),
+                false => tr!("edit-radius-crosses-wall", radius = radius),
+            });
         }
         let overlapped = w.particles.iter().enumerate().find(|&(j, q)| {
             j != i && l.boundary.separation(q.pos, p.pos, l.size).length() < p.radius + q.radius
         });
         if let Some((j, _)) = overlapped {
-            return Err(tr!(
-                "edit-position-overlaps",
-                at = at,
-                disc = disc_number(j)
-            ));
+            return Err(match edit.moves() {
+                true => tr!("edit-position-overlaps", at = at, disc = disc_number(j)),
+                false => tr!(
+                    "edit-radius-overlaps",
+                    radius = radius,
+                    disc = disc_number(j)
+                ),
+            });
         }
         Ok(edit)
     }

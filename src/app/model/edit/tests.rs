@@ -437,3 +437,59 @@ fn an_edit_takes_away_the_arrows_of_the_collision_before_it() {
     s.apply(Command::Undo);
     assert_eq!(arrows(&s), shown, "back with the discs they describe");
 }
+
+/// A disc grown where it stands is placed as a moved one is: into its
+/// neighbour or through a wall, refused, saying which (a radius of 2 m put
+/// disc 2 inside disc 1, and the next step shoved them apart); made
+/// smaller, always taken.
+#[test]
+fn a_larger_radius_into_a_neighbour_or_a_wall_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+    let radius = |s: &mut Sandbox, r: &str, from: EditPlace| {
+        s.apply(Command::EditDisc {
+            disc: 0,
+            text: [None, Some(r.into()), None, None, None, None],
+            from,
+        });
+        match from {
+            EditPlace::Fields => s.messages.fields.clone().unwrap(),
+            EditPlace::Table => s.messages.table.clone().unwrap(),
+        }
+    };
+    // Disc 1 just left of disc 2, far from the walls.
+    let b = s.world.particles[1];
+    let r = s.world.particles[0].radius;
+    let x = b.pos.x - b.radius - r - 0.2;
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [None, None, None, None, Some(x.to_string()), Some(b.pos.y.to_string())],
+        from: EditPlace::Table,
+    });
+    let a = s.world.particles[0];
+    assert_eq!(a.pos.x, x);
+    let gap = a.pos.distance(b.pos) - b.radius;
+    let wall = [a.pos.x, a.pos.y, s.world.laws.size.y - a.pos.y]
+        .into_iter()
+        .fold(f64::INFINITY, f64::min);
+    assert!(gap + 0.1 < wall, "{gap} {wall}");
+    let note = radius(&mut s, &format!("{}", gap + 0.1), EditPlace::Table);
+    assert!(note.error && note.text.contains("would overlap disc 2"), "{}", note.text);
+    assert_eq!(s.world.particles[0].radius, a.radius, "refused: unchanged");
+    let fits = format!("{}", 0.5 * gap.min(wall));
+    let note = radius(&mut s, &fits, EditPlace::Table);
+    assert!(!note.error, "{}", note.text);
+    let note = radius(&mut s, "0.1", EditPlace::Table);
+    assert!(!note.error, "smaller: {}", note.text);
+    assert_eq!(s.world.particles[0].radius, 0.1);
+    // By the left wall, grown through it.
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [None, None, None, None, Some("0.2".into()), None],
+        from: EditPlace::Table,
+    });
+    assert_eq!(s.world.particles[0].pos.x, 0.2);
+    let note = radius(&mut s, "0.3", EditPlace::Fields);
+    assert!(note.error && note.text.ends_with("cross a wall"), "{}", note.text);
+    assert_eq!(s.world.particles[0].radius, 0.1);
+}
