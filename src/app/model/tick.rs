@@ -150,6 +150,10 @@ impl Sandbox {
         // another run, read as this one's ("Disc 24 hit the right wall" in
         // a scene of two discs, 4.14 s under 2.42 s).
         self.messages.narration.start_afresh();
+        // An edit's answer was about discs of the run before (a refused
+        // v_y stayed red in the table after a reset).
+        self.messages.table = None;
+        self.messages.fields = None;
     }
 
     /// Runs to the next impact, between discs or on a wall, and pauses at

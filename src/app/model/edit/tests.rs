@@ -463,7 +463,14 @@ fn a_larger_radius_into_a_neighbour_or_a_wall_is_refused() {
     let x = b.pos.x - b.radius - r - 0.2;
     s.apply(Command::EditDisc {
         disc: 0,
-        text: [None, None, None, None, Some(x.to_string()), Some(b.pos.y.to_string())],
+        text: [
+            None,
+            None,
+            None,
+            None,
+            Some(x.to_string()),
+            Some(b.pos.y.to_string()),
+        ],
         from: EditPlace::Table,
     });
     let a = s.world.particles[0];
@@ -474,7 +481,11 @@ fn a_larger_radius_into_a_neighbour_or_a_wall_is_refused() {
         .fold(f64::INFINITY, f64::min);
     assert!(gap + 0.1 < wall, "{gap} {wall}");
     let note = radius(&mut s, &format!("{}", gap + 0.1), EditPlace::Table);
-    assert!(note.error && note.text.contains("would overlap disc 2"), "{}", note.text);
+    assert!(
+        note.error && note.text.contains("would overlap disc 2"),
+        "{}",
+        note.text
+    );
     assert_eq!(s.world.particles[0].radius, a.radius, "refused: unchanged");
     let fits = format!("{}", 0.5 * gap.min(wall));
     let note = radius(&mut s, &fits, EditPlace::Table);
@@ -490,6 +501,10 @@ fn a_larger_radius_into_a_neighbour_or_a_wall_is_refused() {
     });
     assert_eq!(s.world.particles[0].pos.x, 0.2);
     let note = radius(&mut s, "0.3", EditPlace::Fields);
-    assert!(note.error && note.text.ends_with("cross a wall"), "{}", note.text);
+    assert!(
+        note.error && note.text.ends_with("cross a wall"),
+        "{}",
+        note.text
+    );
     assert_eq!(s.world.particles[0].radius, 0.1);
 }

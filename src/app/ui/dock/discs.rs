@@ -38,6 +38,10 @@ pub struct DiscsTable {
     /// The disc selected when the table was last shown: a disc selected
     /// since (in the world, by Q) is scrolled into sight.
     seen_selection: Option<usize>,
+    /// The cell open is one the model refused: it closes when the refusal
+    /// goes (a reset, another scene, an undo), not to show a red value
+    /// the disc never had.
+    refused: bool,
 }
 
 /// The spin columns' headings, with units on a second line, and what they
@@ -89,8 +93,12 @@ impl View for DiscsTable {
         let answered = self.sent.take().map(|sent| {
             let disc = sent.disc;
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
+            self.refused = self.editing.is_some();
             disc
         });
+        if self.refused && !note.as_ref().is_some_and(|n| n.error) {
+            (self.editing, self.refused) = (None, false);
+        }
         let row_height = ui.spacing().interact_size.y + 2.0;
         // How to edit, on a line above the table where there is room for it
         // and three rows (or every disc) besides; in a short tab (a
@@ -420,10 +428,10 @@ impl View for DiscsTable {
             e.text = edit_text;
         }
         if let Some(s) = start {
-            self.editing = Some(s);
+            (self.editing, self.refused) = (Some(s), false);
         }
         if cancel {
-            self.editing = None;
+            (self.editing, self.refused) = (None, false);
         }
         if let Some(cell) = commit {
             let mut text: [Option<String>; 6] = Default::default();

@@ -73,3 +73,44 @@ fn the_rows_dots_have_the_discs_colours_with_the_safe_palette_too() {
         }
     }
 }
+
+/// A refused cell stays open in red with what was typed, until its
+/// refusal goes: a reset took the refusal away, but "1" stayed red in
+/// v_y, a value the disc never had, with the note "v_y must be 0" beside.
+#[test]
+fn a_refused_cell_closes_when_a_reset_takes_its_refusal_away() {
+    use crate::app::model::command::{Command, EditPlace};
+    let dir = tempfile::tempdir().unwrap();
+    let mut model = sandbox_with(dir.path(), "preset-1-head-on.toml", true, 0.0);
+    let mut table = DiscsTable::default();
+    let cell = super::CellEdit {
+        disc: 0,
+        field: 3,
+        text: "1".into(),
+    };
+    let mut text: [Option<String>; 6] = Default::default();
+    text[cell.field] = Some(cell.text.clone());
+    model.apply(Command::EditDisc {
+        disc: 0,
+        text,
+        from: EditPlace::Table,
+    });
+    assert!(
+        model.messages.table.as_ref().is_some_and(|n| n.error),
+        "on the line, v_y is refused"
+    );
+    table.sent = Some(cell.clone());
+    texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
+    assert_eq!(
+        table.editing,
+        Some(cell),
+        "refused: open with what was typed"
+    );
+    model.apply(Command::Reset);
+    assert_eq!(
+        model.messages.table, None,
+        "the reset took the refusal away"
+    );
+    texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
+    assert_eq!(table.editing, None, "and the cell with it");
+}
