@@ -15,7 +15,7 @@ mod trails;
 
 use crate::app::look::{color, Look};
 use crate::app::model::camera::Camera;
-use crate::app::model::gesture::{launch_velocity, Gesture, NewDisc};
+use crate::app::model::gesture::{planned_launch, Gesture, NewDisc};
 use crate::app::model::overlays::{
     momentum_changes, spin_shown, MomentumChange, Overlays, ARROW_SECONDS, DELTA_P_MAX_DISCS,
 };
@@ -452,8 +452,9 @@ pub fn draw_launch_preview(
     look: Look,
     text: &WorldText,
 ) {
-    let spot = world.free_spot_near(start, new_disc.radius);
-    let at = px(camera.world_to_screen(spot.unwrap_or(start)));
+    let (spot, velocity) = planned_launch(world, start, cursor, new_disc.radius);
+    let from = spot.unwrap_or(start);
+    let at = px(camera.world_to_screen(from));
     let r = camera.length_in_pixels(new_disc.radius).max(1.0) as f32;
     let ghost = if spot.is_some() {
         color(look.colors.ghost)
@@ -461,8 +462,7 @@ pub fn draw_launch_preview(
         Color::new(1.0, 0.2, 0.2, 0.5)
     };
     draw_poly(at.x, at.y, 40, r, 0.0, ghost);
-    let velocity = launch_velocity(start, cursor);
-    let tip = camera.world_to_screen(start) + camera.vector_to_screen(velocity * ARROW_SECONDS);
+    let tip = camera.world_to_screen(from) + camera.vector_to_screen(velocity * ARROW_SECONDS);
     arrow(at, px(tip), 3.0, Color::new(1.0, 0.75, 0.0, 1.0), true);
     let label = match spot {
         Some(_) => crate::app::numbers::with_unit(velocity.length(), 2, "m/s"),

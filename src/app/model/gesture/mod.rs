@@ -146,6 +146,27 @@ fn free_spot(world: &World, wanted: DVec2, radius: f64, across: Option<usize>) -
         .find(|&spot| world.is_free(spot, radius))
 }
 
+/// Where a drag from `start` to `at` launches a disc of `radius`, and how
+/// fast: the nearest free spot (`None`: no room), in one dimension on the
+/// discs' line (off it, the disc moved along a line of its own and met
+/// none of them) and along it. The preview drawn during the drag shows
+/// this, so the disc comes where its ghost was.
+pub fn planned_launch(
+    world: &World,
+    start: DVec2,
+    at: DVec2,
+    radius: f64,
+) -> (Option<DVec2>, DVec2) {
+    let across = across_line(world);
+    let mut wanted = start;
+    if let Some(c) = across {
+        let middle = 0.5 * world.laws.size[c];
+        wanted[c] = world.particles.first().map_or(middle, |p| p.pos[c]);
+    }
+    let spot = free_spot(world, wanted, radius, across);
+    (spot, along_line(across, launch_velocity(start, at)))
+}
+
 /// Launch velocity for a drag from `start` to `end` (world).
 pub fn launch_velocity(start: DVec2, end: DVec2) -> DVec2 {
     (end - start) * LAUNCH_GAIN
@@ -314,18 +335,11 @@ impl Gesture {
                 if start.distance(at) <= slop {
                     return Released::Nothing; // a click on empty space
                 }
-                // In one dimension on the discs' line (off it, the disc
-                // moved along a line of its own and met none of them).
-                let mut wanted = start;
-                if let Some(c) = across {
-                    let middle = 0.5 * world.laws.size[c];
-                    wanted[c] = world.particles.first().map_or(middle, |p| p.pos[c]);
-                }
-                let Some(pos) = free_spot(world, wanted, new_disc.radius, across) else {
+                let (spot, vel) = planned_launch(world, start, at, new_disc.radius);
+                let Some(pos) = spot else {
                     return Released::NoRoom;
                 };
                 let color = Color::palette(world.particles.len());
-                let vel = along_line(across, launch_velocity(start, at));
                 world.particles.push(Particle::new(
                     pos,
                     vel,
