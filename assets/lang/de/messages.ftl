@@ -40,6 +40,7 @@ scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben
 scene-downloaded = Heruntergeladen: { $file }
 scene-saved = Gespeichert: { $file } in { $folder }
 scene-saved-short = Gespeichert: { $file }
+scene-saved-at = { $saved }, die Scheiben wie bei t = { $time } s
 scene-renamed = Die Szene heißt jetzt { $name }
 scene-name-empty = Ein Name braucht einen Buchstaben oder eine Ziffer
 scene-not-saved = Nicht gespeichert: { $error }

@@ -40,6 +40,7 @@ scene-path-empty = Type the path of a scene file first
 scene-downloaded = Downloaded { $file }
 scene-saved = Saved { $file } in { $folder }
 scene-saved-short = Saved { $file }
+scene-saved-at = { $saved }, the discs as they are at t = { $time } s
 scene-renamed = The scene is called { $name } now
 scene-name-empty = A name needs a letter or a digit
 scene-not-saved = Not saved: { $error }

@@ -40,6 +40,7 @@ scene-path-empty = Escribe primero la ruta de un archivo de escena
 scene-downloaded = Se descargó { $file }
 scene-saved = Se guardó { $file } en { $folder }
 scene-saved-short = Se guardó { $file }
+scene-saved-at = { $saved }, con los discos como están en t = { $time } s
 scene-renamed = La escena se llama ahora { $name }
 scene-name-empty = Un nombre necesita una letra o un dígito
 scene-not-saved = No se guardó: { $error }

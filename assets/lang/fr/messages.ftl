@@ -40,6 +40,7 @@ scene-path-empty = Tapez d'abord le chemin d'un fichier de scène
 scene-downloaded = Téléchargé : { $file }
 scene-saved = Enregistré : { $file } dans { $folder }
 scene-saved-short = Enregistré : { $file }
+scene-saved-at = { $saved }, les disques tels qu'à t = { $time } s
 scene-renamed = La scène s'appelle maintenant { $name }
 scene-name-empty = Un nom doit contenir une lettre ou un chiffre
 scene-not-saved = Non enregistré : { $error }

@@ -344,6 +344,19 @@ impl Sandbox {
                     let noted = tr!("scene-saved", file = file.as_str(), folder = folder);
                     (tr!("scene-saved-short", file = file), noted)
                 };
+                // The discs as they are now, not as the scene opened: said,
+                // once the clock has run (a file saved after the collision
+                // reopened with none left, and nothing had said so).
+                let (said, noted) = match self.world.time > 0.0 {
+                    true => {
+                        let time = crate::app::numbers::plain(self.world.time, 2);
+                        let at = |saved: String| {
+                            tr!("scene-saved-at", saved = saved, time = time.as_str())
+                        };
+                        (at(said), at(noted))
+                    }
+                    false => (said, noted),
+                };
                 self.toast(said);
                 self.messages.scene = Some(Note::ok(noted));
                 Ok(path)
