@@ -21,6 +21,9 @@ pub const FIELDS: [&str; 6] = [
     "quantity-y",
 ];
 
+/// The units of [`FIELDS`], which a typed value may carry ("3 kg").
+const UNITS: [&str; 6] = ["kg", "m", "m/s", "m/s", "m", "m"];
+
 /// An edit of a disc's quantities; `None` leaves one as it is.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct DiscEdit {
@@ -60,10 +63,12 @@ impl DiscEdit {
     }
 }
 
-/// `text` read as a number for the field called `name`, or the line that
-/// says why it was not: "1,000" in English is asked about, not taken as 1.
-fn typed_number(text: &str, name: &str) -> Result<f64, String> {
-    crate::app::numbers::read(text).map_err(|unread| match unread {
+/// `text` read as a number for the field called `name` in `unit`, which
+/// it may carry ("3 kg", "30°"), or the line that says why it was not:
+/// "1,000" in English is asked about, not taken as 1.
+fn typed_number(text: &str, name: &str, unit: &str) -> Result<f64, String> {
+    let number = text.strip_suffix(unit).unwrap_or(text);
+    crate::app::numbers::read(number).map_err(|unread| match unread {
         Unread::NotANumber => tr!("edit-not-a-number", name = name, text = text),
         Unread::Ambiguous { decimal, grouped } => tr!(
             "edit-ambiguous-number",
@@ -88,7 +93,7 @@ pub fn parse_disc_edit(changed: [Option<&str>; 6], max_radius: f64) -> Result<Di
         if text.is_empty() {
             return Err(tr!("edit-type-a-number", name = name));
         }
-        let v = typed_number(text, &name)?;
+        let v = typed_number(text, &name, UNITS[k])?;
         if !v.is_finite() {
             return Err(tr!("edit-not-finite", name = name));
         }
@@ -133,13 +138,13 @@ pub fn polar_velocity(
     if speed.is_none() && direction.is_none() {
         return Ok(None);
     }
-    let read = |text: &str, id: &str| -> Result<f64, String> {
+    let read = |text: &str, id: &str, unit: &str| -> Result<f64, String> {
         let name = words(id, &[]);
         let text = text.trim();
         if text.is_empty() {
             return Err(tr!("edit-type-a-number", name = name));
         }
-        let v = typed_number(text, &name)?;
+        let v = typed_number(text, &name, unit)?;
         if v.is_finite() {
             Ok(v)
         } else {
@@ -147,14 +152,14 @@ pub fn polar_velocity(
         }
     };
     let speed = match speed {
-        Some(text) => read(text, "quantity-speed")?,
+        Some(text) => read(text, "quantity-speed", "m/s")?,
         None => current.length(),
     };
     if speed < 0.0 {
         return Err(tr!("edit-speed-negative"));
     }
     let degrees = match direction {
-        Some(text) => read(text, "quantity-direction")?,
+        Some(text) => read(text, "quantity-direction", "°")?,
         None => current.y.atan2(current.x).to_degrees(),
     };
     let (sin, cos) = degrees.to_radians().sin_cos();

@@ -86,6 +86,16 @@ fn a_thousand_typed_with_the_other_separator_is_asked_about_not_taken_as_one() {
     );
     assert_eq!(mass("1,000.0").unwrap().mass, Some(1000.0));
     assert_eq!(mass("2,5").unwrap().mass, Some(2.5));
+    // With the field's own unit (a student typed "3 kg": "not a number").
+    assert_eq!(mass("3 kg").unwrap().mass, Some(3.0));
+    assert_eq!(mass("3kg").unwrap().mass, Some(3.0));
+    assert_eq!(mass("3 g").unwrap_err(), "mass: “3 g” is not a number");
+    let speed = parse_disc_edit([None, None, Some("-2 m/s"), None, None, None], 4.0);
+    assert_eq!(speed.unwrap().vx, Some(-2.0));
+    let polar = polar_velocity(Some("2 m/s"), Some("90 °"), DVec2::X)
+        .unwrap()
+        .unwrap();
+    assert!((polar - DVec2::new(0.0, 2.0)).length() < 1e-12, "{polar}");
     set_language(Lang::Fr);
     // A French teacher's thousand, with the space French writes in it.
     assert_eq!(mass("1 000").unwrap().mass, Some(1000.0));

@@ -171,7 +171,11 @@ fn a_saved_scene_opens_again_by_the_name_the_save_gave() {
     let saved = s.save_scene().unwrap();
     let file = saved.file_name().unwrap().to_string_lossy().to_string();
     assert_eq!(file, "aula-3.toml");
-    assert_eq!(s.message(), Some("Saved aula-3.toml"), "at t = 0, no moment said");
+    assert_eq!(
+        s.message(),
+        Some("Saved aula-3.toml"),
+        "at t = 0, no moment said"
+    );
     for typed in [file.as_str(), "aula-3", " aula-3 "] {
         s.apply(Command::OpenEmpty);
         assert_ne!(s.scene_name(), "Aula 3");
@@ -197,7 +201,10 @@ fn a_saved_scene_opens_again_by_the_name_the_save_gave() {
     s.save_scene().unwrap();
     let said = s.message().unwrap().to_string();
     assert!(said.starts_with("Saved aula-3"), "{said}");
-    assert!(said.ends_with(&format!("the discs as they are at t = {time} s")), "{said}");
+    assert!(
+        said.ends_with(&format!("the discs as they are at t = {time} s")),
+        "{said}"
+    );
 }
 
 /// A caption that says what to do ("Drag on empty space to launch discs")
