@@ -112,7 +112,8 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
 /// A teacher at a projector (1024×768, text size 2, the controls in a
 /// closed drawer) changes the selected disc's mass from the keyboard: F6
 /// opens the drawer on the mass field (about thirty Tabs from the top bar
-/// before), the number typed replaces the one there and is applied with Enter, and F6 goes on to the
+/// before), the number typed replaces the one there and is applied with
+/// Enter, Tab goes on to the next field, and F6 goes on to the
 /// tabs, the top bar and back to the world, whose keys work again;
 /// Shift+F6 goes the other way.
 fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world() {
@@ -129,6 +130,12 @@ fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world()
     app.xdo(&["type", "2"]);
     app.xdo(&["key", "Return"]);
     app.wait_for("the mass applied", 60, |s| s["particles"][0]["mass"] == 2.0);
+    // Tab goes on from the field Enter left (it went to the window's first
+    // control, Shift+Tab to its last).
+    app.xdo(&["key", "Tab"]);
+    app.wait_for("Tab goes on to the radius", 60, |s| {
+        s["ui"]["focus"] == "disc_radius"
+    });
     app.xdo(&["key", "F6"]);
     let s = app.wait_for("a tab has the keys", 60, |s| {
         s["ui"]["focus"] == "tab_totals"

@@ -15,8 +15,8 @@ pub struct Marks {
     /// A menu is open: its keys are its own (Esc closes it, and nothing
     /// under it).
     pub menu_open: bool,
-    /// A text field was left with Enter.
-    pub left_with_enter: bool,
+    /// The text field left with Enter, if one was.
+    pub left_with_enter: Option<egui::Id>,
     /// The named widget that has the keyboard, if one does.
     pub focused: Option<String>,
     /// Pixels per egui point.
@@ -154,7 +154,7 @@ impl Marks {
     pub fn text_field(&mut self, response: &egui::Response) {
         self.text_focus |= response.has_focus();
         if response.lost_focus() && response.ctx.input(|i| i.key_pressed(egui::Key::Enter)) {
-            self.left_with_enter = true;
+            self.left_with_enter = Some(response.id);
         }
     }
 }

@@ -172,6 +172,8 @@ struct FocusTrail {
     part: regions::Part,
     /// The last frame's parts.
     parts: Option<regions::Parts>,
+    /// The text field last left with Enter: Tab goes on from it.
+    left_field: Option<egui::Id>,
 }
 
 impl Panels {
@@ -229,7 +231,8 @@ impl Panels {
         let mut out = Vec::new();
         egui_macroquad::cfg(touch::hold_is_not_a_tap);
         egui_macroquad::ui(|ctx| self.frame(ctx, model, mouse, &mut out));
-        if self.marks.left_with_enter {
+        if let Some(field) = self.marks.left_with_enter {
+            self.trail.left_field = Some(field);
             self.panel_keyboard = true;
         }
         out
@@ -261,6 +264,15 @@ impl Panels {
         // Before the views, on the last frame's notes: a field given the
         // keyboard now gains it as it is made, and selects its text.
         self.jump(ctx, model, out);
+        // After Enter in a field, Tab and Shift+Tab go on from that field
+        // (egui, with nothing focused, went to the first control or the
+        // last): egui moves on from what has the keyboard.
+        if let Some(field) = self.trail.left_field.filter(|_| self.panel_keyboard) {
+            let tab = ctx.input(|i| i.key_pressed(egui::Key::Tab));
+            if tab && ctx.memory(|m| m.focused().is_none()) {
+                ctx.memory_mut(|m| m.request_focus(field));
+            }
+        }
         dialog::note_focus(ctx, &mut self.trail.seen);
         let last_stops = self.marks.stops.iter().map(|s| s.id).collect();
         self.marks = Marks {
@@ -401,7 +413,7 @@ impl Panels {
         }) {
             self.trail.tab_back = back;
         }
-        let with_panel = self.panel_keyboard || self.marks.left_with_enter;
+        let with_panel = self.panel_keyboard || self.marks.left_with_enter.is_some();
         let before = self.trail.part;
         self.trail.part = parts.part_now(ctx, &self.marks, before, with_panel);
         self.trail.parts = Some(parts);
