@@ -34,6 +34,7 @@ scene-kept = { $error } (die aktuelle Szene bleibt)
 scene-not-found = Keine Szenendatei { $name }, weder hier noch in { $folder } (die aktuelle Szene bleibt)
 scene-reset = Szene zurückgesetzt
 scene-reset-edits = Szene zurückgesetzt, wie sie geöffnet wurde, ohne Ihre Änderungen: { $undo } holt sie zurück
+scene-back-to-setup = Zurück zu Ihrem Aufbau bei t = { $time } s; noch einmal { $reset }: die Szene, wie sie geöffnet wurde
 scene-cannot-reset = Zurücksetzen nicht möglich: { $error }
 scene-cleared = Geleert: auf freier Fläche ziehen, um Scheiben abzuschießen
 scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben

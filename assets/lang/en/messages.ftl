@@ -34,6 +34,7 @@ scene-kept = { $error } (kept the current scene)
 scene-not-found = There is no scene file { $name }, here or in { $folder } (kept the current scene)
 scene-reset = Scene reset
 scene-reset-edits = Scene reset to how it opened, without your edits: { $undo } brings them back
+scene-back-to-setup = Back to your set-up at t = { $time } s; { $reset } again: the scene as it opened
 scene-cannot-reset = Cannot reset: { $error }
 scene-cleared = Cleared: drag on empty space to launch discs
 scene-path-empty = Type the path of a scene file first

@@ -34,6 +34,7 @@ scene-kept = { $error } (se mantiene la escena actual)
 scene-not-found = No hay ningún archivo de escena { $name }, ni aquí ni en { $folder } (se mantiene la escena actual)
 scene-reset = Escena reiniciada
 scene-reset-edits = Escena reiniciada tal como se abrió, sin sus cambios: { $undo } los recupera
+scene-back-to-setup = De vuelta a su montaje en t = { $time } s; { $reset } otra vez: la escena tal como se abrió
 scene-cannot-reset = No se puede reiniciar: { $error }
 scene-cleared = Discos quitados: arrastra sobre un espacio vacío para lanzar discos
 scene-path-empty = Escribe primero la ruta de un archivo de escena

@@ -34,6 +34,7 @@ scene-kept = { $error } (la scène actuelle est conservée)
 scene-not-found = Aucun fichier de scène { $name }, ni ici ni dans { $folder } (la scène actuelle est conservée)
 scene-reset = Scène réinitialisée
 scene-reset-edits = Scène réinitialisée telle qu’elle a été ouverte, sans vos modifications : { $undo } les ramène
+scene-back-to-setup = Retour à votre mise en place à t = { $time } s ; { $reset } à nouveau : la scène telle qu'elle a été ouverte
 scene-cannot-reset = Impossible de réinitialiser : { $error }
 scene-cleared = Disques effacés : glissez dans le vide pour en lancer
 scene-path-empty = Tapez d'abord le chemin d'un fichier de scène

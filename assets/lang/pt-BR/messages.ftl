@@ -34,6 +34,7 @@ scene-kept = { $error } (a cena atual foi mantida)
 scene-not-found = Não há arquivo de cena { $name }, nem aqui nem em { $folder } (a cena atual foi mantida)
 scene-reset = Cena reiniciada
 scene-reset-edits = Cena reiniciada como foi aberta, sem as suas alterações: { $undo } as traz de volta
+scene-back-to-setup = De volta à sua montagem em t = { $time } s; { $reset } de novo: a cena como foi aberta
 scene-cannot-reset = Não foi possível reiniciar: { $error }
 scene-cleared = Cena limpa: arraste num espaço vazio para lançar discos
 scene-path-empty = Digite primeiro o caminho de um arquivo de cena

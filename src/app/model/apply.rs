@@ -108,6 +108,11 @@ impl Sandbox {
         // A scene opened is the person's choice, not work to keep.
         if kind != "edit-open-scene" && kind != "edit-reset" {
             self.open.unsaved = true;
+            // Cleared, the box is no set-up to come back to (R after C
+            // brings back what was cleared).
+            if kind != "edit-clear" {
+                self.open.setup = Some(self.world.clone());
+            }
         }
         if voids_caption {
             self.open.edited = true;
@@ -377,10 +382,24 @@ impl Sandbox {
         }
     }
 
-    /// Resets the scene and says so; where that dropped edits, also which
-    /// key brings them back (a teacher who set 3 kg and pressed R saw the
-    /// collision again at 1 kg, with no word why).
+    /// Resets the scene and says so: first to the person's set-up (the
+    /// discs as their last change left them), then to the scene as it
+    /// opened; where that dropped edits, also which key brings them back
+    /// (a teacher who set 3 kg and pressed R saw the collision again at
+    /// 1 kg, with no word why).
     fn say_reset(&mut self) {
+        let (time, steps) = (self.world.time, self.world.steps);
+        let setup = self.open.setup.as_ref();
+        if let Some(setup) = setup.filter(|w| (w.time, w.steps) != (time, steps)) {
+            self.world = setup.clone();
+            self.back_to_setup();
+            let reset = super::bindings::binding_of(&Command::Reset)
+                .map(|b| b.keys())
+                .unwrap_or_default();
+            let time = crate::app::numbers::plain(self.world.time, 2);
+            self.toast_for(tr!("scene-back-to-setup", time = time, reset = reset), 8.0);
+            return;
+        }
         match self.reset_scene() {
             Some(true) => {
                 let undo = super::bindings::binding_of(&Command::Undo)

@@ -312,6 +312,16 @@ impl Sandbox {
         Ok(edit)
     }
 
+    /// Deletes the selected disc (its button and the Delete key).
+    pub(super) fn delete_selected(&mut self) {
+        if let Some(i) = self.selected.take() {
+            if i < self.world.particles.len() {
+                self.world.particles.remove(i);
+                self.pointer.on_removed(i);
+            }
+        }
+    }
+
     /// With "size follows mass", a new mass brings its radius, refused if
     /// the disc would then overlap another or cross a wall; otherwise the
     /// edit as it is.

@@ -35,6 +35,7 @@ pub mod lesson;
 pub mod mirror;
 pub mod modal;
 pub mod narration;
+pub mod open;
 pub mod overlays;
 pub mod panels;
 pub mod pointer;
@@ -50,6 +51,7 @@ pub mod trails;
 pub mod undo;
 
 pub use command::Command;
+pub use open::OpenScene;
 pub use panels::{next_scale, DockTab, Panels, Theme, UI_SCALE_RANGE};
 
 use crate::app::lang::tr;
@@ -86,27 +88,6 @@ impl Note {
             error: true,
         }
     }
-}
-
-/// The scene that is open: its file (name, caption, the discs as they
-/// opened), where it came from, and whether its discs were edited since.
-#[derive(Clone)]
-pub struct OpenScene {
-    pub scene: Scene,
-    pub origin: String,
-    /// The discs were edited since the scene opened: its caption may no
-    /// longer hold.
-    pub edited: bool,
-    /// Something the person made (a launch, an edit, a law) has not been
-    /// saved since: on the desktop, only then is the sandbox kept for
-    /// recovery, and only then does the next start ask.
-    pub unsaved: bool,
-    /// The file this session last saved the scene as: saved again under
-    /// the same name, the scene goes back into it (not into `-2`, `-3`).
-    pub saved_to: Option<std::path::PathBuf>,
-    /// Scenes opened so far (an undo back to one counts): the ledger's
-    /// scroll starts again when it changes.
-    pub opened: u32,
 }
 
 /// The view of the world: the camera, whether it is fitted to the box, and
@@ -279,6 +260,7 @@ impl Sandbox {
                 origin: start.origin,
                 saved_to: None,
                 opened: 0,
+                setup: None,
             },
             clock,
             view: WorldView {

@@ -108,6 +108,7 @@ impl Sandbox {
             self.undo.remember(|| before, what, self.session.now);
             self.open.edited = true;
             self.open.unsaved = true;
+            self.open.setup = Some(self.world.clone());
             // The totals the person changed: the Totals tab starts afresh
             // (as for the edits of `apply`).
             self.record.totals.restart(&self.world);

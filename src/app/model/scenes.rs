@@ -183,6 +183,7 @@ impl Sandbox {
                 self.open.origin = origin;
                 self.open.saved_to = None;
                 self.open.opened = self.open.opened.wrapping_add(1);
+                self.open.setup = None;
                 // A note on the scene before ("Saved … in …") is not about
                 // this one.
                 self.messages.scene = None;
@@ -206,6 +207,7 @@ impl Sandbox {
             Ok(world) => {
                 let edits_dropped = self.open.edited && !self.open.scene.edited;
                 self.open.edited = self.open.scene.edited;
+                self.open.setup = None;
                 self.world = world;
                 self.forget_past();
                 self.selected = None;
@@ -456,6 +458,8 @@ impl Sandbox {
                 "edit-open-scene" => self.open.opened.wrapping_add(1),
                 _ => self.open.opened,
             },
+            // Which set-up a reset would bring back is no longer known.
+            setup: None,
         };
         // What came after the moment belongs to the undone timeline; the
         // ledger came back with the world.
@@ -478,16 +482,6 @@ impl Sandbox {
         }
         if resized && self.view.fitted {
             self.fit_camera();
-        }
-    }
-
-    /// Deletes the selected disc (its button and the Delete key).
-    pub(super) fn delete_selected(&mut self) {
-        if let Some(i) = self.selected.take() {
-            if i < self.world.particles.len() {
-                self.world.particles.remove(i);
-                self.pointer.on_removed(i);
-            }
         }
     }
 }

@@ -39,6 +39,50 @@ fn a_reset_that_drops_edits_says_so_and_undo_brings_them_back() {
     assert_eq!(s.world.particles[0].mass, 3.0, "undo brings the edit back");
 }
 
+/// A teacher sets 3 kg, runs the collision and presses R to show it
+/// again: the discs come back as the teacher set them up, not as the
+/// lesson opened (the 3 kg was lost); R again gives the lesson as it
+/// opened, and says so.
+#[test]
+fn a_reset_brings_back_the_set_up_first_and_then_the_scene_as_it_opened() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-1-head-on.toml");
+    later(&mut s, 1.0);
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [Some("3".into()), None, None, None, None, None],
+        from: EditPlace::Table,
+    });
+    let (set_up, at) = (s.world.particles.clone(), s.world.time);
+    s.apply(Command::NextCollision);
+    assert!(s.world.time > at && s.world.total_pair_collisions == 1);
+    later(&mut s, 1.0);
+    s.apply(Command::Reset);
+    assert_eq!(
+        (&s.world.particles, s.world.time),
+        (&set_up, at),
+        "the set-up"
+    );
+    assert_eq!(s.world.total_pair_collisions, 0);
+    let said = s.message().unwrap_or_default().to_string();
+    assert!(said.starts_with("Back to your set-up at t = "), "{said}");
+    assert!(said.ends_with("R again: the scene as it opened"), "{said}");
+    assert!(s.open.edited, "the edits are kept");
+    later(&mut s, 1.0);
+    s.apply(Command::Reset);
+    assert_eq!(s.world.particles[0].mass, 1.0, "the lesson as it opened");
+    assert!(s
+        .message()
+        .unwrap_or_default()
+        .contains("without your edits"));
+    later(&mut s, 1.0);
+    s.apply(Command::Undo);
+    assert_eq!(
+        s.world.particles[0].mass, 3.0,
+        "undo brings the set-up back"
+    );
+}
+
 #[test]
 fn a_named_scene_edited_says_so_in_its_title_and_undo_takes_the_mark_away() {
     use crate::app::model::command::Law;
