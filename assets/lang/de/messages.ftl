@@ -29,12 +29,12 @@ file-cannot-create = { $folder } kann nicht angelegt werden: { $error }
 file-cannot-write = { $file } kann nicht geschrieben werden: { $error }
 scene-cannot-open = { $file } kann nicht geöffnet werden: { $error }
 scene-opened = Geöffnet: { $name }
-scene-opened-undo = Geöffnet: { $name }. { $undo } holt { $previous } zurück, so wie Sie es verlassen haben
+scene-opened-undo = Geöffnet: { $name }. { $undo } holt { $previous } zurück, so wie du es verlassen hast
 scene-kept = { $error } (die aktuelle Szene bleibt)
 scene-not-found = Keine Szenendatei { $name }, weder hier noch in { $folder } (die aktuelle Szene bleibt)
 scene-reset = Szene zurückgesetzt
-scene-reset-edits = Szene zurückgesetzt, wie sie geöffnet wurde, ohne Ihre Änderungen: { $undo } holt sie zurück
-scene-back-to-setup = Zurück zu Ihrem Aufbau bei t = { $time } s; noch einmal { $reset }: die Szene, wie sie geöffnet wurde
+scene-reset-edits = Szene zurückgesetzt, wie sie geöffnet wurde, ohne deine Änderungen: { $undo } holt sie zurück
+scene-back-to-setup = Zurück zu deinem Aufbau bei t = { $time } s; noch einmal { $reset }: die Szene, wie sie geöffnet wurde
 scene-cannot-reset = Zurücksetzen nicht möglich: { $error }
 scene-cleared = Geleert: auf freier Fläche ziehen, um Scheiben abzuschießen
 scene-path-empty = Zuerst den Pfad einer Szenendatei eingeben
@@ -169,9 +169,9 @@ edit-mass-overlaps = bei { $mass } kg hätte die Scheibe { $size } m Radius (Gr�
 edit-mass-crosses-wall = bei { $mass } kg hätte die Scheibe { $size } m Radius (Größe folgt der Masse) und würde über eine Wand hinausragen
 edit-position-off-the-line = Hier bewegen sich die Scheiben auf einer Geraden: { $name } bleibt { $value } m
 edit-position-crosses-wall = bei { $at } würde die Scheibe über eine Wand hinausragen
-edit-position-overlaps = bei { $at } würde die Scheibe Scheibe { $disc } überlappen
+edit-position-overlaps = bei { $at } würde die Scheibe mit Scheibe { $disc } überlappen
 edit-radius-crosses-wall = mit { $radius } m Radius würde die Scheibe über eine Wand hinausragen
-edit-radius-overlaps = mit { $radius } m Radius würde die Scheibe Scheibe { $disc } überlappen
+edit-radius-overlaps = mit { $radius } m Radius würde die Scheibe mit Scheibe { $disc } überlappen
 
 ## Wiederherstellung
 recovery-unreadable-moved = Eine unlesbare Wiederherstellungsdatei wurde nach { $file } verschoben: { $error }
@@ -188,7 +188,7 @@ recovery-question-browser = Dieser Browser hat deinen letzten Sandkasten aufbewa
     [one] 1 Scheibe
    *[other] { $discs } Scheiben
 }). Wiederherstellen oder beiseitelegen?
-recovery-question = Die letzte Sitzung endete mit ungespeicherten Änderungen. Ihre Szene { $name } ({ $discs ->
+recovery-question = Die letzte Sitzung endete mit ungespeicherten Änderungen. Deine Szene { $name } ({ $discs ->
     [one] 1 Scheibe
    *[other] { $discs } Scheiben
 }) wiederherstellen oder beiseitelegen?

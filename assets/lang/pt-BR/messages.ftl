@@ -41,7 +41,7 @@ scene-path-empty = Digite primeiro o caminho de um arquivo de cena
 scene-downloaded = Baixado: { $file }
 scene-saved = Cena salva: { $file } em { $folder }
 scene-saved-short = Cena salva: { $file }
-scene-saved-at = { $saved }, com os discos como estão em t = { $time } s
+scene-saved-at = { $saved }, com os discos como estavam em t = { $time } s
 scene-renamed = A cena agora se chama { $name }
 scene-name-empty = Um nome precisa de uma letra ou um dígito
 scene-not-saved = Não foi salvo: { $error }

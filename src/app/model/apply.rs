@@ -393,6 +393,9 @@ impl Sandbox {
         if let Some(setup) = setup.filter(|w| (w.time, w.steps) != (time, steps)) {
             self.world = setup.clone();
             self.back_to_setup();
+            // Paused there, so that R again reaches the scene as it opened
+            // (running, it left the set-up at once and R came back to it).
+            self.clock.paused = true;
             let reset = super::bindings::binding_of(&Command::Reset)
                 .map(|b| b.keys())
                 .unwrap_or_default();

@@ -56,6 +56,8 @@ fn a_reset_brings_back_the_set_up_first_and_then_the_scene_as_it_opened() {
     let (set_up, at) = (s.world.particles.clone(), s.world.time);
     s.apply(Command::NextCollision);
     assert!(s.world.time > at && s.world.total_pair_collisions == 1);
+    s.apply(Command::TogglePause);
+    assert!(!s.clock.paused, "running when R is pressed");
     later(&mut s, 1.0);
     s.apply(Command::Reset);
     assert_eq!(
@@ -68,6 +70,10 @@ fn a_reset_brings_back_the_set_up_first_and_then_the_scene_as_it_opened() {
     assert!(said.starts_with("Back to your set-up at t = "), "{said}");
     assert!(said.ends_with("R again: the scene as it opened"), "{said}");
     assert!(s.open.edited, "the edits are kept");
+    assert!(
+        s.clock.paused,
+        "paused at the set-up: R again is the scene as it opened"
+    );
     later(&mut s, 1.0);
     s.apply(Command::Reset);
     assert_eq!(s.world.particles[0].mass, 1.0, "the lesson as it opened");
