@@ -396,18 +396,14 @@ impl Sandbox {
             // Paused there, so that R again reaches the scene as it opened
             // (running, it left the set-up at once and R came back to it).
             self.clock.paused = true;
-            let reset = super::bindings::binding_of(&Command::Reset)
-                .map(|b| b.keys())
-                .unwrap_or_default();
+            let reset = super::bindings::keys_of(&Command::Reset);
             let time = crate::app::numbers::plain(self.world.time, 2);
             self.toast_for(tr!("scene-back-to-setup", time = time, reset = reset), 8.0);
             return;
         }
         match self.reset_scene() {
             Some(true) => {
-                let undo = super::bindings::binding_of(&Command::Undo)
-                    .map(|b| b.keys())
-                    .unwrap_or_default();
+                let undo = super::bindings::keys_of(&Command::Undo);
                 self.toast_for(tr!("scene-reset-edits", undo = undo), 8.0);
             }
             Some(false) => self.toast(tr!("scene-reset")),
@@ -425,9 +421,7 @@ impl Sandbox {
     pub(super) fn say_opened(&mut self, name: String, left: Option<String>) {
         match left {
             Some(previous) => {
-                let undo = super::bindings::binding_of(&Command::Undo)
-                    .map(|b| b.keys())
-                    .unwrap_or_default();
+                let undo = super::bindings::keys_of(&Command::Undo);
                 let said = tr!(
                     "scene-opened-undo",
                     name = name,

@@ -130,6 +130,12 @@ pub fn binding_of(command: &Command) -> Option<&'static Binding> {
         .find(|b| b.acts.iter().any(|(_, c)| c == command))
 }
 
+/// The keys that give `command`, as the help writes them ("Ctrl+Z"), for
+/// a message that names them; empty for a command without keys.
+pub fn keys_of(command: &Command) -> String {
+    binding_of(command).map(|b| b.keys()).unwrap_or_default()
+}
+
 /// The tooltip of a control that gives `command`: its keys and what they do
 /// ("Space: pause / resume"); empty when no key gives it.
 pub fn tooltip(command: &Command) -> String {
