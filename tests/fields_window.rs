@@ -255,7 +255,9 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
 /// A student types a mass out of range and Enter: the mass is marked as
 /// refused, not as waiting for Enter. A speed typed next is refused for
 /// the mass, which stays marked (the speed does not); the mass typed
-/// again, both apply.
+/// again, both apply. After each refusal the mass keeps the keyboard with
+/// its text selected, so the number typed next replaces it (egui's field
+/// let go of the keys on Enter, and the student had to Tab back).
 fn a_refused_field_is_marked_until_typed_again() {
     let x = Xvfb::start("refused field");
     let app = glancing_disc_selected(&x, "1280x800", "1.5");
@@ -273,6 +275,7 @@ fn a_refused_field_is_marked_until_typed_again() {
     app.xdo(&["key", "Return"]);
     let s = app.wait_frames(5);
     assert_eq!(marks(&s), (true, false, false), "the mass refused");
+    assert_eq!(focus(&s).as_deref(), Some("disc_mass"), "kept the keys");
     tab_to(&app, "disc_vx", 80);
     app.xdo(&["type", "3"]);
     app.xdo(&["key", "Return"]);
@@ -280,7 +283,11 @@ fn a_refused_field_is_marked_until_typed_again() {
     assert_eq!(marks(&s), (true, false, true), "refused for the mass");
     assert_eq!(s["particles"][0]["vel"][0], 2.5, "nothing applied");
     assert_eq!(s["particles"][0]["mass"], 1.0);
-    tab_to(&app, "disc_mass", 80);
+    assert_eq!(
+        focus(&s).as_deref(),
+        Some("disc_mass"),
+        "the keys went to the field to mend"
+    );
     app.xdo(&["type", "2"]);
     app.xdo(&["key", "Return"]);
     let s = app.wait_for("the edit", 60, |s| s["particles"][0]["mass"] == 2.0);

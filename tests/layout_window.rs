@@ -222,6 +222,14 @@ fn a_mass_is_edited_in_the_discs_table_and_a_bad_number_is_refused_in_view() {
         "{shown:?} in {dock:?}"
     );
     assert!(shown[2] > 50.0, "{shown:?}");
+    // The refused cell kept the keyboard, its text selected: the number
+    // typed next replaces it (the cell had let go of the keys on Enter).
+    assert_eq!(focus(&s).as_deref(), Some("discs_vx_1"));
+    app.xdo(&["type", "--delay", "40", "--", "-1"]);
+    app.xdo(&["key", "Return"]);
+    app.wait_for("the mended velocity", 60, |s| {
+        s["particles"][1]["vel"][0].as_f64() == Some(-1.0)
+    });
     app.quit();
 }
 

@@ -5,7 +5,7 @@
 //! checks it before it touches the disc; a bad one keeps the disc as it was.
 //! The answer shows in the strip above the dock and, where the tab has room
 //! for it, on a line above the table; a refused cell stays open in red with
-//! the answer as its tooltip.
+//! the answer as its tooltip (left with Enter, it keeps the keyboard).
 
 use super::super::dialog::{into_sight, just_focused};
 use super::super::widgets::{select_all_on_focus, show_note};
@@ -42,6 +42,11 @@ pub struct DiscsTable {
     /// goes (a reset, another scene, an undo), not to show a red value
     /// the disc never had.
     refused: bool,
+    /// The edit sent was left with Enter: refused, its cell takes the
+    /// keyboard back, with its text selected to be typed over.
+    sent_with_enter: bool,
+    /// The refused cell is to take the keyboard back this frame.
+    refocus: bool,
 }
 
 /// The spin columns' headings, with units on a second line, and what they
@@ -94,6 +99,7 @@ impl View for DiscsTable {
             let disc = sent.disc;
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
             self.refused = self.editing.is_some();
+            self.refocus = self.refused && std::mem::take(&mut self.sent_with_enter);
             disc
         });
         if self.refused && !note.as_ref().is_some_and(|n| n.error) {
@@ -130,6 +136,8 @@ impl View for DiscsTable {
         let mut commit: Option<CellEdit> = None;
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
+        let mut with_enter = false;
+        let refocus = std::mem::take(&mut self.refocus);
         let mut cells = Vec::new();
         // Where each disc's number is in the table, and whether it has the
         // keyboard.
@@ -326,6 +334,9 @@ impl View for DiscsTable {
                                             edit = edit.text_color(Color32::from_rgb(220, 40, 30));
                                         }
                                         let mut r = ui.add(edit);
+                                        if mine && refocus {
+                                            r.request_focus();
+                                        }
                                         if let Some(note) = note.as_ref().filter(|_| bad) {
                                             r = r.tip(note.text.as_str());
                                         }
@@ -350,6 +361,8 @@ impl View for DiscsTable {
                                             if ui.input(|inp| inp.key_pressed(egui::Key::Escape)) {
                                                 cancel = true;
                                             } else if mine || r.changed() {
+                                                with_enter = ui
+                                                    .input(|inp| inp.key_pressed(egui::Key::Enter));
                                                 commit = Some(CellEdit {
                                                     disc: i,
                                                     field: f,
@@ -443,6 +456,7 @@ impl View for DiscsTable {
             });
             self.editing = None;
             self.sent = Some(cell);
+            self.sent_with_enter = with_enter;
         }
     }
 }

@@ -36,6 +36,12 @@ pub struct DiscFields {
     /// and a later edit of another field was refused for it without a
     /// sign why).
     refused: Option<([String; 8], [bool; 8])>,
+    /// The field Enter was pressed in, while its edit is answered.
+    entered_in: Option<usize>,
+    /// The field to give the keyboard back to: after Enter, a refused
+    /// field kept it (egui's field let it go, and a keyboard user had to
+    /// Tab back to mend the number).
+    refocus: Option<usize>,
 }
 
 /// Each field's name (a message of `window.ftl`): the model's six (mass,
@@ -139,6 +145,7 @@ impl DiscFields {
         }
         // The model took the last edit: every field follows the disc again.
         if std::mem::take(&mut self.sent) {
+            let entered = self.entered_in.take();
             match cx.model.messages.fields.as_ref().map(|n| n.error) {
                 Some(false) => {
                     self.shown = self.text.clone();
@@ -147,6 +154,8 @@ impl DiscFields {
                 Some(true) => {
                     let culprits = self.culprits(cx);
                     self.refused = Some((self.text.clone(), culprits));
+                    self.refocus =
+                        entered.and_then(|_| SHOWN_IN_ORDER.into_iter().find(|&k| culprits[k]));
                 }
                 None => {}
             }
@@ -183,11 +192,16 @@ impl DiscFields {
                         .desired_width(FIELD_WIDTH)
                         .min_size(egui::vec2(FIELD_WIDTH, 0.0));
                     let r = ui.add(field);
+                    if self.refocus == Some(k) {
+                        self.refocus = None;
+                        r.request_focus();
+                    }
                     select_all_on_focus(ui, &r, &self.text[k]);
                     cx.marks.text_field(&r);
                     cx.note(FIELD_KEYS[k], &r);
                     if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                         enter = true;
+                        self.entered_in = Some(k);
                     }
                     let name = crate::app::lang::text(FIELD_NAMES[k], &[]);
                     let mut label = egui::RichText::new(format!("{name} ({})", FIELD_UNITS[k]));
@@ -224,6 +238,9 @@ impl DiscFields {
         ui.horizontal(|ui| {
             let r = ui.button(tr!("apply")).tip(tr!("apply-hover"));
             cx.note("apply", &r);
+            if r.clicked() {
+                self.entered_in = None;
+            }
             if r.clicked() || enter {
                 self.apply(cx, i);
             }
@@ -284,6 +301,9 @@ impl DiscFields {
             Ok(None) => {}
             Err(error) => {
                 self.polar_error = Some(error);
+                // The one typed in of the two (the speed if both were).
+                let typed = if speed.is_some() { 6 } else { DIRECTION };
+                self.refocus = self.entered_in.take().map(|_| typed);
                 return;
             }
         }
