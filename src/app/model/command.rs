@@ -18,6 +18,9 @@ pub use impulse::laws::Law;
 pub enum EditPlace {
     /// The side dock's fields for the selected disc.
     Fields,
+    /// The same fields with the velocity typed as a speed and a direction
+    /// (sent as v_x and v_y): the answer says the speed and the direction.
+    Polar,
     /// A cell of the Discs table.
     Table,
 }

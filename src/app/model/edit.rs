@@ -175,7 +175,7 @@ impl Sandbox {
         }
         let changed: [Option<&str>; 6] = std::array::from_fn(|k| text[k].as_deref());
         let max_radius = match from {
-            EditPlace::Fields => self.biggest_radius(),
+            EditPlace::Fields | EditPlace::Polar => self.biggest_radius(),
             EditPlace::Table => f64::INFINITY,
         };
         // What a scene file asks of the velocity as a whole.
@@ -206,18 +206,30 @@ impl Sandbox {
                 if *p != before {
                     self.record.totals.restart(&self.world);
                 }
-                let what = [
-                    (edit.mass, FIELDS[0], "kg"),
-                    (edit.radius, FIELDS[1], "m"),
-                    (edit.vx, FIELDS[2], "m/s"),
-                    (edit.vy, FIELDS[3], "m/s"),
-                    (edit.x, FIELDS[4], "m"),
-                    (edit.y, FIELDS[5], "m"),
+                let mut what = vec![
+                    (edit.mass, FIELDS[0], " kg"),
+                    (edit.radius, FIELDS[1], " m"),
+                    (edit.vx, FIELDS[2], " m/s"),
+                    (edit.vy, FIELDS[3], " m/s"),
+                    (edit.x, FIELDS[4], " m"),
+                    (edit.y, FIELDS[5], " m"),
                 ];
+                // As typed: "speed = 2.5 m/s; direction = 30°", not the
+                // components it was sent as (v_x = 2.165064 m/s).
+                if from == EditPlace::Polar {
+                    let v = self.world.particles[disc].vel;
+                    what.splice(
+                        2..4,
+                        [
+                            (Some(v.length()), "quantity-speed", " m/s"),
+                            (Some(v.y.atan2(v.x).to_degrees()), "quantity-direction", "°"),
+                        ],
+                    );
+                }
                 let said: Vec<String> = what
                     .iter()
                     .filter_map(|(v, name, unit)| {
-                        v.map(|v| format!("{} = {} {unit}", words(name, &[]), field(v)))
+                        v.map(|v| format!("{} = {}{unit}", words(name, &[]), field(v)))
                     })
                     .collect();
                 let values = tr!(
@@ -229,12 +241,14 @@ impl Sandbox {
                 // ("Disc 1 of 2 selected: 1.000 kg" beside a mass of 2).
                 self.toast(values.clone());
                 Note::ok(match from {
-                    EditPlace::Fields => tr!("edit-applied", disc = disc_number(disc)),
+                    EditPlace::Fields | EditPlace::Polar => {
+                        tr!("edit-applied", disc = disc_number(disc))
+                    }
                     EditPlace::Table => values,
                 })
             }
             Err(e) => Note::error(match from {
-                EditPlace::Fields => e,
+                EditPlace::Fields | EditPlace::Polar => e,
                 EditPlace::Table => tr!("edit-refused-table", disc = disc_number(disc), error = e),
             }),
         };
@@ -242,11 +256,11 @@ impl Sandbox {
             // A refusal in the strip too: under the fields it was out of
             // sight in a projector's drawer, where the strip only said how
             // to give the keys back.
-            EditPlace::Fields if note.error => {
+            EditPlace::Fields | EditPlace::Polar if note.error => {
                 self.toast(note.text.clone());
                 self.messages.fields = Some(note);
             }
-            EditPlace::Fields => self.messages.fields = Some(note),
+            EditPlace::Fields | EditPlace::Polar => self.messages.fields = Some(note),
             // Also in the strip, and said: in a projector's short tab the
             // line above the table would take the row edited out of sight.
             EditPlace::Table => {

@@ -350,4 +350,36 @@ fn a_speed_and_a_direction_typed_give_their_velocity() {
     );
 }
 
+/// A speed and a direction typed are said back as typed ("speed = 2.5
+/// m/s; direction = 30°"), not as the components they were sent as (v_x =
+/// 2.165064 m/s, six decimals the student never typed).
+#[test]
+fn a_polar_edit_is_said_as_a_speed_and_a_direction() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = sandbox_in(dir.path(), "preset-4-glancing.toml");
+    let v = polar_velocity(Some("2.5"), Some("30"), DVec2::X)
+        .unwrap()
+        .unwrap();
+    let v = (v * 1e12).round() / 1e12; // as the fields send it
+    s.apply(Command::EditDisc {
+        disc: 0,
+        text: [
+            None,
+            None,
+            Some(v.x.to_string()),
+            Some(v.y.to_string()),
+            None,
+            None,
+        ],
+        from: EditPlace::Polar,
+    });
+    assert_eq!(s.world.particles[0].vel, v);
+    let said = s.message().unwrap_or_default().to_string();
+    assert!(
+        said.contains("speed |v| = 2.5 m/s") && said.contains("direction = 30°"),
+        "{said}"
+    );
+    assert!(!said.contains("v_x"), "{said}");
+}
+
 mod placed;

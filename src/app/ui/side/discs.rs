@@ -291,8 +291,10 @@ impl DiscFields {
         let mut text: [Option<String>; 6] = std::array::from_fn(edited);
         let (speed, direction) = (edited(6), edited(DIRECTION));
         let current = cx.model.world.particles[i].vel;
+        let mut from = EditPlace::Fields;
         match polar_velocity(speed.as_deref(), direction.as_deref(), current) {
             Ok(Some(v)) => {
+                from = EditPlace::Polar;
                 // (+ 0.0 writes −0, a rounded −6·10⁻¹⁷, as 0.)
                 let v = (v * 1e12).round() / 1e12;
                 text[2] = Some(format!("{}", v.x + 0.0));
@@ -312,7 +314,7 @@ impl DiscFields {
         cx.send(Command::EditDisc {
             disc: i,
             text,
-            from: EditPlace::Fields,
+            from,
         });
     }
 }

@@ -75,7 +75,7 @@ fn a_larger_radius_into_a_neighbour_or_a_wall_is_refused() {
             from,
         });
         match from {
-            EditPlace::Fields => s.messages.fields.clone().unwrap(),
+            EditPlace::Fields | EditPlace::Polar => s.messages.fields.clone().unwrap(),
             EditPlace::Table => s.messages.table.clone().unwrap(),
         }
     };
