@@ -114,8 +114,9 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
 /// opens the drawer on the mass field (about thirty Tabs from the top bar
 /// before), the number typed replaces the one there and is applied with
 /// Enter, Tab goes on to the next field, and F6 goes on to the
-/// tabs, the top bar and back to the world, whose keys work again;
-/// Shift+F6 goes the other way.
+/// tabs (closing the drawer it opened, which stayed over the world), the
+/// top bar and back to the world, whose keys work again; Shift+F6 goes the
+/// other way, and into the controls opens the drawer again.
 fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world() {
     let x = Xvfb::start("F6");
     let app = glancing_disc_selected(&x, "1024x768", "2");
@@ -141,6 +142,9 @@ fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world()
         s["ui"]["focus"] == "tab_totals"
     });
     assert_eq!(s["ui"]["tab"], "Totals");
+    app.wait_for("the drawer F6 opened closed", 60, |s| {
+        s["ui"]["drawer_open"] == false
+    });
     app.xdo(&["key", "F6"]);
     let s = app.wait_for("the top bar has the keys", 60, |s| {
         s["ui"]["focus"].as_str().is_some_and(|f| {
@@ -157,5 +161,10 @@ fn f6_jumps_to_the_selected_discs_mass_then_the_tabs_the_top_bar_and_the_world()
     app.wait_for("Space runs the clock", 60, |s| s["paused"] == false);
     app.xdo(&["key", "shift+F6"]);
     app.wait_for("back to the top bar", 60, |s| s["ui"]["focus"] == top);
+    app.xdo(&["key", "shift+F6"]);
+    app.wait_for("back to the tabs", 60, |s| s["ui"]["focus"] == "tab_totals");
+    app.xdo(&["key", "shift+F6"]);
+    let s = app.wait_for("back to the mass", 60, |s| s["ui"]["focus"] == "disc_mass");
+    assert_eq!(s["ui"]["drawer_open"], true, "opened again");
     app.quit();
 }

@@ -174,6 +174,9 @@ struct FocusTrail {
     parts: Option<regions::Parts>,
     /// The text field last left with Enter: Tab goes on from it.
     left_field: Option<egui::Id>,
+    /// F6 opened the drawer: F6 out of the controls closes it again (it
+    /// stayed over the world the person went back to).
+    drawer_by_jump: bool,
 }
 
 impl Panels {
@@ -218,10 +221,23 @@ impl Panels {
         };
         let tab = format!("tab_{}", model.panels.tab.key().to_lowercase());
         let from = (jump, self.trail.part);
+        let drawer_open = matches!(rects.side_dock, SideDock::Drawer { open: true });
+        self.trail.drawer_by_jump &= drawer_open;
         match parts.carry_out(ctx, from, &self.marks, rects, &tab, out) {
-            regions::Jumped::Waiting(jump) => self.trail.jump = Some(jump),
-            regions::Jumped::Done(regions::Part::World) => self.panel_keyboard = false,
-            regions::Jumped::Done(_) | regions::Jumped::Nothing => {}
+            regions::Jumped::Waiting(jump) => {
+                self.trail.jump = Some(jump);
+                self.trail.drawer_by_jump = true;
+            }
+            regions::Jumped::Done(to) => {
+                let left = from.1 == regions::Part::Controls && to != regions::Part::Controls;
+                if left && std::mem::take(&mut self.trail.drawer_by_jump) {
+                    out.push(Command::ToggleDrawer);
+                }
+                if to == regions::Part::World {
+                    self.panel_keyboard = false;
+                }
+            }
+            regions::Jumped::Nothing => {}
         }
     }
 

@@ -3,7 +3,7 @@
 //! desktop programs; Tab then walks the part it landed in. Into the
 //! controls it lands on the selected disc's mass where that shows (some
 //! thirty Tabs from the top bar at a projector's size), and opens a closed
-//! drawer first.
+//! drawer first (which F6 out of the controls closes again).
 //!
 //! A part is known by its Tab stops, not by where its controls are drawn:
 //! a field being scrolled into the drawer's sight is in the drawer before
