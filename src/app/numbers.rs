@@ -135,6 +135,24 @@ pub fn field(v: f64) -> String {
     }
 }
 
+/// A number as a field that follows a moving disc shows it: three
+/// decimals (three significant digits of a small one, up to six), no
+/// trailing zeros. A velocity after a collision is "−22.188", not
+/// "−22.187812" cut at the field's edge; the disc keeps every digit,
+/// and a field left as it is sends nothing.
+pub fn field_reading(v: f64) -> String {
+    if !v.is_finite() || v.abs() >= POWER_FROM {
+        return field(v);
+    }
+    let text = adaptive(v, 3);
+    let trimmed = trimmed(&text);
+    if trimmed == "−0" || trimmed.is_empty() {
+        "0".into()
+    } else {
+        trimmed.to_string()
+    }
+}
+
 /// Whether `v` reads as zero with `decimals` decimals ("0.000"): a
 /// change that small is said as none.
 pub fn reads_as_zero(v: f64, decimals: usize) -> bool {
@@ -200,6 +218,20 @@ mod tests {
             vector(DVec2::new(2.0, -1e-17), 3, "kg·m/s"),
             "(2.000, 0.000) kg·m/s"
         );
+    }
+
+    #[test]
+    fn a_moving_discs_field_shows_three_decimals_or_three_digits() {
+        assert_eq!(field_reading(-22.187812), "−22.188");
+        assert_eq!(field_reading(3f64.sqrt()), "1.732");
+        assert_eq!(field_reading(2.5), "2.5");
+        assert_eq!(field_reading(0.000123456), "0.000123");
+        assert_eq!(field_reading(-1e-9), "0");
+        assert_eq!(field_reading(2.5e9), field(2.5e9));
+        for v in [-22.187812, 0.000123456, 1234.5678] {
+            let read = parse(&field_reading(v)).unwrap();
+            assert!((read - v).abs() <= 5e-4 * v.abs().max(1e-3), "{v}: {read}");
+        }
     }
 
     #[test]

@@ -11,7 +11,7 @@ use crate::app::model::command::{Dir, EditPlace};
 use crate::app::model::edit::{polar_velocity, FIELDS};
 use crate::app::model::gesture::radius_for_mass;
 use crate::app::model::Command;
-use crate::app::numbers::{field, with_unit};
+use crate::app::numbers::{field, field_reading, with_unit};
 use crate::app::ui::tip::Tip;
 use egui::Ui;
 
@@ -163,17 +163,18 @@ impl DiscFields {
         let refused = self.refused_fields();
         // Untouched fields follow the disc as it moves.
         let direction = p.vel.y.atan2(p.vel.x).to_degrees();
+        // The mass and the radius as typed, every digit (a mass of
+        // 0.0125 kg); what moves to three decimals, whole in the field.
         let live = [
-            p.mass,
-            p.radius,
-            p.vel.x,
-            p.vel.y,
-            p.pos.x,
-            p.pos.y,
-            p.vel.length(),
-            direction,
-        ]
-        .map(field);
+            field(p.mass),
+            field(p.radius),
+            field_reading(p.vel.x),
+            field_reading(p.vel.y),
+            field_reading(p.pos.x),
+            field_reading(p.pos.y),
+            field_reading(p.vel.length()),
+            field_reading(direction),
+        ];
         for (k, value) in live.into_iter().enumerate() {
             if self.text[k] == self.shown[k] {
                 self.text[k] = value.clone();
