@@ -397,6 +397,7 @@ fn with_the_drawer_open_tab_goes_from_its_button_into_it() {
 /// disc's values, to the right of it where they went first, ran under the
 /// drawer; they stay in the world's part in sight. The ledger is laid out
 /// beside the drawer (its "after" column was under it) where it has room.
+/// At 1024×768 the values take a slightly smaller text to fit.
 fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
     let x = Xvfb::start("readout beside the drawer");
     let app = glancing_disc_selected(&x, "1280x800", "2");
@@ -440,5 +441,20 @@ fn with_the_drawer_open_the_values_and_the_ledger_stay_in_sight() {
     let s = app.wait_frames(3);
     let page = &s["panel_widgets"]["scroll_ledger_stacked"];
     assert!(num(page, 2) > 900.0, "the ledger {page} was squeezed");
+    app.quit();
+    // At 1024×768 the values were 614 px wide beside a world of 604: a
+    // little smaller, they fit, not cut by the drawer's edge.
+    let app = glancing_disc_selected(&x, "1024x768", "2");
+    app.wait_frames(3);
+    app.xdo(&["key", "l"]);
+    app.wait_for("the drawer", 60, |s| s["ui"]["drawer_open"] == true);
+    let s = app.wait_frames(3);
+    let (label, drawer) = (&s["selected_readout"], &s["layout"]["drawer"]);
+    let right = num(label, 0) + num(label, 2);
+    assert!(
+        right <= num(drawer, 0),
+        "at 1024×768 the values end at x {right}, under the drawer from x {}",
+        num(drawer, 0)
+    );
     app.quit();
 }

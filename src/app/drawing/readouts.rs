@@ -139,9 +139,18 @@ struct Label {
     rect: [f64; 4],
     leader: Option<(DVec2, DVec2)>,
     lines: Vec<String>,
+    /// Its text's size (points): smaller than the others' where the
+    /// selected disc's values fit beside the open drawer only so.
+    size: f32,
     /// The disc's colour, down the label's left edge.
     color: Color,
 }
+
+/// How far the selected disc's values may shrink to stay clear of the open
+/// drawer, never below the text size 1's: at a projector's text size 2 at
+/// 1024×768 they were 614 px wide in a world of 604 beside the drawer, and
+/// went under its edge.
+const SHRINK_TO_FIT: f32 = 0.8;
 
 /// What labels must keep clear of: every disc on screen and every arrow drawn.
 fn obstacles(world: &World, camera: &Camera, overlays: &Overlays, cell: f64) -> Option<Obstacles> {
@@ -217,7 +226,8 @@ pub fn draw_readouts(
     if world.particles.is_empty() {
         return Shown::default();
     }
-    let size = MIN_TEXT_POINTS * look.text_scale;
+    let full_size = MIN_TEXT_POINTS * look.text_scale;
+    let size = full_size;
     let pad = 0.35 * size;
     let line_height = 1.25 * size;
     let spin = spin_shown(world);
@@ -254,11 +264,22 @@ pub fn draw_readouts(
             continue;
         }
         let lines = readout_lines(p, i, spin);
-        let width = lines
-            .iter()
-            .map(|l| text.measure(l, size).x)
-            .fold(0.0, f32::max);
-        let label_size = DVec2::new(f64::from(stripe + width + 2.0 * pad), height);
+        let width_at = |size: f32| {
+            let text_width = lines
+                .iter()
+                .map(|l| text.measure(l, size).x)
+                .fold(0.0, f32::max);
+            // The stripe and the padding grow with the text.
+            text_width + (stripe + 2.0 * pad) * size / full_size
+        };
+        let room = (visible.1.x - visible.0.x) as f32 - 2.0 * gaps[0] as f32;
+        let mut size = full_size;
+        if chosen && width_at(size) > room {
+            let least = (full_size * SHRINK_TO_FIT).max(MIN_TEXT_POINTS);
+            size = (full_size * room / width_at(full_size)).clamp(least.min(full_size), full_size);
+        }
+        let scale = size / full_size;
+        let label_size = DVec2::new(f64::from(width_at(size)), height * f64::from(scale));
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
         let place_in = |room: ScreenRect| {
             place_label(c, r, label_size, gaps, room, &obstacles, &placer).or_else(|| {
@@ -293,6 +314,7 @@ pub fn draw_readouts(
                 rect: at.rect,
                 leader: at.leader,
                 lines,
+                size,
                 color: Color::from_rgba(c.r, c.g, c.b, 255),
             });
         }
@@ -305,16 +327,17 @@ pub fn draw_readouts(
         }
         let r = l.rect.map(|v| v as f32);
         draw_rectangle(r[0], r[1], r[2], r[3], background);
-        draw_rectangle(r[0], r[1], stripe, r[3], l.color);
+        draw_rectangle(r[0], r[1], stripe * l.size / size, r[3], l.color);
     }
     let ink = color(look.colors.text);
     for l in &labels {
+        let scale = l.size / size;
         for (k, line) in l.lines.iter().enumerate() {
             let at = vec2(
-                l.rect[0] as f32 + stripe + pad,
-                l.rect[1] as f32 + pad + line_height * k as f32,
+                l.rect[0] as f32 + (stripe + pad) * scale,
+                l.rect[1] as f32 + (pad + line_height * k as f32) * scale,
             );
-            text.draw(line, at, size, ink);
+            text.draw(line, at, l.size, ink);
         }
     }
     if labels.len() < wanted {
