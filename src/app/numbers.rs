@@ -126,13 +126,7 @@ pub fn field(v: f64) -> String {
         let (mantissa, power) = text.split_once('×').unwrap_or((&text, ""));
         return format!("{}×{power}", trimmed(mantissa));
     }
-    let text = plain(v, 6);
-    let trimmed = trimmed(&text);
-    if trimmed == "−0" || trimmed.is_empty() {
-        "0".into()
-    } else {
-        trimmed.to_string()
-    }
+    field_text(&plain(v, 6))
 }
 
 /// A number as a field that follows a moving disc shows it: three
@@ -144,8 +138,13 @@ pub fn field_reading(v: f64) -> String {
     if !v.is_finite() || v.abs() >= POWER_FROM {
         return field(v);
     }
-    let text = adaptive(v, 3);
-    let trimmed = trimmed(&text);
+    field_text(&adaptive(v, 3))
+}
+
+/// A field's text from a number written out: no trailing zeros, and
+/// zero without a sign.
+fn field_text(text: &str) -> String {
+    let trimmed = trimmed(text);
     if trimmed == "−0" || trimmed.is_empty() {
         "0".into()
     } else {
