@@ -45,7 +45,46 @@ fn main() -> std::process::ExitCode {
             "tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world",
             tabs_captions_rewinds_and_the_end_of_the_pi_run_never_move_the_world,
         ),
+        (
+            "the_side_buttons_keep_their_places_as_the_clock_starts_and_stops",
+            the_side_buttons_keep_their_places_as_the_clock_starts_and_stops,
+        ),
     ])
+}
+
+/// "⏸ Pause" is wider than "▶ Play": at 1024×768 the buttons after it
+/// moved a place as the clock started (Undo went up a row, Redo took its
+/// place), and a teacher who paused and clicked where Undo was pressed
+/// Redo. The play button keeps the wider label's width, in every language.
+fn the_side_buttons_keep_their_places_as_the_clock_starts_and_stops() {
+    let x = Xvfb::start("play button");
+    for lang in ["en", "de", "es", "fr", "pt-BR"] {
+        let args = [
+            "--paused",
+            "--size",
+            "1024x768",
+            "--lang",
+            lang,
+            &asset("preset-1-head-on.toml"),
+        ];
+        let app = Sandbox::start(&x, &args);
+        app.move_to([300.0, 300.0]);
+        let places = |s: &Value| -> Vec<String> {
+            [
+                "step", "reset", "undo", "redo", "slower", "faster", "presets",
+            ]
+            .iter()
+            .map(|name| format!("{name} {}", s["panel_widgets"][name]))
+            .collect()
+        };
+        let paused = app.wait_frames(3);
+        assert_eq!(paused["paused"], true);
+        app.xdo(&["key", "space"]);
+        app.wait_for("the clock running", 60, |s| s["paused"] == false);
+        let running = app.wait_frames(2);
+        assert_eq!(places(&paused), places(&running), "{lang}");
+        app.quit();
+    }
 }
 
 fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_preset() {

@@ -67,8 +67,21 @@ pub fn labelled_button(
     command: Command,
     name: Option<&str>,
 ) -> egui::Response {
+    wide_labelled_button(ui, cx, (label, 0.0), command, name)
+}
+
+/// [`labelled_button`] at least `width` points wide: a button whose label
+/// changes ("▶ Play", "⏸ Pause") keeps one width, so that the buttons
+/// after it do not move under the pointer.
+pub fn wide_labelled_button(
+    ui: &mut Ui,
+    cx: &mut Cx,
+    (label, width): (impl Into<egui::WidgetText>, f32),
+    command: Command,
+    name: Option<&str>,
+) -> egui::Response {
     let tip = bindings::tooltip(&command);
-    let mut r = ui.button(label);
+    let mut r = ui.add(egui::Button::new(label).min_size(egui::vec2(width, 0.0)));
     if !tip.is_empty() {
         r = r.tip(tip);
     }

@@ -14,7 +14,7 @@ pub mod files;
 mod laws;
 
 use super::dialog::scroll;
-use super::widgets::{command_button, labelled_button};
+use super::widgets::{button_text_width, command_button, wide_labelled_button};
 use super::{Cx, View};
 use crate::app::lang::tr;
 use crate::app::model::overlays::{spin_shown, ReadoutScope, DELTA_P_MAX_DISCS};
@@ -258,12 +258,15 @@ fn transport(ui: &mut Ui, cx: &mut Cx) {
         (Command::ToggleHelp, "help"),
     ];
     ui.horizontal_wrapped(|ui| {
-        let play = if cx.model.clock.paused {
-            format!("▶ {}", tr!("play"))
-        } else {
-            format!("⏸ {}", tr!("pause"))
-        };
-        labelled_button(ui, cx, play, Command::TogglePause, Some("play"));
+        // As wide as the wider of its two labels: "⏸ Pause" is wider than
+        // "▶ Play", and the buttons after it had moved a place as the clock
+        // started (a teacher who paused and clicked where Undo was pressed
+        // Redo).
+        let (play, pause) = (format!("▶ {}", tr!("play")), format!("⏸ {}", tr!("pause")));
+        let width = button_text_width(ui, play.as_str()).max(button_text_width(ui, pause.as_str()))
+            + 2.0 * ui.spacing().button_padding.x;
+        let label = if cx.model.clock.paused { play } else { pause };
+        wide_labelled_button(ui, cx, (label, width), Command::TogglePause, Some("play"));
         command_button(ui, cx, Command::Step, Some("step"));
         command_button(ui, cx, Command::Reset, Some("reset"));
         command_button(ui, cx, Command::Undo, Some("undo"));
