@@ -257,7 +257,8 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
 /// the mass, which stays marked (the speed does not); the mass typed
 /// again, both apply. After each refusal the mass keeps the keyboard with
 /// its text selected, so the number typed next replaces it (egui's field
-/// let go of the keys on Enter, and the student had to Tab back).
+/// let go of the keys on Enter, and the student had to Tab back). Esc
+/// takes a refused number back, and so does the clock as it runs.
 fn a_refused_field_is_marked_until_typed_again() {
     let x = Xvfb::start("refused field");
     let app = glancing_disc_selected(&x, "1280x800", "1.5");
@@ -294,5 +295,24 @@ fn a_refused_field_is_marked_until_typed_again() {
     assert_eq!(s["particles"][0]["vel"][0], 3.0);
     let s = app.wait_frames(3);
     assert_eq!(marks(&s), (false, false, false), "applied: nothing marked");
+    // Esc takes a refused number back; and one left in its field goes
+    // once the clock runs ("1e30" stayed in red beside a moving disc).
+    tab_to(&app, "disc_mass", 80);
+    app.xdo(&["type", "1e30"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(5);
+    assert_eq!(marks(&s), (true, false, false), "refused again");
+    app.xdo(&["key", "Escape"]);
+    let s = app.wait_frames(3);
+    assert_eq!(marks(&s), (false, false, false), "Esc took it back");
+    tab_to(&app, "disc_vx", 80);
+    app.xdo(&["type", "1e30"]);
+    app.xdo(&["key", "Return"]);
+    let s = app.wait_frames(5);
+    assert_eq!(marks(&s), (false, true, false), "v_x refused");
+    app.click(widget(&s, "play", 0.5));
+    app.wait_for("the refused v_x gone as the clock runs", 60, |s| {
+        s["paused"] == false && marks(s) == (false, false, false)
+    });
     app.quit();
 }

@@ -204,6 +204,14 @@ impl DiscFields {
                         enter = true;
                         self.entered_in = Some(k);
                     }
+                    // Esc takes back what was typed; and a refused number
+                    // goes once the clock runs: "1e30" stayed in red
+                    // beside a disc moving at 2 m/s, and a student read it.
+                    let esc = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Escape));
+                    let running = !cx.model.clock.paused;
+                    if esc || (running && refused[k] && !r.has_focus()) {
+                        self.text[k] = self.shown[k].clone();
+                    }
                     let name = crate::app::lang::text(FIELD_NAMES[k], &[]);
                     let mut label = egui::RichText::new(format!("{name} ({})", FIELD_UNITS[k]));
                     // Typed and not yet applied: its name in amber;
