@@ -186,7 +186,7 @@ fn the_text_size_and_theme_chosen_are_kept_for_the_next_start() {
 
 /// A teacher with no mouse places a disc: Q selects it and opens *Selected
 /// disc* (it stayed folded), Tab reaches its x field, and x and y typed
-/// with Enter move it there (only a drag could); until Enter the panel
+/// with the number pad's Enter move it there (only a drag could); until Enter the panel
 /// says they wait. Folded by hand, the section stays folded. Every
 /// field's name is whole.
 fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
@@ -220,7 +220,9 @@ fn a_disc_is_placed_from_the_keyboard_by_its_position_fields() {
         s["panel_widgets"]["edit_pending"].is_array(),
         "no word that the typed values wait for Enter"
     );
-    app.xdo(&["key", "Return"]);
+    // The number pad's Enter, as a teacher typing numbers on the pad
+    // presses it (egui-macroquad passed on only the main Enter).
+    app.xdo(&["key", "KP_Enter"]);
     let pos = |s: &Value| {
         let p = &s["particles"][0]["pos"];
         [p[0].as_f64().unwrap(), p[1].as_f64().unwrap()]

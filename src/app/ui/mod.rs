@@ -276,6 +276,8 @@ impl Panels {
         look::fit_tooltips(ctx);
         let ppp = px_per_point(ctx);
         typing::drop_characters_typed_with_ctrl(ctx);
+        let keypad_enter = macroquad::input::is_key_pressed(macroquad::input::KeyCode::KpEnter);
+        typing::keypad_enter_as_enter(ctx, keypad_enter);
         let saving = typing::enter_before_saving(ctx);
         // Before the views, on the last frame's notes: a field given the
         // keyboard now gains it as it is made, and selects its text.

@@ -8,7 +8,8 @@
 //! send as Ctrl+Alt, keeps its characters.
 //!
 //! And Ctrl+S in a field applies what was typed, as Enter does, before the
-//! window's binding saves: a number typed and saved is in the file.
+//! window's binding saves: a number typed and saved is in the file. The
+//! number pad's Enter is an Enter (egui-macroquad drops it).
 
 use egui::{Event, Id, Key, Modifiers};
 
@@ -57,6 +58,26 @@ fn enter_after_save(events: &mut Vec<Event>) -> bool {
         events.insert(k + 1, enter);
     }
     any
+}
+
+/// The number pad's Enter, which egui-macroquad does not pass on (it
+/// knows only the main Enter): given to egui as an Enter, so that a number
+/// typed on the pad is applied with the pad's Enter too.
+pub fn keypad_enter_as_enter(ctx: &egui::Context, keypad_enter: bool) {
+    if keypad_enter {
+        ctx.input_mut(|i| push_enter(&mut i.events, i.modifiers));
+    }
+}
+
+/// An Enter pressed, with `modifiers`, at the end of `events`.
+fn push_enter(events: &mut Vec<Event>, modifiers: Modifiers) {
+    events.push(Event::Key {
+        key: Key::Enter,
+        physical_key: None,
+        pressed: true,
+        repeat: false,
+        modifiers,
+    });
 }
 
 /// Drops from this frame's input the characters typed with Ctrl.
@@ -110,6 +131,18 @@ mod tests {
 
     fn text(t: &str) -> Event {
         Event::Text(t.to_string())
+    }
+
+    #[test]
+    fn the_number_pads_enter_is_an_enter() {
+        let ctx = egui::Context::default();
+        let presses = |ctx: &egui::Context| ctx.input(|i| i.num_presses(Key::Enter));
+        let _ = ctx.run(egui::RawInput::default(), |ctx| {
+            keypad_enter_as_enter(ctx, false);
+            assert_eq!(presses(ctx), 0);
+            keypad_enter_as_enter(ctx, true);
+            assert_eq!(presses(ctx), 1);
+        });
     }
 
     #[test]
