@@ -27,6 +27,9 @@ pub(super) struct Item {
     name: Option<String>,
     short: Option<RichText>,
     kept_end: Option<[RichText; 2]>,
+    /// The name is cut (down to [`NAME_AT_LEAST`]) to show it and the
+    /// items before it: the momentum.
+    before_the_name: bool,
 }
 
 impl Item {
@@ -54,7 +57,14 @@ impl Item {
             name: None,
             short: None,
             kept_end: None,
+            before_the_name: false,
         }
+    }
+
+    /// The name gives this item room ([`Item::before_the_name`]).
+    pub(super) fn before_the_name(mut self) -> Self {
+        self.before_the_name = true;
+        self
     }
 
     /// Text after the item's own, kept where the item is cut, whole or, where
@@ -143,15 +153,47 @@ impl TopBar {
             .iter()
             .map(|(l, _, _)| galley(ui, &RichText::new(l.as_str())).size().x + padding)
             .sum();
-        if ui.available_width() - buttons_width < fixed + more_width + 40.0 + 2.0 * spacing {
+        // What the name gives room to counts as always shown here: at a
+        // projector's size the buttons' words and the state's word give way
+        // to the momentum (1366×768 at text size 2 had kept "≡ Controls"
+        // and "RUNNING" and put the momentum under "… more").
+        // Only where it can be had: with the buttons' icons, the short
+        // forms and the name at its least (at 1024×768 at text size 2 the
+        // state had lost its word, and the momentum was not shown for it).
+        let icon_of = |label: &str| {
+            let word = label.split_whitespace().next().unwrap_or(label);
+            match word.chars().any(char::is_alphanumeric) {
+                true => label.to_string(),
+                false => word.to_string(),
+            }
+        };
+        let icons_width: f32 = buttons
+            .iter()
+            .map(|(l, _, _)| galley(ui, &RichText::new(icon_of(l))).size().x + padding)
+            .sum();
+        let short_fixed: f32 = essential[1..]
+            .iter()
+            .map(|item| {
+                galley(ui, item.short.as_ref().unwrap_or(&item.text))
+                    .size()
+                    .x
+                    + spacing
+            })
+            .sum();
+        let name_least = essential
+            .first()
+            .map_or(0.0, |name| name.whole_width(ui, NAME_END_GAP * spacing))
+            .min(NAME_AT_LEAST);
+        let wanted = Some(before_the_name(ui, &optional, spacing))
+            .filter(|&wanted| {
+                let least = icons_width + spacing + short_fixed + wanted + more_width + name_least;
+                ui.available_width() >= least
+            })
+            .unwrap_or(0.0);
+        if ui.available_width() - buttons_width < fixed + wanted + more_width + 40.0 + 2.0 * spacing
+        {
             for (label, _, _) in &mut buttons {
-                if let Some(icon) = label
-                    .split_whitespace()
-                    .next()
-                    .filter(|w| !w.chars().any(char::is_alphanumeric))
-                {
-                    *label = icon.to_string();
-                }
+                *label = icon_of(label);
             }
         }
         // The line first and the buttons after it, at the right, so that Tab
@@ -165,7 +207,7 @@ impl TopBar {
         // Where the items always shown would leave the name less than this
         // (the π blocks' count at a projector's size), they take their
         // short forms: the state its sign, its word on hover.
-        let name_room = ui.available_width() - width - spacing - fixed - more_width;
+        let name_room = ui.available_width() - width - spacing - fixed - wanted - more_width;
         // A name shorter than that needs only its own width: "Choque
         // oblicuo" left room for "PAUSADO", which had taken its sign.
         let name_width = essential
@@ -192,6 +234,7 @@ impl TopBar {
                         spacing,
                         more_width,
                         fixed,
+                        wanted,
                     };
                     items(ui, cx, words);
                 },
@@ -216,6 +259,28 @@ struct Words {
     spacing: f32,
     more_width: f32,
     fixed: f32,
+    /// What the name gives room to ([`before_the_name`]).
+    wanted: f32,
+}
+
+/// What the items up to the one the name gives room to
+/// ([`Item::before_the_name`]) take at least: each in its shorter form,
+/// with the room before it (points; 0 without such an item).
+fn before_the_name(ui: &egui::Ui, optional: &[Item], spacing: f32) -> f32 {
+    let Some(last) = optional.iter().position(|item| item.before_the_name) else {
+        return 0.0;
+    };
+    optional[..=last]
+        .iter()
+        .map(|item| {
+            let whole = galley(ui, &item.text).size().x;
+            let short = item
+                .short
+                .as_ref()
+                .map_or(whole, |t| galley(ui, t).size().x);
+            whole.min(short) + spacing
+        })
+        .sum()
 }
 
 /// `text` in one line of body text.
@@ -240,6 +305,7 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
         spacing,
         more_width,
         fixed,
+        wanted,
     } = words;
     let mut essential = essential.into_iter();
     let Some(name) = essential.next() else {
@@ -253,7 +319,16 @@ fn items(ui: &mut egui::Ui, cx: &mut Cx, words: Words) {
     let gap = NAME_END_GAP * spacing;
     let (own, ends) = name.widths(ui, gap);
     let full_name = name.whole_width(ui, gap);
-    let name_width = full_name.min((0.6 * free).max(40.0));
+    let mut name_width = full_name.min((0.6 * free).max(40.0));
+    // The momentum is the lesson: the name is cut further (down to
+    // NAME_AT_LEAST) where that shows it, and the items before it. At a
+    // projector's text size 1.5 at 1024×768 the name had kept 60 % of the
+    // line and the momentum went under "… more".
+    if free - name_width < wanted {
+        let least = NAME_AT_LEAST.min(full_name);
+        name_width = name_width.min((free - wanted).max(least));
+    }
+    let name_width = name_width;
     // The other items that fit beside the name at that width, in order (the
     // last may use the room kept for "… more")...
     // (`free` has the room between items: `fixed` the one before each item

@@ -2,7 +2,8 @@
 //! scene's name, the simulated time and RUNNING or PAUSED (and in the π
 //! blocks their count) are always there (not even Tab hides them); then,
 //! as far as the line reaches, the total momentum (with a note while the
-//! walls have changed it) and energy, the impacts between discs and on
+//! walls have changed it; the name is cut, and the buttons' and the state's
+//! words give way, where that makes room for it) and energy, the impacts between discs and on
 //! walls counted apart, and what the method cannot promise. What does not
 //! fit is under "… more", on hover or when Tab gives it the keys. This
 //! module says what the items are; [`line`] lays them out.
@@ -139,7 +140,8 @@ impl View for TopBar {
             );
         }
         let mut momentum = Item::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s")))
-            .hover(tr!("momentum-hover"));
+            .hover(tr!("momentum-hover"))
+            .named("momentum");
         if walls_pushed(cx) {
             momentum = Item::new(
                 RichText::new(tr!(
@@ -154,7 +156,7 @@ impl View for TopBar {
             // and hover still saying the walls push.
             .short(RichText::new(format!("p = {}", vector(m.momentum, 3, "kg·m/s"))).color(paused));
         }
-        optional.push(momentum);
+        optional.push(momentum.before_the_name());
         if spin {
             optional.push(
                 Item::new(tr!(
