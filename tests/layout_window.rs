@@ -49,7 +49,37 @@ fn main() -> std::process::ExitCode {
             "the_side_buttons_keep_their_places_as_the_clock_starts_and_stops",
             the_side_buttons_keep_their_places_as_the_clock_starts_and_stops,
         ),
+        (
+            "a_tab_clicked_without_room_says_what_makes_room",
+            a_tab_clicked_without_room_says_what_makes_room,
+        ),
     ])
+}
+
+/// A browser window of 1024×768 is a page of 1024×625: at text size 2 the
+/// world keeps its least height and the tabs have no room. A click on one
+/// showed nothing, and the row's note, cut to "no room here: L hides …",
+/// named L, which beside a drawer opens the drawer. The strip says what
+/// makes room: another text size (F2).
+fn a_tab_clicked_without_room_says_what_makes_room() {
+    let x = Xvfb::start("no room for a tab");
+    let args = [
+        "--paused",
+        "--size",
+        "1024x625",
+        "--ui-scale",
+        "2",
+        &asset("preset-1-head-on.toml"),
+    ];
+    let app = Sandbox::start(&x, &args);
+    app.move_to([500.0, 300.0]);
+    let s = app.wait_frames(3);
+    assert_eq!(s["layout"]["tab_folded"], true, "{}", s["layout"]);
+    app.click(widget(&s, "tab_collisions", 0.5));
+    let s = app.wait_for("a note", 60, |s| s["ui"]["message"].is_string());
+    let said = s["ui"]["message"].as_str().unwrap();
+    assert!(said.contains("text size") && said.contains("F2"), "{said}");
+    app.quit();
 }
 
 /// "⏸ Pause" is wider than "▶ Play": at 1024×768 the buttons after it

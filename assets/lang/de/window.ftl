@@ -249,6 +249,7 @@ table-no-discs = Keine Scheiben: auf freier Fläche ziehen, um eine abzuschieße
 dock-hide = Ausblenden
 dock-show = Einblenden
 dock-no-room = hier ist kein Platz: L blendet die Seitenleiste aus
+dock-no-room-drawer = bei dieser Schriftgröße ist hier kein Platz: { $key } ändert sie
 momenta-no-discs = Keine Scheiben.
 momenta-too-many = Summe: { $total }. Zu viele Scheiben ({ $count }), um für jede einen Pfeil zu zeichnen; das Diagramm zeichnet bis zu { $most }.
 momenta-line = Summe (dick): { $total }, dazu der Impuls jeder Scheibe in ihrer Farbe, Pfeil an Pfeil gehängt

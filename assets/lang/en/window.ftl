@@ -249,6 +249,7 @@ table-no-discs = No discs: drag on empty space to launch one.
 dock-hide = Hide
 dock-show = Show
 dock-no-room = no room here: L hides the side panel
+dock-no-room-drawer = no room here at this text size: { $key } changes it
 momenta-no-discs = No discs.
 momenta-too-many = Total: { $total }. Too many discs ({ $count }) to draw one arrow each; the diagram draws up to { $most }.
 momenta-line = Total (thick): { $total }, each disc's momentum tip to tail in its colour

@@ -249,6 +249,7 @@ table-no-discs = No hay discos: arrastra sobre un espacio vacío para lanzar uno
 dock-hide = Ocultar
 dock-show = Mostrar
 dock-no-room = aquí no hay espacio: L oculta el panel lateral
+dock-no-room-drawer = aquí no hay espacio con este tamaño de texto: { $key } lo cambia
 momenta-no-discs = No hay discos.
 momenta-too-many = Total: { $total }. Demasiados discos ({ $count }) para dibujar una flecha para cada uno; el diagrama dibuja hasta { $most }.
 momenta-line = Total (flecha gruesa): { $total }; la cantidad de movimiento de cada disco, una flecha a continuación de otra, en su color

@@ -249,6 +249,7 @@ table-no-discs = Aucun disque : glissez dans le vide pour en lancer un.
 dock-hide = Masquer
 dock-show = Afficher
 dock-no-room = pas de place ici : L masque le panneau latéral
+dock-no-room-drawer = pas de place ici à cette taille de texte : { $key } la change
 momenta-no-discs = Aucun disque.
 momenta-too-many = Total : { $total }. Trop de disques ({ $count }) pour dessiner un vecteur par disque ; le diagramme en dessine jusqu’à { $most }.
 momenta-line = Total (épais) : { $total }, les quantités de mouvement des disques mises bout à bout, chacune dans sa couleur

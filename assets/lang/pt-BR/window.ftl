@@ -249,6 +249,7 @@ table-no-discs = Nenhum disco: arraste num espaço vazio para lançar um.
 dock-hide = Ocultar
 dock-show = Mostrar
 dock-no-room = sem espaço aqui: L oculta o painel lateral
+dock-no-room-drawer = sem espaço aqui neste tamanho de texto: { $key } muda o tamanho
 momenta-no-discs = Nenhum disco.
 momenta-too-many = Total: { $total }. Discos demais ({ $count }) para desenhar uma seta para cada; o diagrama desenha até { $most }.
 momenta-line = Total (seta grossa): { $total }; a quantidade de movimento de cada disco na sua cor, cada seta começando na ponta da anterior

@@ -166,6 +166,12 @@ pub enum Command {
     ShowTab(DockTab),
     /// A tab clicked in the tab row: chosen, or folded when it was open.
     ClickTab(DockTab),
+    /// A tab clicked where the window leaves it no room: the strip says
+    /// what makes room (L, where the side panel is docked; else another
+    /// text size), which the row's own note had no room to say.
+    SayNoRoomForTab {
+        side_docked: bool,
+    },
     ToggleDockExpanded,
     /// The open tab's height in px (its top edge dragged); None: its own.
     SetTabHeight(Option<f32>),

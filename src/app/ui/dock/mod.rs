@@ -161,6 +161,10 @@ impl BottomDock {
             let r = r.tip(crate::app::model::bindings::tab_tooltip(*tab));
             if r.clicked() {
                 cx.send(Command::ClickTab(*tab));
+                if !content {
+                    let side_docked = !cx.drawer;
+                    cx.send(Command::SayNoRoomForTab { side_docked });
+                }
             }
         }
         strip.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
@@ -170,7 +174,18 @@ impl BottomDock {
                 cx.send(Command::ToggleDockExpanded);
             }
             if model.panels.dock_expanded && !content {
-                ui.add(egui::Label::new(crate::app::lang::tr!("dock-no-room")).truncate());
+                // L frees room only where the side panel is docked; beside
+                // a drawer it opened the drawer, and the tab stayed folded.
+                let why = match cx.drawer {
+                    false => crate::app::lang::tr!("dock-no-room"),
+                    true => {
+                        let key = crate::app::model::bindings::keys_of(&Command::NextScale);
+                        crate::app::lang::tr!("dock-no-room-drawer", key = key)
+                    }
+                };
+                // (A click on a tab says it in the strip too.)
+                let r = ui.add(egui::Label::new(why).truncate());
+                cx.note("dock_no_room", &r);
             }
         });
         ui.allocate_rect(full, egui::Sense::hover());
