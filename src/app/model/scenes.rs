@@ -79,6 +79,8 @@ pub fn preset_labels() -> Vec<String> {
                 .map_or_else(|| p.path.to_string(), str::to_string);
             match p.key {
                 "" => name,
+                // not words: the browser keeps this key (a window of its own)
+                "Ctrl+N" if cfg!(target_arch = "wasm32") => name,
                 // not words: the empty box's key, in the window's words
                 "Ctrl+N" => format!("{}   {name}", tr!("keys-new-box")),
                 key => format!("{key}   {name}"),

@@ -231,10 +231,11 @@ pub fn control_of(b: &Binding) -> Option<String> {
 }
 
 /// Whether a key belongs to the browser, not to the page: the page never
-/// sees Ctrl+Q or Ctrl+N (a browser window of its own), and F11 is the
-/// browser's full screen.
+/// sees Ctrl+Q or Ctrl+N (a browser window of its own), F6 goes to the
+/// address bar, F11 is the browser's full screen and F12 its developer
+/// tools (the page's screenshot is a download, from *Scene*).
 pub fn browser_keeps(binding: &Binding) -> bool {
-    ["quit", "fullscreen", "new-box"].contains(&binding.name)
+    ["quit", "fullscreen", "new-box", "regions", "screenshot"].contains(&binding.name)
 }
 
 #[cfg(test)]
@@ -311,6 +312,27 @@ mod tests {
         let listed: std::collections::BTreeSet<String> =
             listed.into_iter().map(str::to_string).collect();
         assert_eq!(listed, wanted);
+    }
+
+    /// The browser's own function keys (F6 the address bar, F11 full
+    /// screen, F12 the developer tools) are left out of the page's help:
+    /// a browser review found F12 listed as "screenshot into the output
+    /// folder".
+    #[test]
+    fn the_browsers_function_keys_are_left_to_it() {
+        let mut seen = 0;
+        for b in BINDINGS {
+            for (chord, _) in b.acts {
+                if matches!(chord.key, Key::F(6 | 11 | 12)) {
+                    seen += 1;
+                    assert!(browser_keeps(b), "{}", b.name);
+                }
+            }
+        }
+        assert!(seen >= 2, "{seen}");
+        // F6 is read by the window itself (its line has no chords).
+        let regions = BINDINGS.iter().find(|b| b.name == "regions").unwrap();
+        assert!(browser_keeps(regions));
     }
 
     #[test]
