@@ -49,7 +49,7 @@ fn ctrl_and_a_digit_show_the_tab_at_that_place_in_the_row() {
 /// The help opened with H is read with Page Down at once (it needed a Tab
 /// to its list first); the keys that scroll it (Home, Enter, the arrows)
 /// no longer make a disc or move the view behind it; Esc closes it, and it
-/// opens again at its top.
+/// opens again at its top. "?" opens it too.
 fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
     let x = Xvfb::start("help keys");
     let app = Sandbox::start(&x, &["--paused", "--size", "1024x768", "--ui-scale", "2"]);
@@ -106,6 +106,9 @@ fn the_help_is_read_with_the_keys_at_once_and_nothing_changes_behind_it() {
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(s["ui"]["help_open"], false, "one Esc closed the help");
+    // "?" opens it too, as its button ("? Help") suggests.
+    app.xdo(&["key", "question"]);
+    app.wait_for("the help opened by ?", 60, |s| s["ui"]["help_open"] == true);
     app.quit();
 }
 

@@ -215,6 +215,13 @@ impl Input {
     fn keys(&mut self, panels: &mut Panels, aims: bool, out: &mut Vec<Command>) {
         let ctrl = held_or_pressed([KeyCode::LeftControl, KeyCode::RightControl]);
         let shift = held_or_pressed([KeyCode::LeftShift, KeyCode::RightShift]);
+        // "?" opens the help as H does (its button reads "? Help"), by the
+        // character typed, whatever keys give it on this keyboard. The
+        // characters are read every frame: macroquad keeps them until then.
+        let mut question = false;
+        while let Some(c) = get_char_pressed() {
+            question |= c == '?';
+        }
         if ctrl && is_key_pressed(KeyCode::Q) && !cfg!(target_arch = "wasm32") {
             out.push(Command::Quit);
             return;
@@ -231,6 +238,9 @@ impl Input {
         if after_field && is_key_pressed(KeyCode::Escape) {
             panels.panel_keyboard = false;
             return;
+        }
+        if question && !after_field && !ctrl {
+            out.push(Command::ToggleHelp);
         }
         for key in all_keys() {
             let codes = key_codes(key);
