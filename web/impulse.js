@@ -92,6 +92,7 @@
         if (shape !== mirrorShape) {
             mirrorShape = shape;
             region.setAttribute("aria-label", spec.title);
+            document.getElementById("glcanvas").setAttribute("aria-label", spec.canvas);
             document.getElementById("mirror-title").textContent = spec.title;
             const row = document.getElementById("mirror-buttons");
             const focused = document.activeElement && row.contains(document.activeElement)
@@ -158,10 +159,13 @@
     // macroquad still gets the key (the event goes on to the canvas).
     // (A test holds this list to the bindings table's Ctrl chords.)
     const OWN_CTRL = new Set(["KeyS", "KeyZ", "KeyY", "Digit1", "Digit2", "Digit3", "Digit4", "Digit5", "Digit6"]);
+    // And Ctrl+A, which selects a field's text in the canvas: the browser
+    // also selected the whole page's (the mirror's words in blue).
+    const FIELD_CTRL = new Set(["KeyA"]);
     window.addEventListener("keydown", (e) => {
         const canvas = document.getElementById("glcanvas");
         if (!e.ctrlKey || e.altKey || e.metaKey || document.activeElement !== canvas) return;
-        if (OWN_CTRL.has(e.code)) e.preventDefault();
+        if (OWN_CTRL.has(e.code) || FIELD_CTRL.has(e.code)) e.preventDefault();
     }, true);
     function register(importObject) {
         const env = importObject.env;

@@ -83,4 +83,5 @@ words-line-web = Was geschieht, in Worten, das Neueste zuerst, wie ein Screenrea
 words-none = Noch nichts gesagt.
 label-describe = Szene beschreiben
 mirror-title = Impulse: Bedienelemente für Tastatur und Screenreader
+mirror-canvas = Impulse, die Simulation: { $keys } zeigt die Tasten
 mirror-said = Was geschieht

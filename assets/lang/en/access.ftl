@@ -30,7 +30,7 @@ sound-on = Sound on: a click at each impact (silent while paused or faster than 
 sound-off = Sound off
 
 ## Said to a screen reader (the browser's live region, the In words tab)
-said-pair = Disc { $a } hit disc { $b }: momentum before { $before }, after { $after }
+said-pair = Disc { $a } hit disc { $b }: their total momentum before { $before }, after { $after }
 said-wall = Disc { $disc } hit the { $wall ->
     [left] left
     [right] right
@@ -80,4 +80,5 @@ words-line-web = What happens, in words, newest first, as a screen reader reads 
 words-none = Nothing said yet.
 label-describe = Describe the scene
 mirror-title = Impulse: controls for the keyboard and screen readers
+mirror-canvas = Impulse, the simulation: { $keys } lists the keys
 mirror-said = What happens

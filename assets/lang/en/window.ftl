@@ -85,7 +85,7 @@ start-title = What would you like to explore?
 start-footer = Tab and Enter choose a lesson from the keyboard. Esc keeps the scene that is open. The Start button in the top bar brings this back.
 
 ## The side dock
-controls-for = The controls for { $lesson }.
+controls-for = The controls for “{ $lesson }”.
 selected-disc-numbered = Selected disc ({ $disc })
 section-more = More
 section-more-line = For spinning discs, and for comparing how the computer works it out.

@@ -30,7 +30,7 @@ sound-on = Sonido activado: un clic en cada impacto (en silencio en pausa o a m�
 sound-off = Sonido desactivado
 
 ## Lo que se le dice a un lector de pantalla (la región dinámica del navegador, la pestaña Narración)
-said-pair = El disco { $a } chocó con el disco { $b }: cantidad de movimiento antes { $before }, después { $after }
+said-pair = El disco { $a } chocó con el disco { $b }: cantidad de movimiento total antes { $before }, después { $after }
 said-wall = El disco { $disc } chocó con la pared { $wall ->
     [left] izquierda
     [right] derecha
@@ -83,4 +83,5 @@ words-line-web = Lo que ocurre, contado en palabras, lo más reciente primero, c
 words-none = Todavía no se ha dicho nada.
 label-describe = Describir la escena
 mirror-title = Impulse: controles para el teclado y los lectores de pantalla
+mirror-canvas = Impulse, la simulación: { $keys } muestra las teclas
 mirror-said = Lo que ocurre

@@ -85,7 +85,7 @@ start-title = ¿Qué te gustaría explorar?
 start-footer = Tab y Enter eligen una lección con el teclado. Esc conserva la escena que está abierta. El botón Lecciones de la barra superior vuelve a mostrar esta pantalla.
 
 ## El panel lateral
-controls-for = Los controles para { $lesson }.
+controls-for = Los controles para «{ $lesson }».
 selected-disc-numbered = Disco seleccionado ({ $disc })
 section-more = Más
 section-more-line = Para discos que giran y para comparar cómo hace los cálculos el programa.

@@ -30,7 +30,7 @@ sound-on = Son activé : un clic à chaque choc (muet en pause ou au-delà de ×
 sound-off = Son désactivé
 
 ## Ce qui est dit à un lecteur d'écran (la zone dynamique du navigateur, l'onglet Récit)
-said-pair = Le disque { $a } a heurté le disque { $b } : quantité de mouvement avant { $before }, après { $after }
+said-pair = Le disque { $a } a heurté le disque { $b } : quantité de mouvement totale avant { $before }, après { $after }
 said-wall = Le disque { $disc } a heurté le mur { $wall ->
     [left] de gauche
     [right] de droite
@@ -83,4 +83,5 @@ words-line-web = Ce qui se passe, raconté avec des mots, le plus récent en pre
 words-none = Rien n'a encore été dit.
 label-describe = Décrire la scène
 mirror-title = Impulse : commandes pour le clavier et les lecteurs d'écran
+mirror-canvas = Impulse, la simulation : { $keys } affiche les touches
 mirror-said = Ce qui se passe

@@ -30,7 +30,7 @@ sound-on = Som ligado: um clique a cada impacto (em silêncio quando pausado ou 
 sound-off = Som desligado
 
 ## Dito a um leitor de tela (a região ao vivo do navegador, a aba Narração)
-said-pair = Disco { $a } bateu no disco { $b }: quantidade de movimento antes { $before }, depois { $after }
+said-pair = Disco { $a } bateu no disco { $b }: quantidade de movimento total antes { $before }, depois { $after }
 said-wall = Disco { $disc } bateu na parede { $wall ->
     [left] esquerda
     [right] direita
@@ -83,4 +83,5 @@ words-line-web = O que acontece, em palavras, do mais recente ao mais antigo, co
 words-none = Nada foi dito ainda.
 label-describe = Descrever a cena
 mirror-title = Impulse: controles para teclado e leitores de tela
+mirror-canvas = Impulse, a simulação: { $keys } mostra as teclas
 mirror-said = O que acontece

@@ -7,7 +7,7 @@
 
 #![cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
 
-use super::bindings::{binding_of, label, tooltip, Key};
+use super::bindings::{binding_of, keys_of, label, tooltip, Key};
 use super::scenes::preset_labels;
 use super::{Command, Sandbox};
 use crate::app::lang::{language, native_name, tr, Lang};
@@ -52,6 +52,8 @@ pub struct Mirror {
     pub lang: String,
     /// The region's name ("Impulse: controls").
     pub title: String,
+    /// The canvas's name: what it is and the key that lists the keys.
+    pub canvas: String,
     pub buttons: Vec<MirrorButton>,
     pub presets: MirrorChoice,
     pub languages: MirrorChoice,
@@ -80,14 +82,19 @@ impl Sandbox {
         let buttons = MIRROR_COMMANDS
             .iter()
             .map(|c| MirrorButton {
-                label: label(c).unwrap_or_default(),
+                // Play or Pause, what a press does now: "Play / Pause" read
+                // as "not pressed" said neither which nor what.
+                label: match c {
+                    Command::TogglePause if self.clock.paused => tr!("play"),
+                    Command::TogglePause => tr!("pause"),
+                    _ => spoken(&label(c).unwrap_or_default()),
+                },
                 hint: tooltip(c),
                 shortcut: binding_of(c)
                     .and_then(|b| b.acts.iter().find(|(_, a)| a == c))
                     .map(|(chord, _)| dom_key(chord.key))
                     .unwrap_or_default(),
                 pressed: match c {
-                    Command::TogglePause => Some(!self.clock.paused),
                     Command::ToggleSound => Some(self.session.sound.on),
                     _ => None,
                 },
@@ -97,6 +104,7 @@ impl Sandbox {
         Mirror {
             lang: current.code().to_string(),
             title: tr!("mirror-title"),
+            canvas: tr!("mirror-canvas", keys = keys_of(&Command::ToggleHelp)),
             buttons,
             presets: MirrorChoice {
                 label: label(&Command::TogglePresets).unwrap_or_default(),
@@ -104,13 +112,33 @@ impl Sandbox {
                 chosen: None,
             },
             languages: MirrorChoice {
-                label: tr!("language-label"),
+                // A label of its own here, capitalised ("language" follows
+                // the drop-down on screen).
+                label: capitalised(&tr!("language-label")),
                 options: Lang::SHIPPED.iter().map(|l| native_name(*l)).collect(),
                 chosen: Lang::SHIPPED.iter().position(|l| *l == current),
             },
             said: tr!("mirror-said"),
         }
     }
+}
+
+/// A button's label as a screen reader should say it: without the icon
+/// before its words ("⟲ Reset" is read "anticlockwise open circle arrow
+/// Reset").
+fn spoken(label: &str) -> String {
+    match label.split_once(' ') {
+        Some((icon, words)) if !icon.chars().any(char::is_alphanumeric) => words.to_string(),
+        _ => label.to_string(),
+    }
+}
+
+/// `text` with its first letter a capital.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars.next().map_or_else(String::new, |first| {
+        first.to_uppercase().chain(chars).collect()
+    })
 }
 
 impl Mirror {
@@ -138,10 +166,17 @@ mod tests {
         let m = s.mirror();
         assert_eq!(m.lang, "en");
         let names: Vec<&str> = m.buttons.iter().map(|b| b.label.as_str()).collect();
-        assert_eq!(names[0], "Play / Pause");
+        // What a press does now, not "Play / Pause, not pressed"; no icon
+        // read aloud ("⟲ Reset").
+        assert_eq!(names[0], "Play", "paused");
+        assert_eq!(m.buttons[0].pressed, None);
+        assert!(names.contains(&"Reset"), "{names:?}");
         assert!(names.contains(&"Next collision"));
         assert_eq!(m.buttons[0].shortcut, "Space");
-        assert_eq!(m.buttons[0].pressed, Some(false), "paused");
+        assert_eq!(m.languages.label, "Language");
+        assert!(m.canvas.contains("H, F1 or ?"), "{}", m.canvas);
+        s.apply(Command::TogglePause);
+        assert_eq!(s.mirror().buttons[0].label, "Pause", "running");
         assert!(m.buttons[3].hint.starts_with("J: "));
         assert_eq!(m.presets.options.len(), super::super::scenes::PRESETS.len());
         assert_eq!(Mirror::command(0, 3), Some(Command::NextCollision));

@@ -467,7 +467,7 @@ mod tests {
         assert_eq!(
             words,
             format!(
-                "Disc {} hit disc {}: momentum before {p}, after {p}",
+                "Disc {} hit disc {}: their total momentum before {p}, after {p}",
                 c.discs_in_order()[0] + 1,
                 c.discs_in_order()[1] + 1
             )
