@@ -53,7 +53,52 @@ fn main() -> std::process::ExitCode {
             "a_tab_clicked_without_room_says_what_makes_room",
             a_tab_clicked_without_room_says_what_makes_room,
         ),
+        (
+            "a_one_dimensional_lesson_fits_its_line_not_the_whole_box",
+            a_one_dimensional_lesson_fits_its_line_not_the_whole_box,
+        ),
     ])
+}
+
+/// On a projector's wide, short world (1366×768 at text size 2: 1366 by
+/// 348 px) the head-on discs were 42 px wide: the view fitted the box's
+/// 10 m across the line, where nothing moves and no wall is drawn. It
+/// fits the line's 16 m and a band of 2 m each side (three radii of the
+/// largest disc where that is more): at least 4 m across, so 348 / 4 px
+/// a metre at most, and the 1.2-m discs about twice as wide.
+fn a_one_dimensional_lesson_fits_its_line_not_the_whole_box() {
+    let x = Xvfb::start("one-dimensional view");
+    let args = [
+        "--paused",
+        "--size",
+        "1366x768",
+        "--ui-scale",
+        "2",
+        &asset("preset-1-head-on.toml"),
+    ];
+    let app = Sandbox::start(&x, &args);
+    app.move_to([500.0, 300.0]);
+    let s = app.wait_frames(3);
+    let view = View::of(&s);
+    let world = rect(&s["layout"]["world"]);
+    let box_height_px = 10.0 * view.scale;
+    assert!(
+        box_height_px > world[3],
+        "the whole box fitted: {box_height_px} px"
+    );
+    let band_px = 4.0 * view.scale;
+    assert!(
+        band_px <= world[3] + 0.5,
+        "less than 4 m across: {band_px} px"
+    );
+    let diameter = 2.0 * s["particles"][0]["radius"].as_f64().unwrap() * view.scale;
+    assert!(diameter > 80.0, "the discs are {diameter} px wide");
+    let (left, right) = (view.to_screen([0.0, 5.0]), view.to_screen([16.0, 5.0]));
+    assert!(
+        left[0] >= world[0] && right[0] <= world[0] + world[2],
+        "{left:?} {right:?}"
+    );
+    app.quit();
 }
 
 /// A browser window of 1024×768 is a page of 1024×625: at text size 2 the
@@ -144,18 +189,34 @@ fn no_panel_covers_the_world_and_text_is_large_enough_at_every_size_scale_and_pr
                 let s = app.wait_frames(3);
                 let what = format!("{size}, scale {scale}, key {key} ({})", s["scene_name"]);
                 check_layout(&s, &what, scale, window);
-                // The fitted box lies inside the world's rectangle.
+                // The fitted box lies inside the world's rectangle; in a
+                // one-dimensional world, its length and a band round the
+                // discs' line (every disc in it).
                 let view = View::of(&s);
                 let world = rect(&s["layout"]["world"]);
+                let inside = |p: [f64; 2], across: bool| {
+                    p[0] >= world[0] - 0.5
+                        && p[0] <= world[0] + world[2] + 0.5
+                        && (!across
+                            || (p[1] >= world[1] - 0.5 && p[1] <= world[1] + world[3] + 0.5))
+                };
+                let one_dimension = s["constrain"] == "x";
                 let (a, b) = (view.to_screen([0.0, 0.0]), view.to_screen(vec2(&s["size"])));
                 for p in [a, b] {
                     assert!(
-                        p[0] >= world[0] - 0.5
-                            && p[0] <= world[0] + world[2] + 0.5
-                            && p[1] >= world[1] - 0.5
-                            && p[1] <= world[1] + world[3] + 0.5,
+                        inside(p, !one_dimension),
                         "{what}: the box corner {p:?} is outside {world:?}"
                     );
+                }
+                for disc in s["particles"].as_array().unwrap() {
+                    let (c, r) = (vec2(&disc["pos"]), disc["radius"].as_f64().unwrap());
+                    for corner in [[c[0] - r, c[1] - r], [c[0] + r, c[1] + r]] {
+                        let p = view.to_screen(corner);
+                        assert!(
+                            inside(p, true),
+                            "{what}: a disc's edge {p:?} is outside {world:?}"
+                        );
+                    }
                 }
             }
         }
