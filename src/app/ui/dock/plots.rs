@@ -247,8 +247,8 @@ pub fn names_line(
 
 /// Room kept right of plots side by side for half of a number on the time
 /// axis: the last column's plot ends at the dock's edge, which cut a "1 s"
-/// standing at the plot's end in half.
-const EDGE_ROOM: f32 = 12.0;
+/// standing at the plot's end in half (and 12 points, a "2.5 s").
+const EDGE_ROOM: f32 = 18.0;
 
 /// `ui.columns(n, add)` for plots, short of the dock's right edge by
 /// [`EDGE_ROOM`].
