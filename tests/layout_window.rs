@@ -68,16 +68,7 @@ fn main() -> std::process::ExitCode {
 /// a metre at most, and the 1.2-m discs about twice as wide.
 fn a_one_dimensional_lesson_fits_its_line_not_the_whole_box() {
     let x = Xvfb::start("one-dimensional view");
-    let args = [
-        "--paused",
-        "--size",
-        "1366x768",
-        "--ui-scale",
-        "2",
-        &asset("preset-1-head-on.toml"),
-    ];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 300.0]);
+    let app = head_on_paused(&x, "1366x768", "2");
     let s = app.wait_frames(3);
     let view = View::of(&s);
     let world = rect(&s["layout"]["world"]);
@@ -108,16 +99,7 @@ fn a_one_dimensional_lesson_fits_its_line_not_the_whole_box() {
 /// makes room: another text size (F2).
 fn a_tab_clicked_without_room_says_what_makes_room() {
     let x = Xvfb::start("no room for a tab");
-    let args = [
-        "--paused",
-        "--size",
-        "1024x625",
-        "--ui-scale",
-        "2",
-        &asset("preset-1-head-on.toml"),
-    ];
-    let app = Sandbox::start(&x, &args);
-    app.move_to([500.0, 300.0]);
+    let app = head_on_paused(&x, "1024x625", "2");
     let s = app.wait_frames(3);
     assert_eq!(s["layout"]["tab_folded"], true, "{}", s["layout"]);
     app.click(widget(&s, "tab_collisions", 0.5));

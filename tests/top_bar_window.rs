@@ -38,16 +38,7 @@ fn the_momentum_is_in_the_top_bar_at_a_projectors_size() {
         ("1280x800", "2", true),
         ("1024x768", "2", false),
     ] {
-        let args = [
-            "--paused",
-            "--size",
-            size,
-            "--ui-scale",
-            scale,
-            &asset("preset-1-head-on.toml"),
-        ];
-        let app = Sandbox::start(&x, &args);
-        app.move_to([500.0, 300.0]);
+        let app = head_on_paused(&x, size, scale);
         let s = app.wait_frames(4);
         let case = format!("{size} at size {scale}");
         assert_eq!(s["panel_widgets"]["momentum"].is_array(), shown, "{case}");

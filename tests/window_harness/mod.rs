@@ -521,6 +521,16 @@ pub fn glancing_disc_selected(x: &Xvfb, size: &str, scale: &str) -> Sandbox {
     app
 }
 
+/// The head-on preset, paused, at `size` ("1366x768") and text size
+/// `scale`, the pointer over the world.
+pub fn head_on_paused(x: &Xvfb, size: &str, scale: &str) -> Sandbox {
+    let preset = asset("preset-1-head-on.toml");
+    let args = ["--paused", "--size", size, "--ui-scale", scale, &preset];
+    let app = Sandbox::start(x, &args);
+    app.move_to([500.0, 300.0]);
+    app
+}
+
 /// The glancing preset at 1024×768 and text size 2 (with `more` on the
 /// command line), its Discs tab open: a table wider than the window.
 pub fn projector_discs_tab(x: &Xvfb, more: &[&str]) -> Sandbox {
