@@ -74,8 +74,9 @@ const NARROW_COLUMN: f32 = 64.0;
 /// a larger gas lays out only the rows in sight.
 const EVERY_ROW_UP_TO: usize = 100;
 
-/// Column headings, with units.
-fn headings() -> [String; 9] {
+/// Column headings, with units; `line`: the axis of a one-dimensional
+/// world, whose momentum column is signed along it.
+fn headings(line: Option<usize>) -> [String; 9] {
     [
         tr!("table-disc"),
         "m (kg)".into(),
@@ -84,7 +85,11 @@ fn headings() -> [String; 9] {
         "v_x (m/s)".into(),
         "v_y (m/s)".into(),
         "|v| (m/s)".into(),
-        "|p| (kg·m/s)".into(),
+        match line {
+            Some(0) => "p_x (kg·m/s)".into(),
+            Some(_) => "p_y (kg·m/s)".into(),
+            None => "|p| (kg·m/s)".into(),
+        },
         format!("{} (J)", tr!("symbol-ke")),
     ]
 }
@@ -152,6 +157,10 @@ impl View for DiscsTable {
         // The cells typed in, noted after the table as every text field is.
         let mut fields: Vec<egui::Response> = Vec::new();
         let spin = spin_shown(&model.world);
+        // On a rail, the momentum along it, signed: the column then adds
+        // up to the top bar's (2.455 + 5.455 of |p| had made 7.91 where
+        // light hits heavy and the total is 3).
+        let line = model.world.laws.constrain.map(|axis| axis.index());
         let spin_columns = if spin { 3 } else { 0 };
         let spin_headings = spin_headings();
         // With the spin columns, narrower ones (units under the names), so
@@ -229,8 +238,8 @@ impl View for DiscsTable {
                     .columns(Column::auto().at_least(column_width), columns)
                     .header(header_height, |mut header| {
                         // The last column noted: whether it is in sight.
-                        let last = headings().len() - 1;
-                        for (k, h) in headings().into_iter().enumerate() {
+                        let last = headings(line).len() - 1;
+                        for (k, h) in headings(line).into_iter().enumerate() {
                             let h = if spin {
                                 h.replacen(" (", "\n(", 1)
                             } else {
@@ -304,7 +313,10 @@ impl View for DiscsTable {
                                 p.vel.x,
                                 p.vel.y,
                                 p.vel.length(),
-                                p.momentum().length(),
+                                match line {
+                                    Some(axis) => p.momentum()[axis],
+                                    None => p.momentum().length(),
+                                },
                                 p.kinetic_energy(),
                             ];
                             let mut to_end = false;

@@ -114,3 +114,37 @@ fn a_refused_cell_closes_when_a_reset_takes_its_refusal_away() {
     texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
     assert_eq!(table.editing, None, "and the cell with it");
 }
+
+/// On a rail the momentum column is signed along it, so that it adds up
+/// to the top bar's total (light hits heavy: −2.455 + 5.455 = 3, where
+/// |p| made 7.91); in a plane it stays |p|.
+#[test]
+fn on_a_rail_the_momentum_column_adds_up_to_the_total() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut model = sandbox_with(dir.path(), "preset-3-light-hits-heavy.toml", true, 0.0);
+    assert!(model.world.laws.constrain.is_some());
+    model.apply(crate::app::model::Command::NextCollision);
+    let total: f64 = model.world.particles.iter().map(|p| p.momentum().x).sum();
+    let mut table = DiscsTable::default();
+    let texts = texts_drawn(&model, egui::vec2(1400.0, 300.0), &mut table);
+    assert!(texts.iter().any(|t| t == "p_x (kg·m/s)"), "{texts:?}");
+    let column: f64 = model
+        .world
+        .particles
+        .iter()
+        .map(|p| {
+            let shown = crate::app::numbers::quantity(p.momentum().x, 3);
+            assert!(texts.contains(&shown), "{shown} in {texts:?}");
+            crate::app::numbers::parse(&shown).unwrap()
+        })
+        .sum();
+    assert!((column - total).abs() < 2e-3, "{column} against {total}");
+    assert!(model.world.particles.iter().any(|p| p.momentum().x < 0.0));
+    let glancing = sandbox_with(dir.path(), "preset-4-glancing.toml", true, 0.0);
+    let texts = texts_drawn(
+        &glancing,
+        egui::vec2(1400.0, 300.0),
+        &mut DiscsTable::default(),
+    );
+    assert!(texts.iter().any(|t| t == "|p| (kg·m/s)"), "{texts:?}");
+}
