@@ -612,10 +612,17 @@ try:
     )
     view = s["layout"]["world"]
     corners = [to_screen(s, [0, 0]), to_screen(s, s["size"])]
+    # A one-dimensional scene's view fits its rail and a band round the
+    # discs: the box's length is in sight, and every disc.
+    rail = s.get("constrain") is not None
+    edges = [to_screen(s, [p["pos"][0] + dx, p["pos"][1] + dy])
+             for p in s["particles"] for dx, dy in [(-p["radius"], -p["radius"]), (p["radius"], p["radius"])]]
+    inside = lambda p, across: (view[0] - 1 <= p[0] <= view[0] + view[2] + 1
+                                and (not across or view[1] - 1 <= p[1] <= view[1] + view[3] + 1))
     check(
-        all(view[0] - 1 <= p[0] <= view[0] + view[2] + 1 for p in corners)
-        and all(view[1] - 1 <= p[1] <= view[1] + view[3] + 1 for p in corners),
-        f"at pixel ratio 2 the whole box is in the world's rectangle ({corners} in {view})",
+        all(inside(p, not rail) for p in corners) and all(inside(p, True) for p in edges),
+        f"at pixel ratio 2 the box{' (its length: a rail)' if rail else ''} and every disc are in the "
+        f"world's rectangle ({corners} in {view})",
     )
     d.save_screenshot(SCREENSHOT.replace(".png", "-pixel-ratio-2.png"))
     d.set_window_size(800, 600)
