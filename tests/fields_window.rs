@@ -273,16 +273,17 @@ fn a_refused_field_is_marked_until_typed_again() {
             w["edit_pending"].is_array(),
         )
     };
-    tab_to(&app, "disc_mass", 60);
-    app.xdo(&["type", "1e30"]);
-    app.xdo(&["key", "Return"]);
-    let s = app.wait_frames(5);
+    // Tab to `field`, type `text` and Enter: the state after the answer.
+    let enter_in = |field: &str, text: &str| {
+        tab_to(&app, field, 80);
+        app.xdo(&["type", text]);
+        app.xdo(&["key", "Return"]);
+        app.wait_frames(5)
+    };
+    let s = enter_in("disc_mass", "1e30");
     assert_eq!(marks(&s), (true, false, false), "the mass refused");
     assert_eq!(focus(&s).as_deref(), Some("disc_mass"), "kept the keys");
-    tab_to(&app, "disc_vx", 80);
-    app.xdo(&["type", "3"]);
-    app.xdo(&["key", "Return"]);
-    let s = app.wait_frames(5);
+    let s = enter_in("disc_vx", "3");
     assert_eq!(marks(&s), (true, false, true), "refused for the mass");
     assert_eq!(s["particles"][0]["vel"][0], 2.5, "nothing applied");
     assert_eq!(s["particles"][0]["mass"], 1.0);
@@ -299,18 +300,12 @@ fn a_refused_field_is_marked_until_typed_again() {
     assert_eq!(marks(&s), (false, false, false), "applied: nothing marked");
     // Esc takes a refused number back; and one left in its field goes
     // once the clock runs ("1e30" stayed in red beside a moving disc).
-    tab_to(&app, "disc_mass", 80);
-    app.xdo(&["type", "1e30"]);
-    app.xdo(&["key", "Return"]);
-    let s = app.wait_frames(5);
+    let s = enter_in("disc_mass", "1e30");
     assert_eq!(marks(&s), (true, false, false), "refused again");
     app.xdo(&["key", "Escape"]);
     let s = app.wait_frames(3);
     assert_eq!(marks(&s), (false, false, false), "Esc took it back");
-    tab_to(&app, "disc_vx", 80);
-    app.xdo(&["type", "1e30"]);
-    app.xdo(&["key", "Return"]);
-    let s = app.wait_frames(5);
+    let s = enter_in("disc_vx", "1e30");
     assert_eq!(marks(&s), (false, true, false), "v_x refused");
     app.click(widget(&s, "play", 0.5));
     app.wait_for("the refused v_x gone as the clock runs", 60, |s| {

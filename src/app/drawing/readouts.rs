@@ -226,8 +226,7 @@ pub fn draw_readouts(
     if world.particles.is_empty() {
         return Shown::default();
     }
-    let full_size = MIN_TEXT_POINTS * look.text_scale;
-    let size = full_size;
+    let size = MIN_TEXT_POINTS * look.text_scale;
     let pad = 0.35 * size;
     let line_height = 1.25 * size;
     let spin = spin_shown(world);
@@ -264,22 +263,23 @@ pub fn draw_readouts(
             continue;
         }
         let lines = readout_lines(p, i, spin);
-        let width_at = |size: f32| {
+        let width_at = |fitted: f32| {
             let text_width = lines
                 .iter()
-                .map(|l| text.measure(l, size).x)
+                .map(|l| text.measure(l, fitted).x)
                 .fold(0.0, f32::max);
             // The stripe and the padding grow with the text.
-            text_width + (stripe + 2.0 * pad) * size / full_size
+            text_width + (stripe + 2.0 * pad) * fitted / size
         };
         let room = (visible.1.x - visible.0.x) as f32 - 2.0 * gaps[0] as f32;
-        let mut size = full_size;
-        if chosen && width_at(size) > room {
-            let least = (full_size * SHRINK_TO_FIT).max(MIN_TEXT_POINTS);
-            size = (full_size * room / width_at(full_size)).clamp(least.min(full_size), full_size);
+        let whole = width_at(size);
+        let mut fitted = size;
+        if chosen && whole > room {
+            let least = (size * SHRINK_TO_FIT).max(MIN_TEXT_POINTS).min(size);
+            fitted = (size * room / whole).clamp(least, size);
         }
-        let scale = size / full_size;
-        let label_size = DVec2::new(f64::from(width_at(size)), height * f64::from(scale));
+        let scale = fitted / size;
+        let label_size = DVec2::new(f64::from(width_at(fitted)), height * f64::from(scale));
         let gaps: &[f64] = if chosen { &gaps } else { &gaps[..1] };
         let place_in = |room: ScreenRect| {
             place_label(c, r, label_size, gaps, room, &obstacles, &placer).or_else(|| {
@@ -314,7 +314,7 @@ pub fn draw_readouts(
                 rect: at.rect,
                 leader: at.leader,
                 lines,
-                size,
+                size: fitted,
                 color: Color::from_rgba(c.r, c.g, c.b, 255),
             });
         }

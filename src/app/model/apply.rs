@@ -324,16 +324,7 @@ impl Sandbox {
                     p.dock_expanded = true;
                 }
             }
-            SayNoRoomForTab { side_docked } => {
-                let said = match side_docked {
-                    true => tr!("dock-no-room"),
-                    false => tr!(
-                        "dock-no-room-drawer",
-                        key = super::bindings::keys_of(&NextScale)
-                    ),
-                };
-                self.toast(said);
-            }
+            SayNoRoomForTab { side_docked } => self.toast(super::no_room_for_tab(side_docked)),
             ToggleDockExpanded => self.panels.dock_expanded = !self.panels.dock_expanded,
             SetTabHeight(h) => self.panels.tab_height = h.filter(|h| h.is_finite()),
             KeepTabHeight => {

@@ -7,7 +7,7 @@
 
 #![cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
 
-use super::bindings::{binding_of, keys_of, label, tooltip, Key};
+use super::bindings::{binding_of, icon_and_words, keys_of, label, tooltip, Key};
 use super::scenes::preset_labels;
 use super::{Command, Sandbox};
 use crate::app::lang::{language, native_name, tr, Lang};
@@ -87,7 +87,9 @@ impl Sandbox {
                 label: match c {
                     Command::TogglePause if self.clock.paused => tr!("play"),
                     Command::TogglePause => tr!("pause"),
-                    _ => spoken(&label(c).unwrap_or_default()),
+                    // Without the icon before the words ("⟲ Reset" was
+                    // read "anticlockwise open circle arrow Reset").
+                    _ => icon_and_words(&label(c).unwrap_or_default()).1.to_string(),
                 },
                 hint: tooltip(c),
                 shortcut: binding_of(c)
@@ -120,16 +122,6 @@ impl Sandbox {
             },
             said: tr!("mirror-said"),
         }
-    }
-}
-
-/// A button's label as a screen reader should say it: without the icon
-/// before its words ("⟲ Reset" is read "anticlockwise open circle arrow
-/// Reset").
-fn spoken(label: &str) -> String {
-    match label.split_once(' ') {
-        Some((icon, words)) if !icon.chars().any(char::is_alphanumeric) => words.to_string(),
-        _ => label.to_string(),
     }
 }
 

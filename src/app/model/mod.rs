@@ -52,7 +52,7 @@ pub mod undo;
 
 pub use command::Command;
 pub use open::OpenScene;
-pub use panels::{next_scale, DockTab, Panels, Theme, UI_SCALE_RANGE};
+pub use panels::{next_scale, no_room_for_tab, DockTab, Panels, Theme, UI_SCALE_RANGE};
 
 use crate::app::lang::tr;
 use crate::app::numbers::plain;

@@ -91,6 +91,18 @@ pub fn next_scale(scale: f32) -> f32 {
         .unwrap_or(UI_SCALES[0])
 }
 
+/// Why the open tab has no room, and what makes room: L hides a docked
+/// side panel; beside a drawer (which L only opens) another text size.
+pub fn no_room_for_tab(side_docked: bool) -> String {
+    match side_docked {
+        true => tr!("dock-no-room"),
+        false => {
+            let key = super::bindings::keys_of(&super::Command::NextScale);
+            tr!("dock-no-room-drawer", key = key)
+        }
+    }
+}
+
 /// Which panels, tabs and popups are open, and how large everything is.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Panels {

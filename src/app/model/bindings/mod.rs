@@ -230,6 +230,16 @@ pub fn control_of(b: &Binding) -> Option<String> {
     }
 }
 
+/// A control's label split into its icon (a first word of no letter or
+/// digit: the "⟲" of "⟲ Reset") and its words; `None` and the whole label
+/// where it has no icon.
+pub fn icon_and_words(label: &str) -> (Option<&str>, &str) {
+    match label.split_once(' ') {
+        Some((icon, words)) if !icon.chars().any(char::is_alphanumeric) => (Some(icon), words),
+        _ => (None, label),
+    }
+}
+
 /// Whether a key belongs to the browser, not to the page: the page never
 /// sees Ctrl+Q or Ctrl+N (a browser window of its own), F6 goes to the
 /// address bar, F11 is the browser's full screen and F12 its developer

@@ -33,8 +33,10 @@ pub struct CellEdit {
 pub struct DiscsTable {
     editing: Option<CellEdit>,
     /// An edit sent to the model, kept until it answers: refused, the cell
-    /// stays open with its text.
-    sent: Option<CellEdit>,
+    /// stays open with its text; and whether it was left with Enter (then
+    /// refused, the cell takes the keyboard back, its text selected to be
+    /// typed over).
+    sent: Option<(CellEdit, bool)>,
     /// The disc selected when the table was last shown: a disc selected
     /// since (in the world, by Q) is scrolled into sight.
     seen_selection: Option<usize>,
@@ -42,11 +44,6 @@ pub struct DiscsTable {
     /// goes (a reset, another scene, an undo), not to show a red value
     /// the disc never had.
     refused: bool,
-    /// The edit sent was left with Enter: refused, its cell takes the
-    /// keyboard back, with its text selected to be typed over.
-    sent_with_enter: bool,
-    /// The refused cell is to take the keyboard back this frame.
-    refocus: bool,
 }
 
 /// The spin columns' headings, with units on a second line, and what they
@@ -100,11 +97,12 @@ impl View for DiscsTable {
         let note = model.messages.table.clone();
         // The row just edited, kept in sight as its answer comes (which
         // may take a line above the table).
-        let answered = self.sent.take().map(|sent| {
+        let mut refocus = false;
+        let answered = self.sent.take().map(|(sent, with_enter)| {
             let disc = sent.disc;
             self.editing = note.as_ref().filter(|n| n.error).map(|_| sent);
             self.refused = self.editing.is_some();
-            self.refocus = self.refused && std::mem::take(&mut self.sent_with_enter);
+            refocus = self.refused && with_enter;
             disc
         });
         if self.refused && !note.as_ref().is_some_and(|n| n.error) {
@@ -142,7 +140,6 @@ impl View for DiscsTable {
         let mut start: Option<CellEdit> = None;
         let mut cancel = false;
         let mut with_enter = false;
-        let refocus = std::mem::take(&mut self.refocus);
         let mut cells = Vec::new();
         // Where each disc's number is in the table, and whether it has the
         // keyboard.
@@ -467,8 +464,7 @@ impl View for DiscsTable {
                 from: EditPlace::Table,
             });
             self.editing = None;
-            self.sent = Some(cell);
-            self.sent_with_enter = with_enter;
+            self.sent = Some((cell, with_enter));
         }
     }
 }

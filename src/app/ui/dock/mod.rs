@@ -174,16 +174,8 @@ impl BottomDock {
                 cx.send(Command::ToggleDockExpanded);
             }
             if model.panels.dock_expanded && !content {
-                // L frees room only where the side panel is docked; beside
-                // a drawer it opened the drawer, and the tab stayed folded.
-                let why = match cx.drawer {
-                    false => crate::app::lang::tr!("dock-no-room"),
-                    true => {
-                        let key = crate::app::model::bindings::keys_of(&Command::NextScale);
-                        crate::app::lang::tr!("dock-no-room-drawer", key = key)
-                    }
-                };
                 // (A click on a tab says it in the strip too.)
+                let why = crate::app::model::no_room_for_tab(!cx.drawer);
                 let r = ui.add(egui::Label::new(why).truncate());
                 cx.note("dock_no_room", &r);
             }

@@ -36,8 +36,8 @@ pub struct DiscFields {
     /// and a later edit of another field was refused for it without a
     /// sign why).
     refused: Option<([String; 8], [bool; 8])>,
-    /// The field Enter was pressed in, while its edit is answered.
-    entered_in: Option<usize>,
+    /// The edit sent was sent with Enter, while it is answered.
+    sent_with_enter: bool,
     /// The field to give the keyboard back to: after Enter, a refused
     /// field kept it (egui's field let it go, and a keyboard user had to
     /// Tab back to mend the number).
@@ -145,7 +145,7 @@ impl DiscFields {
         }
         // The model took the last edit: every field follows the disc again.
         if std::mem::take(&mut self.sent) {
-            let entered = self.entered_in.take();
+            let entered = std::mem::take(&mut self.sent_with_enter);
             match cx.model.messages.fields.as_ref().map(|n| n.error) {
                 Some(false) => {
                     self.shown = self.text.clone();
@@ -154,8 +154,10 @@ impl DiscFields {
                 Some(true) => {
                     let culprits = self.culprits(cx);
                     self.refused = Some((self.text.clone(), culprits));
-                    self.refocus =
-                        entered.and_then(|_| SHOWN_IN_ORDER.into_iter().find(|&k| culprits[k]));
+                    self.refocus = SHOWN_IN_ORDER
+                        .into_iter()
+                        .find(|&k| culprits[k])
+                        .filter(|_| entered);
                 }
                 None => {}
             }
@@ -202,7 +204,6 @@ impl DiscFields {
                     cx.note(FIELD_KEYS[k], &r);
                     if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                         enter = true;
-                        self.entered_in = Some(k);
                     }
                     // Esc takes back what was typed; and a refused number
                     // goes once the clock runs: "1e30" stayed in red
@@ -247,10 +248,8 @@ impl DiscFields {
         ui.horizontal(|ui| {
             let r = ui.button(tr!("apply")).tip(tr!("apply-hover"));
             cx.note("apply", &r);
-            if r.clicked() {
-                self.entered_in = None;
-            }
             if r.clicked() || enter {
+                self.sent_with_enter = enter && !r.clicked();
                 self.apply(cx, i);
             }
             command_button(ui, cx, Command::DeleteSelected, Some("delete"));
@@ -314,7 +313,7 @@ impl DiscFields {
                 self.polar_error = Some(error);
                 // The one typed in of the two (the speed if both were).
                 let typed = if speed.is_some() { 6 } else { DIRECTION };
-                self.refocus = self.entered_in.take().map(|_| typed);
+                self.refocus = std::mem::take(&mut self.sent_with_enter).then_some(typed);
                 return;
             }
         }

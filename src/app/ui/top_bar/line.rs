@@ -138,13 +138,23 @@ impl TopBar {
         let more_width = galley(ui, &more).size().x + spacing;
         // Everything always shown but the name, each with the room after
         // the one before it.
-        let fixed_of = |essential: &[Item]| -> f32 {
+        // (`short`: each in its short form, where it has one.)
+        let fixed_of = |essential: &[Item], short: bool| -> f32 {
             essential[1..]
                 .iter()
-                .map(|item| galley(ui, &item.text).size().x + spacing)
+                .map(|item| {
+                    let text = item.short.as_ref().filter(|_| short).unwrap_or(&item.text);
+                    galley(ui, text).size().x + spacing
+                })
                 .sum()
         };
-        let mut fixed = fixed_of(&essential);
+        let mut fixed = fixed_of(&essential, false);
+        let short_fixed = fixed_of(&essential, true);
+        // A name shorter than NAME_AT_LEAST needs only its own width:
+        // "Choque oblicuo" left room for "PAUSADO", which had taken its sign.
+        let name_width = essential
+            .first()
+            .map_or(0.0, |name| name.whole_width(ui, NAME_END_GAP * spacing));
         // Where the buttons' words would leave the time and the state no
         // room (long words at a projector's scale), the buttons that have
         // an icon show only it, their words on hover.
@@ -161,29 +171,14 @@ impl TopBar {
         // forms and the name at its least (at 1024×768 at text size 2 the
         // state had lost its word, and the momentum was not shown for it).
         let icon_of = |label: &str| {
-            let word = label.split_whitespace().next().unwrap_or(label);
-            match word.chars().any(char::is_alphanumeric) {
-                true => label.to_string(),
-                false => word.to_string(),
-            }
+            let (icon, _) = crate::app::model::bindings::icon_and_words(label);
+            icon.unwrap_or(label).to_string()
         };
         let icons_width: f32 = buttons
             .iter()
             .map(|(l, _, _)| galley(ui, &RichText::new(icon_of(l))).size().x + padding)
             .sum();
-        let short_fixed: f32 = essential[1..]
-            .iter()
-            .map(|item| {
-                galley(ui, item.short.as_ref().unwrap_or(&item.text))
-                    .size()
-                    .x
-                    + spacing
-            })
-            .sum();
-        let name_least = essential
-            .first()
-            .map_or(0.0, |name| name.whole_width(ui, NAME_END_GAP * spacing))
-            .min(NAME_AT_LEAST);
+        let name_least = name_width.min(NAME_AT_LEAST);
         let wanted = Some(before_the_name(ui, &optional, spacing))
             .filter(|&wanted| {
                 let least = icons_width + spacing + short_fixed + wanted + more_width + name_least;
@@ -208,15 +203,10 @@ impl TopBar {
         // (the π blocks' count at a projector's size), they take their
         // short forms: the state its sign, its word on hover.
         let name_room = ui.available_width() - width - spacing - fixed - wanted - more_width;
-        // A name shorter than that needs only its own width: "Choque
-        // oblicuo" left room for "PAUSADO", which had taken its sign.
-        let name_width = essential
-            .first()
-            .map_or(0.0, |name| name.whole_width(ui, NAME_END_GAP * spacing));
         let mut essential = essential;
-        if name_room < NAME_AT_LEAST.min(name_width) {
+        if name_room < name_least {
             essential = essential.into_iter().map(Item::shortened).collect();
-            fixed = fixed_of(&essential);
+            fixed = short_fixed;
         }
         ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
             let line = egui::vec2(

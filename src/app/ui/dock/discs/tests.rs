@@ -99,7 +99,7 @@ fn a_refused_cell_closes_when_a_reset_takes_its_refusal_away() {
         model.messages.table.as_ref().is_some_and(|n| n.error),
         "on the line, v_y is refused"
     );
-    table.sent = Some(cell.clone());
+    table.sent = Some((cell.clone(), false));
     texts_drawn(&model, egui::vec2(900.0, 300.0), &mut table);
     assert_eq!(
         table.editing,
