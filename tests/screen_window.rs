@@ -153,6 +153,26 @@ fn a_plain_start_opens_on_the_tiles_and_a_lesson_shows_only_its_controls() {
         s["scene_origin"]
     );
     assert_eq!(s["ui"]["tab"], "Momenta", "the tab that shows it");
+    // It waits on its question for the class to guess, a Play button at
+    // the strip's end beside it; played, it runs, and the button goes.
+    let s = app.wait_for("the lesson's Play button", 60, |s| {
+        s["panel_widgets"]["lesson_play"].is_array()
+    });
+    assert_eq!(s["paused"], true, "a lesson waits to be played");
+    let (play, caption) = (
+        rect(&s["panel_widgets"]["lesson_play"]),
+        rect(&s["panel_widgets"]["caption"]),
+    );
+    assert!(
+        caption[0] + caption[2] <= play[0] && play[0] + play[2] <= 1280.0,
+        "the caption {caption:?}, the button {play:?}"
+    );
+    let strip_middle = caption[1] + caption[3] / 2.0;
+    assert!(play[1] <= strip_middle && strip_middle <= play[1] + play[3]);
+    app.click(widget(&s, "lesson_play", 0.5));
+    app.wait_for("the lesson running", 60, |s| {
+        s["paused"] == false && s["panel_widgets"]["lesson_play"].is_null()
+    });
     let s = app.wait_frames(3);
     let widgets = &s["panel_widgets"];
     assert!(widgets["section_collisions"].is_array() && widgets["section_show"].is_array());

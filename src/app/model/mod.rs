@@ -261,6 +261,7 @@ impl Sandbox {
                 saved_to: None,
                 opened: 0,
                 setup: None,
+                lesson: None,
             },
             clock,
             view: WorldView {

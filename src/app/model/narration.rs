@@ -39,6 +39,9 @@ pub struct Narration {
     impact_waiting: bool,
     /// The π blocks' count was said.
     pi_said: bool,
+    /// A lesson's question was in the strip last frame: when its answer
+    /// takes its place, the answer is said.
+    asking: bool,
 }
 
 impl Narration {
@@ -157,6 +160,16 @@ impl Sandbox {
     /// After the frame's steps: the newest impact, unless one was said a
     /// moment ago, and the π blocks' count once it is final.
     pub(super) fn narrate(&mut self) {
+        let asking = self.lesson_question().is_some();
+        if std::mem::replace(&mut self.messages.narration.asking, asking) && !asking {
+            // Answered by what was just seen (not by an edit or another
+            // scene, where the strip's caption is another's).
+            if let (Some(_), false) = (self.open.lesson, self.open.edited) {
+                if let Some(answer) = self.shown_caption() {
+                    self.announce(answer);
+                }
+            }
+        }
         let now = self.session.now;
         let recorded = self.world.ledger.recorded_impacts();
         let narration = &mut self.messages.narration;

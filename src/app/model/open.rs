@@ -27,6 +27,10 @@ pub struct OpenScene {
     /// second the scene as it opened. A teacher who set 2 kg, ran the
     /// collision and pressed R lost the 2 kg.
     pub setup: Option<World>,
+    /// The start screen's lesson this scene was opened as: until its
+    /// answer is seen, the strip asks the tile's question instead of
+    /// giving the answer ([`Sandbox::lesson_question`]).
+    pub lesson: Option<super::start::Tile>,
 }
 
 impl Sandbox {

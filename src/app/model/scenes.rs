@@ -108,6 +108,9 @@ impl Sandbox {
     /// edits: Drag on empty space…" read as nonsense).
     pub fn shown_caption(&self) -> Option<String> {
         use impulse::catalogue::{DEFAULT, EMPTY, PRESET_EMPTY};
+        if let Some(question) = self.lesson_question() {
+            return Some(question);
+        }
         // Known by their captions (the sandbox's origin is a word in the
         // language of the start), read from their files once.
         static WHAT_TO_DO: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
@@ -186,6 +189,7 @@ impl Sandbox {
                 self.open.saved_to = None;
                 self.open.opened = self.open.opened.wrapping_add(1);
                 self.open.setup = None;
+                self.open.lesson = None;
                 // A note on the scene before ("Saved … in …") is not about
                 // this one.
                 self.messages.scene = None;
@@ -462,6 +466,8 @@ impl Sandbox {
             },
             // Which set-up a reset would bring back is no longer known.
             setup: None,
+            // Back across another scene's opening, it is no lesson's.
+            lesson: self.open.lesson.filter(|_| what != "edit-open-scene"),
         };
         // What came after the moment belongs to the undone timeline; the
         // ledger came back with the world.

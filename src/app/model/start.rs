@@ -3,6 +3,9 @@
 //! the tab that shows it; *Free play* opens the sandbox with everything.
 //! Shown on a plain start (no scene file, no gas, no shared link) and by
 //! the top bar's *Start* button; while it is open nothing runs behind it.
+//! A lesson opens paused on its tile's question (predict, observe,
+//! explain): the strip asks it, with a Play button, until the answer has
+//! been seen, and then gives the scene's caption, its answer.
 
 use super::{scenes, DockTab, Sandbox};
 use crate::app::lang::tr;
@@ -138,7 +141,35 @@ impl Sandbox {
         self.panels.docks_open = true;
         self.panels.dock_expanded = true;
         self.panels.tab = tile.tab();
-        self.clock.paused = false;
-        self.resume_after_modal();
+        // A lesson waits, paused on its question, for the class to guess
+        // (predict, then observe, then explain); free play runs at once.
+        let lesson = tile != Tile::FreePlay;
+        self.open.lesson = lesson.then_some(tile);
+        self.clock.paused = lesson;
+        self.panels.paused_by_modal = false;
+    }
+
+    /// The open lesson, while its answer is still to be seen: before its
+    /// first collision (the π blocks: until their count is final), and
+    /// while its discs are as the lesson set them.
+    fn lesson_unanswered(&self) -> Option<Tile> {
+        let tile = self.open.lesson?;
+        let answered = match tile {
+            Tile::PiBlocks => super::lesson::pi_result(&self.world).is_some(),
+            _ => self.world.total_pair_collisions > 0,
+        };
+        (!answered && !self.open.edited).then_some(tile)
+    }
+
+    /// Whether a lesson waits at its start, paused on its question: the
+    /// strip then has a button to play it.
+    pub fn lesson_waiting(&self) -> bool {
+        self.clock.paused && self.world.time == 0.0 && self.lesson_unanswered().is_some()
+    }
+
+    /// What the strip shows of an unanswered lesson: its question instead
+    /// of its answer (waiting at its start, with a Play button beside it).
+    pub fn lesson_question(&self) -> Option<String> {
+        Some(self.lesson_unanswered()?.blurb())
     }
 }

@@ -435,6 +435,7 @@ fn random_commands_keep_every_disc_finite_and_inside_its_walls() {
 
 mod help_covers;
 mod kept_work;
+mod lessons;
 mod next_collision;
 mod numbering;
 mod picks;

@@ -9,7 +9,8 @@
 //! hover: so every caption says its answer first ("The heavy disc keeps
 //! 9/11 of its speed…"), then the set-up, and a projector's narrow strip
 //! cuts the set-up. The text stops short of the drawer open over the
-//! strip's end.
+//! strip's end. A lesson waiting at its start on its question has its
+//! Play button at the strip's end.
 
 use super::{Cx, Keys, View};
 use crate::app::lang::tr;
@@ -83,6 +84,14 @@ impl View for Strip {
                 let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
                 width = width.min(left.max(1.0));
             }
+            // A lesson waiting on its question: its Play button at the
+            // strip's end, beside the words that name it.
+            let play = model.lesson_waiting().then(|| format!("▶ {}", tr!("play")));
+            if let Some(play) = &play {
+                let button = super::widgets::button_text_width(ui, play.as_str())
+                    + 2.0 * ui.spacing().button_padding.x;
+                width = (width - button - 2.0 * ui.spacing().item_spacing.x).max(1.0);
+            }
             // The short hint has the full one on hover.
             let mut full_hint = None;
             let caption = if cx.keys == Keys::World {
@@ -116,6 +125,17 @@ impl View for Strip {
             };
             let r = super::widgets::cut_label(ui, egui::Label::new(galley), more);
             cx.note(name, &r);
+            if let Some(play) = play {
+                ui.add_space((width - r.rect.width()).max(0.0) + ui.spacing().item_spacing.x);
+                let command = crate::app::model::Command::TogglePause;
+                super::widgets::wide_labelled_button(
+                    ui,
+                    cx,
+                    (play, 0.0),
+                    command,
+                    Some("lesson_play"),
+                );
+            }
         });
     }
 }
