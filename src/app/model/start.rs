@@ -147,6 +147,10 @@ impl Sandbox {
         self.open.lesson = lesson.then_some(tile);
         self.clock.paused = lesson;
         self.panels.paused_by_modal = false;
+        // Said after the scene's name, as the strip shows it.
+        if let Some(question) = self.lesson_question() {
+            self.announce(question);
+        }
     }
 
     /// The open lesson, while its answer is still to be seen: before its

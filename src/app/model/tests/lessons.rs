@@ -29,6 +29,8 @@ fn a_lesson_asks_its_question_until_its_answer_has_been_seen() {
     assert!(s.lesson_waiting());
     assert_eq!(s.shown_caption().as_deref(), Some(question.as_str()));
     assert!(s.describe().contains(&question), "{}", s.describe());
+    let said = &s.messages.narration.said;
+    assert_eq!(said.back().map(|(_, l)| l), Some(&question), "{said:?}");
     assert!(!s.describe().contains(&answer), "{}", s.describe());
     // Played: the question stays while the discs close in (the hit is at
     // t = 2.4 s), and the answer comes with the collision, said once.
