@@ -17,12 +17,18 @@ fn run_until(s: &mut Sandbox, seconds: f64, done: impl Fn(&Sandbox) -> bool) {
     }
 }
 
+/// `tile`'s lesson, opened from the start screen over a running gas.
+fn lesson(dir: &std::path::Path, tile: Tile) -> Sandbox {
+    let mut s = sandbox_with(dir, "preset-8-gas.toml", false, 0.0);
+    s.place_world([0.0, 0.0, 1000.0, 700.0], 0.0);
+    s.apply(Command::StartWith(tile));
+    s
+}
+
 #[test]
 fn a_lesson_asks_its_question_until_its_answer_has_been_seen() {
     let dir = tempfile::tempdir().unwrap();
-    let mut s = sandbox_with(dir.path(), "preset-8-gas.toml", false, 0.0);
-    s.place_world([0.0, 0.0, 1000.0, 700.0], 0.0);
-    s.apply(Command::StartWith(Tile::HeadOn));
+    let mut s = lesson(dir.path(), Tile::HeadOn);
     let answer = s.scene_description().unwrap();
     let question = Tile::HeadOn.blurb();
     assert!(s.clock.paused, "a lesson waits for the class to guess");
@@ -61,9 +67,7 @@ fn a_lesson_asks_its_question_until_its_answer_has_been_seen() {
 #[test]
 fn the_pi_blocks_answer_once_their_count_is_final() {
     let dir = tempfile::tempdir().unwrap();
-    let mut s = sandbox_with(dir.path(), "preset-8-gas.toml", false, 0.0);
-    s.place_world([0.0, 0.0, 1000.0, 700.0], 0.0);
-    s.apply(Command::StartWith(Tile::PiBlocks));
+    let mut s = lesson(dir.path(), Tile::PiBlocks);
     let question = Tile::PiBlocks.blurb();
     s.apply(Command::TogglePause);
     run_until(&mut s, 30.0, |s| s.world.total_pair_collisions > 0);
