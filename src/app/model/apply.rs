@@ -265,6 +265,9 @@ impl Sandbox {
             }
             SelectNext(step) => self.select_next(step),
             AimSelected(dv) => self.aim_selected(dv),
+            // Enter, the key that opened the lesson from its tile, plays it
+            // (a disc at the centre had landed on the lesson's discs).
+            LaunchAtCentre if self.lesson_waiting() => self.clock.paused = false,
             LaunchAtCentre => self.launch_at_centre(),
             Describe => {
                 let words = self.describe();
@@ -406,6 +409,16 @@ impl Sandbox {
             Some(true) => {
                 let undo = super::bindings::keys_of(&Command::Undo);
                 self.toast_for(tr!("scene-reset-edits", undo = undo), 8.0);
+            }
+            Some(false) if self.open.lesson.is_some() => {
+                // A lesson starts again as it opened: paused on its
+                // question, in the strip at once (a toast had hidden it
+                // while the discs closed in, and the answer came).
+                self.clock.paused = true;
+                self.announce(tr!("scene-reset"));
+                if let Some(question) = self.lesson_question() {
+                    self.announce(question);
+                }
             }
             Some(false) => self.toast(tr!("scene-reset")),
             None => {}

@@ -165,6 +165,11 @@ impl Sandbox {
         (!answered && !self.open.edited).then_some(tile)
     }
 
+    /// The start screen's lesson open now, if any.
+    pub fn lesson(&self) -> Option<Tile> {
+        self.open.lesson
+    }
+
     /// Whether a lesson waits at its start, paused on its question: the
     /// strip then has a button to play it.
     pub fn lesson_waiting(&self) -> bool {

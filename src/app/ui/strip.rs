@@ -9,8 +9,7 @@
 //! hover: so every caption says its answer first ("The heavy disc keeps
 //! 9/11 of its speed…"), then the set-up, and a projector's narrow strip
 //! cuts the set-up. The text stops short of the drawer open over the
-//! strip's end. A lesson waiting at its start on its question has its
-//! Play button at the strip's end.
+//! strip's end. A lesson has its play and pause button at the strip's end.
 
 use super::{Cx, Keys, View};
 use crate::app::lang::tr;
@@ -84,17 +83,26 @@ impl View for Strip {
                 let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
                 width = width.min(left.max(1.0));
             }
-            // A lesson waiting on its question: its Play button at the
-            // strip's end, beside the words that name it.
-            let play = model.lesson_waiting().then(|| format!("▶ {}", tr!("play")));
-            if let Some(play) = &play {
-                let button = super::widgets::button_text_width(ui, play.as_str())
-                    + 2.0 * ui.spacing().button_padding.x;
+            // A lesson has its play and pause at the strip's end, beside
+            // its question and answer, whether or not the side panel's is in
+            // sight (at a projector's size it is in the drawer): one sign,
+            // as a player has, so that no language's word for "play" takes
+            // the question's room; its width is the wider sign's, so that
+            // the text keeps its lines as the clock starts.
+            let play = model.lesson().map(|_| {
+                let sign = if model.clock.paused { "▶" } else { "⏸" };
+                let widest = ["▶", "⏸"].map(|s| super::widgets::button_text_width(ui, s));
+                let button = widest[0].max(widest[1]) + 2.0 * ui.spacing().button_padding.x;
+                (sign, button)
+            });
+            if let Some((_, button)) = play {
                 width = (width - button - 2.0 * ui.spacing().item_spacing.x).max(1.0);
             }
             // The short hint has the full one on hover.
             let mut full_hint = None;
-            let caption = if cx.keys == Keys::World {
+            // A lesson waiting keeps its question in sight, its Play button
+            // the control the keys most likely reached.
+            let caption = if cx.keys == Keys::World || model.lesson_waiting() {
                 caption
             } else {
                 let hint = keys_in_panels(ui, width, most, cx.keys);
@@ -125,13 +133,13 @@ impl View for Strip {
             };
             let r = super::widgets::cut_label(ui, egui::Label::new(galley), more);
             cx.note(name, &r);
-            if let Some(play) = play {
+            if let Some((sign, button)) = play {
                 ui.add_space((width - r.rect.width()).max(0.0) + ui.spacing().item_spacing.x);
                 let command = crate::app::model::Command::TogglePause;
                 super::widgets::wide_labelled_button(
                     ui,
                     cx,
-                    (play, 0.0),
+                    (sign, button),
                     command,
                     Some("lesson_play"),
                 );

@@ -38,9 +38,11 @@ fn a_lesson_asks_its_question_until_its_answer_has_been_seen() {
     let said = &s.messages.narration.said;
     assert_eq!(said.back().map(|(_, l)| l), Some(&question), "{said:?}");
     assert!(!s.describe().contains(&answer), "{}", s.describe());
-    // Played: the question stays while the discs close in (the hit is at
-    // t = 2.4 s), and the answer comes with the collision, said once.
-    s.apply(Command::TogglePause);
+    // Enter (as on its tile) plays it, and adds no disc; the question stays
+    // while the discs close in (the hit is at t = 2.4 s), and the answer
+    // comes with the collision, said once.
+    s.apply(Command::LaunchAtCentre);
+    assert_eq!(s.world.particles.len(), 2);
     assert!(!s.lesson_waiting(), "running, nothing waits");
     run_until(&mut s, 2.0, |_| false);
     assert_eq!(s.world.total_pair_collisions, 0);
@@ -56,10 +58,15 @@ fn a_lesson_asks_its_question_until_its_answer_has_been_seen() {
         .map(|(_, l)| l.as_str())
         .collect();
     assert_eq!(said.iter().filter(|l| **l == answer).count(), 1, "{said:?}");
-    // A reset replays the lesson: the question again.
+    // A reset, running, replays the lesson: paused on the question again,
+    // in the strip at once.
+    assert!(!s.clock.paused);
     s.apply(Command::Reset);
+    assert!(s.clock.paused && s.lesson_waiting());
+    assert_eq!(s.message(), None, "nothing hides the question");
     assert_eq!(s.shown_caption().as_deref(), Some(question.as_str()));
     // Edited, the lesson's question no longer fits its discs.
+    s.apply(Command::TogglePause);
     s.apply(Command::LaunchAtCentre);
     assert!(s.shown_caption().unwrap().starts_with("Before the edits: "));
 }
