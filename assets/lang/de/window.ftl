@@ -78,6 +78,12 @@ tile-inelastic-blurb = Scheiben, die nicht voll zurückprallen. Wo bleibt die En
 tile-pi-blocks-blurb = Ein leichter Klotz, ein schwerer und eine Wand: Zähle die Stöße.
 tile-gas-blurb = Viele Scheiben auf einmal: Wie verteilen sich ihre Geschwindigkeiten?
 tile-free-play-blurb = Schieße eigene Scheiben ab und verändere alles.
+lesson-wall-pause = Angehalten: Scheibe { $disc } traf die { $wall ->
+    [left] linke
+    [right] rechte
+    [bottom] untere
+   *[top] obere
+} Wand, und der Stoß einer Wand ändert den Gesamtimpuls. { $key } lässt weiterlaufen.
 
 ## Der Startbildschirm
 close = Schließen

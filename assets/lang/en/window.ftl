@@ -78,6 +78,12 @@ tile-inelastic-blurb = Discs that do not bounce back fully. Where does the energ
 tile-pi-blocks-blurb = A light block, a heavy one and a wall: count the bumps.
 tile-gas-blurb = Many discs at once: how are their speeds shared out?
 tile-free-play-blurb = Launch your own discs and change everything.
+lesson-wall-pause = Paused: disc { $disc } hit the { $wall ->
+    [left] left
+    [right] right
+    [bottom] bottom
+   *[top] top
+} wall, and a wall's push changes the total momentum. { $key } runs on.
 
 ## The start screen
 close = Close

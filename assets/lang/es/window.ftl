@@ -78,6 +78,12 @@ tile-inelastic-blurb = Discos que no rebotan del todo. ¿A dónde va la energía
 tile-pi-blocks-blurb = Un bloque ligero, uno pesado y una pared: cuenta los choques.
 tile-gas-blurb = Muchos discos a la vez: ¿cómo se reparte la rapidez entre ellos?
 tile-free-play-blurb = Lanza tus propios discos y cámbialo todo.
+lesson-wall-pause = En pausa: el disco { $disc } chocó con la pared { $wall ->
+    [left] izquierda
+    [right] derecha
+    [bottom] inferior
+   *[top] superior
+}, y el empuje de una pared cambia la cantidad de movimiento total. { $key } sigue.
 
 ## La pantalla de inicio
 close = Cerrar

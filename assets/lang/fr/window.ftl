@@ -78,6 +78,12 @@ tile-inelastic-blurb = Des disques qui ne rebondissent pas complètement. Où pa
 tile-pi-blocks-blurb = Un bloc léger, un lourd et un mur : comptez les chocs.
 tile-gas-blurb = Beaucoup de disques à la fois : comment leurs vitesses se répartissent-elles ?
 tile-free-play-blurb = Lancez vos propres disques et modifiez tout.
+lesson-wall-pause = En pause : le disque { $disc } a touché le mur { $wall ->
+    [left] de gauche
+    [right] de droite
+    [bottom] du bas
+   *[top] du haut
+}, et la poussée d'un mur change la quantité de mouvement totale. { $key } relance.
 
 ## L'écran d'accueil
 close = Fermer

@@ -78,6 +78,12 @@ tile-inelastic-blurb = Discos que não quicam de volta por completo. Para onde v
 tile-pi-blocks-blurb = Um bloco leve, um pesado e uma parede: conte as batidas.
 tile-gas-blurb = Muitos discos ao mesmo tempo: como as velocidades se distribuem entre eles?
 tile-free-play-blurb = Lance seus próprios discos e mude tudo.
+lesson-wall-pause = Pausado: o disco { $disc } bateu na parede { $wall ->
+    [left] da esquerda
+    [right] da direita
+    [bottom] de baixo
+   *[top] de cima
+}, e o empurrão de uma parede muda a quantidade de movimento total. { $key } continua.
 
 ## A tela inicial
 close = Fechar

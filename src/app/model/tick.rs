@@ -67,6 +67,9 @@ impl Sandbox {
                 micros.pop_front();
             }
             steps += 1;
+            if stats.wall_hits > 0 && self.pause_at_first_wall() {
+                break;
+            }
         }
         if !running && steps > 0 {
             // N, paused: a step of 1/240 s does not show in the top bar's

@@ -106,3 +106,28 @@ fn free_play_and_the_presets_menu_run_at_once_without_a_question() {
     assert!(s.lesson_question().is_none());
     assert_eq!(s.shown_caption(), s.scene_description());
 }
+
+#[test]
+fn a_momentum_lesson_pauses_at_its_first_wall_hit_and_says_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = lesson(dir.path(), Tile::HeadOn);
+    s.apply(Command::TogglePause);
+    run_until(&mut s, 10.0, |s| s.clock.paused);
+    // Disc 2 leaves at 2 m/s after the hit at 2.4 s and meets the right wall.
+    assert!(s.clock.paused, "still running at t = {}", s.world.time);
+    assert_eq!(s.world.total_wall_hits, 1);
+    let said = s.message().unwrap_or_default().to_owned();
+    assert!(
+        said.starts_with("Paused: disc 2 hit the right wall") && said.contains("total momentum"),
+        "{said}"
+    );
+    // Played on, the next walls do not stop it.
+    s.apply(Command::TogglePause);
+    run_until(&mut s, 10.0, |s| s.world.total_wall_hits >= 2);
+    assert!(!s.clock.paused && s.world.total_wall_hits >= 2);
+    // A gas is all walls: its lesson runs on.
+    let mut s = lesson(dir.path(), Tile::Gas);
+    s.apply(Command::TogglePause);
+    run_until(&mut s, 3.0, |s| s.clock.paused);
+    assert!(!s.clock.paused && s.world.total_wall_hits > 0);
+}
