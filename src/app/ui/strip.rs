@@ -9,7 +9,7 @@
 //! hover: so every caption says its answer first ("The heavy disc keeps
 //! 9/11 of its speed…"), then the set-up, and a projector's narrow strip
 //! cuts the set-up. The text stops short of the drawer open over the
-//! strip's end. A lesson has its play and pause button at the strip's end.
+//! strip's end. A lesson paused has its Play button at the strip's end.
 
 use super::{Cx, Keys, View};
 use crate::app::lang::tr;
@@ -83,16 +83,17 @@ impl View for Strip {
                 let left = drawer.left() - ui.spacing().item_spacing.x - ui.cursor().left();
                 width = width.min(left.max(1.0));
             }
-            // A lesson has its play and pause at the strip's end, beside
-            // its question and answer, whether or not the side panel's is in
-            // sight (at a projector's size it is in the drawer): one sign,
-            // as a player has, so that no language's word for "play" takes
-            // the question's room; its width is the wider sign's, so that
-            // the text keeps its lines as the clock starts.
-            let play = model.lesson().map(|_| {
-                let sign = if model.clock.paused { "▶" } else { "⏸" };
-                let widest = ["▶", "⏸"].map(|s| super::widgets::button_text_width(ui, s));
-                let button = widest[0].max(widest[1]) + 2.0 * ui.spacing().button_padding.x;
+            // A lesson paused has its Play at the strip's end, beside its
+            // question (or what paused it), whether or not the side panel's
+            // is in sight (at a projector's size it is in the drawer): one
+            // sign, as a player has, so that no language's word for "play"
+            // takes the question's room. Running, the answer has the whole
+            // width (with the button, the head-on answer lost its end at a
+            // projector's size).
+            let play = (model.lesson().is_some() && model.clock.paused).then(|| {
+                let sign = "▶";
+                let button = super::widgets::button_text_width(ui, sign)
+                    + 2.0 * ui.spacing().button_padding.x;
                 (sign, button)
             });
             if let Some((_, button)) = play {
