@@ -366,6 +366,9 @@ pub fn draw_arrows(
         world.particles.iter().map(|p| p.mass).sum::<f64>() / world.particles.len() as f64;
     let rect = camera.screen_rect();
     let clip = arrow_clip(world, camera);
+    // As thick as the text is large: at a projector's size 2 the velocity
+    // arrows were lines of 2 px a class could not see.
+    let thick = look.text_scale.max(1.0);
     if overlays.momentum {
         let pink = color(look.colors.momentum);
         for p in &world.particles {
@@ -373,7 +376,7 @@ pub fn draw_arrows(
             let tip = c + camera.vector_to_screen(p.momentum() / mean_mass * ARROW_SECONDS);
             if arrow_readable(c, tip, rect) {
                 if let Some((a, b, whole)) = clipped(c, tip, clip) {
-                    hollow_arrow(px(a), px(b), 4.0, 2.0, pink, whole);
+                    hollow_arrow(px(a), px(b), 4.0 * thick, 2.0 * thick, pink, whole);
                 }
             }
         }
@@ -389,7 +392,7 @@ pub fn draw_arrows(
             let tip = c + camera.vector_to_screen(p.vel * ARROW_SECONDS);
             if arrow_readable(c, tip, rect) {
                 if let Some((a, b, whole)) = clipped(c, tip, clip) {
-                    arrow(px(a), px(b), 2.0, white, whole);
+                    arrow(px(a), px(b), 2.0 * thick, white, whole);
                 }
             }
         }
