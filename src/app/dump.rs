@@ -5,7 +5,6 @@
 
 use super::model::camera::Camera;
 use super::model::Sandbox;
-use crate::files::write_atomically;
 use impulse::{Metrics, Particle};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -419,5 +418,5 @@ pub fn write(path: Option<&Path>, state: &StateDump) {
 #[cfg(not(target_arch = "wasm32"))]
 pub fn write_state(path: &Path, dump: &StateDump) -> std::io::Result<()> {
     let json = serde_json::to_vec_pretty(dump).map_err(std::io::Error::other)?;
-    write_atomically(path, &json)
+    crate::files::write_atomically(path, &json)
 }

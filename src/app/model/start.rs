@@ -200,14 +200,15 @@ impl Sandbox {
         self.open.lesson
     }
 
-    /// Whether a lesson waits at its start, paused on its question: the
-    /// strip then has a button to play it.
+    /// Whether a lesson waits at its start, paused on its question (Enter
+    /// then plays it, and the question stays in the strip when the keys
+    /// are in the controls).
     pub fn lesson_waiting(&self) -> bool {
         self.clock.paused && self.world.time == 0.0 && self.lesson_unanswered().is_some()
     }
 
     /// What the strip shows of an unanswered lesson: its question instead
-    /// of its answer (waiting at its start, with a Play button beside it).
+    /// of its answer.
     pub fn lesson_question(&self) -> Option<String> {
         Some(self.lesson_unanswered()?.blurb())
     }
