@@ -165,36 +165,6 @@ impl Sandbox {
         (!answered && !self.open.edited).then_some(tile)
     }
 
-    /// In a lesson about momentum, the run's first wall hit pauses it and
-    /// says why the total changed there (the head-on discs' total had
-    /// turned from (2, 0) to (−2, 0) under the answer "total momentum stays
-    /// the same", a few seconds after it). Whether it paused.
-    pub(super) fn pause_at_first_wall(&mut self) -> bool {
-        let about_momentum = matches!(
-            self.open.lesson,
-            Some(Tile::HeadOn | Tile::Glancing | Tile::Inelastic)
-        );
-        if !about_momentum || self.world.total_wall_hits != 1 {
-            return false;
-        }
-        let newest_at_a_wall = self.world.ledger.impacts().rev().find_map(|i| match i {
-            impulse::ledger::Impact::Wall(hit) => Some((hit.disc, hit.wall.name().to_string())),
-            impulse::ledger::Impact::Pair(_) => None,
-        });
-        let Some((disc, wall)) = newest_at_a_wall else {
-            return false;
-        };
-        self.clock.paused = true;
-        let said = tr!(
-            "lesson-wall-pause",
-            disc = crate::app::numbers::disc_number(disc),
-            wall = wall,
-            key = super::bindings::keys_of(&super::Command::TogglePause)
-        );
-        self.toast_for(said, 10.0);
-        true
-    }
-
     /// The start screen's lesson open now, if any.
     pub fn lesson(&self) -> Option<Tile> {
         self.open.lesson

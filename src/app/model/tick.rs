@@ -3,6 +3,7 @@
 //! autosave; "next collision" and the rewind, which move time by command.
 
 use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
+use super::start::Tile;
 use super::{scenes, totals, DockTab, Sandbox};
 use crate::app::lang::tr;
 use crate::app::numbers::{disc_number, plain, reads_as_zero, vector, with_unit};
@@ -99,6 +100,36 @@ impl Sandbox {
             .realtime
             .push(now, simulated, running && !self.clock.paused);
         self.autosave();
+    }
+
+    /// In a lesson about momentum, the run's first wall hit pauses it and
+    /// says why the total changed there (the head-on discs' total had
+    /// turned from (2, 0) to (−2, 0) under the answer "total momentum stays
+    /// the same", a few seconds after it). Whether it paused.
+    fn pause_at_first_wall(&mut self) -> bool {
+        let about_momentum = matches!(
+            self.open.lesson,
+            Some(Tile::HeadOn | Tile::Glancing | Tile::Inelastic)
+        );
+        if !about_momentum || self.world.total_wall_hits != 1 {
+            return false;
+        }
+        let newest_at_a_wall = self.world.ledger.impacts().rev().find_map(|i| match i {
+            impulse::ledger::Impact::Wall(hit) => Some((hit.disc, hit.wall.name().to_string())),
+            impulse::ledger::Impact::Pair(_) => None,
+        });
+        let Some((disc, wall)) = newest_at_a_wall else {
+            return false;
+        };
+        self.clock.paused = true;
+        let said = tr!(
+            "lesson-wall-pause",
+            disc = disc_number(disc),
+            wall = wall,
+            key = super::bindings::keys_of(&super::Command::TogglePause)
+        );
+        self.toast_for(said, 10.0);
+        true
     }
 
     /// Says that `exact` pushed `pairs` overlapping pairs apart as it took
