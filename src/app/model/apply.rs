@@ -416,9 +416,7 @@ impl Sandbox {
                 // while the discs closed in, and the answer came).
                 self.clock.paused = true;
                 self.announce(tr!("scene-reset"));
-                if let Some(question) = self.lesson_question() {
-                    self.announce(question);
-                }
+                self.ask();
             }
             Some(false) => self.toast(tr!("scene-reset")),
             None => {}

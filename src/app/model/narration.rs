@@ -160,14 +160,13 @@ impl Sandbox {
     /// After the frame's steps: the newest impact, unless one was said a
     /// moment ago, and the π blocks' count once it is final.
     pub(super) fn narrate(&mut self) {
-        let asking = self.lesson_question().is_some();
-        if std::mem::replace(&mut self.messages.narration.asking, asking) && !asking {
-            // Answered by what was just seen (not by an edit or another
-            // scene, where the strip's caption is another's).
-            if let (Some(_), false) = (self.open.lesson, self.open.edited) {
-                if let Some(answer) = self.shown_caption() {
-                    self.announce(answer);
-                }
+        let asking = self.lesson_unanswered().is_some();
+        let answered = std::mem::replace(&mut self.messages.narration.asking, asking) && !asking;
+        // Answered by what was just seen (not by an edit or another scene,
+        // where the strip's caption is another's).
+        if answered && self.open.lesson.is_some() && !self.open.edited {
+            if let Some(answer) = self.shown_caption() {
+                self.announce(answer);
             }
         }
         let now = self.session.now;

@@ -102,6 +102,12 @@ impl Tile {
         }
     }
 
+    /// Whether the lesson is about momentum: its first wall hit pauses it
+    /// (a wall's push changes the total the lesson says is kept).
+    pub fn about_momentum(self) -> bool {
+        matches!(self, Tile::HeadOn | Tile::Glancing | Tile::Inelastic)
+    }
+
     /// Whether the lesson shows `section` of the side dock.
     pub fn shows(self, section: Section) -> bool {
         use Section::*;
@@ -148,6 +154,11 @@ impl Sandbox {
         self.clock.paused = lesson;
         self.panels.paused_by_modal = false;
         // Said after the scene's name, as the strip shows it.
+        self.ask();
+    }
+
+    /// Says the open lesson's question, while it is unanswered.
+    pub(super) fn ask(&mut self) {
         if let Some(question) = self.lesson_question() {
             self.announce(question);
         }
@@ -156,10 +167,10 @@ impl Sandbox {
     /// The open lesson, while its answer is still to be seen: before its
     /// first collision (the π blocks: until their count is final), and
     /// while its discs are as the lesson set them.
-    fn lesson_unanswered(&self) -> Option<Tile> {
+    pub(super) fn lesson_unanswered(&self) -> Option<Tile> {
         let tile = self.open.lesson?;
         let answered = match tile {
-            Tile::PiBlocks => super::lesson::pi_result(&self.world).is_some(),
+            Tile::PiBlocks => self.world.collisions_over(),
             _ => self.world.total_pair_collisions > 0,
         };
         (!answered && !self.open.edited).then_some(tile)

@@ -3,7 +3,6 @@
 //! autosave; "next collision" and the rewind, which move time by command.
 
 use super::lesson::{LEDGER_KEEP, NEXT_COLLISION_LIMIT};
-use super::start::Tile;
 use super::{scenes, totals, DockTab, Sandbox};
 use crate::app::lang::tr;
 use crate::app::numbers::{disc_number, plain, reads_as_zero, vector, with_unit};
@@ -107,10 +106,7 @@ impl Sandbox {
     /// turned from (2, 0) to (−2, 0) under the answer "total momentum stays
     /// the same", a few seconds after it). Whether it paused.
     fn pause_at_first_wall(&mut self) -> bool {
-        let about_momentum = matches!(
-            self.open.lesson,
-            Some(Tile::HeadOn | Tile::Glancing | Tile::Inelastic)
-        );
+        let about_momentum = self.open.lesson.is_some_and(|tile| tile.about_momentum());
         if !about_momentum || self.world.total_wall_hits != 1 {
             return false;
         }
